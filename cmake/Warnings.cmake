@@ -1,0 +1,8 @@
+# Warnings on for every language; the project builds clean with them.
+add_library(nanopush_warnings INTERFACE)
+target_compile_options(nanopush_warnings INTERFACE
+  $<$<COMPILE_LANGUAGE:CXX>:-Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wno-sign-conversion>
+  $<$<COMPILE_LANGUAGE:C>:-Wall -Wextra>
+  $<$<COMPILE_LANGUAGE:Fortran>:-Wall -Wno-unused-dummy-argument -Wno-compare-reals>)
+# Fixed-form F77 must stay re-entrant: locals on the stack, never static.
+set(NANOPUSH_F77_FLAGS -frecursive -std=legacy -ffixed-form)

@@ -1,0 +1,58 @@
+// Errors that reach the user. Input errors name the field, the value and the allowed range.
+#pragma once
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+namespace nanopush {
+
+/// Bad user input (scene file, command-line value, API argument).
+/// what() reads: "<field> = <value>: <requirement>", e.g.
+/// "object.mass = -1: must be > 0 (kg)".
+class InputError : public std::runtime_error {
+ public:
+  InputError(const std::string& field, const std::string& value, const std::string& requirement)
+      : std::runtime_error(field + " = " + value + ": " + requirement), field_(field) {}
+  explicit InputError(const std::string& message) : std::runtime_error(message) {}
+  [[nodiscard]] const std::string& field() const noexcept { return field_; }
+
+ private:
+  std::string field_;
+};
+
+/// A numerical failure (step size underflow, too many steps, non-finite state...).
+class SolverError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Format a double with full round-trip precision, for messages.
+inline std::string fmt(double v) {
+  std::ostringstream s;
+  s.precision(17);
+  s << v;
+  return s.str();
+}
+
+/// Throw InputError unless lo < v < hi (strict) or lo <= v <= hi (closed), v finite.
+inline void require_finite(const std::string& field, double v, const std::string& unit = "") {
+  if (!(v == v) || v - v != 0.0)
+    throw InputError(field, fmt(v), "must be a finite number" + (unit.empty() ? "" : " (" + unit + ")"));
+}
+inline void require_positive(const std::string& field, double v, const std::string& unit = "") {
+  require_finite(field, v, unit);
+  if (!(v > 0.0)) throw InputError(field, fmt(v), "must be > 0" + (unit.empty() ? "" : " (" + unit + ")"));
+}
+inline void require_nonnegative(const std::string& field, double v, const std::string& unit = "") {
+  require_finite(field, v, unit);
+  if (!(v >= 0.0)) throw InputError(field, fmt(v), "must be >= 0" + (unit.empty() ? "" : " (" + unit + ")"));
+}
+inline void require_range(const std::string& field, double v, double lo, double hi,
+                          const std::string& unit = "") {
+  require_finite(field, v, unit);
+  if (!(v >= lo && v <= hi))
+    throw InputError(field, fmt(v),
+                     "must be in [" + fmt(lo) + ", " + fmt(hi) + "]" + (unit.empty() ? "" : " (" + unit + ")"));
+}
+
+}  // namespace nanopush

@@ -1,0 +1,34 @@
+#include "registry.hpp"
+
+#include <cstdlib>
+
+#include "nanopush/error.hpp"
+
+namespace nanopush::cli {
+
+std::vector<Command>& commands() {
+  static std::vector<Command> c;
+  return c;
+}
+
+std::vector<ReproduceStep>& reproduce_steps() {
+  static std::vector<ReproduceStep> s;
+  return s;
+}
+
+std::filesystem::path scenes_dir() {
+  if (const char* e = std::getenv("NANOPUSH_SCENES"); e && *e) return e;
+  return std::filesystem::path(NANOPUSH_SOURCE_DIR) / "drivers" / "scenes";
+}
+
+std::filesystem::path resolve_scene(const std::string& arg) {
+  namespace fs = std::filesystem;
+  if (fs::exists(arg)) return arg;
+  const fs::path dir = scenes_dir();
+  for (const fs::path cand : {dir / (arg + ".toml"), dir / "thesis" / (arg + ".toml"), dir / arg}) {
+    if (fs::exists(cand) && fs::is_regular_file(cand)) return cand;
+  }
+  throw InputError("SCENE", arg, "no such file, and no preset of that name under " + dir.string());
+}
+
+}  // namespace nanopush::cli

@@ -1,0 +1,56 @@
+// Registration of subcommands and reproduce steps. Each cmd_*.cpp owns one subcommand
+// (and the reproduce steps for the figures it can make) and registers them with a
+// static object, so adding a model never edits the main program.
+#pragma once
+#include <CLI/CLI.hpp>
+
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace nanopush::cli {
+
+/// A subcommand: `setup` declares its options on `app` and returns the action to run
+/// after parsing (returning the process exit code).
+struct Command {
+  std::string name, description;
+  int order;  ///< position in --help
+  std::function<std::function<int()>(CLI::App&)> setup;
+};
+
+struct ReproduceContext {
+  std::filesystem::path out;   ///< output directory (exists)
+  std::ostringstream report;   ///< Markdown appended by each step
+  std::vector<std::string> failures;  ///< checks that did not hold (reported, exit != 0)
+  bool quick = false;          ///< fewer samples (used by the test suite)
+  /// Record a produced file for the report's index.
+  void produced(const std::filesystem::path& p) { files.push_back(p); }
+  std::vector<std::filesystem::path> files;
+};
+
+struct ReproduceStep {
+  std::string name, description;
+  int order;
+  std::function<void(ReproduceContext&)> run;
+};
+
+std::vector<Command>& commands();
+std::vector<ReproduceStep>& reproduce_steps();
+
+struct RegisterCommand {
+  RegisterCommand(Command c) { commands().push_back(std::move(c)); }
+};
+struct RegisterReproduce {
+  RegisterReproduce(ReproduceStep s) { reproduce_steps().push_back(std::move(s)); }
+};
+
+/// Directory holding scene presets: $NANOPUSH_SCENES, else <source>/drivers/scenes.
+std::filesystem::path scenes_dir();
+/// Resolve a scene argument: an existing path, or a preset name such as
+/// "thesis/fig3_6a" or "fig3_6a" (searched under scenes_dir()).
+std::filesystem::path resolve_scene(const std::string& arg);
+
+}  // namespace nanopush::cli
