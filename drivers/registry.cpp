@@ -25,7 +25,7 @@ std::filesystem::path resolve_scene(const std::string& arg) {
   namespace fs = std::filesystem;
   if (fs::exists(arg)) return arg;
   const fs::path dir = scenes_dir();
-  for (const fs::path cand : {dir / (arg + ".toml"), dir / "thesis" / (arg + ".toml"), dir / arg}) {
+  for (const fs::path& cand : {dir / (arg + ".toml"), dir / "thesis" / (arg + ".toml"), dir / arg}) {
     if (fs::exists(cand) && fs::is_regular_file(cand)) return cand;
   }
   throw InputError("SCENE", arg, "no such file, and no preset of that name under " + dir.string());

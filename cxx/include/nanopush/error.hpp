@@ -1,5 +1,6 @@
 // Errors that reach the user. Input errors name the field, the value and the allowed range.
 #pragma once
+#include <charconv>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -26,12 +27,11 @@ class SolverError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// Format a double with full round-trip precision, for messages.
+/// Format a double in the shortest form that reads back exactly, for messages.
 inline std::string fmt(double v) {
-  std::ostringstream s;
-  s.precision(17);
-  s << v;
-  return s.str();
+  char buf[64];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
 }
 
 /// Throw InputError unless lo < v < hi (strict) or lo <= v <= hi (closed), v finite.

@@ -1,0 +1,425 @@
+// Bulirsch–Stoer extrapolation integrator (modern C++ engine).
+//
+// Algorithm: Gragg's modified midpoint rule extrapolated in h^2, rational (Stoer &
+// Bulirsch, Introduction to Numerical Analysis, §7.2.14) or polynomial (Aitken–Neville);
+// order and step-size control by work per unit step (Deuflhard 1983) in the form of
+// Hairer, Nørsett & Wanner, Solving ODEs I, §II.9 (constants SAFE1..3, FAC4 named as
+// there). docs/bulirsch_stoer.md states the algorithm step by step; the FORTRAN 77 engine
+// (fortran/bsint.f) implements the same steps, and the `faithful` options below reproduce
+// its steps exactly (identical RHS-evaluation counts).
+//
+// Integrator contract (what a caller provides and gets):
+//   - rhs(t, y, dydt) -> int: writes dydt[0..n), returns 0, or non-zero to abort
+//     (that value is reported back in Result::rhs_status).
+//   - integrate(rhs, t0, y, tout, observer): advances y from t0 through every output time
+//     in `tout` (non-decreasing, >= t0), hitting each exactly (steps are clipped to output
+//     times; the step-size proposal and the order survive the clip), and calls
+//     observer(i, tout[i], y) at each. Returns a Result with status and counts.
+//   - No allocation per step: all work arrays are allocated at construction (fixed-size
+//     std::array when N > 0).
+// Templated on the scalar (double, long double, __float128) and the dimension N
+// (N = Dynamic for a size chosen at run time).
+#pragma once
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include "nanopush/scalar.hpp"
+
+namespace nanopush {
+
+inline constexpr int Dynamic = -1;
+
+enum class Extrapolation { rational = 1, polynomial = 2 };
+
+/// Status codes, identical to the F77 engine's IERR.
+enum class BsStatus : int {
+  success = 0,
+  bad_input = 1,
+  too_many_steps = 2,
+  step_underflow = 3,
+  rhs_failed = 4,
+  not_finite = 5,
+};
+
+const char* to_string(BsStatus s);
+
+template <typename Scalar>
+struct BsOptions {
+  Scalar rtol = Scalar(1e-10);
+  std::vector<Scalar> atol;  ///< per component (size n) or one value for all; must not be empty
+  Scalar h0 = 0;             ///< initial step; 0 = 1% of the span
+  Scalar hmax = 0;           ///< 0 = no limit
+  int kmax = 8;              ///< extrapolation columns, 3..12
+  Extrapolation extrapolation = Extrapolation::rational;
+  std::int64_t maxstp = 100000;
+
+  /// The thesis-era configuration; takes the F77 engine's steps exactly.
+  static BsOptions faithful(Scalar rtol, std::vector<Scalar> atol) {
+    BsOptions o;
+    o.rtol = rtol;
+    o.atol = std::move(atol);
+    o.kmax = 8;
+    o.extrapolation = Extrapolation::rational;
+    return o;
+  }
+  /// Polynomial extrapolation (no poles), more columns for tight tolerances.
+  static BsOptions modern(Scalar rtol, std::vector<Scalar> atol) {
+    BsOptions o;
+    o.rtol = rtol;
+    o.atol = std::move(atol);
+    o.kmax = 10;
+    o.extrapolation = Extrapolation::polynomial;
+    return o;
+  }
+};
+
+struct BsResult {
+  BsStatus status = BsStatus::success;
+  int rhs_status = 0;          ///< the RHS's own non-zero return, when status == rhs_failed
+  std::int64_t nfcn = 0;       ///< right-hand-side evaluations
+  std::int64_t naccpt = 0;     ///< accepted steps
+  std::int64_t nrejct = 0;     ///< rejected steps
+  double t_reached = 0;        ///< last time reached
+  std::string message;
+  [[nodiscard]] bool ok() const { return status == BsStatus::success; }
+};
+
+template <typename Scalar, int N = Dynamic>
+class BulirschStoer {
+ public:
+  static constexpr int kKmaxLimit = 12;
+  using Vec = std::conditional_t<N == Dynamic, std::vector<Scalar>, std::array<Scalar, (N > 0 ? N : 1)>>;
+
+  explicit BulirschStoer(BsOptions<Scalar> opt, int n = N) : opt_(std::move(opt)), n_(n) {
+    if constexpr (N == Dynamic) {
+      const auto sz = static_cast<std::size_t>(n_ > 0 ? n_ : 1);
+      for (Vec* v : {&y_, &f0_, &zm_, &z_, &fz_, &sc_, &atol_}) v->assign(sz, Scalar(0));
+      for (auto& row : prev_) row.assign(sz, Scalar(0));
+      for (auto& row : cur_) row.assign(sz, Scalar(0));
+    }
+  }
+
+  [[nodiscard]] int size() const { return n_; }
+  [[nodiscard]] const BsOptions<Scalar>& options() const { return opt_; }
+
+  /// Integrate; y holds the initial state on entry and the state at the last output
+  /// time reached on return.
+  template <class Rhs, class Observer>
+  BsResult integrate(Rhs&& rhs, Scalar t0, Scalar* y, std::span<const Scalar> tout, Observer&& observer) {
+    BsResult res;
+    res.t_reached = static_cast<double>(t0);
+    const int n = n_;
+    if (const char* why = validate(t0, y, tout)) {
+      res.status = BsStatus::bad_input;
+      res.message = why;
+      return res;
+    }
+    const int kmax = opt_.kmax;
+    for (int i = 0; i < n; ++i)
+      atol_[i] = opt_.atol.size() == 1 ? opt_.atol[0] : opt_.atol[static_cast<std::size_t>(i)];
+    std::array<Scalar, kKmaxLimit + 2> a{};  // work A_j, 1-based
+    for (int j = 1; j <= kmax; ++j) a[j] = (j == 1 ? Scalar(seq(1) + 1) : a[j - 1] + Scalar(seq(j)));
+    std::array<Scalar, kKmaxLimit + 2> w{}, hh{};
+
+    const Scalar rtol = opt_.rtol;
+    const std::size_t nout = tout.size();
+    const Scalar span_total = tout[nout - 1] - t0;
+    int k = std::max(2, std::min(kmax - 1, static_cast<int>(-num::log10(rtol + Scalar(1e-40)) * Scalar(0.6) +
+                                                            Scalar(1.5))));
+    Scalar h = opt_.h0 > 0 ? opt_.h0 : Scalar(0.01) * span_total;
+    if (opt_.hmax > 0) h = std::min(h, opt_.hmax);
+    Scalar t = t0;
+    for (int i = 0; i < n; ++i) y_[i] = y[i];
+    bool have_f0 = false, last_rejected = false;
+    int nonfinite_run = 0;
+
+    std::size_t iout = 0;
+    auto emit_reached = [&] {
+      while (iout < nout && tout[iout] <= t) {
+        observer(iout, tout[iout], static_cast<const Scalar*>(&y_[0]));
+        ++iout;
+      }
+    };
+    emit_reached();
+    while (iout < nout) {
+      const Scalar tend = tout[iout];
+      // 1.
+      if (res.naccpt + res.nrejct >= opt_.maxstp) {
+        res.status = BsStatus::too_many_steps;
+        res.message = "more than " + std::to_string(opt_.maxstp) + " steps";
+        break;
+      }
+      // 2.
+      if (!have_f0) {
+        if (const int st = rhs(t, static_cast<const Scalar*>(&y_[0]), &f0_[0]); st != 0) {
+          fail_rhs(res, st, t);
+          break;
+        }
+        ++res.nfcn;
+        have_f0 = true;
+      }
+      // 3.
+      const Scalar hwant = h;
+      bool clipped = false;
+      if (t + Scalar(1.01) * h >= tend) {
+        h = tend - t;
+        clipped = true;
+      }
+      if (h <= 0 || h < Scalar(1e-14) * std::max(num::abs(t), span_total)) {
+        res.status = BsStatus::step_underflow;
+        res.message = "step size underflow at t = " + std::to_string(static_cast<double>(t));
+        break;
+      }
+      // 4.
+      int kc = 0;
+      bool accept = false, nonfinite = false;
+      for (int j = 1; j <= k + 1; ++j) {
+        if (const int st = midpoint(rhs, t, h, seq(j), cur_[1], res); st != 0) {
+          fail_rhs(res, st, t);
+          kc = -1;
+          break;
+        }
+        extrapolate(j);
+        if (j < 2) {
+          std::swap(prev_, cur_);
+          continue;
+        }
+        Scalar s = 0;
+        for (int i = 0; i < n; ++i) {
+          const Scalar sc = atol_[i] + rtol * std::max(num::abs(y_[i]), num::abs(cur_[j][i]));
+          const Scalar q = (cur_[j][i] - cur_[j - 1][i]) / sc;
+          s = s + q * q;
+        }
+        const Scalar err = num::sqrt(s / Scalar(n));
+        if (!num::isfinite(err)) {
+          nonfinite = true;
+          kc = j;
+          break;
+        }
+        const Scalar expo = Scalar(1) / Scalar(2 * j - 1);
+        const Scalar facmin = num::pow(kSafe3, expo);
+        Scalar fac;
+        if (err == 0)
+          fac = Scalar(1) / facmin;
+        else
+          fac = kSafe2 * num::pow(kSafe1 / err, expo);
+        fac = std::max(facmin / kFac4, std::min(Scalar(1) / facmin, fac));
+        hh[j] = h * fac;
+        w[j] = a[j] / hh[j];
+        bool decided = false;
+        if (j == k - 1) {
+          if (err <= 1) {
+            accept = decided = true;
+          } else if (err > sq(Scalar(seq(k + 1) * seq(k)) / Scalar(4))) {
+            decided = true;
+          }
+        } else if (j == k) {
+          if (err <= 1) {
+            accept = decided = true;
+          } else if (err > sq(Scalar(seq(k + 1)) / Scalar(2))) {
+            decided = true;
+          }
+        } else if (j == k + 1) {
+          accept = err <= 1;
+          decided = true;
+        }
+        if (decided) {
+          kc = j;
+          break;
+        }
+        std::swap(prev_, cur_);
+      }
+      if (kc < 0) break;  // RHS failure
+      if (nonfinite) {
+        ++res.nrejct;
+        if (++nonfinite_run >= 30) {
+          res.status = BsStatus::not_finite;
+          res.message = "non-finite error estimate at t = " + std::to_string(static_cast<double>(t));
+          break;
+        }
+        h = Scalar(0.25) * h;
+        last_rejected = true;
+        continue;
+      }
+      nonfinite_run = 0;
+      // 5. order proposal
+      int kopt;
+      if (kc == 2) {
+        kopt = accept ? std::min(3, kmax - 1) : 2;
+      } else if (kc <= k) {
+        kopt = kc;
+        if (w[kc - 1] < kOrdDec * w[kc]) kopt = kc - 1;
+        if (w[kc] < kOrdInc * w[kc - 1]) kopt = std::min(kc + 1, kmax - 1);
+      } else {
+        kopt = kc - 1;
+        if (kc > 3 && w[kc - 2] < kOrdDec * w[kc - 1]) kopt = kc - 2;
+        if (w[kc] < kOrdInc * w[kopt]) kopt = std::min(kc, kmax - 1);
+      }
+      if (!accept) {
+        // 6.
+        ++res.nrejct;
+        k = std::min(kopt, kc);
+        h = std::min(h, hh[k]);
+        last_rejected = true;
+        continue;
+      }
+      // 7.
+      ++res.naccpt;
+      t = clipped ? tend : t + h;
+      for (int i = 0; i < n; ++i) y_[i] = cur_[kc][i];
+      have_f0 = false;
+      Scalar hnew;
+      if (kopt <= kc)
+        hnew = hh[kopt];
+      else if (kc < k && w[kc] < kOrdInc * w[kc - 1])
+        hnew = hh[kc] * a[kopt + 1] / a[kc];
+      else
+        hnew = hh[kc] * a[kopt] / a[kc];
+      if (last_rejected) {
+        kopt = std::min(kopt, kc);
+        hnew = std::min(hnew, h);
+      }
+      k = kopt;
+      if (clipped) hnew = std::max(hnew, hwant);
+      if (opt_.hmax > 0) hnew = std::min(hnew, opt_.hmax);
+      h = hnew;
+      last_rejected = false;
+      res.t_reached = static_cast<double>(t);
+      emit_reached();
+    }
+    for (int i = 0; i < n; ++i) y[i] = y_[i];
+    return res;
+  }
+
+  /// Convenience: no observer.
+  template <class Rhs>
+  BsResult integrate(Rhs&& rhs, Scalar t0, Scalar* y, Scalar t1) {
+    const Scalar tt[1] = {t1};
+    return integrate(std::forward<Rhs>(rhs), t0, y, std::span<const Scalar>(tt, 1),
+                     [](std::size_t, Scalar, const Scalar*) {});
+  }
+
+ private:
+  static constexpr Scalar kSafe1 = Scalar(0.65);
+  static constexpr Scalar kSafe2 = Scalar(0.94);
+  static constexpr Scalar kSafe3 = Scalar(0.02);
+  static constexpr Scalar kFac4 = Scalar(4.0);
+  static constexpr Scalar kOrdDec = Scalar(0.8);
+  static constexpr Scalar kOrdInc = Scalar(0.9);
+
+  static constexpr int seq(int j) { return 2 * j; }
+  static Scalar sq(Scalar x) { return x * x; }
+
+  const char* validate(Scalar t0, const Scalar* y, std::span<const Scalar> tout) const {
+    if (n_ < 1) return "n must be >= 1";
+    if constexpr (N != Dynamic)
+      if (n_ != N) return "n does not match the compile-time dimension";
+    if (opt_.kmax < 3 || opt_.kmax > kKmaxLimit) return "kmax must be in [3, 12]";
+    if (!(opt_.rtol >= 0)) return "rtol must be >= 0";
+    if (opt_.atol.empty() || (opt_.atol.size() != 1 && opt_.atol.size() != static_cast<std::size_t>(n_)))
+      return "atol must have 1 or n entries";
+    for (const Scalar v : opt_.atol) {
+      if (!(v >= 0)) return "atol must be >= 0";
+      if (v == 0 && opt_.rtol == 0) return "rtol and atol must not both be 0";
+    }
+    if (tout.empty()) return "no output times";
+    if (!num::isfinite(t0) || tout[0] < t0) return "tout(1) must be >= t0";
+    for (std::size_t i = 0; i < tout.size(); ++i) {
+      if (!num::isfinite(tout[i])) return "output times must be finite";
+      if (i > 0 && tout[i] < tout[i - 1]) return "output times must be non-decreasing";
+    }
+    for (int i = 0; i < n_; ++i)
+      if (!num::isfinite(y[i])) return "initial state must be finite";
+    if (opt_.maxstp < 1) return "maxstp must be >= 1";
+    if (opt_.h0 < 0 || opt_.hmax < 0) return "h0 and hmax must be >= 0";
+    return nullptr;
+  }
+
+  static void fail_rhs(BsResult& res, int st, Scalar t) {
+    res.status = BsStatus::rhs_failed;
+    res.rhs_status = st;
+    res.message = "right-hand side returned status " + std::to_string(st) + " at t = " +
+                  std::to_string(static_cast<double>(t));
+  }
+
+  // Gragg's modified midpoint rule with m substeps over [t, t+H]; result into out.
+  template <class Rhs>
+  int midpoint(Rhs& rhs, Scalar t, Scalar hbig, int m, Vec& out, BsResult& res) {
+    const int n = n_;
+    const Scalar hs = hbig / Scalar(m);
+    for (int i = 0; i < n; ++i) {
+      zm_[i] = y_[i];
+      z_[i] = y_[i] + hs * f0_[i];
+    }
+    for (int s = 1; s <= m - 1; ++s) {
+      const int st = rhs(t + Scalar(s) * hs, static_cast<const Scalar*>(&z_[0]), &fz_[0]);
+      ++res.nfcn;
+      if (st != 0) return st;
+      for (int i = 0; i < n; ++i) {
+        const Scalar znew = zm_[i] + Scalar(2) * hs * fz_[i];
+        zm_[i] = z_[i];
+        z_[i] = znew;
+      }
+    }
+    const int st = rhs(t + hbig, static_cast<const Scalar*>(&z_[0]), &fz_[0]);
+    ++res.nfcn;
+    if (st != 0) return st;
+    for (int i = 0; i < n; ++i) out[i] = Scalar(0.5) * (z_[i] + zm_[i] + hs * fz_[i]);
+    return 0;
+  }
+
+  // Fill cur_[2..j] from cur_[1] (the new midpoint result) and prev_ (row j-1).
+  void extrapolate(int j) {
+    const int n = n_;
+    const bool rational = opt_.extrapolation == Extrapolation::rational;
+    for (int l = 2; l <= j; ++l) {
+      const Scalar q = Scalar(seq(j)) / Scalar(seq(j - l + 1));
+      const Scalar r = q * q;
+      for (int i = 0; i < n; ++i) {
+        const Scalar d = cur_[l - 1][i] - prev_[l - 1][i];
+        Scalar val;
+        if (rational) {
+          const Scalar back = (l >= 3) ? prev_[l - 2][i] : Scalar(0);
+          const Scalar e = cur_[l - 1][i] - back;
+          bool done = false;
+          if (e != 0) {
+            const Scalar den = r * (Scalar(1) - d / e) - Scalar(1);
+            if (den != 0) {
+              val = cur_[l - 1][i] + d / den;
+              done = true;
+            }
+          }
+          if (!done) val = cur_[l - 1][i] + d / (r - Scalar(1));
+        } else {
+          val = cur_[l - 1][i] + d / (r - Scalar(1));
+        }
+        cur_[l][i] = val;
+      }
+    }
+  }
+
+  BsOptions<Scalar> opt_;
+  int n_;
+  Vec y_{}, f0_{}, zm_{}, z_{}, fz_{}, sc_{}, atol_{};
+  std::array<Vec, kKmaxLimit + 2> prev_{}, cur_{};  // extrapolation rows, columns 1..kmax
+};
+
+inline const char* to_string(BsStatus s) {
+  switch (s) {
+    case BsStatus::success: return "success";
+    case BsStatus::bad_input: return "bad input";
+    case BsStatus::too_many_steps: return "too many steps";
+    case BsStatus::step_underflow: return "step size underflow";
+    case BsStatus::rhs_failed: return "right-hand side failed";
+    case BsStatus::not_finite: return "non-finite state";
+  }
+  return "unknown";
+}
+
+}  // namespace nanopush

@@ -1,0 +1,51 @@
+// Run a scene with either engine and collect the trajectory.
+#pragma once
+#include <array>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "nanopush/bulirsch_stoer.hpp"
+#include "nanopush/scene.hpp"
+
+namespace nanopush {
+
+/// Columns of every trajectory: t, x, y, theta, vx, vy, omega, fx, fy, mf (SI, world axes).
+inline const std::vector<std::string>& trajectory_columns() {
+  static const std::vector<std::string> c = {"t", "x", "y", "theta", "vx", "vy", "omega", "fx", "fy", "mf"};
+  return c;
+}
+inline const std::vector<std::string>& trajectory_units() {
+  static const std::vector<std::string> u = {"s", "m", "m", "rad", "m/s", "m/s", "rad/s", "N", "N", "N m"};
+  return u;
+}
+using TrajectoryRow = std::array<double, 10>;
+
+struct RunSettings {
+  std::string engine = "cxx";       ///< cxx | f77
+  std::string method = "faithful";  ///< faithful | modern (cxx only; f77 is always the thesis algorithm)
+  double rtol = 0;                  ///< 0 = the scene's
+  double atol = -1;                 ///< < 0 = the scene's (0 = automatic scaling)
+  /// Called at each output sample with the fraction done (for progress display).
+  std::function<void(double)> progress;
+};
+
+struct Trajectory {
+  std::string engine_label;  ///< e.g. "cxx-faithful", "f77"
+  std::vector<TrajectoryRow> rows;
+  BsResult stats;
+  double rtol = 0;
+  std::vector<double> atol;
+};
+
+/// Integrate the scene. Throws SolverError when the integrator fails (status and time in
+/// the message); InputError for bad settings.
+Trajectory run_scene(const Scene& scene, const RunSettings& settings = {});
+
+/// Settings as resolved against the scene (engine/method/rtol/atol defaults filled in).
+RunSettings resolve_settings(const Scene& scene, RunSettings s);
+
+/// Write a trajectory CSV (header t,x,...,mf) atomically.
+void write_trajectory_csv(const Trajectory& tr, const std::filesystem::path& path);
+
+}  // namespace nanopush

@@ -1,0 +1,259 @@
+#include "nanopush/scene.hpp"
+
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "nanopush/error.hpp"
+
+namespace nanopush {
+namespace {
+
+/// A TOML value as the user wrote it, for error messages.
+std::string node_text(const toml::node& n) {
+  std::ostringstream s;
+  if (auto v = n.as_string()) return "\"" + v->get() + "\"";
+  if (auto v = n.as_floating_point()) return fmt(v->get());
+  if (auto v = n.as_integer()) return std::to_string(v->get());
+  if (auto v = n.as_boolean()) return v->get() ? "true" : "false";
+  if (n.is_array()) return "(an array)";
+  if (n.is_table()) return "(a table)";
+  return "(a date/time)";
+}
+
+std::string join(const std::vector<std::string>& v) {
+  std::string s;
+  for (const auto& x : v) s += (s.empty() ? "" : ", ") + x;
+  return s;
+}
+
+/// Reject keys the schema does not know (catches typos such as "lenght").
+void check_keys(const toml::table& t, const std::string& where, const std::vector<std::string>& allowed) {
+  for (auto&& [k, v] : t) {
+    const std::string key(k.str());
+    if (std::find(allowed.begin(), allowed.end(), key) == allowed.end())
+      throw InputError(where.empty() ? key : where + "." + key, "(present)",
+                       "unknown key; allowed here: " + join(allowed));
+  }
+}
+
+const toml::table& require_table(const toml::table& root, const std::string& name) {
+  const toml::node* n = root.get(name);
+  if (!n) throw InputError(name, "(missing)", "the scene needs a [" + name + "] table");
+  if (!n->is_table()) throw InputError(name, "(not a table)", "must be a [" + name + "] table");
+  return *n->as_table();
+}
+
+std::optional<double> opt_number(const toml::table& t, const std::string& where, const std::string& key) {
+  const toml::node* n = t.get(key);
+  if (!n) return std::nullopt;
+  if (auto v = n->value<double>(); v && (n->is_floating_point() || n->is_integer())) return *v;
+    throw InputError(where + "." + key, node_text(*n), "must be a number");
+}
+
+double number(const toml::table& t, const std::string& where, const std::string& key) {
+  auto v = opt_number(t, where, key);
+  if (!v) throw InputError(where + "." + key, "(missing)", "required number");
+  return *v;
+}
+
+std::optional<std::string> opt_string(const toml::table& t, const std::string& where, const std::string& key) {
+  const toml::node* n = t.get(key);
+  if (!n) return std::nullopt;
+  if (auto v = n->value<std::string>(); v && n->is_string()) return *v;
+    throw InputError(where + "." + key, node_text(*n), "must be a string");
+}
+
+void require_one_of(const std::string& field, const std::string& v, const std::vector<std::string>& allowed) {
+  if (std::find(allowed.begin(), allowed.end(), v) == allowed.end())
+    throw InputError(field, "\"" + v + "\"", "must be one of: " + join(allowed));
+}
+
+}  // namespace
+
+std::vector<double> Scene::output_times() const {
+  std::vector<double> t(static_cast<std::size_t>(solver.samples));
+  const int n = solver.samples;
+  for (int i = 0; i < n; ++i) t[static_cast<std::size_t>(i)] = solver.t_end * i / (n - 1);
+  t.back() = solver.t_end;
+  return t;
+}
+
+std::array<double, kStateSize> Scene::state_scales() const {
+  const double len = std::max(length, width);
+  // Rotational time scale: the small-oscillation period of the push torque.
+  const double torque = push.force * std::max(push.lever(), 1e-3 * len);
+  const double w = std::sqrt(torque / inertia);
+  return {len, len, 1.0, len * w, len * w, w};
+}
+
+std::vector<double> Scene::atol_vector(double rtol, double atol) const {
+  std::vector<double> v(kStateSize);
+  const auto sc = state_scales();
+  for (int i = 0; i < kStateSize; ++i) v[static_cast<std::size_t>(i)] = atol > 0 ? atol : rtol * sc[static_cast<std::size_t>(i)];
+  return v;
+}
+
+Scene parse_scene(std::string_view text, const std::string& source_name) {
+  toml::table root;
+  try {
+    root = toml::parse(text, source_name);
+  } catch (const toml::parse_error& e) {
+    std::ostringstream s;
+    s << source_name << ":" << e.source().begin.line << ":" << e.source().begin.column << ": TOML syntax: "
+      << e.description();
+    throw InputError(s.str());
+  }
+  check_keys(root, "", {"scene", "object", "push", "initial", "surface", "solver"});
+  Scene sc;
+  sc.source = source_name;
+
+  // [scene]
+  if (root.get("scene")) {
+    const auto& t = require_table(root, "scene");
+    check_keys(t, "scene", {"name", "description"});
+    sc.name = opt_string(t, "scene", "name").value_or("");
+    sc.description = opt_string(t, "scene", "description").value_or("");
+  }
+  if (sc.name.empty()) sc.name = std::filesystem::path(source_name).stem().string();
+
+  // [object]
+  {
+    const auto& t = require_table(root, "object");
+    check_keys(t, "object", {"shape", "length", "width", "height", "density", "mass", "inertia"});
+    sc.shape = opt_string(t, "object", "shape").value_or("bar");
+    require_one_of("object.shape", sc.shape, {"bar"});
+    sc.length = number(t, "object", "length");
+    sc.width = number(t, "object", "width");
+    require_positive("object.length", sc.length, "m");
+    require_positive("object.width", sc.width, "m");
+    sc.geometry = {sc.width / 2, sc.length / 2};
+    const auto mass = opt_number(t, "object", "mass");
+    const auto density = opt_number(t, "object", "density");
+    const auto height = opt_number(t, "object", "height");
+    if (height) {
+      require_positive("object.height", *height, "m");
+      sc.height = *height;
+    }
+    if (mass) {
+      require_positive("object.mass", *mass, "kg");
+      if (density) throw InputError("object.density", fmt(*density), "give either object.mass or object.density, not both");
+      sc.mass = *mass;
+    } else {
+      if (!density) throw InputError("object.mass", "(missing)", "give object.mass [kg], or object.density [kg/m^3] with object.height");
+      require_positive("object.density", *density, "kg/m^3");
+      if (!height) throw InputError("object.height", "(missing)", "needed with object.density to compute the mass (m)");
+      sc.density = *density;
+      sc.mass = sc.density * sc.length * sc.width * sc.height;
+    }
+    if (auto in = opt_number(t, "object", "inertia")) {
+      require_positive("object.inertia", *in, "kg m^2");
+      sc.inertia = *in;
+    } else {
+      sc.inertia = sc.mass * (sc.length * sc.length + sc.width * sc.width) / 12.0;
+    }
+  }
+
+  // [push]
+  {
+    const auto& t = require_table(root, "push");
+    check_keys(t, "push", {"force", "direction", "xn", "yn", "point"});
+    const double F = number(t, "push", "force");
+    require_positive("push.force", F, "N");
+    const double beta = opt_number(t, "push", "direction").value_or(0.0);
+    require_finite("push.direction", beta, "rad");
+    const auto xn = opt_number(t, "push", "xn");
+    const auto yn = opt_number(t, "push", "yn");
+    const toml::node* pt = t.get("point");
+    if (pt && (xn || yn)) throw InputError("push.point", "(present)", "give either push.point = [x', y'] or the thesis push.xn/push.yn, not both");
+    if (pt) {
+      const toml::array* arr = pt->as_array();
+      if (!arr || arr->size() != 2 || !arr->get(0)->value<double>() || !arr->get(1)->value<double>()) {
+                throw InputError("push.point", node_text(*pt), "must be [x', y'], two numbers in body axes (m)");
+      }
+      sc.push = {F, beta, *arr->get(0)->value<double>(), *arr->get(1)->value<double>()};
+    } else {
+      if (!xn || !yn) throw InputError(xn ? "push.yn" : "push.xn", "(missing)", "give both push.xn and push.yn (thesis coordinates, m), or push.point");
+      sc.push = Push::from_thesis(F, beta, *xn, *yn);
+    }
+    require_finite("push.point[0]", sc.push.pbx, "m");
+    require_finite("push.point[1]", sc.push.pby, "m");
+    const double tol = 1e-9 * std::max(sc.geometry.a, sc.geometry.b);
+    if (std::fabs(sc.push.pbx) > sc.geometry.a + tol)
+      throw InputError(pt ? "push.point[0]" : "push.xn", fmt(pt ? sc.push.pbx : *xn),
+                       "the push point must lie on the body: |x'| <= width/2 = " + fmt(sc.geometry.a) + " m");
+    if (std::fabs(sc.push.pby) > sc.geometry.b + tol)
+      throw InputError(pt ? "push.point[1]" : "push.yn", fmt(pt ? sc.push.pby : *yn),
+                       "the push point must lie on the body: |y'| <= length/2 = " + fmt(sc.geometry.b) + " m");
+  }
+
+  // [initial]
+  if (root.get("initial")) {
+    const auto& t = require_table(root, "initial");
+    const std::vector<std::string> keys = {"x", "y", "theta", "vx", "vy", "omega"};
+    const std::vector<std::string> units = {"m", "m", "rad", "m/s", "m/s", "rad/s"};
+    check_keys(t, "initial", keys);
+    for (std::size_t i = 0; i < keys.size(); ++i) {
+      sc.initial[i] = opt_number(t, "initial", keys[i]).value_or(0.0);
+      require_finite("initial." + keys[i], sc.initial[i], units[i]);
+    }
+  }
+
+  // [surface]
+  if (root.get("surface")) {
+    const auto& t = require_table(root, "surface");
+    check_keys(t, "surface", {"kind"});
+    sc.model = opt_string(t, "surface", "kind").value_or("smooth");
+    require_one_of("surface.kind", sc.model, {"smooth"});
+  }
+
+  // [solver]
+  {
+    const auto& t = require_table(root, "solver");
+    check_keys(t, "solver", {"t_end", "samples", "rtol", "atol", "engine", "method", "h0", "hmax"});
+    sc.solver.t_end = number(t, "solver", "t_end");
+    require_positive("solver.t_end", sc.solver.t_end, "s");
+    if (auto s = opt_number(t, "solver", "samples")) {
+      if (!(*s >= 2 && *s <= 1e7) || std::floor(*s) != *s)
+        throw InputError("solver.samples", fmt(*s), "must be an integer in [2, 10000000]");
+      sc.solver.samples = static_cast<int>(*s);
+    }
+    if (auto r = opt_number(t, "solver", "rtol")) {
+      require_range("solver.rtol", *r, 1e-30, 0.1);
+      sc.solver.rtol = *r;
+    }
+    if (auto a = opt_number(t, "solver", "atol")) {
+      require_nonnegative("solver.atol", *a);
+      sc.solver.atol = *a;
+    }
+    sc.solver.engine = opt_string(t, "solver", "engine").value_or("cxx");
+    require_one_of("solver.engine", sc.solver.engine, {"cxx", "f77"});
+    sc.solver.method = opt_string(t, "solver", "method").value_or("faithful");
+    require_one_of("solver.method", sc.solver.method, {"faithful", "modern"});
+    if (auto h = opt_number(t, "solver", "h0")) {
+      require_nonnegative("solver.h0", *h, "s");
+      sc.solver.h0 = *h;
+    }
+    if (auto h = opt_number(t, "solver", "hmax")) {
+      require_nonnegative("solver.hmax", *h, "s");
+      sc.solver.hmax = *h;
+    }
+  }
+  return sc;
+}
+
+Scene load_scene(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError("SCENE", path.string(), "cannot open the scene file");
+  std::ostringstream s;
+  s << in.rdbuf();
+  Scene sc = parse_scene(s.str(), path.string());
+  sc.source = path;
+  return sc;
+}
+
+}  // namespace nanopush

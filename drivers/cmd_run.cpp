@@ -1,0 +1,154 @@
+// nanopush run / compare: integrate a scene with either engine; compare the two engines.
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <iomanip>
+#include <iostream>
+#include <unistd.h>
+
+#include "nanopush/error.hpp"
+#include "nanopush/simulate.hpp"
+#include "registry.hpp"
+
+namespace nanopush::cli {
+namespace {
+
+struct RunOptions {
+  std::string scene, engine, method, out;
+  double rtol = 0, atol = -1;
+  bool quiet = false;
+};
+
+/// Progress on stderr for runs longer than a second, only on a terminal.
+std::function<void(double)> progress_printer(const std::string& label) {
+  if (!::isatty(2)) return {};
+  auto start = std::make_shared<std::chrono::steady_clock::time_point>(std::chrono::steady_clock::now());
+  auto last = std::make_shared<double>(0.0);
+  return [start, last, label](double frac) {
+    const double el = std::chrono::duration<double>(std::chrono::steady_clock::now() - *start).count();
+    if (el > 1.0 && (el - *last > 0.5 || frac >= 1.0)) {
+      *last = el;
+      std::fprintf(stderr, "\r%s: %5.1f%% (%.1f s)%s", label.c_str(), 100 * frac, el, frac >= 1.0 ? "\n" : "");
+    }
+  };
+}
+
+void add_common(CLI::App& app, RunOptions& o) {
+  app.add_option("SCENE", o.scene, "scene file, or a preset name such as fig3_6a (see drivers/scenes)")->required();
+  app.add_option("--rtol", o.rtol, "relative tolerance (default: the scene's solver.rtol)")->check(CLI::PositiveNumber);
+  app.add_option("--atol", o.atol,
+                 "absolute tolerance, one value for every state component (default: the scene's; 0 = rtol times "
+                 "each component's natural scale)")
+      ->check(CLI::NonNegativeNumber);
+}
+
+void print_summary(const Scene& sc, const Trajectory& tr, double seconds, std::ostream& os) {
+  const auto& last = tr.rows.back();
+  os << std::setprecision(10) << sc.name << " [" << tr.engine_label << "] rtol = " << tr.rtol << "\n"
+     << "  t_end = " << last[0] << " s: x = " << last[1] << " m, y = " << last[2] << " m, theta = " << last[3]
+     << " rad, omega = " << last[6] << " rad/s\n"
+     << "  RHS evaluations " << tr.stats.nfcn << ", accepted steps " << tr.stats.naccpt << ", rejected steps "
+     << tr.stats.nrejct << ", wall time " << std::setprecision(3) << seconds * 1e3 << " ms\n";
+}
+
+int run_cmd(const RunOptions& o) {
+  const Scene sc = load_scene(resolve_scene(o.scene));
+  RunSettings rs;
+  rs.engine = o.engine;
+  rs.method = o.method;
+  rs.rtol = o.rtol;
+  rs.atol = o.atol;
+  rs.progress = progress_printer(sc.name);
+  const auto t0 = std::chrono::steady_clock::now();
+  const Trajectory tr = run_scene(sc, rs);
+  const double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::string out = o.out.empty() ? sc.name + "." + tr.engine_label + ".csv" : o.out;
+  if (out == "-") {
+    std::cout << "t,x,y,theta,vx,vy,omega,fx,fy,mf\n" << std::setprecision(17);
+    for (auto& r : tr.rows) {
+      for (std::size_t i = 0; i < r.size(); ++i) std::cout << (i ? "," : "") << r[i];
+      std::cout << "\n";
+    }
+  } else {
+    write_trajectory_csv(tr, out);
+  }
+  if (!o.quiet) {
+    print_summary(sc, tr, dt, std::cerr);
+    if (out != "-") std::cerr << "  trajectory (SI, world axes): " << out << "\n";
+  }
+  return 0;
+}
+
+struct CompareOptions : RunOptions {
+  double tolerance = 0;
+};
+
+int compare_cmd(const CompareOptions& o) {
+  const Scene sc = load_scene(resolve_scene(o.scene));
+  RunSettings a, b;
+  a.engine = "cxx";
+  a.method = o.method.empty() ? "faithful" : o.method;
+  b.engine = "f77";
+  a.rtol = b.rtol = o.rtol;
+  a.atol = b.atol = o.atol;
+  const Trajectory ta = run_scene(sc, a), tb = run_scene(sc, b);
+  const double rtol = resolve_settings(sc, a).rtol;
+  // Tolerance on the deviation, relative to each column's largest magnitude: the two
+  // engines take the same steps in the faithful configuration, so they should agree far
+  // below the integration tolerance; 100 rtol leaves room for the modern method.
+  const double tol = o.tolerance > 0 ? o.tolerance : 100 * rtol;
+  const auto& cols = trajectory_columns();
+  const auto& units = trajectory_units();
+  std::cout << "compare " << sc.name << ": " << ta.engine_label << " vs " << tb.engine_label << " (rtol " << rtol
+            << ")\n";
+  std::cout << "  RHS evaluations " << ta.stats.nfcn << " vs " << tb.stats.nfcn << ", accepted " << ta.stats.naccpt
+            << " vs " << tb.stats.naccpt << ", rejected " << ta.stats.nrejct << " vs " << tb.stats.nrejct << "\n";
+  std::cout << "  " << std::left << std::setw(8) << "column" << std::setw(16) << "max |diff|" << std::setw(10)
+            << "unit" << std::setw(16) << "max |diff|/scale"
+            << "scale = max |value|\n";
+  bool ok = ta.rows.size() == tb.rows.size();
+  for (std::size_t c = 1; c < cols.size() && ok; ++c) {
+    double maxabs = 0, scale = 0;
+    for (std::size_t i = 0; i < ta.rows.size(); ++i) {
+      maxabs = std::max(maxabs, std::fabs(ta.rows[i][c] - tb.rows[i][c]));
+      scale = std::max({scale, std::fabs(ta.rows[i][c]), std::fabs(tb.rows[i][c])});
+    }
+    const double rel = scale > 0 ? maxabs / scale : maxabs;
+    const bool col_ok = rel <= tol;
+    ok = ok && col_ok;
+    std::cout << "  " << std::left << std::setw(8) << cols[c] << std::setw(16) << std::setprecision(4) << maxabs
+              << std::setw(10) << units[c] << std::setw(16) << rel << scale << (col_ok ? "" : "   <-- exceeds") << "\n";
+  }
+  std::cout << "  tolerance on max |diff|/scale: " << tol << (ok ? "  -> engines agree\n" : "  -> ENGINES DISAGREE\n");
+  return ok ? 0 : 1;
+}
+
+RegisterCommand reg_run{{"run", "Integrate a scene and write its trajectory as CSV (t,x,y,theta,vx,vy,omega,fx,fy,mf; SI)",
+                         10, [](CLI::App& app) -> std::function<int()> {
+                           auto o = std::make_shared<RunOptions>();
+                           add_common(app, *o);
+                           app.add_option("--engine", o->engine, "cxx (modern C++) or f77 (FORTRAN 77); default: the scene's")
+                               ->check(CLI::IsMember({"cxx", "f77"}));
+                           app.add_option("--method", o->method,
+                                          "C++ configuration: faithful (steps identical to F77) or modern; default: the scene's")
+                               ->check(CLI::IsMember({"faithful", "modern"}));
+                           app.add_option("--out", o->out, "output CSV ('-' for standard output; default <scene>.<engine>.csv)");
+                           app.add_flag("--quiet", o->quiet, "no summary on standard error");
+                           return [o] { return run_cmd(*o); };
+                         }}};
+
+RegisterCommand reg_compare{{"compare",
+                             "Run a scene with both engines (C++ and FORTRAN 77) and report the deviation per column",
+                             20, [](CLI::App& app) -> std::function<int()> {
+                               auto o = std::make_shared<CompareOptions>();
+                               add_common(app, *o);
+                               app.add_option("--method", o->method, "C++ configuration compared with F77 (default faithful)")
+                                   ->check(CLI::IsMember({"faithful", "modern"}));
+                               app.add_option("--tolerance", o->tolerance,
+                                              "largest allowed max|diff|/max|value| per column (default 100 rtol)")
+                                   ->check(CLI::PositiveNumber);
+                               return [o] { return compare_cmd(*o); };
+                             }}};
+
+}  // namespace
+}  // namespace nanopush::cli
