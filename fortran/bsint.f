@@ -61,8 +61,8 @@ C     NSTAT(3) out: NFCN (RHS evaluations), NACCPT (accepted steps),
 C            NREJCT (rejected steps); set on every return.
 C     IERR   out: 0 success; 1 bad input; 2 more than MAXSTP attempted
 C            steps; 3 step size underflow; 4 FCN returned non-zero;
-C            5 non-finite error estimate after 30 consecutive step
-C            reductions.
+C            5 non-finite error estimate after 10 consecutive step
+C            reductions (NNFMAX).
 C=======================================================================
       SUBROUTINE BSINT(FCN, N, T0, Y, NOUT, TOUT, YOUT, RTOL, ATOL,
      &                 H0, HMAX, KMAX, IEXTR, MAXSTP, RPAR, IPAR,
@@ -74,7 +74,9 @@ C=======================================================================
       DOUBLE PRECISION T0, Y(*), TOUT(*), YOUT(N,*), RTOL, ATOL(*),
      &                 H0, HMAX, RPAR(*)
       DOUBLE PRECISION ORDINC, BIG
+      INTEGER NNFMAX
       PARAMETER (ORDINC = 0.9D0, BIG = 1.7976931348623157D308)
+      PARAMETER (NNFMAX = 10)
       DOUBLE PRECISION YW(NMAX), F0(NMAX), YNEW(NMAX)
       DOUBLE PRECISION HH(KMAXX), W(KMAXX), A(KMAXX)
       INTEGER NSEQ(KMAXX)
@@ -199,7 +201,7 @@ C           Non-finite error estimate: quarter the step, keep k.
             NREJ = NREJ + 1
             NNF = NNF + 1
             LASTRJ = .TRUE.
-            IF (NNF .GE. 30) THEN
+            IF (NNF .GE. NNFMAX) THEN
                IERR = 5
                GOTO 900
             END IF
