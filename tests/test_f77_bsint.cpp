@@ -341,3 +341,55 @@ TEST_CASE("F77 BS smooth nanobar, Fig 3.6 theta0 = 0.5: exact pendulum and trans
     CHECK(eh <= 1e-10);
   }
 }
+
+// Regression tier: the counts recorded in docs/bulirsch_stoer.md ("Reference counts"), which the
+// faithful C++ engine must also reproduce. A change here means the algorithm changed: update
+// the doc and both engines together.
+TEST_CASE("F77 BS reference counts (docs/bulirsch_stoer.md)", "[f77][bsint][regression]") {
+  struct Case {
+    double theta0;
+    int nout, iextr;
+    double rtol;
+    std::array<int, 3> nstat;
+  };
+  const Case cases[] = {
+      {0.5, 101, 1, 1e-6, {1308, 100, 0}},  {0.5, 101, 1, 1e-9, {2130, 100, 0}},
+      {0.5, 101, 1, 1e-12, {3136, 100, 0}}, {0.5, 101, 2, 1e-6, {1308, 100, 0}},
+      {0.5, 101, 2, 1e-9, {2110, 100, 0}},  {0.5, 101, 2, 1e-12, {3112, 100, 0}},
+      {-0.5, 2, 1, 1e-6, {825, 17, 1}},     {-0.5, 2, 1, 1e-9, {1679, 27, 4}},
+      {-0.5, 2, 1, 1e-12, {3021, 63, 13}},  {-0.5, 2, 2, 1e-9, {1703, 27, 5}},
+      {0.5, 2, 1, 1e-9, {1199, 23, 1}},     {0.75, 2, 1, 1e-6, {719, 17, 4}},
+      {1.5, 2, 2, 1e-12, {2066, 42, 4}},
+  };
+  const Bar bar;
+  const auto p = bar.params();
+  for (const Case& c : cases) {
+    const auto tout = linspace(0.0, 1.6e-9, c.nout);
+    std::vector<double> yout(6 * tout.size());
+    std::array<double, 6> y{0, 0, c.theta0, 0, 0, 0}, atol{};
+    for (std::size_t i = 0; i < 6; ++i) atol[i] = c.rtol * kBarScale[i];
+    std::array<int, 3> nstat{};
+    const int st = np_f77_bsint_smooth_bar(6, 0.0, y.data(), c.nout, tout.data(), yout.data(), c.rtol,
+                                           atol.data(), 0.0, 0.0, 8, c.iextr, 0, p.data(), nstat.data());
+    INFO("bar theta0 " << c.theta0 << " nout " << c.nout << " iextr " << c.iextr << " rtol " << c.rtol);
+    CHECK(st == 0);
+    CHECK(nstat == c.nstat);
+  }
+  auto osc = [](int, double, const double* y, double* dy) {
+    dy[0] = y[1];
+    dy[1] = -y[0];
+    return 0;
+  };
+  const std::array<int, 3> osc_ref[2][3] = {{{276, 8, 0}, {527, 11, 0}, {933, 17, 0}},
+                                            {{289, 11, 0}, {682, 14, 0}, {1300, 24, 0}}};
+  const double rtols[3] = {1e-4, 1e-8, 1e-12};
+  for (int e = 0; e < 2; ++e) {
+    for (int i = 0; i < 3; ++i) {
+      const double rtol = rtols[i];
+      const Run r = integrate(osc, {0.0, 1.0}, 0.0, {20.0}, rtol, {rtol, rtol}, e + 1);
+      INFO("oscillator iextr " << e + 1 << " rtol " << rtol);
+      CHECK(r.status == 0);
+      CHECK(r.nstat == osc_ref[e][i]);
+    }
+  }
+}
