@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <numbers>
 #include <stdexcept>
+#include <thread>
 #include <vector>
 
 #include "f77_bsint.h"
@@ -312,6 +313,41 @@ TEST_CASE("F77 BS is re-entrant: an integration inside another's callback", "[f7
   CHECK(nested_bad == 0);
   CHECK(a.yout == ref_a.yout);   // bitwise: the nested runs did not disturb A
   CHECK(a.nstat == ref_a.nstat);
+}
+
+TEST_CASE("F77 BS is thread-safe: concurrent integrations with different udata", "[f77][bsint][unit]") {
+  // Each thread integrates y' = lambda y with its own lambda (held in its own udata) and must
+  // get bit for bit what a serial run gets.
+  struct Decay {
+    double lambda;
+    int operator()(int, double, const double* y, double* dy) const {
+      dy[0] = lambda * y[0];
+      return 0;
+    }
+  };
+  const auto tout = linspace(0.0, 2.0, 21);
+  Decay d1{-1.0}, d2{0.7};
+  const Run s1 = integrate(d1, {1.0}, 0.0, tout, 1e-11, {1e-13}, 1);
+  const Run s2 = integrate(d2, {1.0}, 0.0, tout, 1e-11, {1e-13}, 1);
+  std::vector<Run> p1(20), p2(20);
+  {
+    std::thread t1([&] {
+      for (auto& r : p1) r = integrate(d1, {1.0}, 0.0, tout, 1e-11, {1e-13}, 1);
+    });
+    std::thread t2([&] {
+      for (auto& r : p2) r = integrate(d2, {1.0}, 0.0, tout, 1e-11, {1e-13}, 1);
+    });
+    t1.join();
+    t2.join();
+  }
+  for (std::size_t i = 0; i < p1.size(); ++i) {
+    CHECK(p1[i].yout == s1.yout);
+    CHECK(p2[i].yout == s2.yout);
+    CHECK(p1[i].nstat == s1.nstat);
+    CHECK(p2[i].nstat == s2.nstat);
+  }
+  CHECK(std::abs(s1.y[0] - std::exp(-2.0)) < 1e-9);
+  CHECK(std::abs(s2.y[0] - std::exp(1.4)) < 1e-9 * std::exp(1.4));
 }
 
 TEST_CASE("F77 BS smooth nanobar, Fig 3.6 theta0 = 0.5: exact pendulum and translation",

@@ -121,6 +121,7 @@ program test_bsint
   call test_maxstp()
   call test_nonfinite()
   call test_blowup()
+  call test_step_limits()
 
   if (nfail > 0) then
     write (*, '(a, i0, a)') 'test_bsint: ', nfail, ' check(s) failed'
@@ -405,5 +406,27 @@ contains
     call check(abs(yout(1, 1) - 2d0) < 1d-8, 'blow-up: y(0.5) = 2')
     call check(yout(1, 2) == -1d0, 'blow-up: output past the pole not written')
   end subroutine test_blowup
+
+  !> H0 and HMAX are honoured: with HMAX = 0.01 on [0, 1] at least 100 steps are accepted
+  !> and the answer is as accurate; a tiny H0 costs at least the steps to grow out of it
+  !> (the step grows by at most 1/facmin = 50**(1/(2k-1)) <= 50 per step).
+  subroutine test_step_limits()
+    double precision :: y(1), yout(1, 1), tout(1), atol(1), rpar(1)
+    integer :: ipar(1), nstat(3), ierr
+    tout = 1d0
+    rpar(1) = 1d0
+    atol = 1d-12
+    y = 1d0
+    ipar = 0
+    call bsint(rhs_exp, 1, 0d0, y, 1, tout, yout, 1d-10, atol, 0d0, 1d-2, 8, 1, 0, &
+               rpar, ipar, nstat, ierr)
+    call check(ierr == 0 .and. nstat(2) >= 100, 'HMAX = 0.01: at least 100 steps on [0, 1]')
+    call check(abs(y(1) - exp(1d0)) <= 1d-9 * exp(1d0), 'HMAX = 0.01: accurate')
+    y = 1d0
+    call bsint(rhs_exp, 1, 0d0, y, 1, tout, yout, 1d-10, atol, 1d-12, 0d0, 8, 1, 0, &
+               rpar, ipar, nstat, ierr)
+    call check(ierr == 0 .and. nstat(2) >= 7, 'H0 = 1e-12: at least log50(1e12) = 7 steps')
+    call check(abs(y(1) - exp(1d0)) <= 1d-9 * exp(1d0), 'H0 = 1e-12: accurate')
+  end subroutine test_step_limits
 
 end program test_bsint
