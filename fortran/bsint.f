@@ -1,0 +1,480 @@
+C=======================================================================
+C     BSINT -- Bulirsch-Stoer (Gragg-Bulirsch-Stoer) extrapolation
+C     integrator for y' = f(t, y), with adaptive step size and order.
+C
+C     Method (see docs/bulirsch_stoer.md, which this code follows
+C     operation for operation; the C++ "faithful" engine does the same):
+C     - Gragg's modified midpoint rule with the step-number sequence
+C       n_j = 2j and a final smoothing step (BSMMID);
+C     - extrapolation of the midpoint results in h**2, either rational
+C       (the Stoer-Bulirsch formula, as used in the thesis) or
+C       polynomial (Aitken-Neville) (BSXTRP);
+C     - error estimate from the last two extrapolated values of a row,
+C       convergence monitor, and order and step-size selection by work
+C       per unit step (BSTRY, BSKOPT, and the driver BSINT).
+C
+C     References (the code was written from these descriptions, not
+C     from any book's code):
+C       J. Stoer, R. Bulirsch, Introduction to Numerical Analysis,
+C         Springer, section 7.2.14 (extrapolation methods, rational
+C         extrapolation of the Gragg midpoint rule).
+C       P. Deuflhard, Order and stepsize control in extrapolation
+C         methods, Numer. Math. 41 (1983) 399-422; Recent progress in
+C         extrapolation methods for ODEs, SIAM Rev. 27 (1985) 505-535.
+C       E. Hairer, S.P. Norsett, G. Wanner, Solving Ordinary
+C         Differential Equations I, 2nd ed., Springer 1993, section
+C         II.9 (order and step-size control; the constants SAFE1,
+C         SAFE2, SAFE3, FAC4, ORDDEC, ORDINC are named after it).
+C
+C     Fixed-form FORTRAN 77, DOUBLE PRECISION, no COMMON, never STOP.
+C     Workspace is local arrays of fixed size (NMAX components,
+C     KMAXX columns); the library is compiled with -frecursive so the
+C     routines are re-entrant.
+C=======================================================================
+C
+C     SUBROUTINE BSINT(FCN, N, T0, Y, NOUT, TOUT, YOUT, RTOL, ATOL,
+C    &                 H0, HMAX, KMAX, IEXTR, MAXSTP, RPAR, IPAR,
+C    &                 NSTAT, IERR)
+C
+C     FCN    EXTERNAL SUBROUTINE FCN(N, T, Y, DYDT, RPAR, IPAR, IERR)
+C            computes DYDT = f(T, Y); IERR = 0 on success, non-zero
+C            on failure (BSINT then returns IERR = 4 at once).
+C     N      number of components, 1 <= N <= NMAX (= 64).
+C     T0     initial time.
+C     Y(N)   in: state at T0. out: state at the last output time
+C            reached (on failure, the last output time reached before
+C            the failure, or the input state if none was reached).
+C     NOUT   number of output times, >= 1.
+C     TOUT(NOUT) output times, T0 <= TOUT(1) <= ... <= TOUT(NOUT).
+C     YOUT(N,NOUT) out: state at each TOUT; columns not reached
+C            because of a failure are left unchanged.
+C     RTOL   relative tolerance (>= 0).
+C     ATOL(N) absolute tolerance per component (>= 0; > 0 where
+C            RTOL = 0).
+C     H0     initial step (0 = default 0.01*(TOUT(NOUT)-T0)), >= 0.
+C     HMAX   largest step (0 = no limit), >= 0.
+C     KMAX   number of extrapolation columns, 3..12 (0 = default 8).
+C     IEXTR  1 = rational extrapolation, 2 = polynomial.
+C     MAXSTP maximum number of attempted steps (0 = default 100000).
+C     RPAR, IPAR  passed unchanged to FCN.
+C     NSTAT(3) out: NFCN (RHS evaluations), NACCPT (accepted steps),
+C            NREJCT (rejected steps); set on every return.
+C     IERR   out: 0 success; 1 bad input; 2 more than MAXSTP attempted
+C            steps; 3 step size underflow; 4 FCN returned non-zero;
+C            5 non-finite error estimate after 10 consecutive step
+C            reductions (NNFMAX).
+C=======================================================================
+      SUBROUTINE BSINT(FCN, N, T0, Y, NOUT, TOUT, YOUT, RTOL, ATOL,
+     &                 H0, HMAX, KMAX, IEXTR, MAXSTP, RPAR, IPAR,
+     &                 NSTAT, IERR)
+      INTEGER NMAX, KMAXX
+      PARAMETER (NMAX = 64, KMAXX = 12)
+      EXTERNAL FCN
+      INTEGER N, NOUT, KMAX, IEXTR, MAXSTP, IPAR(*), NSTAT(3), IERR
+      DOUBLE PRECISION T0, Y(*), TOUT(*), YOUT(N,*), RTOL, ATOL(*),
+     &                 H0, HMAX, RPAR(*)
+      DOUBLE PRECISION ORDINC, BIG
+      INTEGER NNFMAX
+      PARAMETER (ORDINC = 0.9D0, BIG = 1.7976931348623157D308)
+      PARAMETER (NNFMAX = 10)
+      DOUBLE PRECISION YW(NMAX), F0(NMAX), YNEW(NMAX)
+      DOUBLE PRECISION HH(KMAXX), W(KMAXX), A(KMAXX)
+      INTEGER NSEQ(KMAXX)
+      DOUBLE PRECISION T, H, HWANT, HNEW, TSPAN
+      INTEGER KM, MXS, NFCN, NACC, NREJ, NNF, K, KC, KOPT, IOUT, I, J
+      INTEGER IE
+      LOGICAL HAVEF0, LASTRJ, CLIP, ACCEPT, NONFIN
+C
+      NFCN = 0
+      NACC = 0
+      NREJ = 0
+      IERR = 0
+C
+C     ---- Input checks (status 1).  A value V is finite iff V .LE. BIG
+C     ---- and -V .LE. BIG (false for NaN and for infinities).
+      KM = KMAX
+      IF (KM .EQ. 0) KM = 8
+      MXS = MAXSTP
+      IF (MXS .EQ. 0) MXS = 100000
+      IF (N .LT. 1 .OR. N .GT. NMAX .OR. NOUT .LT. 1 .OR.
+     &    KM .LT. 3 .OR. KM .GT. KMAXX .OR. MXS .LT. 0 .OR.
+     &    (IEXTR .NE. 1 .AND. IEXTR .NE. 2)) THEN
+         IERR = 1
+         GOTO 900
+      END IF
+      IF (.NOT. (RTOL .GE. 0D0 .AND. RTOL .LE. BIG) .OR.
+     &    .NOT. (H0 .GE. 0D0 .AND. H0 .LE. BIG) .OR.
+     &    .NOT. (HMAX .GE. 0D0 .AND. HMAX .LE. BIG) .OR.
+     &    .NOT. (T0 .LE. BIG .AND. -T0 .LE. BIG)) THEN
+         IERR = 1
+         GOTO 900
+      END IF
+      DO 10 I = 1, N
+         IF (.NOT. (ATOL(I) .GE. 0D0 .AND. ATOL(I) .LE. BIG)) IERR = 1
+         IF (RTOL .EQ. 0D0 .AND. ATOL(I) .EQ. 0D0) IERR = 1
+         IF (.NOT. (Y(I) .LE. BIG .AND. -Y(I) .LE. BIG)) IERR = 1
+   10 CONTINUE
+      IF (.NOT. (TOUT(1) .GE. T0 .AND. TOUT(1) .LE. BIG)) IERR = 1
+      DO 20 IOUT = 2, NOUT
+         IF (.NOT. (TOUT(IOUT) .GE. TOUT(IOUT-1) .AND.
+     &              TOUT(IOUT) .LE. BIG)) IERR = 1
+   20 CONTINUE
+      IF (IERR .NE. 0) GOTO 900
+C
+C     ---- Constants: step numbers n_j = 2j, work A_j.
+      DO 30 J = 1, KM
+         NSEQ(J) = 2*J
+   30 CONTINUE
+      A(1) = DBLE(NSEQ(1) + 1)
+      DO 40 J = 2, KM
+         A(J) = A(J-1) + DBLE(NSEQ(J))
+   40 CONTINUE
+C     W(1) and HH(1) are never computed (no error estimate in column
+C     1); give them defined values all the same.
+      DO 45 J = 1, KMAXX
+         HH(J) = 0D0
+         W(J) = 0D0
+   45 CONTINUE
+C
+C     ---- Start.
+      TSPAN = TOUT(NOUT) - T0
+      K = MAX(2, MIN(KM - 1, INT(-LOG10(RTOL + 1D-40)*0.6D0 + 1.5D0)))
+      IF (H0 .GT. 0D0) THEN
+         H = H0
+      ELSE
+         H = 0.01D0*TSPAN
+      END IF
+      IF (HMAX .GT. 0D0) H = MIN(H, HMAX)
+      T = T0
+      DO 50 I = 1, N
+         YW(I) = Y(I)
+   50 CONTINUE
+      HAVEF0 = .FALSE.
+      LASTRJ = .FALSE.
+      NNF = 0
+C
+C     ---- Integrate to each output time in turn.
+      DO 200 IOUT = 1, NOUT
+C
+C        ---- One step (doc steps 1-7); repeat while T < TOUT(IOUT).
+  100    CONTINUE
+         IF (.NOT. (T .LT. TOUT(IOUT))) GOTO 190
+C        1. Step budget.
+         IF (NACC + NREJ .GE. MXS) THEN
+            IERR = 2
+            GOTO 900
+         END IF
+C        2. Derivative at the start of the step (reused after a
+C           rejection).
+         IF (.NOT. HAVEF0) THEN
+            IE = 0
+            CALL FCN(N, T, YW, F0, RPAR, IPAR, IE)
+            NFCN = NFCN + 1
+            IF (IE .NE. 0) THEN
+               IERR = 4
+               GOTO 900
+            END IF
+            HAVEF0 = .TRUE.
+         END IF
+C        3. Clip the step at the output time; underflow check.
+  110    CONTINUE
+         HWANT = H
+         CLIP = .FALSE.
+         IF (T + 1.01D0*H .GE. TOUT(IOUT)) THEN
+            H = TOUT(IOUT) - T
+            CLIP = .TRUE.
+         END IF
+         IF (H .LE. 0D0 .OR. H .LT. 1D-14*MAX(ABS(T), TSPAN)) THEN
+            IERR = 3
+            GOTO 900
+         END IF
+C        4. Build the extrapolation table and decide.
+         CALL BSTRY(FCN, N, T, YW, F0, H, K, IEXTR, RTOL, ATOL, NSEQ,
+     &              A, RPAR, IPAR, YNEW, HH, W, KC, ACCEPT, NONFIN,
+     &              NFCN, IE)
+         IF (IE .NE. 0) THEN
+            IERR = 4
+            GOTO 900
+         END IF
+         IF (NONFIN) THEN
+C           Non-finite error estimate: quarter the step, keep k.
+            NREJ = NREJ + 1
+            NNF = NNF + 1
+            LASTRJ = .TRUE.
+            IF (NNF .GE. NNFMAX) THEN
+               IERR = 5
+               GOTO 900
+            END IF
+            H = 0.25D0*H
+            GOTO 110
+         END IF
+         NNF = 0
+C        5. Order proposal.
+         CALL BSKOPT(KC, K, KM, W, LASTRJ, KOPT)
+         IF (.NOT. ACCEPT) THEN
+C           6. Rejected.
+            NREJ = NREJ + 1
+            K = MIN(KOPT, KC)
+            H = MIN(H, HH(K))
+            LASTRJ = .TRUE.
+            GOTO 100
+         END IF
+C        7. Accepted.
+         NACC = NACC + 1
+         IF (CLIP) THEN
+            T = TOUT(IOUT)
+         ELSE
+            T = T + H
+         END IF
+         DO 120 I = 1, N
+            YW(I) = YNEW(I)
+  120    CONTINUE
+         HAVEF0 = .FALSE.
+         IF (KOPT .LE. KC) THEN
+            HNEW = HH(KOPT)
+         ELSE
+            HNEW = HH(KC)*A(KOPT)/A(KC)
+            IF (KC .LT. K .AND. KC .GE. 3) THEN
+               IF (W(KC) .LT. ORDINC*W(KC-1)) THEN
+                  HNEW = HH(KC)*A(KOPT+1)/A(KC)
+               END IF
+            END IF
+         END IF
+         IF (LASTRJ) THEN
+            KOPT = MIN(KOPT, KC)
+            HNEW = MIN(HNEW, H)
+         END IF
+         K = KOPT
+         IF (CLIP) HNEW = MAX(HNEW, HWANT)
+         IF (HMAX .GT. 0D0) HNEW = MIN(HNEW, HMAX)
+         H = HNEW
+         LASTRJ = .FALSE.
+         GOTO 100
+C
+C        ---- Output time reached: record.
+  190    CONTINUE
+         DO 195 I = 1, N
+            YOUT(I, IOUT) = YW(I)
+            Y(I) = YW(I)
+  195    CONTINUE
+  200 CONTINUE
+C
+  900 CONTINUE
+      NSTAT(1) = NFCN
+      NSTAT(2) = NACC
+      NSTAT(3) = NREJ
+      RETURN
+      END
+C
+C=======================================================================
+C     BSTRY -- one attempted step of size H from (T, Y) with F0 =
+C     f(T, Y): builds rows j = 1..K+1 of the extrapolation table and
+C     stops at the column KC where the convergence monitor decides
+C     (doc step 4).
+C     Out: YNEW = T(KC,KC) (the candidate new state), HH(j), W(j)
+C     for j = 2..KC, KC, ACCEPT (decision), NONFIN (.TRUE. when an
+C     error estimate was not finite: ACCEPT is then .FALSE. and the
+C     other outputs are undefined), NFCN incremented by the RHS
+C     evaluations made, IERR non-zero when FCN failed.
+C=======================================================================
+      SUBROUTINE BSTRY(FCN, N, T, Y, F0, H, K, IEXTR, RTOL, ATOL,
+     &                 NSEQ, A, RPAR, IPAR, YNEW, HH, W, KC, ACCEPT,
+     &                 NONFIN, NFCN, IERR)
+      INTEGER NMAX, KMAXX
+      PARAMETER (NMAX = 64, KMAXX = 12)
+      EXTERNAL FCN
+      INTEGER N, K, IEXTR, NSEQ(*), IPAR(*), KC, NFCN, IERR
+      DOUBLE PRECISION T, Y(N), F0(N), H, RTOL, ATOL(N), A(*),
+     &                 RPAR(*), YNEW(N), HH(*), W(*)
+      LOGICAL ACCEPT, NONFIN
+      DOUBLE PRECISION SAFE1, SAFE2, SAFE3, FAC4, BIG
+      PARAMETER (SAFE1 = 0.65D0, SAFE2 = 0.94D0, SAFE3 = 0.02D0,
+     &           FAC4 = 4.0D0, BIG = 1.7976931348623157D308)
+      DOUBLE PRECISION TAB(NMAX, KMAXX, KMAXX)
+      DOUBLE PRECISION S, SC, Q, ERR, EXPO, FACMIN, FAC
+      INTEGER I, J
+C
+      ACCEPT = .FALSE.
+      NONFIN = .FALSE.
+      IERR = 0
+      KC = 0
+      DO 100 J = 1, K + 1
+C        a. Modified midpoint rule with n_j substeps: T(j,1).
+         CALL BSMMID(FCN, N, T, Y, F0, H, NSEQ(J), TAB(1, J, 1),
+     &               RPAR, IPAR, NFCN, IERR)
+         IF (IERR .NE. 0) RETURN
+C        b. Extrapolate row j.
+         CALL BSXTRP(N, J, IEXTR, NSEQ, TAB)
+         IF (J .LT. 2) GOTO 100
+C        c. Error estimate, step proposal and work for column j.
+         S = 0D0
+         DO 10 I = 1, N
+            SC = ATOL(I) + RTOL*MAX(ABS(Y(I)), ABS(TAB(I, J, J)))
+            Q = (TAB(I, J, J) - TAB(I, J, J-1))/SC
+            S = S + Q*Q
+   10    CONTINUE
+         ERR = SQRT(S/DBLE(N))
+         IF (.NOT. (ERR .LE. BIG)) THEN
+            NONFIN = .TRUE.
+            RETURN
+         END IF
+         EXPO = 1D0/DBLE(2*J - 1)
+         FACMIN = SAFE3**EXPO
+         IF (ERR .EQ. 0D0) THEN
+            FAC = 1D0/FACMIN
+         ELSE
+            FAC = SAFE2*(SAFE1/ERR)**EXPO
+         END IF
+         FAC = MAX(FACMIN/FAC4, MIN(1D0/FACMIN, FAC))
+         HH(J) = H*FAC
+         W(J) = A(J)/HH(J)
+C        d. Convergence monitor.
+         IF (J .EQ. K - 1) THEN
+            KC = J
+            IF (ERR .LE. 1D0) THEN
+               ACCEPT = .TRUE.
+               GOTO 200
+            END IF
+            IF (ERR .GT. (DBLE(NSEQ(K+1)*NSEQ(K))/4D0)**2) GOTO 200
+         ELSE IF (J .EQ. K) THEN
+            KC = J
+            IF (ERR .LE. 1D0) THEN
+               ACCEPT = .TRUE.
+               GOTO 200
+            END IF
+            IF (ERR .GT. (DBLE(NSEQ(K+1))/2D0)**2) GOTO 200
+         ELSE IF (J .EQ. K + 1) THEN
+            KC = J
+            IF (ERR .LE. 1D0) ACCEPT = .TRUE.
+            GOTO 200
+         END IF
+  100 CONTINUE
+C
+  200 CONTINUE
+      DO 210 I = 1, N
+         YNEW(I) = TAB(I, KC, KC)
+  210 CONTINUE
+      RETURN
+      END
+C
+C=======================================================================
+C     BSMMID -- Gragg's modified midpoint rule with M substeps of size
+C     HS = H/M from (T, Y), F0 = f(T, Y), with the final smoothing
+C     step (doc step 4a):
+C       z0 = y, z1 = z0 + hs f0,
+C       z(i+1) = z(i-1) + 2 hs f(t + i hs, z(i)),  i = 1..M-1,
+C       TJ1 = 0.5 (z(M) + z(M-1) + hs f(t + H, z(M))).
+C     M evaluations of FCN; NFCN counts each call made.  IERR is the
+C     status of the first failing call (0 if none).
+C=======================================================================
+      SUBROUTINE BSMMID(FCN, N, T, Y, F0, H, M, TJ1, RPAR, IPAR,
+     &                  NFCN, IERR)
+      INTEGER NMAX
+      PARAMETER (NMAX = 64)
+      EXTERNAL FCN
+      INTEGER N, M, IPAR(*), NFCN, IERR
+      DOUBLE PRECISION T, Y(N), F0(N), H, TJ1(N), RPAR(*)
+      DOUBLE PRECISION ZA(NMAX), ZB(NMAX), ZN(NMAX), FZ(NMAX), HS
+      INTEGER I, L
+C
+      IERR = 0
+      HS = H/DBLE(M)
+C     ZA = z(i-1), ZB = z(i), starting with i = 1.
+      DO 10 L = 1, N
+         ZA(L) = Y(L)
+         ZB(L) = Y(L) + HS*F0(L)
+   10 CONTINUE
+      DO 30 I = 1, M - 1
+         CALL FCN(N, T + DBLE(I)*HS, ZB, FZ, RPAR, IPAR, IERR)
+         NFCN = NFCN + 1
+         IF (IERR .NE. 0) RETURN
+         DO 20 L = 1, N
+            ZN(L) = ZA(L) + 2D0*HS*FZ(L)
+            ZA(L) = ZB(L)
+            ZB(L) = ZN(L)
+   20    CONTINUE
+   30 CONTINUE
+C     Now ZB = z(M), ZA = z(M-1).
+      CALL FCN(N, T + H, ZB, FZ, RPAR, IPAR, IERR)
+      NFCN = NFCN + 1
+      IF (IERR .NE. 0) RETURN
+      DO 40 L = 1, N
+         TJ1(L) = 0.5D0*(ZB(L) + ZA(L) + HS*FZ(L))
+   40 CONTINUE
+      RETURN
+      END
+C
+C=======================================================================
+C     BSXTRP -- extrapolate row J of the table TAB(i, j, l) (component
+C     i, row j, column l) in h**2, columns l = 2..J (doc step 4b),
+C     with d = T(j,l-1) - T(j-1,l-1), r = q*q, q = n_j / n_(j-l+1):
+C     IEXTR = 2, polynomial (Aitken-Neville):
+C        T(j,l) = T(j,l-1) + d/(r - 1)
+C     IEXTR = 1, rational (Stoer-Bulirsch), e = T(j,l-1) - T(j-1,l-2)
+C        with T(j-1,0) = 0:
+C        T(j,l) = T(j,l-1) + d/(r (1 - d/e) - 1),
+C        falling back to the polynomial formula when e = 0 or the
+C        denominator is 0.
+C=======================================================================
+      SUBROUTINE BSXTRP(N, J, IEXTR, NSEQ, TAB)
+      INTEGER NMAX, KMAXX
+      PARAMETER (NMAX = 64, KMAXX = 12)
+      INTEGER N, J, IEXTR, NSEQ(*)
+      DOUBLE PRECISION TAB(NMAX, KMAXX, KMAXX)
+      DOUBLE PRECISION Q, R, D, E, DEN
+      INTEGER I, L
+C
+      DO 20 L = 2, J
+         Q = DBLE(NSEQ(J))/DBLE(NSEQ(J-L+1))
+         R = Q*Q
+         DO 10 I = 1, N
+            D = TAB(I, J, L-1) - TAB(I, J-1, L-1)
+            IF (IEXTR .EQ. 1) THEN
+               IF (L .EQ. 2) THEN
+                  E = TAB(I, J, L-1)
+               ELSE
+                  E = TAB(I, J, L-1) - TAB(I, J-1, L-2)
+               END IF
+               IF (E .NE. 0D0) THEN
+                  DEN = R*(1D0 - D/E) - 1D0
+                  IF (DEN .NE. 0D0) THEN
+                     TAB(I, J, L) = TAB(I, J, L-1) + D/DEN
+                     GOTO 10
+                  END IF
+               END IF
+            END IF
+            TAB(I, J, L) = TAB(I, J, L-1) + D/(R - 1D0)
+   10    CONTINUE
+   20 CONTINUE
+      RETURN
+      END
+C
+C=======================================================================
+C     BSKOPT -- order proposal after an attempt decided in column KC
+C     (doc step 5).  K is the current order, KM = kmax, W(j) the work
+C     per unit step of column j (j = 2..KC), LASTRJ = the attempt
+C     before this one was rejected.  Out: KOPT, 2 <= KOPT <= KM-1.
+C=======================================================================
+      SUBROUTINE BSKOPT(KC, K, KM, W, LASTRJ, KOPT)
+      INTEGER KC, K, KM, KOPT
+      DOUBLE PRECISION W(*)
+      LOGICAL LASTRJ
+      DOUBLE PRECISION ORDDEC, ORDINC
+      PARAMETER (ORDDEC = 0.8D0, ORDINC = 0.9D0)
+C
+      IF (KC .EQ. 2) THEN
+         KOPT = MIN(3, KM - 1)
+         IF (LASTRJ) KOPT = 2
+      ELSE IF (KC .LE. K) THEN
+         KOPT = KC
+         IF (W(KC-1) .LT. ORDDEC*W(KC)) KOPT = KC - 1
+         IF (W(KC) .LT. ORDINC*W(KC-1)) KOPT = MIN(KC + 1, KM - 1)
+      ELSE
+         KOPT = KC - 1
+         IF (KC .GT. 3) THEN
+            IF (W(KC-2) .LT. ORDDEC*W(KC-1)) KOPT = KC - 2
+         END IF
+         IF (W(KC) .LT. ORDINC*W(KOPT)) KOPT = MIN(KC, KM - 1)
+      END IF
+      RETURN
+      END
