@@ -88,6 +88,7 @@ void reproduce_fig3_6(ReproduceContext& ctx) {
     p.title = "(" + c + ") theta0 = " + fmt(sc.initial[kTheta]) + " rad" + (c == "h" ? ", yn = 0" : "");
     p.xlabel = "t [ns]";
     p.ylabel = "theta [rad]";
+    if (c == "g") p.extra = "set format y '%.7f'";
     p.series.push_back({dir / (sc.name + "_cxx.csv"), "($1*1e9)", "4", "C++", "lines lw 2 lc rgb '#1f77b4'"});
     p.series.push_back({dir / (sc.name + "_f77.csv"), "($1*1e9)", "4", "F77", "lines lw 1 dt 2 lc rgb '#d62728'"});
     fig.panels.push_back(p);

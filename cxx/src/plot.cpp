@@ -76,7 +76,7 @@ void render(const Figure& fig, const std::filesystem::path& png) {
     b << "set title " << quote(fig.title) << "\n";
   }
   for (const auto& p : fig.panels) {
-    b << "reset session\nset datafile separator ','\nset grid\nset key best\n";
+    b << "reset session\nset datafile separator ','\nset grid\nset key\n";
     if (!p.title.empty()) b << "set title " << quote(p.title) << "\n";
     b << "set xlabel " << quote(p.xlabel) << "\nset ylabel " << quote(p.ylabel) << "\n";
     if (p.logx) b << "set logscale x\nset format x '10^{%L}'\n";

@@ -157,101 +157,109 @@ class BulirschStoer {
       }
       // 2.
       if (!have_f0) {
-        if (const int st = rhs(t, static_cast<const Scalar*>(&y_[0]), &f0_[0]); st != 0) {
+        const int st = rhs(t, static_cast<const Scalar*>(&y_[0]), &f0_[0]);
+        ++res.nfcn;
+        if (st != 0) {
           fail_rhs(res, st, t);
           break;
         }
-        ++res.nfcn;
         have_f0 = true;
       }
-      // 3.
-      const Scalar hwant = h;
+      // 3. (re-entered after a non-finite error estimate, without steps 1-2)
+      Scalar hwant = h;
       bool clipped = false;
-      if (t + Scalar(1.01) * h >= tend) {
-        h = tend - t;
-        clipped = true;
-      }
-      if (h <= 0 || h < Scalar(1e-14) * std::max(num::abs(t), span_total)) {
-        res.status = BsStatus::step_underflow;
-        res.message = "step size underflow at t = " + std::to_string(static_cast<double>(t));
-        break;
-      }
-      // 4.
       int kc = 0;
-      bool accept = false, nonfinite = false;
-      for (int j = 1; j <= k + 1; ++j) {
-        if (const int st = midpoint(rhs, t, h, seq(j), cur_[1], res); st != 0) {
-          fail_rhs(res, st, t);
-          kc = -1;
+      bool accept = false, failed = false;
+      for (;;) {
+        hwant = h;
+        clipped = false;
+        if (t + Scalar(1.01) * h >= tend) {
+          h = tend - t;
+          clipped = true;
+        }
+        if (h <= 0 || h < Scalar(1e-14) * std::max(num::abs(t), span_total)) {
+          res.status = BsStatus::step_underflow;
+          res.message = "step size underflow at t = " + std::to_string(static_cast<double>(t));
+          failed = true;
           break;
         }
-        extrapolate(j);
-        if (j < 2) {
+        // 4.
+        bool nonfinite = false;
+        kc = 0;
+        accept = false;
+        for (int j = 1; j <= k + 1; ++j) {
+          if (const int st = midpoint(rhs, t, h, seq(j), cur_[1], res); st != 0) {
+            fail_rhs(res, st, t);
+            failed = true;
+            break;
+          }
+          extrapolate(j);
+          if (j < 2) {
+            std::swap(prev_, cur_);
+            continue;
+          }
+          Scalar s = 0;
+          for (int i = 0; i < n; ++i) {
+            const Scalar sc = atol_[i] + rtol * std::max(num::abs(y_[i]), num::abs(cur_[j][i]));
+            const Scalar q = (cur_[j][i] - cur_[j - 1][i]) / sc;
+            s = s + q * q;
+          }
+          const Scalar err = num::sqrt(s / Scalar(n));
+          if (!num::isfinite(err)) {
+            nonfinite = true;
+            break;
+          }
+          const Scalar expo = Scalar(1) / Scalar(2 * j - 1);
+          const Scalar facmin = num::pow(kSafe3, expo);
+          Scalar fac;
+          if (err == 0)
+            fac = Scalar(1) / facmin;
+          else
+            fac = kSafe2 * num::pow(kSafe1 / err, expo);
+          fac = std::max(facmin / kFac4, std::min(Scalar(1) / facmin, fac));
+          hh[j] = h * fac;
+          w[j] = a[j] / hh[j];
+          bool decided = false;
+          if (j == k - 1) {
+            if (err <= 1) {
+              accept = decided = true;
+            } else if (err > sq(Scalar(seq(k + 1) * seq(k)) / Scalar(4))) {
+              decided = true;
+            }
+          } else if (j == k) {
+            if (err <= 1) {
+              accept = decided = true;
+            } else if (err > sq(Scalar(seq(k + 1)) / Scalar(2))) {
+              decided = true;
+            }
+          } else if (j == k + 1) {
+            accept = err <= 1;
+            decided = true;
+          }
+          if (decided) {
+            kc = j;
+            break;
+          }
           std::swap(prev_, cur_);
-          continue;
         }
-        Scalar s = 0;
-        for (int i = 0; i < n; ++i) {
-          const Scalar sc = atol_[i] + rtol * std::max(num::abs(y_[i]), num::abs(cur_[j][i]));
-          const Scalar q = (cur_[j][i] - cur_[j - 1][i]) / sc;
-          s = s + q * q;
-        }
-        const Scalar err = num::sqrt(s / Scalar(n));
-        if (!num::isfinite(err)) {
-          nonfinite = true;
-          kc = j;
-          break;
-        }
-        const Scalar expo = Scalar(1) / Scalar(2 * j - 1);
-        const Scalar facmin = num::pow(kSafe3, expo);
-        Scalar fac;
-        if (err == 0)
-          fac = Scalar(1) / facmin;
-        else
-          fac = kSafe2 * num::pow(kSafe1 / err, expo);
-        fac = std::max(facmin / kFac4, std::min(Scalar(1) / facmin, fac));
-        hh[j] = h * fac;
-        w[j] = a[j] / hh[j];
-        bool decided = false;
-        if (j == k - 1) {
-          if (err <= 1) {
-            accept = decided = true;
-          } else if (err > sq(Scalar(seq(k + 1) * seq(k)) / Scalar(4))) {
-            decided = true;
-          }
-        } else if (j == k) {
-          if (err <= 1) {
-            accept = decided = true;
-          } else if (err > sq(Scalar(seq(k + 1)) / Scalar(2))) {
-            decided = true;
-          }
-        } else if (j == k + 1) {
-          accept = err <= 1;
-          decided = true;
-        }
-        if (decided) {
-          kc = j;
-          break;
-        }
-        std::swap(prev_, cur_);
-      }
-      if (kc < 0) break;  // RHS failure
-      if (nonfinite) {
+        if (failed || !nonfinite) break;
+        // Non-finite error estimate: quarter the step, keep k, retry from 3.
         ++res.nrejct;
-        if (++nonfinite_run >= 30) {
+        last_rejected = true;
+        if (++nonfinite_run >= kMaxNonFinite) {
           res.status = BsStatus::not_finite;
           res.message = "non-finite error estimate at t = " + std::to_string(static_cast<double>(t));
+          failed = true;
           break;
         }
         h = Scalar(0.25) * h;
-        last_rejected = true;
-        continue;
       }
+      if (failed) break;
       nonfinite_run = 0;
       // 5. order proposal
       int kopt;
       if (kc == 2) {
-        kopt = accept ? std::min(3, kmax - 1) : 2;
+        kopt = last_rejected ? 2 : std::min(3, kmax - 1);
       } else if (kc <= k) {
         kopt = kc;
         if (w[kc - 1] < kOrdDec * w[kc]) kopt = kc - 1;
@@ -277,7 +285,7 @@ class BulirschStoer {
       Scalar hnew;
       if (kopt <= kc)
         hnew = hh[kopt];
-      else if (kc < k && w[kc] < kOrdInc * w[kc - 1])
+      else if (kc >= 3 && kc < k && w[kc] < kOrdInc * w[kc - 1])
         hnew = hh[kc] * a[kopt + 1] / a[kc];
       else
         hnew = hh[kc] * a[kopt] / a[kc];
@@ -312,6 +320,7 @@ class BulirschStoer {
   static constexpr Scalar kFac4 = Scalar(4.0);
   static constexpr Scalar kOrdDec = Scalar(0.8);
   static constexpr Scalar kOrdInc = Scalar(0.9);
+  static constexpr int kMaxNonFinite = 10;
 
   static constexpr int seq(int j) { return 2 * j; }
   static Scalar sq(Scalar x) { return x * x; }
