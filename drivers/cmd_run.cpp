@@ -14,7 +14,7 @@ namespace nanopush::cli {
 namespace {
 
 struct RunOptions {
-  std::string scene, engine, method, out;
+  std::string scene, engine, method, out, law;
   double rtol = 0, atol = -1;
   bool quiet = false;
 };
@@ -58,6 +58,7 @@ int run_cmd(const RunOptions& o) {
   rs.method = o.method;
   rs.rtol = o.rtol;
   rs.atol = o.atol;
+  rs.law = o.law;
   rs.progress = progress_printer(sc.name);
   const auto t0 = std::chrono::steady_clock::now();
   const Trajectory tr = run_scene(sc, rs);
@@ -74,6 +75,8 @@ int run_cmd(const RunOptions& o) {
   }
   if (!o.quiet) {
     print_summary(sc, tr, dt, std::cerr);
+    for (const auto& e : tr.events)
+      std::cerr << "  came to rest at t = " << e.t << " s: " << (e.stuck ? "stuck (applied wrench inside the limit surface)" : "slid off again") << "\n";
     if (out != "-") std::cerr << "  trajectory (SI, world axes): " << out << "\n";
   }
   return 0;
@@ -89,6 +92,10 @@ int compare_cmd(const CompareOptions& o) {
   a.engine = "cxx";
   a.method = o.method.empty() ? "faithful" : o.method;
   b.engine = "f77";
+  a.law = b.law = "thesis";  // the F77 engine implements the thesis law
+  if (sc.rough() && sc.surface.law != "thesis")
+    std::cout << "note: " << sc.name << " asks for the " << sc.surface.law
+              << " law; the engines are compared under the thesis law, the one both implement\n";
   a.rtol = b.rtol = o.rtol;
   a.atol = b.atol = o.atol;
   const Trajectory ta = run_scene(sc, a), tb = run_scene(sc, b);
@@ -130,8 +137,13 @@ RegisterCommand reg_run{{"run", "Integrate a scene and write its trajectory as C
                            app.add_option("--engine", o->engine, "cxx (modern C++) or f77 (FORTRAN 77); default: the scene's")
                                ->check(CLI::IsMember({"cxx", "f77"}));
                            app.add_option("--method", o->method,
-                                          "C++ configuration: faithful (steps identical to F77) or modern; default: the scene's")
-                               ->check(CLI::IsMember({"faithful", "modern"}));
+                                          "C++ configuration: faithful (steps identical to F77), modern, or cvode (SUNDIALS "
+                                          "cross-check of the coulomb law); default: the scene's")
+                               ->check(CLI::IsMember({"faithful", "modern", "cvode"}));
+                           app.add_option("--law", o->law,
+                                          "rough scenes: friction law, thesis (sign law of eq 3.40) or coulomb (event-located "
+                                          "stick-slip); default: the scene's")
+                               ->check(CLI::IsMember({"thesis", "coulomb"}));
                            app.add_option("--out", o->out, "output CSV ('-' for standard output; default <scene>.<engine>.csv)");
                            app.add_flag("--quiet", o->quiet, "no summary on standard error");
                            return [o] { return run_cmd(*o); };

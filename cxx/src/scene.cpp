@@ -83,18 +83,18 @@ std::vector<double> Scene::output_times() const {
   return t;
 }
 
-std::array<double, kStateSize> Scene::state_scales() const {
+std::array<double, 8> Scene::state_scales() const {
   const double len = std::max(length, width);
   // Rotational time scale: the small-oscillation period of the push torque.
   const double torque = push.force * std::max(push.lever(), 1e-3 * len);
   const double w = std::sqrt(torque / inertia);
-  return {len, len, 1.0, len * w, len * w, w};
+  return {len, len, 1.0, len * w, len * w, w, push.force * len, push.force * len};
 }
 
-std::vector<double> Scene::atol_vector(double rtol, double atol) const {
-  std::vector<double> v(kStateSize);
+std::vector<double> Scene::atol_vector(double rtol, double atol, int n) const {
+  std::vector<double> v(static_cast<std::size_t>(n));
   const auto sc = state_scales();
-  for (int i = 0; i < kStateSize; ++i) v[static_cast<std::size_t>(i)] = atol > 0 ? atol : rtol * sc[static_cast<std::size_t>(i)];
+  for (std::size_t i = 0; i < v.size(); ++i) v[i] = atol > 0 ? atol : rtol * sc[i];
   return v;
 }
 
@@ -206,15 +206,38 @@ Scene parse_scene(std::string_view text, const std::string& source_name) {
   // [surface]
   if (root.get("surface")) {
     const auto& t = require_table(root, "surface");
-    check_keys(t, "surface", {"kind"});
+    check_keys(t, "surface", {"kind", "mu", "f_vdw", "g", "normal_load", "law"});
     sc.model = opt_string(t, "surface", "kind").value_or("smooth");
-    require_one_of("surface.kind", sc.model, {"smooth"});
+    require_one_of("surface.kind", sc.model, {"smooth", "rough"});
+    sc.surface.kind = sc.model;
+    if (sc.model == "smooth") {
+      for (const char* k : {"mu", "f_vdw", "g", "normal_load", "law"})
+        if (t.get(k)) throw InputError(std::string("surface.") + k, "(present)", "only meaningful with surface.kind = \"rough\"");
+    } else {
+      sc.surface.mu = number(t, "surface", "mu");
+      require_range("surface.mu", sc.surface.mu, 0.0, 10.0);
+      sc.surface.f_vdw = opt_number(t, "surface", "f_vdw").value_or(0.0);
+      require_nonnegative("surface.f_vdw", sc.surface.f_vdw, "N");
+      sc.surface.g = opt_number(t, "surface", "g").value_or(9.81);
+      require_nonnegative("surface.g", sc.surface.g, "m/s^2");
+      if (auto nl = opt_number(t, "surface", "normal_load")) {
+        require_positive("surface.normal_load", *nl, "N");
+        sc.surface.normal_load = *nl;
+      }
+      sc.surface.law = opt_string(t, "surface", "law").value_or("thesis");
+      require_one_of("surface.law", sc.surface.law, {"thesis", "coulomb"});
+    }
   }
 
   // [solver]
   {
     const auto& t = require_table(root, "solver");
-    check_keys(t, "solver", {"t_end", "samples", "rtol", "atol", "engine", "method", "h0", "hmax"});
+    check_keys(t, "solver", {"t_end", "samples", "rtol", "atol", "engine", "method", "h0", "hmax", "max_steps"});
+    if (auto ms = opt_number(t, "solver", "max_steps")) {
+      if (!(*ms >= 1 && *ms <= 1e9) || std::floor(*ms) != *ms)
+        throw InputError("solver.max_steps", fmt(*ms), "must be an integer in [1, 1000000000]");
+      sc.solver.max_steps = static_cast<long>(*ms);
+    }
     sc.solver.t_end = number(t, "solver", "t_end");
     require_positive("solver.t_end", sc.solver.t_end, "s");
     if (auto s = opt_number(t, "solver", "samples")) {
@@ -233,7 +256,7 @@ Scene parse_scene(std::string_view text, const std::string& source_name) {
     sc.solver.engine = opt_string(t, "solver", "engine").value_or("cxx");
     require_one_of("solver.engine", sc.solver.engine, {"cxx", "f77"});
     sc.solver.method = opt_string(t, "solver", "method").value_or("faithful");
-    require_one_of("solver.method", sc.solver.method, {"faithful", "modern"});
+    require_one_of("solver.method", sc.solver.method, {"faithful", "modern", "cvode"});
     if (auto h = opt_number(t, "solver", "h0")) {
       require_nonnegative("solver.h0", *h, "s");
       sc.solver.h0 = *h;

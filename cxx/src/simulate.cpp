@@ -1,9 +1,12 @@
 #include "nanopush/simulate.hpp"
 
 #include "f77_bsint.h"
+#include "f77_rough.h"
 #include "nanopush/error.hpp"
 #include "nanopush/io.hpp"
 #include "nanopush/rigid_body.hpp"
+#include "nanopush/rough_bar.hpp"
+#include "nanopush/stick_slip.hpp"
 
 namespace nanopush {
 
@@ -11,29 +14,50 @@ RunSettings resolve_settings(const Scene& scene, RunSettings s) {
   if (s.engine.empty()) s.engine = scene.solver.engine;
   if (s.engine != "cxx" && s.engine != "f77") throw InputError("engine", s.engine, "must be cxx or f77");
   if (s.method.empty()) s.method = scene.solver.method;
-  if (s.method != "faithful" && s.method != "modern") throw InputError("method", s.method, "must be faithful or modern");
+  if (s.method != "faithful" && s.method != "modern" && s.method != "cvode")
+    throw InputError("method", s.method, "must be faithful, modern or cvode");
+  if (s.law.empty()) s.law = scene.surface.law;
+  if (s.law != "thesis" && s.law != "coulomb") throw InputError("law", s.law, "must be thesis or coulomb");
   if (s.rtol == 0) s.rtol = scene.solver.rtol;
   require_range("rtol", s.rtol, 1e-30, 0.1);
   if (s.atol < 0) s.atol = scene.solver.atol;
+  if (s.method == "cvode" && !(scene.rough() && s.law == "coulomb" && s.engine == "cxx"))
+    throw InputError("method", "cvode", "the CVODE cross-check exists for rough scenes under the coulomb law only");
+  if (s.engine == "f77" && scene.rough() && s.law == "coulomb")
+    throw InputError("engine", "f77", "the F77 engine implements the thesis friction law only (use --engine cxx)");
   return s;
 }
 
 namespace {
 
-TrajectoryRow make_row(double t, const double* y) {
-  return {t, y[kX], y[kY], y[kTheta], y[kVx], y[kVy], y[kOmega], 0.0, 0.0, 0.0};
+TrajectoryRow make_row(double t, const double* y, const WorldWrench& f = {}) {
+  return {t, y[kX], y[kY], y[kTheta], y[kVx], y[kVy], y[kOmega], f.fx, f.fy, f.mf};
 }
 
-Trajectory run_cxx(const Scene& sc, const RunSettings& s) {
+BsOptions<double> options_for(const Scene& sc, const RunSettings& s, const std::vector<double>& atol) {
+  auto opt = s.method == "modern" ? BsOptions<double>::modern(s.rtol, atol) : BsOptions<double>::faithful(s.rtol, atol);
+  opt.h0 = sc.solver.h0;
+  opt.hmax = sc.solver.hmax;
+  opt.maxstp = sc.solver.max_steps;
+  return opt;
+}
+
+RoughBarModel rough_model(const Scene& sc) {
+  RoughBarModel m;
+  m.mass = sc.mass;
+  m.inertia = sc.inertia;
+  m.geometry = sc.geometry;
+  m.muN = sc.surface.mu * sc.normal_load();
+  m.push = sc.push;
+  return m;
+}
+
+Trajectory run_cxx_smooth(const Scene& sc, const RunSettings& s) {
   Trajectory tr;
   tr.engine_label = "cxx-" + s.method;
   tr.rtol = s.rtol;
   tr.atol = sc.atol_vector(s.rtol, s.atol);
-  auto opt = s.method == "modern" ? BsOptions<double>::modern(s.rtol, tr.atol)
-                                  : BsOptions<double>::faithful(s.rtol, tr.atol);
-  opt.h0 = sc.solver.h0;
-  opt.hmax = sc.solver.hmax;
-  BulirschStoer<double, kStateSize> bs(opt);
+  BulirschStoer<double, kStateSize> bs(options_for(sc, s, tr.atol));
   const SmoothBarRhs rhs{sc.mass, sc.inertia, sc.push};
   const auto tout = sc.output_times();
   std::array<double, kStateSize> y = sc.initial;
@@ -46,30 +70,103 @@ Trajectory run_cxx(const Scene& sc, const RunSettings& s) {
   return tr;
 }
 
+std::array<double, kRoughStateSize> rough_initial(const Scene& sc) {
+  std::array<double, kRoughStateSize> y{};
+  std::copy(sc.initial.begin(), sc.initial.end(), y.begin());
+  return y;
+}
+
+Trajectory run_cxx_rough(const Scene& sc, const RunSettings& s) {
+  Trajectory tr;
+  tr.engine_label = "cxx-" + s.method + "-" + s.law;
+  tr.rtol = s.rtol;
+  tr.atol = sc.atol_vector(s.rtol, s.atol, kRoughStateSize);
+  const RoughBarModel model = rough_model(sc);
+  const auto tout = sc.output_times();
+  auto y = rough_initial(sc);
+  const double n = static_cast<double>(tout.size());
+  auto record = [&](double t, const double* yy, const WorldWrench& f) {
+    tr.rows.push_back(make_row(t, yy, f));
+    tr.work_push.push_back(yy[kWorkPush]);
+    tr.work_fric.push_back(yy[kWorkFric]);
+    if (s.progress) s.progress(static_cast<double>(tr.rows.size()) / n);
+  };
+  if (s.law == "thesis") {
+    BulirschStoer<double, kRoughStateSize> bs(options_for(sc, s, tr.atol));
+    const RoughBarThesisRhs rhs{model};
+    tr.stats = bs.integrate(rhs, 0.0, y.data(), std::span<const double>(tout), [&](std::size_t, double t, const double* yy) {
+      record(t, yy, model.friction(yy[kTheta], yy[kVx], yy[kVy], yy[kOmega]));
+    });
+    return tr;
+  }
+  StickSlipResult r;
+  try {
+    if (s.method == "cvode")
+      r = integrate_coulomb_cvode(model, s.rtol, tr.atol, y.data(), tout, record);
+    else
+      r = integrate_coulomb(model, options_for(sc, s, tr.atol), y.data(), tout, record);
+  } catch (const SolverError& e) {
+    tr.stats.status = BsStatus::not_finite;
+    tr.stats.message = e.what();
+    return tr;
+  }
+  tr.stats = r.stats;
+  for (const auto& e : r.events) tr.events.push_back({e.t, e.stuck});
+  return tr;
+}
+
 Trajectory run_f77(const Scene& sc, const RunSettings& s) {
   Trajectory tr;
-  tr.engine_label = "f77";
+  tr.engine_label = sc.rough() ? "f77-thesis" : "f77";
+  const int n = sc.rough() ? kRoughStateSize : kStateSize;
   tr.rtol = s.rtol;
-  tr.atol = sc.atol_vector(s.rtol, s.atol);
+  tr.atol = sc.atol_vector(s.rtol, s.atol, n);
   const auto tout = sc.output_times();
-  std::vector<double> yout(tout.size() * kStateSize);
-  std::array<double, kStateSize> y = sc.initial;
-  const double params[6] = {sc.mass, sc.inertia, sc.push.force, sc.push.beta, sc.push.pbx, sc.push.pby};
+  std::vector<double> yout(tout.size() * static_cast<std::size_t>(n));
+  std::vector<double> y(static_cast<std::size_t>(n), 0.0);
+  std::copy(sc.initial.begin(), sc.initial.end(), y.begin());
   int nstat[3] = {0, 0, 0};
-  const int st = np_f77_bsint_smooth_bar(kStateSize, 0.0, y.data(), static_cast<int>(tout.size()), tout.data(),
-                                         yout.data(), s.rtol, tr.atol.data(), sc.solver.h0, sc.solver.hmax, 8, 1,
-                                         100000, params, nstat);
+  int st;
+  const int maxstp = static_cast<int>(std::min<long>(sc.solver.max_steps, 2000000000L));
+  if (sc.rough()) {
+    const double params[9] = {sc.mass, sc.inertia, sc.push.force, sc.push.beta, sc.push.pbx, sc.push.pby,
+                              sc.geometry.a, sc.geometry.b, sc.surface.mu * sc.normal_load()};
+    st = np_f77_bsint_rough_bar(n, 0.0, y.data(), static_cast<int>(tout.size()), tout.data(), yout.data(), s.rtol,
+                                tr.atol.data(), sc.solver.h0, sc.solver.hmax, 8, 1, maxstp, params, nstat);
+  } else {
+    const double params[6] = {sc.mass, sc.inertia, sc.push.force, sc.push.beta, sc.push.pbx, sc.push.pby};
+    st = np_f77_bsint_smooth_bar(n, 0.0, y.data(), static_cast<int>(tout.size()), tout.data(), yout.data(), s.rtol,
+                                 tr.atol.data(), sc.solver.h0, sc.solver.hmax, 8, 1, maxstp, params, nstat);
+  }
   tr.stats.status = static_cast<BsStatus>(st);
   tr.stats.nfcn = nstat[0];
   tr.stats.naccpt = nstat[1];
   tr.stats.nrejct = nstat[2];
-  if (st == 0) {
-    for (std::size_t i = 0; i < tout.size(); ++i) tr.rows.push_back(make_row(tout[i], &yout[i * kStateSize]));
-    tr.stats.t_reached = tout.back();
-  } else {
+  const RoughBarModel model = rough_model(sc);
+  // Outputs reached: on failure BSINT leaves later columns untouched; y holds the state at the
+  // last output reached, so count the columns by comparing times reached.
+  std::size_t reached = tout.size();
+  if (st != 0) {
     tr.stats.message = std::string("F77 BSINT returned status ") + std::to_string(st) + " (" +
                        to_string(static_cast<BsStatus>(st)) + ")";
+    reached = 0;
+    for (std::size_t i = 0; i < tout.size(); ++i) {
+      bool same = true;
+      for (int c = 0; c < n; ++c) same = same && yout[i * static_cast<std::size_t>(n) + static_cast<std::size_t>(c)] == y[static_cast<std::size_t>(c)];
+      if (same) reached = i + 1;
+    }
   }
+  for (std::size_t i = 0; i < reached; ++i) {
+    const double* yy = &yout[i * static_cast<std::size_t>(n)];
+    if (sc.rough()) {
+      tr.rows.push_back(make_row(tout[i], yy, model.friction(yy[kTheta], yy[kVx], yy[kVy], yy[kOmega])));
+      tr.work_push.push_back(yy[kWorkPush]);
+      tr.work_fric.push_back(yy[kWorkFric]);
+    } else {
+      tr.rows.push_back(make_row(tout[i], yy));
+    }
+  }
+  if (!tr.rows.empty()) tr.stats.t_reached = tr.rows.back()[0];
   if (s.progress) s.progress(1.0);
   return tr;
 }
@@ -78,10 +175,17 @@ Trajectory run_f77(const Scene& sc, const RunSettings& s) {
 
 Trajectory run_scene(const Scene& scene, const RunSettings& settings) {
   const RunSettings s = resolve_settings(scene, settings);
-  Trajectory tr = s.engine == "f77" ? run_f77(scene, s) : run_cxx(scene, s);
-  if (!tr.stats.ok())
-    throw SolverError(scene.name + " (" + tr.engine_label + "): " + to_string(tr.stats.status) +
-                      (tr.stats.message.empty() ? "" : ": " + tr.stats.message));
+  Trajectory tr;
+  if (s.engine == "f77")
+    tr = run_f77(scene, s);
+  else
+    tr = scene.rough() ? run_cxx_rough(scene, s) : run_cxx_smooth(scene, s);
+  if (!tr.stats.ok()) {
+    tr.complete = false;
+    if (!s.allow_partial)
+      throw SolverError(scene.name + " (" + tr.engine_label + "): " + to_string(tr.stats.status) +
+                        (tr.stats.message.empty() ? "" : ": " + tr.stats.message));
+  }
   return tr;
 }
 

@@ -35,6 +35,14 @@ namespace nanopush {
 
 inline constexpr int Dynamic = -1;
 
+/// The default step hook: never stops (compiled away).
+struct NoStepHook {
+  template <class S>
+  bool operator()(S, const S*, S, const S*) const noexcept {
+    return false;
+  }
+};
+
 enum class Extrapolation { rational = 1, polynomial = 2 };
 
 /// Status codes, identical to the F77 engine's IERR.
@@ -86,6 +94,8 @@ struct BsResult {
   std::int64_t naccpt = 0;     ///< accepted steps
   std::int64_t nrejct = 0;     ///< rejected steps
   double t_reached = 0;        ///< last time reached
+  bool stopped_by_hook = false;  ///< the step hook asked to stop (an event in (t_reached, t_event_end])
+  double t_event_end = 0;
   std::string message;
   [[nodiscard]] bool ok() const { return status == BsStatus::success; }
 };
@@ -112,6 +122,16 @@ class BulirschStoer {
   /// time reached on return.
   template <class Rhs, class Observer>
   BsResult integrate(Rhs&& rhs, Scalar t0, Scalar* y, std::span<const Scalar> tout, Observer&& observer) {
+    return integrate(std::forward<Rhs>(rhs), t0, y, tout, std::forward<Observer>(observer), NoStepHook{});
+  }
+
+  /// As above, with a hook called after every accepted step, before it is committed:
+  /// hook(t_old, y_old, t_new, y_new) returns true to stop there (an event lies in the
+  /// step). The integration then returns with `stopped_by_hook` set, y = y_old and
+  /// t_reached = t_old, so the caller can locate the event in [t_old, t_new] and restart.
+  template <class Rhs, class Observer, class StepHook>
+  BsResult integrate(Rhs&& rhs, Scalar t0, Scalar* y, std::span<const Scalar> tout, Observer&& observer,
+                     StepHook&& hook) {
     BsResult res;
     res.t_reached = static_cast<double>(t0);
     const int n = n_;
@@ -278,6 +298,15 @@ class BulirschStoer {
         continue;
       }
       // 7.
+      if constexpr (!std::is_same_v<std::decay_t<StepHook>, NoStepHook>) {
+        const Scalar tnew = clipped ? tend : t + h;
+        if (hook(t, static_cast<const Scalar*>(&y_[0]), tnew, static_cast<const Scalar*>(&cur_[kc][0]))) {
+          ++res.naccpt;
+          res.stopped_by_hook = true;
+          res.t_event_end = static_cast<double>(tnew);
+          break;
+        }
+      }
       ++res.naccpt;
       t = clipped ? tend : t + h;
       for (int i = 0; i < n; ++i) y_[i] = cur_[kc][i];

@@ -11,6 +11,16 @@
 
 namespace nanopush {
 
+/// The support surface (models.md §A, §C).
+struct SurfaceSettings {
+  std::string kind = "smooth";  ///< smooth | rough
+  double mu = 0;                ///< Coulomb friction coefficient
+  double f_vdw = 0;             ///< adhesion (Van der Waals) load [N]
+  double g = 9.81;              ///< gravity [m/s^2]
+  double normal_load = 0;       ///< N [N]; 0 = m g + f_vdw
+  std::string law = "thesis";   ///< thesis | coulomb
+};
+
 struct SolverSettings {
   double t_end = 0;            ///< [s]
   int samples = 401;           ///< output times, evenly spaced over [0, t_end], both ends included
@@ -20,12 +30,14 @@ struct SolverSettings {
   std::string method = "faithful";  ///< faithful | modern (C++ engine)
   double h0 = 0;               ///< initial step [s]; 0 = 1% of t_end
   double hmax = 0;             ///< largest step [s]; 0 = none
+  long max_steps = 100000;     ///< attempted steps before giving up
 };
 
 struct Scene {
   std::string name, description;
   std::filesystem::path source;
-  std::string model = "smooth";  ///< surface model: smooth (models.md §A)
+  std::string model = "smooth";  ///< surface model: smooth (models.md §A) or rough (§C)
+  SurfaceSettings surface;
   std::string shape = "bar";
   BarGeometry geometry;          ///< half-width a, half-length b
   double length = 0, width = 0, height = 0;  ///< [m]
@@ -38,10 +50,16 @@ struct Scene {
 
   /// Output times 0, t_end/(samples-1), ..., t_end.
   [[nodiscard]] std::vector<double> output_times() const;
-  /// Natural scale of each state component (length, angle 1, velocity, rate), for atol.
-  [[nodiscard]] std::array<double, kStateSize> state_scales() const;
-  /// Absolute tolerances per component: atol if set, else rtol * state_scales().
-  [[nodiscard]] std::vector<double> atol_vector(double rtol, double atol) const;
+  /// Natural scale of each state component (length, angle 1, velocity, rate, and the work
+  /// accumulators of the rough model, F L), for atol.
+  [[nodiscard]] std::array<double, 8> state_scales() const;
+  /// Absolute tolerances for the first n components: atol if set, else rtol * state_scales().
+  [[nodiscard]] std::vector<double> atol_vector(double rtol, double atol, int n = kStateSize) const;
+  /// Normal load N [N] of a rough scene.
+  [[nodiscard]] double normal_load() const {
+    return surface.normal_load > 0 ? surface.normal_load : mass * surface.g + surface.f_vdw;
+  }
+  [[nodiscard]] bool rough() const { return surface.kind == "rough"; }
 };
 
 /// Parse a scene; throws InputError naming the TOML key, the value and the allowed range.

@@ -23,19 +23,35 @@ using TrajectoryRow = std::array<double, 10>;
 
 struct RunSettings {
   std::string engine = "cxx";       ///< cxx | f77
-  std::string method = "faithful";  ///< faithful | modern (cxx only; f77 is always the thesis algorithm)
+  /// faithful | modern (C++ BS; f77 is always the thesis algorithm) | cvode (SUNDIALS CVODE
+  /// cross-check, rough scenes under the coulomb law only)
+  std::string method = "faithful";
+  /// Rough scenes: friction law override ("" = the scene's): thesis | coulomb
+  std::string law;
+  /// Return what was computed when the integrator gives up (status in stats) instead of
+  /// throwing; used to show where the thesis law chatters.
+  bool allow_partial = false;
   double rtol = 0;                  ///< 0 = the scene's
   double atol = -1;                 ///< < 0 = the scene's (0 = automatic scaling)
   /// Called at each output sample with the fraction done (for progress display).
   std::function<void(double)> progress;
 };
 
+struct StickEventRecord {
+  double t;
+  bool stuck;
+};
+
 struct Trajectory {
-  std::string engine_label;  ///< e.g. "cxx-faithful", "f77"
+  std::string engine_label;  ///< e.g. "cxx-faithful", "f77", "cxx-faithful-coulomb"
   std::vector<TrajectoryRow> rows;
   BsResult stats;
   double rtol = 0;
   std::vector<double> atol;
+  /// Rough scenes: work of the push and of friction from t = 0 to each sample [J].
+  std::vector<double> work_push, work_fric;
+  std::vector<StickEventRecord> events;  ///< coulomb law: instants the body came to rest
+  bool complete = true;                  ///< false when allow_partial kept a failed run
 };
 
 /// Integrate the scene. Throws SolverError when the integrator fails (status and time in

@@ -1,0 +1,82 @@
+!> Bridge to the FORTRAN 77 rough-surface nanobar (fortran/rgbar.f) integrated by the F77
+!> Bulirsch-Stoer driver (fortran/bsint.f). C prototypes, units and shapes: f77_rough.h.
+module nanopush_f77_rough
+  use, intrinsic :: iso_c_binding, only: c_int, c_double
+  implicit none
+  private
+  public :: np_f77_rough_bar_rhs, np_f77_bsint_rough_bar
+
+  interface
+    subroutine bsint(fcn, n, t0, y, nout, tout, yout, rtol, atol, h0, hmax, kmax, iextr, &
+                     maxstp, rpar, ipar, nstat, ierr)
+      interface
+        subroutine fcn(n, t, y, dydt, rpar, ipar, ierr)
+          integer, intent(in) :: n
+          double precision, intent(in) :: t
+          double precision, intent(in) :: y(n)
+          double precision, intent(out) :: dydt(n)
+          double precision, intent(in) :: rpar(*)
+          integer, intent(inout) :: ipar(*)
+          integer, intent(inout) :: ierr
+        end subroutine fcn
+      end interface
+      integer, intent(in) :: n, nout, kmax, iextr, maxstp
+      double precision, intent(in) :: t0, tout(*), rtol, atol(*), h0, hmax
+      double precision, intent(inout) :: y(*)
+      double precision, intent(inout) :: yout(n, *)
+      double precision, intent(in) :: rpar(*)
+      integer, intent(inout) :: ipar(*)
+      integer, intent(out) :: nstat(3), ierr
+    end subroutine bsint
+
+    subroutine rgbar(n, t, y, dydt, rpar, ipar, ierr)
+      integer, intent(in) :: n
+      double precision, intent(in) :: t
+      double precision, intent(in) :: y(n)
+      double precision, intent(out) :: dydt(n)
+      double precision, intent(in) :: rpar(*)
+      integer, intent(inout) :: ipar(*)
+      integer, intent(inout) :: ierr
+    end subroutine rgbar
+  end interface
+
+contains
+
+  !> One evaluation of the F77 rough-bar RHS (8 states, 9 parameters); returns its IERR.
+  integer(c_int) function np_f77_rough_bar_rhs(t, y, dydt, params) bind(C, name="np_f77_rough_bar_rhs")
+    real(c_double), value, intent(in) :: t
+    real(c_double), intent(in) :: y(8)
+    real(c_double), intent(out) :: dydt(8)
+    real(c_double), intent(in) :: params(9)
+    integer :: ipar(1), ierr
+    ipar(1) = 0
+    ierr = 0
+    call rgbar(8, t, y, dydt, params, ipar, ierr)
+    np_f77_rough_bar_rhs = int(ierr, c_int)
+  end function np_f77_rough_bar_rhs
+
+  !> Integrate the F77 rough-bar RHS with BSINT; arguments as np_f77_bsint_smooth_bar.
+  integer(c_int) function np_f77_bsint_rough_bar(n, t0, y, nout, tout, yout, rtol, atol, h0, &
+                                                 hmax, kmax, iextr, maxstp, params, nstat) &
+      bind(C, name="np_f77_bsint_rough_bar")
+    integer(c_int), value, intent(in) :: n, nout, kmax, iextr, maxstp
+    real(c_double), value, intent(in) :: t0, rtol, h0, hmax
+    real(c_double), intent(inout) :: y(*)
+    real(c_double), intent(in) :: tout(*), atol(*)
+    real(c_double), intent(inout) :: yout(*)
+    real(c_double), intent(in) :: params(9)
+    integer(c_int), intent(out) :: nstat(3)
+    integer :: ipar(1), ist(3), ierr
+    nstat = 0_c_int
+    if (n /= 8) then
+      np_f77_bsint_rough_bar = 1_c_int
+      return
+    end if
+    ipar(1) = 0
+    call bsint(rgbar, int(n), t0, y, int(nout), tout, yout, rtol, atol, h0, hmax, int(kmax), &
+               int(iextr), int(maxstp), params, ipar, ist, ierr)
+    nstat = int(ist, c_int)
+    np_f77_bsint_rough_bar = int(ierr, c_int)
+  end function np_f77_bsint_rough_bar
+
+end module nanopush_f77_rough

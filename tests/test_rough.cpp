@@ -1,0 +1,217 @@
+// Rough-surface sliding (models.md §C): invariants, the mu = 0 limit, the two friction laws.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <string>
+
+#include "nanopush/elliptic.hpp"
+#include "nanopush/error.hpp"
+#include "nanopush/simulate.hpp"
+#include "nanopush/stick_slip.hpp"
+
+using namespace nanopush;
+using Catch::Matchers::Contains;
+
+namespace {
+
+Scene preset(int fig) {
+  return load_scene(std::string(NANOPUSH_SOURCE_DIR) + "/drivers/scenes/thesis/fig3_" + std::to_string(fig) + ".toml");
+}
+
+struct Balance {
+  double energy_rel = 0;     // max |dKE - W_push - W_fric| / max(|W_push|)
+  double power_max = -1e300; // max friction power (should be <= 0)
+  double f_over_muN = 0;     // max |f| / (mu N)
+};
+
+Balance balance(const Scene& sc, const Trajectory& tr) {
+  Balance b;
+  const auto& r0 = tr.rows.front();
+  auto ke = [&](const TrajectoryRow& r) {
+    return 0.5 * sc.mass * (r[4] * r[4] + r[5] * r[5]) + 0.5 * sc.inertia * r[6] * r[6];
+  };
+  double wmax = 0;
+  for (double w : tr.work_push) wmax = std::max(wmax, std::fabs(w));
+  const double muN = sc.surface.mu * sc.normal_load();
+  for (std::size_t i = 0; i < tr.rows.size(); ++i) {
+    const auto& r = tr.rows[i];
+    const double lhs = ke(r) - ke(r0), rhs = tr.work_push[i] + tr.work_fric[i];
+    b.energy_rel = std::max(b.energy_rel, std::fabs(lhs - rhs) / wmax);
+    b.power_max = std::max(b.power_max, r[7] * r[4] + r[8] * r[5] + r[9] * r[6]);
+    if (muN > 0) b.f_over_muN = std::max(b.f_over_muN, std::hypot(r[7], r[8]) / muN);
+  }
+  return b;
+}
+
+}  // namespace
+
+TEST_CASE("Rough presets carry the captions' parameters", "[rough][scene]") {
+  for (int fig = 12; fig <= 32; ++fig) {
+    const Scene sc = preset(fig);
+    CHECK(sc.rough());
+    CHECK(sc.surface.mu == Approx((fig - 12) * 0.01).margin(1e-15));
+    CHECK(sc.surface.f_vdw == 0.400252e-4);
+    CHECK(sc.mass == Approx(0.623425e-18).epsilon(1e-12));
+    CHECK(sc.push.force == 5e-6);
+    CHECK(sc.solver.t_end == 1.6e-9);
+  }
+}
+
+TEST_CASE("mu = 0 reproduces the smooth-surface solution", "[rough][numeric]") {
+  Scene sc = preset(12);
+  RunSettings rs;
+  rs.rtol = 1e-12;
+  for (const char* law : {"thesis", "coulomb"}) {
+    rs.law = law;
+    const Trajectory tr = run_scene(sc, rs);
+    const Pendulum<double> ex(sc.push.theta_equilibrium(), 0.0, sc.push.force * sc.push.lever(), sc.inertia);
+    double e = 0;
+    for (const auto& r : tr.rows) {
+      e = std::max(e, std::fabs(r[3] - ex.theta(r[0])));
+      CHECK(r[7] == 0.0);
+      CHECK(r[9] == 0.0);
+    }
+    INFO(law << ": theta error " << e);
+    CHECK(e <= 1e-10);
+  }
+}
+
+TEST_CASE("Energy balance and dissipation on every thesis-law run that does not chatter", "[rough][numeric]") {
+  for (int fig = 12; fig <= 24; ++fig) {  // mu = 0 ... 0.12 < F/N = 0.1249
+    const Scene sc = preset(fig);
+    const Trajectory tr = run_scene(sc);
+    const Balance b = balance(sc, tr);
+    INFO("fig3_" << fig << " energy " << b.energy_rel << " power " << b.power_max << " |f|/muN " << b.f_over_muN
+                 << " nfcn " << tr.stats.nfcn);
+    CHECK(b.energy_rel <= 1e-8);
+    CHECK(b.power_max <= 0.0);
+    CHECK(b.f_over_muN <= 1.0 + 1e-12);
+  }
+}
+
+TEST_CASE("Coulomb law: energy balance, dissipation, no chattering, exact rest", "[rough][numeric][coulomb]") {
+  RunSettings rs;
+  rs.law = "coulomb";
+  const Trajectory ref = run_scene(preset(17), rs);  // mu = 0.05
+  const long n_ref = static_cast<long>(ref.stats.nfcn);
+  for (double mu : {0.05, 0.10, 0.13, 0.15, 0.20, 0.5, 1.0}) {
+    Scene sc = preset(12);
+    sc.surface.mu = mu;
+    const Trajectory tr = run_scene(sc, rs);
+    const Balance b = balance(sc, tr);
+    INFO("mu " << mu << " nfcn " << tr.stats.nfcn << " (mu 0.05: " << n_ref << ") events " << tr.events.size()
+               << " energy " << b.energy_rel << " power " << b.power_max);
+    CHECK(b.energy_rel <= 1e-8);
+    CHECK(b.power_max <= 0.0);
+    CHECK(b.f_over_muN <= 1.0 + 1e-12);
+    CHECK(tr.stats.nfcn <= 3 * n_ref);
+    // After a stick event the body is exactly at rest.
+    for (const auto& ev : tr.events) {
+      if (!ev.stuck) continue;
+      for (const auto& r : tr.rows) {
+        if (r[0] < ev.t) continue;
+        CHECK(r[4] == 0.0);
+        CHECK(r[5] == 0.0);
+        CHECK(r[6] == 0.0);
+      }
+    }
+  }
+}
+
+TEST_CASE("Coulomb law: the CVODE cross-check agrees to 1e-8", "[rough][coulomb][crosscheck]") {
+  for (double mu : {0.05, 0.15, 0.5}) {
+    Scene sc = preset(12);
+    sc.surface.mu = mu;
+    RunSettings a, b;
+    a.law = b.law = "coulomb";
+    a.rtol = b.rtol = 1e-11;
+    b.method = "cvode";
+    const Trajectory ta = run_scene(sc, a), tb = run_scene(sc, b);
+    REQUIRE(ta.rows.size() == tb.rows.size());
+    double dth = 0, dx = 0;
+    for (std::size_t i = 0; i < ta.rows.size(); ++i) {
+      dth = std::max(dth, std::fabs(ta.rows[i][3] - tb.rows[i][3]));
+      dx = std::max(dx, std::fabs(ta.rows[i][1] - tb.rows[i][1]) / 1e-7);
+    }
+    INFO("mu " << mu << ": max |dtheta| " << dth << " rad, max |dx|/L " << dx << "; events " << ta.events.size()
+               << " vs " << tb.events.size());
+    CHECK(dth <= 1e-8);
+    CHECK(dx <= 1e-8);
+    CHECK(ta.events.size() == tb.events.size());
+  }
+}
+
+TEST_CASE("At rest: stick inside the limit surface, slide by Gauss' principle outside", "[rough][unit][coulomb]") {
+  const Scene sc = preset(27);  // mu = 0.15
+  RoughBarModel m;
+  m.mass = sc.mass;
+  m.inertia = sc.inertia;
+  m.geometry = sc.geometry;
+  m.muN = 0.15 * sc.normal_load();
+  SECTION("a push through the CM below mu N sticks") {
+    m.push = Push{0.5 * m.muN, 0.3, 0.0, 0.0};
+    const RestAnalysis r = analyse_rest(m, 0.0);
+    CHECK(r.stuck);
+    CHECK(r.margin <= 0.0);
+  }
+  SECTION("a push through the CM above mu N slides straight, a = (F - mu N)/m") {
+    m.push = Push{2.0 * m.muN, 0.0, 0.0, 0.0};
+    const RestAnalysis r = analyse_rest(m, 0.0);
+    REQUIRE_FALSE(r.stuck);
+    CHECK(r.accel[0] == Approx(m.muN / m.mass).epsilon(1e-9));
+    CHECK(std::fabs(r.accel[1]) <= 1e-9 * r.accel[0]);
+    CHECK(std::fabs(r.accel[2]) * 5e-8 <= 1e-9 * r.accel[0]);
+  }
+  SECTION("the thesis push at theta = 0 turns the bar: M A = W + F(A) holds") {
+    m.push = sc.push;
+    const RestAnalysis r = analyse_rest(m, 0.0);
+    REQUIRE_FALSE(r.stuck);
+    const WorldWrench ap = m.applied(0.0);
+    const WorldWrench fr = m.friction(0.0, r.accel[0], r.accel[1], r.accel[2]);
+    CHECK(m.mass * r.accel[0] == Approx(ap.fx + fr.fx).epsilon(1e-6));
+    CHECK(m.mass * r.accel[1] == Approx(ap.fy + fr.fy).margin(1e-6 * m.muN));
+    CHECK(m.inertia * r.accel[2] == Approx(ap.mf + fr.mf).margin(1e-6 * m.muN * 5e-8));
+  }
+}
+
+TEST_CASE("Friction is continuous through omega = 0 while the bar slides (no switch there)", "[rough][unit]") {
+  const Scene sc = preset(17);
+  RoughBarModel m;
+  m.geometry = sc.geometry;
+  m.muN = 1.0;
+  const WorldWrench f0 = m.friction(0.3, 5.0, 1.0, 0.0);
+  for (double om : {1e-3, -1e-3, 1e-6, -1e-6}) {
+    const WorldWrench f = m.friction(0.3, 5.0, 1.0, om);
+    CHECK(std::fabs(f.fx - f0.fx) <= 1e-9 * std::fabs(om) * 1e6);
+    CHECK(std::fabs(f.fy - f0.fy) <= 1e-9 * std::fabs(om) * 1e6);
+    CHECK(std::fabs(f.mf) <= 1e-12 * std::fabs(om) * 1e6);
+  }
+}
+
+TEST_CASE("Bad rough scenes are rejected clearly", "[rough][scene]") {
+  const std::string base = R"(
+[object]
+length = 100e-9
+width = 55e-9
+mass = 6e-19
+[push]
+force = 5e-6
+xn = 27.5e-9
+yn = 45e-9
+[surface]
+kind = "rough"
+mu = 0.1
+[solver]
+t_end = 1e-9
+)";
+  auto with = [&](const std::string& a, const std::string& b) {
+    std::string s = base;
+    s.replace(s.find(a), a.size(), b);
+    return s;
+  };
+  CHECK_THROWS_WITH(parse_scene(with("mu = 0.1", "mu = -0.1"), "s"), Contains("surface.mu = -0.1") && Contains("[0, 10]"));
+  CHECK_THROWS_WITH(parse_scene(with("mass = 6e-19", "mass = 0"), "s"), Contains("object.mass = 0: must be > 0"));
+  CHECK_THROWS_WITH(parse_scene(with("xn = 27.5e-9", "xn = 40e-9"), "s"), Contains("push.xn = 4") && Contains("on the body"));
+  CHECK_THROWS_WITH(parse_scene(with("mu = 0.1", "mu = 0.1\nlaw = \"stribeck\""), "s"), Contains("surface.law"));
+  CHECK_THROWS_WITH(parse_scene(with("mu = 0.1", "mu = 0.1\nf_vdw = -1"), "s"), Contains("surface.f_vdw = -1"));
+}
