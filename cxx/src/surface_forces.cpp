@@ -322,6 +322,14 @@ double hertz_pressure(double R, double Estar, double F, double x) {
   return 3.0 * F * std::sqrt(1.0 - x * x) / (2.0 * kPi * a * a);
 }
 
+double hertz_line_half_width(double R, double Estar, double p) {
+  count(Model::hertz);
+  require_positive("radius R", R, "m");
+  require_positive("effective modulus E*", Estar, "Pa");
+  require_nonnegative("load per length p", p, "N/m");
+  return std::sqrt(4.0 * p * R / (kPi * Estar));
+}
+
 double jkr_line_load_per_length(double R, double Estar, double W, double b) {
   count(Model::jkr_line);
   check_contact(R, Estar, W);

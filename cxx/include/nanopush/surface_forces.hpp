@@ -186,6 +186,11 @@ double hertz_displacement(double Reff, double Estar, double F);
 /// Hertz pressure 3 F (1-x^2)^(1/2) / (2 pi a^2) [Pa] (eq 2.59), x = r/a in [0, 1].
 double hertz_pressure(double Reff, double Estar, double F, double x);
 
+/// Hertz line contact (cylinder on a plane, no adhesion): half-width
+/// b = sqrt(4 p R / (pi E*)) [m] for a load per length p >= 0 [N/m] (Johnson, Contact
+/// Mechanics, eq 4.43; the W = 0 limit of the JKR line relation below).
+double hertz_line_half_width(double R, double Estar, double p);
+
 /// JKR line contact of a cylinder (radius R, length L) on a plane (thesis section 3.3, its
 /// ref [72]; Barquins 1988, Chaudhury et al. 1996): half-width b [m] under an external load
 /// per unit length p [N/m] (compressive positive):
