@@ -514,4 +514,27 @@ const std::vector<Table31Row>& thesis_table_3_1() {
   return t;
 }
 
+namespace {
+double round_to(double v, int decimals) {
+  const double s = std::pow(10.0, decimals);
+  return std::round(v * s) / s;
+}
+}  // namespace
+
+Table31Check check_table_3_1_row(const Table31Row& row) {
+  Table31Check c;
+  c.gamma_old = surface_energy_from_hamaker(row.A);
+  c.gamma_corrected = surface_energy_corrected(row.A);
+  c.gamma_corrected_exact = surface_energy_from_hamaker(row.A, 0.4e-9 / 2.5);
+  c.old_exact = round_to(c.gamma_old * 1e3, row.old_decimals) == row.old_printed;
+  const double halfA = 0.5 * std::pow(10.0, -row.A_decimals) * 1e-20;
+  const double lo = surface_energy_from_hamaker(row.A - halfA) * 1e3;
+  const double hi = surface_energy_from_hamaker(row.A + halfA) * 1e3;
+  const double half_old = 0.5 * std::pow(10.0, -row.old_decimals);
+  c.old_within_A_rounding = hi >= row.old_printed - half_old && lo <= row.old_printed + half_old;
+  c.corrected_exact = round_to(c.gamma_corrected * 1e3, 4) == round_to(row.corrected_printed, 4);
+  c.corrected_unrounded = round_to(c.gamma_corrected_exact * 1e3, 4) == round_to(row.corrected_printed, 4);
+  return c;
+}
+
 }  // namespace nanopush::forces

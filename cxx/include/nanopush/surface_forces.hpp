@@ -280,4 +280,17 @@ struct Table31Row {
 };
 const std::vector<Table31Row>& thesis_table_3_1();
 
+/// Our values for one Table 3.1 row and how they compare with the printed digits.
+struct Table31Check {
+  double gamma_old = 0;              ///< A/(24 pi (0.165 nm)^2) [J/m^2]
+  double gamma_corrected = 0;        ///< A/1.9302e-18 [J/m^2]
+  double gamma_corrected_exact = 0;  ///< A/(24 pi (0.16 nm)^2), the unrounded factor [J/m^2]
+  bool old_exact = false;            ///< printed old == ours rounded to the printed digits
+  /// Some A' that rounds to the printed A gives the printed old value (interval test).
+  bool old_within_A_rounding = false;
+  bool corrected_exact = false;      ///< printed == A/1.9302e-18 to the 4 printed decimals
+  bool corrected_unrounded = false;  ///< printed == A/(24 pi (0.16 nm)^2) to 4 decimals
+};
+Table31Check check_table_3_1_row(const Table31Row& row);
+
 }  // namespace nanopush::forces
