@@ -1,6 +1,7 @@
 // Scene environment and bodies; normal-load assembly from only the models a scene needs.
 #include "nanopush/environment.hpp"
 
+#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <iomanip>
@@ -15,6 +16,23 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
+/// Shortest round-trip text of a double (the value as the user typed it, e.g. 1e-20).
+std::string sfmt(double v) {
+  char buf[64];
+  auto res = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, res.ptr);
+}
+void need_positive(const std::string& field, double v, const std::string& unit) {
+  if (!(v > 0.0) || !std::isfinite(v)) throw InputError(field, sfmt(v), "must be > 0 (" + unit + ")");
+}
+void need_nonnegative(const std::string& field, double v, const std::string& unit) {
+  if (!(v >= 0.0) || !std::isfinite(v)) throw InputError(field, sfmt(v), "must be >= 0 (" + unit + ")");
+}
+void need_range(const std::string& field, double v, double lo, double hi, const std::string& unit = "") {
+  if (!(v >= lo && v <= hi))
+    throw InputError(field, sfmt(v), "must be in [" + sfmt(lo) + ", " + sfmt(hi) + "]" + (unit.empty() ? "" : " (" + unit + ")"));
+}
+
 std::string node_text(const toml::node& n) {
   std::ostringstream s;
   if (auto str = n.value<std::string>()) {
@@ -28,7 +46,7 @@ std::string node_text(const toml::node& n) {
   } else if (auto i = n.value<std::int64_t>(); i && n.is_integer()) {
     s << *i;
   } else if (auto d = n.value<double>()) {
-    s << fmt(*d);
+    s << sfmt(*d);
   } else {
     s << "(value)";
   }
@@ -67,7 +85,7 @@ class Fields {
     auto v = number(key);
     if (!v && !dflt) throw InputError(field(key), "(missing)", "required, must be > 0 (" + unit + ")");
     const double x = v ? *v : *dflt;
-    require_positive(field(key), x, unit);
+    need_positive(field(key), x, unit);
     return x;
   }
   [[nodiscard]] std::optional<std::string> string(std::string_view key) const {
@@ -116,11 +134,11 @@ forces::Material parse_material(const Fields& f, bool need_density) {
   } else {
     m.name = "custom";
   }
-  if (auto v = f.number("density")) { require_positive(f.field("density"), *v, "kg/m^3"); m.density = *v; }
-  if (auto v = f.number("hamaker")) { require_nonnegative(f.field("hamaker"), *v, "J"); m.hamaker = *v; }
-  if (auto v = f.number("youngs_modulus")) { require_nonnegative(f.field("youngs_modulus"), *v, "Pa"); m.youngs_modulus = *v; }
-  if (auto v = f.number("poisson_ratio")) { require_range(f.field("poisson_ratio"), *v, -1.0, 0.5); m.poisson_ratio = *v; }
-  if (auto v = f.number("surface_energy")) { require_nonnegative(f.field("surface_energy"), *v, "J/m^2"); m.surface_energy = *v; }
+  if (auto v = f.number("density")) { need_positive(f.field("density"), *v, "kg/m^3"); m.density = *v; }
+  if (auto v = f.number("hamaker")) { need_nonnegative(f.field("hamaker"), *v, "J"); m.hamaker = *v; }
+  if (auto v = f.number("youngs_modulus")) { need_nonnegative(f.field("youngs_modulus"), *v, "Pa"); m.youngs_modulus = *v; }
+  if (auto v = f.number("poisson_ratio")) { need_range(f.field("poisson_ratio"), *v, -1.0, 0.5); m.poisson_ratio = *v; }
+  if (auto v = f.number("surface_energy")) { need_nonnegative(f.field("surface_energy"), *v, "J/m^2"); m.surface_energy = *v; }
   if (!named) {
     if (need_density && !f.has("density"))
       throw InputError(f.field("density"), "(missing)", "required when no material is named, must be > 0 (kg/m^3)");
@@ -154,11 +172,11 @@ forces::Liquid parse_liquid_node(const toml::node& n, const std::string& path) {
     for (const char* k : {"density", "hamaker", "surface_tension", "molar_volume"})
       if (!f.has(k)) throw InputError(f.field(k), "(missing)", "required when no liquid name is given");
   }
-  if (auto v = f.number("density")) { require_nonnegative(f.field("density"), *v, "kg/m^3"); l.density = *v; }
-  if (auto v = f.number("hamaker")) { require_nonnegative(f.field("hamaker"), *v, "J"); l.hamaker = *v; }
-  if (auto v = f.number("surface_tension")) { require_positive(f.field("surface_tension"), *v, "N/m"); l.surface_tension = *v; }
-  if (auto v = f.number("molar_volume")) { require_positive(f.field("molar_volume"), *v, "m^3/mol"); l.molar_volume = *v; }
-  if (auto v = f.number("contact_angle")) { require_range(f.field("contact_angle"), *v, 0.0, forces::kPi / 2, "rad"); l.contact_angle = *v; }
+  if (auto v = f.number("density")) { need_nonnegative(f.field("density"), *v, "kg/m^3"); l.density = *v; }
+  if (auto v = f.number("hamaker")) { need_nonnegative(f.field("hamaker"), *v, "J"); l.hamaker = *v; }
+  if (auto v = f.number("surface_tension")) { need_positive(f.field("surface_tension"), *v, "N/m"); l.surface_tension = *v; }
+  if (auto v = f.number("molar_volume")) { need_positive(f.field("molar_volume"), *v, "m^3/mol"); l.molar_volume = *v; }
+  if (auto v = f.number("contact_angle")) { need_range(f.field("contact_angle"), *v, 0.0, forces::kPi / 2, "rad"); l.contact_angle = *v; }
   return l;
 }
 
@@ -201,9 +219,9 @@ Environment parse_environment(const toml::table& t, std::string_view path) {
   else throw InputError(f.field("medium"), "\"" + medium + "\"", "must be one of: vacuum, humid_air, liquid");
 
   if (auto h = f.number("humidity")) {
-    require_range(f.field("humidity"), *h, 0.0, 1.0);
+    need_range(f.field("humidity"), *h, 0.0, 1.0);
     if (e.medium != Medium::humid_air)
-      throw InputError(f.field("humidity"), fmt(*h), "only allowed with medium = \"humid_air\"");
+      throw InputError(f.field("humidity"), sfmt(*h), "only allowed with medium = \"humid_air\"");
     e.humidity = *h;
   } else if (e.medium == Medium::humid_air) {
     throw InputError(f.field("humidity"), "(missing)", "required with medium = \"humid_air\", must be in [0, 1]");
@@ -217,13 +235,13 @@ Environment parse_environment(const toml::table& t, std::string_view path) {
     throw InputError(f.field("liquid"), "(missing)", "required with medium = \"liquid\" (known: " + liquid_names() + ")");
   }
   if (auto v = f.number("contact_angle")) {
-    require_range(f.field("contact_angle"), *v, 0.0, forces::kPi / 2, "rad");
+    need_range(f.field("contact_angle"), *v, 0.0, forces::kPi / 2, "rad");
     e.liquid.contact_angle = *v;
   }
   e.adhesion = f.boolean("adhesion").value_or(true);
   e.gap = f.positive("gap", "m", e.gap);
   if (auto g = f.number("gravity")) {
-    require_nonnegative(f.field("gravity"), *g, "m/s^2");
+    need_nonnegative(f.field("gravity"), *g, "m/s^2");
     e.gravity = *g;
   }
   if (const toml::node* n = f.node("substrate")) {
@@ -272,9 +290,9 @@ Body parse_body(const toml::table& t, std::string_view path) {
     b.radius = f.positive("radius", "m");
     b.length = f.positive("length", "m");
     if (auto ri = f.number("inner_radius")) {
-      require_nonnegative(f.field("inner_radius"), *ri, "m");
+      need_nonnegative(f.field("inner_radius"), *ri, "m");
       if (!(*ri < b.radius))
-        throw InputError(f.field("inner_radius"), fmt(*ri), "must be < radius = " + fmt(b.radius) + " (m)");
+        throw InputError(f.field("inner_radius"), sfmt(*ri), "must be < radius = " + sfmt(b.radius) + " (m)");
       b.inner_radius = *ri;
     }
   } else if (*shape == "sphere") {
@@ -491,22 +509,32 @@ LoadReport assemble_normal_load(const Environment& env, const Body& body, const 
     return a;
   };
 
-  // Pass 1: everything evaluated; pass 2: drop negligible external terms and redo contact.
+  // Pass 1: everything evaluated. Pass 2: drop the external terms below the threshold and
+  // redo the contact; the drop stands only if N and the sliding load change by less than the
+  // threshold too (the contact model can amplify a change of the external load).
   r.contact_half_width = contact(external_sum(false));
-  double N_all = external_sum(false) + (adh.status == TermStatus::evaluated ? adh.value : 0.0);
+  const double adh_all = adh.status == TermStatus::evaluated ? adh.value : 0.0;
+  const double sliding_all = external_sum(false);
+  const double N_all = sliding_all + adh_all;
+  const double a_all = r.contact_half_width;
   r.drop_threshold = opt.drop_negligible ? opt.drop_fraction * opt.rtol * std::abs(N_all) : 0.0;
-  bool dropped_any = false;
-  for (auto* t : external) {
-    if (t->status == TermStatus::evaluated && std::abs(t->value) < r.drop_threshold) {
-      t->status = TermStatus::dropped;
-      t->note = "|value| < drop_fraction * rtol * N";
-      dropped_any = true;
+  std::vector<LoadTerm*> candidates;
+  for (auto* t : external)
+    if (t->status == TermStatus::evaluated && std::abs(t->value) < r.drop_threshold) candidates.push_back(t);
+  if (!candidates.empty()) {
+    for (auto* t : candidates) t->status = TermStatus::dropped;
+    r.contact_half_width = contact(external_sum(true));
+    const double N_red = external_sum(true) + (adh.status == TermStatus::evaluated ? adh.value : 0.0);
+    if (std::abs(N_red - N_all) < r.drop_threshold && std::abs(external_sum(true) - sliding_all) < r.drop_threshold) {
+      for (auto* t : candidates) t->note = "|effect on N| < drop_fraction * rtol * N";
+    } else {
+      for (auto* t : candidates) {
+        t->status = TermStatus::evaluated;
+        t->note = "below the threshold, kept: the contact model amplifies its effect on N";
+      }
+      r.contact_half_width = contact(external_sum(false));
+      (void)a_all;
     }
-  }
-  if (dropped_any) r.contact_half_width = contact(external_sum(true));
-  if (adh.status == TermStatus::evaluated && std::abs(adh.value) < r.drop_threshold) {
-    adh.status = TermStatus::dropped;
-    adh.note = "|value| < drop_fraction * rtol * N";
   }
 
   r.sliding_load = external_sum(true);
