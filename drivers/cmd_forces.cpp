@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <sstream>
 
 #include "f77_rolling.h"
@@ -24,7 +25,7 @@ namespace nf = nanopush::forces;
 struct Options {
   std::string scene;
   std::string medium = "vacuum";
-  double humidity = -1.0;  // < 0: not given
+  double humidity = std::numeric_limits<double>::quiet_NaN();  // NaN: not given
   std::string liquid;
   bool no_adhesion = false;
   double gap = 0.2e-9;
@@ -40,7 +41,7 @@ struct Options {
 toml::table options_to_tables(const Options& o, toml::table& body) {
   toml::table env;
   env.insert("medium", o.medium);
-  if (o.humidity >= 0.0 || o.medium == "humid_air") env.insert("humidity", o.humidity);
+  if (!std::isnan(o.humidity)) env.insert("humidity", o.humidity);
   if (!o.liquid.empty()) env.insert("liquid", o.liquid);
   if (o.no_adhesion) env.insert("adhesion", false);
   env.insert("gap", o.gap);
@@ -140,6 +141,8 @@ int run_forces(const Options& o) {
                 << rolling::motion_name(d.motion) << " (rolling threshold W k/r = " << d.F_roll
                 << " N, sliding threshold mu N = " << d.F_slide << " N, static friction needed for pure rolling "
                 << d.fs_required << " N)\n";
+    } else if (o.push >= 0.0) {
+      std::cout << "(--push: the rolling-vs-sliding decision applies to rods and tubes only)\n";
     }
   }
   return 0;
