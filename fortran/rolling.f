@@ -131,7 +131,7 @@ C     bisection on [S*, SHI].
       IF (.NOT. (R .GT. 0.0D0)) RETURN
       IF (.NOT. (ES .GT. 0.0D0)) RETURN
       IF (.NOT. (W .GE. 0.0D0)) RETURN
-      IF (.NOT. (ABS(P) .LE. HUGE(P))) RETURN
+      IF (.NOT. (ABS(P) .LE. 1.0D300)) RETURN
       AL = PI*ES/(4.0D0*R)
       BE = SQRT(2.0D0*PI*ES*W)
       SMIN = (BE/(4.0D0*AL))**(1.0D0/3.0D0)

@@ -33,3 +33,12 @@ set_tests_properties(cli.forces.bad_option_exit PROPERTIES WILL_FAIL TRUE)
 add_test(NAME cli.forces.reproduce
          COMMAND $<TARGET_FILE:nanopush> reproduce --quick --only table3_1 --only fig3_3 --only fig3_4
                  --out ${CMAKE_CURRENT_BINARY_DIR}/cli_forces_reproduce)
+
+add_test(NAME cli.forces.bar COMMAND $<TARGET_FILE:nanopush> forces --shape bar --length 100e-9 --width 55e-9
+         --height 50e-9)
+set_tests_properties(cli.forces.bar PROPERTIES
+  PASS_REGULAR_EXPRESSION "van_der_waals +flat-flat[^\n]*evaluated.*contact half-width = 2.75e-08 m")
+
+add_test(NAME cli.forces.liquid COMMAND $<TARGET_FILE:nanopush> forces --medium liquid --liquid water --no-drop)
+set_tests_properties(cli.forces.liquid PROPERTIES
+  PASS_REGULAR_EXPRESSION "buoyancy +-rho_liquid V g[^\n]*evaluated.*capillary[^\n]*not needed")

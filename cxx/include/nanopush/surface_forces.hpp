@@ -158,6 +158,8 @@ double effective_modulus(double E1, double nu1, double E2, double nu2);
 /// Derjaguin adhesion of rigid spheres: F = 2 pi Reff W [N] (eq 2.45); sphere-flat in
 /// vacuum, like materials: 2 pi R (2 gamma) = 4 pi R gamma (eq 2.48). Also the DMT pull-off.
 double derjaguin_adhesion_force(double Reff, double W);
+/// DMT pull-off force 2 pi R W [N]: the Derjaguin force of a rigid sphere (same formula).
+inline double dmt_pull_off_force(double Reff, double W) { return derjaguin_adhesion_force(Reff, W); }
 
 /// JKR contact radius a [m] of a sphere (Reff) under external load F [N] (positive
 /// compressive, may be negative down to the pull-off), eq 2.50:
