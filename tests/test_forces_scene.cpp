@@ -189,3 +189,22 @@ TEST_CASE("Dropping a negligible term changes N and the trajectory by less than 
   tight.drop_fraction = 1e-4;
   CHECK(assemble_normal_load(e, b, tight).term("gravity").status == TermStatus::evaluated);
 }
+
+TEST_CASE("A bar evaluates no contact-adhesion model; a rigid sphere uses Derjaguin", "[forces][scene]") {
+  nf::model_counters().reset();
+  const LoadReport bar = assemble_normal_load(env_of("medium = \"vacuum\""),
+                                              body_of("shape = \"bar\"\nmaterial = \"graphite\"\nlength = 100e-9\nwidth = 55e-9\nheight = 50e-9"));
+  CHECK(nf::model_counters()[nf::Model::surface_surface_vdw] == 1);
+  CHECK(nf::model_counters()[nf::Model::dupre] == 0);
+  CHECK(nf::model_counters()[nf::Model::surface_energy] == 0);
+  CHECK(bar.term("contact_adhesion").status == TermStatus::not_needed);
+  CHECK(bar.contact_half_width == 27.5e-9);
+  // Rigid sphere (Young's modulus 0): Derjaguin 2 pi R W, W = 2 gamma.
+  const Body s = body_of("shape = \"sphere\"\nradius = 10e-9\ndensity = 1000.0\nhamaker = 1e-19\nsurface_energy = 0.05");
+  nf::model_counters().reset();
+  const LoadReport r = assemble_normal_load(env_of("medium = \"vacuum\""), s);
+  CHECK(nf::model_counters()[nf::Model::derjaguin] == 1);
+  CHECK(nf::model_counters()[nf::Model::jkr] == 0);
+  CHECK(r.term("contact_adhesion").value == Approx(2 * nf::kPi * 10e-9 * 0.1).epsilon(1e-15));
+  CHECK(r.contact_half_width == 0.0);
+}

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <iomanip>
 #include <limits>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -382,7 +383,24 @@ LoadReport assemble_normal_load(const Environment& env, const Body& body, const 
   LoadTerm vdw = make("van_der_waals", "-");
   LoadTerm cap = make("capillary", "-");
   LoadTerm adh = make("contact_adhesion", "-");
-  double W = 0.0;  // work of adhesion used by the contact model
+  // Work of adhesion, evaluated only when a contact model asks for it (never for bars or
+  // rigid cylinders): vacuum/humid air W12 = 2 sqrt(g1 g2) (2.35, = 2 gamma for like solids);
+  // in a liquid W132 = 2 A132 / 1.9302e-18 (eq 3.9 applied to A132).
+  std::optional<double> W_cache;
+  auto work_of_adhesion = [&]() {
+    if (!W_cache) {
+      auto gamma_of = [](const forces::Material& m) {
+        return std::isnan(m.surface_energy) ? forces::surface_energy_corrected(m.hamaker) : m.surface_energy;
+      };
+      if (in_liquid) {
+        W_cache = r.hamaker > 0.0 ? 2.0 * forces::surface_energy_corrected(r.hamaker) : 0.0;
+      } else {
+        W_cache = forces::work_of_adhesion_dispersion(gamma_of(mb), gamma_of(ms));
+      }
+      r.work_of_adhesion = *W_cache;
+    }
+    return *W_cache;
+  };
   if (!env.adhesion) {
     vdw.note = cap.note = adh.note = "scene without adhesion";
   } else {
@@ -407,17 +425,6 @@ LoadReport assemble_normal_load(const Environment& env, const Body& body, const 
     }
     vdw.status = TermStatus::evaluated;
 
-    // Work of adhesion: vacuum/humid air W12 = 2 sqrt(g1 g2) (2.35, = 2 gamma for like
-    // solids); in a liquid W132 = 2 A132 / 1.9302e-18 (eq 3.9 applied to A132).
-    auto gamma_of = [](const forces::Material& m) {
-      return std::isnan(m.surface_energy) ? forces::surface_energy_corrected(m.hamaker) : m.surface_energy;
-    };
-    if (in_liquid) {
-      W = A > 0.0 ? 2.0 * forces::surface_energy_corrected(A) : 0.0;
-    } else {
-      W = forces::work_of_adhesion_dispersion(gamma_of(mb), gamma_of(ms));
-    }
-    r.work_of_adhesion = W;
 
     if (humid) {
       const auto& L = env.liquid;
@@ -469,19 +476,18 @@ LoadReport assemble_normal_load(const Environment& env, const Body& body, const 
     }
     if (!elastic) {
       r.contact_model = "rigid (no Young's modulus): point/line contact";
-      if (env.adhesion && W > 0.0) {
-        if (body.shape == Shape::sphere) {
-          adh.model = "Derjaguin/DMT 2 pi R W (2.45)";
-          adh.value = forces::derjaguin_adhesion_force(body.radius, W);
-          adh.status = TermStatus::evaluated;
-        } else {
-          adh.note = "rigid cylinder: line adhesion needs an elastic contact model";
-        }
+      if (env.adhesion && body.shape == Shape::sphere && work_of_adhesion() > 0.0) {
+        adh.model = "Derjaguin/DMT 2 pi R W (2.45)";
+        adh.value = forces::derjaguin_adhesion_force(body.radius, work_of_adhesion());
+        adh.status = TermStatus::evaluated;
+      } else if (env.adhesion && body.shape != Shape::sphere) {
+        adh.note = "rigid cylinder: line adhesion needs an elastic contact model";
       }
       return 0.0;
     }
     const double Es = forces::effective_modulus(mb.youngs_modulus, mb.poisson_ratio, ms.youngs_modulus, ms.poisson_ratio);
-    if (env.adhesion && W > 0.0) {
+    if (env.adhesion && work_of_adhesion() > 0.0) {
+      const double W = work_of_adhesion();
       if (body.shape == Shape::sphere) {
         r.contact_model = "JKR sphere (2.50)";
         a = forces::jkr_contact_radius(body.radius, Es, W, P);
