@@ -72,12 +72,14 @@ void render(const Figure& fig, const std::filesystem::path& png) {
     b << "set multiplot layout " << fig.rows << "," << fig.cols;
     if (!fig.title.empty()) b << " title " << quote(fig.title);
     b << "\n";
-  } else if (!fig.title.empty() && !fig.panels.empty() && fig.panels[0].title.empty()) {
-    b << "set title " << quote(fig.title) << "\n";
   }
+  const bool single = fig.rows * fig.cols <= 1;
   for (const auto& p : fig.panels) {
     b << "reset session\nset datafile separator ','\nset grid\nset key\n";
-    if (!p.title.empty()) b << "set title " << quote(p.title) << "\n";
+    if (!p.title.empty())
+      b << "set title " << quote(p.title) << "\n";
+    else if (single && !fig.title.empty())
+      b << "set title " << quote(fig.title) << "\n";
     b << "set xlabel " << quote(p.xlabel) << "\nset ylabel " << quote(p.ylabel) << "\n";
     if (p.logx) b << "set logscale x\nset format x '10^{%L}'\n";
     if (p.logy) b << "set logscale y\nset format y '10^{%L}'\n";
