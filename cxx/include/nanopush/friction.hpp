@@ -111,11 +111,13 @@ inline constexpr double kGl12w[6] = {0.2491470458134027850005624, 0.233492536538
                                      0.1069393259953184309602547, 0.04717533638651182719461596};
 
 /// Form 2: far field. Point-symmetrised integrands at (x, y) and (-x, -y):
-///   (u(+) + u(-))/2 for the unit vector u = (X, Y)/r, and for the moment
-///   (x^2 + y^2)(1/r+ + 1/r-)/2 - 2 (x Xc + y Yc)^2 / (r+ r- (r+ + r-)),
-/// which is the even part of (x X + y Y)/r written without cancellation.
+///   u(+) + u(-) for the unit vector u = (X, Y)/r, and for the moment integrand
+///   h = (x X + y Y)/r, with d = x Xc + y Yc, e = x Yc - y Xc, rho^2 = x^2 + y^2, R = |(Xc, Yc)|,
+///   h(+) + h(-) = e^2/R^2 (1/r+ + 1/r-) + 8 d^2 e^2 / (R^2 r+ r- (r+ + r-)(r+ r- + R^2 - rho^2)),
+/// a sum of non-negative terms (the O(R) odd part of h cancels analytically).
 /// Requires the rectangle well away from the iCOR (rho >= kFrictionFarField).
 inline MeanIntegrals far_field(double a, double b, double xc, double yc) noexcept {
+  const double r = std::sqrt(xc * xc + yc * yc), inv_r2 = 1.0 / (r * r);
   double sx = 0.0, sy = 0.0, sk = 0.0;
   for (int i = 0; i < 6; ++i) {
     const double x = a * kGl12x[i];
@@ -126,10 +128,15 @@ inline MeanIntegrals far_field(double a, double b, double xc, double yc) noexcep
       const double xp = xc + x, yp = yc + y, xm = xc - x, ym = yc - y;
       const double rp = std::sqrt(xp * xp + yp * yp), rm = std::sqrt(xm * xm + ym * ym);
       const double ip = 1.0 / rp, im = 1.0 / rm;
-      const double d = x * xc + y * yc;
+      const double d = x * xc + y * yc, e = x * yc - y * xc;  // rho.c and rho x c
+      const double rho = std::sqrt(x * x + y * y);
+      const double rr = rp * rm;
       tx += wy * (xp * ip + xm * im);
       ty += wy * (yp * ip + ym * im);
-      tk += wy * ((x * x + y * y) * (ip + im) - 4.0 * d * d * ip * im / (rp + rm));
+      // h(+) + h(-) = e^2/R^2 (1/r+ + 1/r-) + 8 d^2 e^2 / (R^2 r+ r- (r+ + r-)(r+ r- + R^2 - rho^2)):
+      // both terms >= 0, so no cancellation at any orientation (docs/friction.md).
+      const double ee = e * e * inv_r2;
+      tk += wy * (ee * (ip + im) + 8.0 * d * d * ee / (rr * (rp + rm) * (rr + (r - rho) * (r + rho))));
     }
     sx += kGl12w[i] * tx;
     sy += kGl12w[i] * ty;

@@ -18,16 +18,18 @@ struct FrictionCubatureResult {
   bool converged = false;
 };
 
-/// Uniform pressure. The y' integral is done analytically (1-D antiderivatives of X/r, Y/r and
-/// (x X + y Y)/r, not the 2-D corner form), the x' integral by adaptive GK15 with a break point
-/// at the iCOR's x'. tol: absolute tolerance on f/muN and on mf/(muN max(a, b)).
+/// Uniform pressure: nested adaptive GK15 in x' and y' over the half rectangle x' >= 0 of the
+/// point-symmetrised integrands (the contributions of (x', y') and (-x', -y') are summed
+/// pointwise, which removes the O(R) odd part of the moment integrand without cancellation, so
+/// the reference stays accurate for a distant iCOR). Break points at the iCOR and its mirror.
+/// tol: absolute tolerance on f/muN and on mf/(muN max(a, b)).
 /// Same arguments and conventions as rectangle_friction_wrench; inputs are checked (InputError).
 FrictionCubatureResult cubature_friction_wrench_uniform(double a, double b, double muN, double R, double alpha,
                                                         int sense, double tol = 1e-13);
 
 /// Arbitrary pressure p(x', y') >= 0 on the rectangle (body coordinates [m]; any scale: it is
 /// normalised so that mu times its integral is muN). Fully numerical nested adaptive GK15 in
-/// x' and y' with break points at the iCOR. tol as above.
+/// x' and y' (same symmetrised scheme, with p(x', y') and p(-x', -y')). tol as above.
 FrictionCubatureResult cubature_friction_wrench(double a, double b, double muN, double R, double alpha, int sense,
                                                 const std::function<double(double, double)>& pressure,
                                                 double tol = 1e-13);
