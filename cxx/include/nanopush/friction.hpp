@@ -61,12 +61,45 @@ inline constexpr double kFrictionMinAspect = 1e-6;
 
 namespace friction_detail {
 
+/// log(1 + x), accurate for small x (Kahan's device), spelled as in fortran/rectfr.f (FRLG1P)
+/// so that the C++ and FORTRAN 77 engines round identically.
+inline double log1p_kahan(double x) noexcept {
+  const double u = 1.0 + x;
+  return (u == 1.0) ? x : std::log(u) * (x / (u - 1.0));
+}
+
+/// asinh(q) accurate over the whole range, as FRASNH in fortran/rectfr.f.
+inline double asinh_portable(double q) noexcept {
+  const double aq = std::fabs(q);
+  double t;
+  if (aq > 1e8)
+    t = std::log(2.0 * aq) + 0.25 / (aq * aq);
+  else if (aq >= 0.5)
+    t = std::log(aq + std::sqrt(aq * aq + 1.0));
+  else
+    t = log1p_kahan(aq + aq * aq / (1.0 + std::sqrt(1.0 + aq * aq)));
+  return std::copysign(t, q);
+}
+
+/// sqrt(x^2 + y^2) without overflow, as FRHYPT in fortran/rectfr.f.
+inline double hypot_portable(double x, double y) noexcept {
+  double ax = std::fabs(x), ay = std::fabs(y);
+  if (ax < ay) {
+    const double t = ax;
+    ax = ay;
+    ay = t;
+  }
+  if (ax == 0.0) return 0.0;
+  const double t = ay / ax;
+  return ax * std::sqrt(1.0 + t * t);
+}
+
 /// u^2 asinh(v/|u|), continuous with value 0 at u = 0; never NaN for finite u, v.
 inline double sq_asinh(double u, double v) noexcept {
   const double au = std::fabs(u);
   if (au == 0.0) return 0.0;
   const double q = v / au;
-  if (std::fabs(q) < 1e150) return u * u * std::asinh(q);
+  if (std::fabs(q) < 1e150) return u * u * asinh_portable(q);
   // asinh(q) = sign(q) (ln 2|q| + O(q^-2)); ln|v| - ln|u| avoids overflow of q.
   return std::copysign(u * u * (std::log(2.0 * std::fabs(v)) - std::log(au)), v);
 }
@@ -182,7 +215,7 @@ inline FrictionWrench rectangle_friction_wrench(double a, double b, double muN, 
 /// Pure translation with body-axis CM velocity (vx, vy) [m/s]: f = -muN v/|v|, mf = 0;
 /// the zero wrench when v = 0.
 inline FrictionWrench rectangle_friction_translation(double muN, double vx, double vy) noexcept {
-  const double v = std::hypot(vx, vy);
+  const double v = friction_detail::hypot_portable(vx, vy);
   if (!(v > 0.0)) return {0.0, 0.0, 0.0};
   return {-muN * (vx / v), -muN * (vy / v), 0.0};
 }
@@ -195,7 +228,7 @@ inline FrictionWrench rectangle_friction_from_velocity(double a, double b, doubl
                                                        double omega) noexcept {
   NANOPUSH_FRICTION_ASSERT(a > 0.0 && b > 0.0);
   const double L = a > b ? a : b;
-  const double v = std::hypot(vx, vy);
+  const double v = friction_detail::hypot_portable(vx, vy);
   if (omega == 0.0) return rectangle_friction_translation(muN, vx, vy);
   const double sense = omega > 0.0 ? 1.0 : -1.0;
   // CM seen from the iCOR: -c = (vy, -vx)/omega = R (cos alpha, sin alpha).
