@@ -1,0 +1,263 @@
+// Coulomb friction over a rectangular contact with uniform pressure (models.md §B; thesis
+// eqs 3.27-3.50 and Appendix B, after Cheung's rigid-body sliding model).
+//
+// Geometry (models.md §0). Body axes at the centre of mass (CM): x' across the width
+// (half-width a), y' along the length (half-length b). The instantaneous centre of rotation
+// (iCOR) sits at c = -R (cos alpha, sin alpha), so seen from the iCOR the CM is at
+// (Xc, Yc) = R (cos alpha, sin alpha) and the contact spans X in [Xc - a, Xc + a],
+// Y in [Yc - b, Yc + b] (the thesis' h4..h2 and h1..h3). The contact point (X, Y) moves with
+// velocity omega (-Y, X); friction per unit area is -mu p times its unit vector.
+// With s = sign(omega), p = N / (4ab), r = sqrt(X^2 + Y^2):
+//
+//   fx' =  muN s <Y/r>,   fy' = -muN s <X/r>,   mf = -muN s <(x X + y Y)/r>
+//
+// where <.> is the mean over the rectangle and (x, y) = (X - Xc, Y - Yc) are body
+// coordinates, so x X + y Y = r^2 - (Xc X + Yc Y) (the thesis' r - R cos(gamma - alpha)).
+//
+// Three evaluation forms, chosen by rho = R / max(a, b) (docs/friction.md has the derivation):
+//  1. rho < kFrictionFarField: the exact corner-term closed form. Antiderivatives
+//       FX = (Y r + X^2 asinh(Y/|X|))/2, FY = (X r + Y^2 asinh(X/|Y|))/2,
+//       Fr = X Y r/3 + (X^3 asinh(Y/|X|) + Y^3 asinh(X/|Y|))/6
+//     summed with signs +,-,-,+ over the corners. The asinh form (instead of the thesis'
+//     logarithms of differences) is finite on edges, corners and at R = 0.
+//     Rounding error grows like eps rho^2 (force) and eps rho^3 (moment): cancellation.
+//  2. kFrictionFarField <= rho < kFrictionAsymptotic: the far-field multipole series of the
+//     integrand, evaluated exactly by a 12 x 12 product Gauss-Legendre rule applied to the
+//     point-symmetrised integrands (no cancellation: the O(R) odd part of the moment integrand
+//     is removed analytically). The rule integrates the series to total degree 23 exactly;
+//     the remainder is below 1e-16 for rho >= 3.
+//  3. rho >= kFrictionAsymptotic (1e9): the two-term asymptotic form
+//       f = muN s (sin alpha, -cos alpha),  mf = -muN s (a^2 sin^2 alpha + b^2 cos^2 alpha)/(3R),
+//     whose neglected terms are O((max(a,b)/R)^2) < 1e-17 relative; it is also the exact
+//     pure-translation limit (R = infinity) and cannot overflow.
+//
+// Hot path: no allocation, no exceptions, inline. Preconditions (a, b > 0 finite, aspect
+// ratio within [kFrictionMinAspect, 1/kFrictionMinAspect], muN >= 0 finite, R >= 0 finite,
+// alpha finite, sense = +/-1) are checked by the *_checked entry points, which throw
+// nanopush::InputError, and by NANOPUSH_FRICTION_ASSERT in debug builds.
+#pragma once
+
+#include <cassert>
+#include <cmath>
+
+#ifndef NANOPUSH_FRICTION_ASSERT
+#define NANOPUSH_FRICTION_ASSERT(cond) assert(cond)
+#endif
+
+namespace nanopush {
+
+/// Friction resultant in body axes: force (fx, fy) [N] and moment mf about the CM (z) [N m].
+struct FrictionWrench {
+  double fx, fy, mf;
+};
+
+/// Switch from the corner-term closed form to the far-field form, in units of max(a, b).
+inline constexpr double kFrictionFarField = 3.0;
+/// Switch from the far-field form to the asymptotic (translation + 1/R moment) form.
+inline constexpr double kFrictionAsymptotic = 1e9;
+/// Smallest accepted aspect ratio min(a,b)/max(a,b): the corner form loses about
+/// log10(max/min) digits to cancellation across the thin direction (docs/friction.md).
+inline constexpr double kFrictionMinAspect = 1e-6;
+
+namespace friction_detail {
+
+/// log(1 + x), accurate for small x (Kahan's device), spelled as in fortran/rectfr.f (FRLG1P)
+/// so that the C++ and FORTRAN 77 engines round identically.
+inline double log1p_kahan(double x) noexcept {
+  const double u = 1.0 + x;
+  return (u == 1.0) ? x : std::log(u) * (x / (u - 1.0));
+}
+
+/// asinh(q) accurate over the whole range, as FRASNH in fortran/rectfr.f.
+inline double asinh_portable(double q) noexcept {
+  const double aq = std::fabs(q);
+  double t;
+  if (aq > 1e8)
+    t = std::log(2.0 * aq) + 0.25 / (aq * aq);
+  else if (aq >= 0.5)
+    t = std::log(aq + std::sqrt(aq * aq + 1.0));
+  else
+    t = log1p_kahan(aq + aq * aq / (1.0 + std::sqrt(1.0 + aq * aq)));
+  return std::copysign(t, q);
+}
+
+/// sqrt(x^2 + y^2) without overflow, as FRHYPT in fortran/rectfr.f.
+inline double hypot_portable(double x, double y) noexcept {
+  double ax = std::fabs(x), ay = std::fabs(y);
+  if (ax < ay) {
+    const double t = ax;
+    ax = ay;
+    ay = t;
+  }
+  if (ax == 0.0) return 0.0;
+  const double t = ay / ax;
+  return ax * std::sqrt(1.0 + t * t);
+}
+
+/// u^2 asinh(v/|u|), continuous with value 0 at u = 0; never NaN for finite u, v.
+inline double sq_asinh(double u, double v) noexcept {
+  const double au = std::fabs(u);
+  if (au == 0.0) return 0.0;
+  const double q = v / au;
+  if (std::fabs(q) < 1e150) return u * u * asinh_portable(q);
+  // asinh(q) = sign(q) (ln 2|q| + O(q^-2)); ln|v| - ln|u| avoids overflow of q.
+  return std::copysign(u * u * (std::log(2.0 * std::fabs(v)) - std::log(au)), v);
+}
+
+/// The three rectangle integrals, scaled by the area:
+///   ix = <X/r>, iy = <Y/r>, km = <(x X + y Y)/r>   (<.> = mean over the rectangle)
+struct MeanIntegrals {
+  double ix, iy, km;
+};
+
+/// Form 1: corner-term closed form. All lengths in units of max(a, b).
+inline MeanIntegrals closed_form(double a, double b, double xc, double yc) noexcept {
+  const double xs[2] = {xc - a, xc + a};
+  const double ys[2] = {yc - b, yc + b};
+  double sx = 0.0, sy = 0.0, sr = 0.0;
+  for (int i = 0; i < 2; ++i) {
+    for (int j = 0; j < 2; ++j) {
+      const double X = xs[i], Y = ys[j];
+      const double r = std::sqrt(X * X + Y * Y);
+      const double ax = sq_asinh(X, Y);  // X^2 asinh(Y/|X|)
+      const double ay = sq_asinh(Y, X);  // Y^2 asinh(X/|Y|)
+      const double fx = 0.5 * (Y * r + ax);
+      const double fy = 0.5 * (X * r + ay);
+      const double fr = X * Y * r / 3.0 + (X * ax + Y * ay) / 6.0;
+      const double sg = (i == j) ? 1.0 : -1.0;  // +F(x1,y1) - F(x0,y1) - F(x1,y0) + F(x0,y0)
+      sx += sg * fx;
+      sy += sg * fy;
+      sr += sg * fr;
+    }
+  }
+  const double area = 4.0 * a * b;
+  const double ix = sx / area, iy = sy / area;
+  return {ix, iy, sr / area - xc * ix - yc * iy};
+}
+
+/// Gauss-Legendre 12-point rule on [-1, 1]: positive nodes and their weights.
+inline constexpr double kGl12x[6] = {0.1252334085114689154724414, 0.3678314989981801937526915,
+                                     0.5873179542866174472967024, 0.7699026741943046870368938,
+                                     0.9041172563704748566784659, 0.9815606342467192506905491};
+inline constexpr double kGl12w[6] = {0.2491470458134027850005624, 0.2334925365383548087608499,
+                                     0.2031674267230659217490645, 0.1600783285433462263346525,
+                                     0.1069393259953184309602547, 0.04717533638651182719461596};
+
+/// Form 2: far field. Point-symmetrised integrands at (x, y) and (-x, -y):
+///   u(+) + u(-) for the unit vector u = (X, Y)/r, and for the moment integrand
+///   h = (x X + y Y)/r, with d = x Xc + y Yc, e = x Yc - y Xc, rho^2 = x^2 + y^2, R = |(Xc, Yc)|,
+///   h(+) + h(-) = e^2/R^2 (1/r+ + 1/r-) + 8 d^2 e^2 / (R^2 r+ r- (r+ + r-)(r+ r- + R^2 - rho^2)),
+/// a sum of non-negative terms (the O(R) odd part of h cancels analytically).
+/// Requires the rectangle well away from the iCOR (rho >= kFrictionFarField).
+inline MeanIntegrals far_field(double a, double b, double xc, double yc) noexcept {
+  const double r = std::sqrt(xc * xc + yc * yc), inv_r2 = 1.0 / (r * r);
+  double sx = 0.0, sy = 0.0, sk = 0.0;
+  for (int i = 0; i < 6; ++i) {
+    const double x = a * kGl12x[i];
+    double tx = 0.0, ty = 0.0, tk = 0.0;
+    for (int j = 0; j < 12; ++j) {
+      const double y = (j < 6) ? b * kGl12x[j] : -b * kGl12x[j - 6];
+      const double wy = (j < 6) ? kGl12w[j] : kGl12w[j - 6];
+      const double xp = xc + x, yp = yc + y, xm = xc - x, ym = yc - y;
+      const double rp = std::sqrt(xp * xp + yp * yp), rm = std::sqrt(xm * xm + ym * ym);
+      const double ip = 1.0 / rp, im = 1.0 / rm;
+      const double d = x * xc + y * yc, e = x * yc - y * xc;  // rho.c and rho x c
+      const double rho = std::sqrt(x * x + y * y);
+      const double rr = rp * rm;
+      tx += wy * (xp * ip + xm * im);
+      ty += wy * (yp * ip + ym * im);
+      // h(+) + h(-) = e^2/R^2 (1/r+ + 1/r-) + 8 d^2 e^2 / (R^2 r+ r- (r+ + r-)(r+ r- + R^2 - rho^2)):
+      // both terms >= 0, so no cancellation at any orientation (docs/friction.md).
+      const double ee = e * e * inv_r2;
+      tk += wy * (ee * (ip + im) + 8.0 * d * d * ee / (rr * (rp + rm) * (rr + (r - rho) * (r + rho))));
+    }
+    sx += kGl12w[i] * tx;
+    sy += kGl12w[i] * ty;
+    sk += kGl12w[i] * tk;
+  }
+  // Sum of weights over [-1,1]^2 is 4; each symmetric pair was summed over half the x nodes,
+  // so the mean is (pair sum)/(2 * 4) * 2 = pair sum / 4.
+  return {0.25 * sx, 0.25 * sy, 0.25 * sk};
+}
+
+/// Form dispatcher in units of L = max(a, b): a, b <= 1, rho = R/L, (c, s) = (cos, sin) alpha.
+/// Returns the mean integrals except in the asymptotic regime, where it sets `asym` and
+/// returns ix = c, iy = s, km = (a^2 s^2 + b^2 c^2)/(3 rho) (exact to O(rho^-2)).
+inline MeanIntegrals mean_integrals(double a, double b, double rho, double c, double s) noexcept {
+  if (!(rho < kFrictionAsymptotic)) {  // also rho = inf
+    return {c, s, (a * a * s * s + b * b * c * c) / (3.0 * rho)};
+  }
+  const double xc = rho * c, yc = rho * s;
+  if (rho < kFrictionFarField) return closed_form(a, b, xc, yc);
+  return far_field(a, b, xc, yc);
+}
+
+inline FrictionWrench wrench_from_means(const MeanIntegrals& m, double muN, double sense,
+                                        double length) noexcept {
+  return {muN * sense * m.iy, -muN * sense * m.ix, -muN * sense * m.km * length};
+}
+
+}  // namespace friction_detail
+
+/// Friction wrench for a 2a x 2b rectangle (a: half-width along body x', b: half-length along
+/// body y', m), uniform pressure, total normal friction muN = mu N [N], iCOR at
+/// c = -R (cos alpha, sin alpha) in body axes (R [m] >= 0, alpha [rad]), rotating
+/// counter-clockwise (sense = +1, omega > 0) or clockwise (sense = -1). Body axes, SI.
+/// Unchecked hot path (preconditions in the header comment); see *_checked.
+inline FrictionWrench rectangle_friction_wrench(double a, double b, double muN, double R, double alpha,
+                                                int sense) noexcept {
+  NANOPUSH_FRICTION_ASSERT(a > 0.0 && b > 0.0 && R >= 0.0 && (sense == 1 || sense == -1));
+  const double L = a > b ? a : b;
+  const auto m = friction_detail::mean_integrals(a / L, b / L, R / L, std::cos(alpha), std::sin(alpha));
+  return friction_detail::wrench_from_means(m, muN, sense < 0 ? -1.0 : 1.0, L);
+}
+
+/// Pure translation with body-axis CM velocity (vx, vy) [m/s]: f = -muN v/|v|, mf = 0;
+/// the zero wrench when v = 0.
+inline FrictionWrench rectangle_friction_translation(double muN, double vx, double vy) noexcept {
+  const double v = friction_detail::hypot_portable(vx, vy);
+  if (!(v > 0.0)) return {0.0, 0.0, 0.0};
+  return {-muN * (vx / v), -muN * (vy / v), 0.0};
+}
+
+/// Friction wrench from the body-axis rigid velocity: CM velocity (vx, vy) [m/s] and angular
+/// rate omega [rad/s]. The iCOR is c = (-vy, vx)/omega (models.md §0); as omega -> 0 the
+/// result joins rectangle_friction_translation smoothly (the moment vanishes like omega);
+/// zero wrench at rest. Sense = sign(omega).
+inline FrictionWrench rectangle_friction_from_velocity(double a, double b, double muN, double vx, double vy,
+                                                       double omega) noexcept {
+  NANOPUSH_FRICTION_ASSERT(a > 0.0 && b > 0.0);
+  const double L = a > b ? a : b;
+  const double v = friction_detail::hypot_portable(vx, vy);
+  if (omega == 0.0) return rectangle_friction_translation(muN, vx, vy);
+  const double sense = omega > 0.0 ? 1.0 : -1.0;
+  // CM seen from the iCOR: -c = (vy, -vx)/omega = R (cos alpha, sin alpha).
+  double c = 1.0, s = 0.0;  // any direction at R = 0
+  if (v > 0.0) {
+    c = sense * vy / v;
+    s = -sense * vx / v;
+  }
+  const double rho = (v / std::fabs(omega)) / L;  // may be +inf: asymptotic form
+  const auto m = friction_detail::mean_integrals(a / L, b / L, rho, c, s);
+  return friction_detail::wrench_from_means(m, muN, sense, L);
+}
+
+/// Checked entry points: throw nanopush::InputError naming the field, value and allowed range
+/// (a, b > 0 finite with min/max >= kFrictionMinAspect; muN >= 0 finite; R >= 0 finite;
+/// alpha, velocities finite; sense = +1 or -1), then evaluate the hot-path function.
+FrictionWrench rectangle_friction_wrench_checked(double a, double b, double muN, double R, double alpha,
+                                                 int sense);
+FrictionWrench rectangle_friction_translation_checked(double muN, double vx, double vy);
+FrictionWrench rectangle_friction_from_velocity_checked(double a, double b, double muN, double vx, double vy,
+                                                        double omega);
+
+/// Which evaluation form rectangle_friction_wrench uses at this geometry (for docs and tests):
+/// 0 = corner closed form, 1 = far-field Gauss-Legendre series, 2 = asymptotic.
+int rectangle_friction_form(double a, double b, double R);
+
+/// The thesis' printed closed forms (eqs 3.45, 3.46, 3.47 with 3.48), transcribed literally
+/// for the errata tests: muN = 1, s = +1, body axes. May return NaN/Inf where the printed
+/// logarithms are undefined. Not for production use.
+FrictionWrench thesis_printed_friction(double a, double b, double R, double alpha);
+
+}  // namespace nanopush
