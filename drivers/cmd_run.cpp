@@ -17,6 +17,7 @@ struct RunOptions {
   std::string scene, engine, method, out, law;
   double rtol = 0, atol = -1;
   bool quiet = false;
+  bool keep_partial = false;
 };
 
 /// Progress on stderr for runs longer than a second, only on a terminal.
@@ -59,11 +60,22 @@ int run_cmd(const RunOptions& o) {
   rs.rtol = o.rtol;
   rs.atol = o.atol;
   rs.law = o.law;
+  rs.allow_partial = o.keep_partial;
   rs.progress = progress_printer(sc.name);
   const auto t0 = std::chrono::steady_clock::now();
   const Trajectory tr = run_scene(sc, rs);
   const double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::string out = o.out.empty() ? sc.name + "." + tr.engine_label + ".csv" : o.out;
+  if (!tr.complete) {
+    // Never presented as a result: a distinct name, a message, a non-zero exit.
+    if (out == "-") out = sc.name + "." + tr.engine_label + ".csv";
+    const std::string partial = out + ".partial.csv";
+    write_trajectory_csv(tr, partial);
+    std::cerr << "nanopush: solver failure: " << sc.name << " (" << tr.engine_label << "): " << to_string(tr.stats.status)
+              << ": " << tr.stats.message << "\n  the " << tr.rows.size() << " samples computed before the failure are in "
+              << partial << " (incomplete)\n";
+    return 3;
+  }
   if (out == "-") {
     std::cout << "t,x,y,theta,vx,vy,omega,fx,fy,mf\n" << std::setprecision(17);
     for (auto& r : tr.rows) {
@@ -146,6 +158,9 @@ RegisterCommand reg_run{{"run", "Integrate a scene and write its trajectory as C
                                ->check(CLI::IsMember({"thesis", "coulomb"}));
                            app.add_option("--out", o->out, "output CSV ('-' for standard output; default <scene>.<engine>.csv)");
                            app.add_flag("--quiet", o->quiet, "no summary on standard error");
+                           app.add_flag("--keep-partial", o->keep_partial,
+                                        "when the integrator gives up, keep the samples computed so far in "
+                                        "OUT.partial.csv (exit status stays non-zero)");
                            return [o] { return run_cmd(*o); };
                          }}};
 

@@ -148,7 +148,7 @@ StickSlipResult integrate_coulomb(const RoughBarModel& model, const BsOptions<do
   };
   if (y[kVx] == 0.0 && y[kVy] == 0.0 && y[kOmega] == 0.0) {
     const bool s = at_rest();
-    if (t < tout.front() || true) out.events.push_back({t, s});
+    out.events.push_back({t, s});
   } else {
     mode = mode_of(model, y[kVx], y[kVy], y[kOmega]);
   }
@@ -165,6 +165,39 @@ StickSlipResult integrate_coulomb(const RoughBarModel& model, const BsOptions<do
     out.stats.naccpt += r.naccpt;
     out.stats.nrejct += r.nrejct;
   };
+  // Velocity tolerances: the absolute tolerances of vx, vy, omega (or rtol times the peak).
+  std::array<double, 3> vtol{};
+  for (int i = 0; i < 3; ++i) {
+    const std::size_t k = static_cast<std::size_t>(kVx + i);
+    vtol[static_cast<std::size_t>(i)] = options.atol.size() == 1 ? options.atol[0] : options.atol[k];
+  }
+  std::array<double, 3> ptol{};  // position and angle tolerances
+  for (int i = 0; i < 3; ++i) {
+    const std::size_t k = static_cast<std::size_t>(kX + i);
+    ptol[static_cast<std::size_t>(i)] = options.atol.size() == 1 ? options.atol[0] : options.atol[k];
+  }
+  // Terminal phase of a slide. Near rest the components of V across its direction relax at
+  // the rate mu N/(m |V|), which grows without bound: the problem turns stiff and an explicit
+  // integrator's steps shrink with |V|. The slide is over, to the requested accuracy, once
+  // the motion still to come is below the tolerances: every velocity component within its
+  // absolute tolerance, or (decelerating) the distance and angle still to travel,
+  // v^2/(2|a|) and omega^2/(2|alpha|), within the position and angle tolerances.
+  auto terminal = [&](const double* yy) {
+    if (std::fabs(yy[kVx]) <= vtol[0] && std::fabs(yy[kVy]) <= vtol[1] && std::fabs(yy[kOmega]) <= vtol[2]) return true;
+    double d[kRoughStateSize];
+    const WorldWrench ap = model.applied(yy[kTheta]);
+    const WorldWrench fr = coulomb_friction(model, yy, mode);
+    RoughBarModel::rhs_with(model, yy, ap, fr, d);
+    const double v2 = yy[kVx] * yy[kVx] + yy[kVy] * yy[kVy];
+    const double vdotA = yy[kVx] * d[kVx] + yy[kVy] * d[kVy];
+    const double acc = std::hypot(d[kVx], d[kVy]);
+    const bool lin_done = v2 == 0.0 || (vdotA < 0.0 && v2 <= 2.0 * acc * std::min(ptol[0], ptol[1]));
+    const bool rot_done = yy[kOmega] == 0.0 || (yy[kOmega] * d[kOmega] < 0.0 &&
+                                               yy[kOmega] * yy[kOmega] <= 2.0 * std::fabs(d[kOmega]) * ptol[2]);
+    return lin_done && rot_done;
+  };
+  constexpr int kMaxEvents = 10000;
+  int n_events = 0;
   // Speed below which a sign change of g is taken as "came to rest" (not a rotation of V by
   // more than 90 degrees within one step, which the error control makes implausible anyway).
   double peak_speed = speed_scaled(model, y.data());
@@ -183,21 +216,24 @@ StickSlipResult integrate_coulomb(const RoughBarModel& model, const BsOptions<do
     if (iout >= tout.size()) break;
     std::span<const double> rest(tout.data() + iout, tout.size() - iout);
     std::size_t emitted = 0;
-    const auto hook = [&](double, const double* yo, double, const double* yn) {
+    // After each accepted step: (1) g = V·mode < 0 means the velocity passed through zero
+    // inside the step: stop before it and locate the instant; (2) a velocity below the
+    // absolute tolerances of vx, vy and omega is rest at the requested accuracy: stop after
+    // it (near rest the velocity direction can keep turning on a time scale |V|/|A|, and
+    // without this the steps would shrink geometrically without ever reaching the zero);
+    // (3) otherwise the mode follows the velocity.
+    bool snapped = false;
+    const auto hook_and_track = [&](double, const double*, double, const double* yn) {
       const double g = yn[kVx] * mode[0] + yn[kVy] * mode[1] + yn[kOmega] * L * mode[2];
-      if (g < 0.0) return true;
-      (void)yo;
-      return false;
-    };
-    // Mode tracking: after each accepted step the mode follows the velocity. The hook runs
-    // before the step is committed; the observer after. Track in the observer-independent
-    // way: wrap the hook to update the mode when it lets the step through.
-    const auto hook_and_track = [&](double to, const double* yo, double tn, const double* yn) {
-      if (hook(to, yo, tn, yn)) return true;
+      if (g < 0.0) return static_cast<int>(kHookStopBefore);
+      if (terminal(yn)) {
+        snapped = true;
+        return static_cast<int>(kHookStopAfter);
+      }
       const double sp = std::sqrt(yn[kVx] * yn[kVx] + yn[kVy] * yn[kVy] + yn[kOmega] * L * yn[kOmega] * L);
       peak_speed = std::max(peak_speed, sp);
       if (sp > 0.0) mode = {yn[kVx] / sp, yn[kVy] / sp, yn[kOmega] * L / sp};
-      return false;
+      return static_cast<int>(kHookContinue);
     };
     BsResult r = bs.integrate(
         rhs, t, y.data(), rest,
@@ -215,6 +251,16 @@ StickSlipResult integrate_coulomb(const RoughBarModel& model, const BsOptions<do
     iout += emitted;
     t = r.t_reached;
     if (!r.stopped_by_hook) break;  // all outputs done
+    if (snapped) {
+      // Rest within the tolerance at t: the state emitted at outputs up to t stands. The
+      // kinetic energy left is dissipated by friction in the remaining motion: book it there
+      // (the push's work over that motion is below F times the position tolerance).
+      y[kWorkFric] -= model.kinetic_energy(y.data());
+      if (++n_events > kMaxEvents) throw SolverError("coulomb law: more than " + std::to_string(kMaxEvents) + " rest events");
+      const bool s = at_rest();
+      out.events.push_back({t, s});
+      continue;
+    }
     // An event lies in (t, t1]: the velocity passed through zero. Locate g(t*) = 0 by the
     // Illinois variant of regula falsi, integrating from the step start each time.
     const double t0 = t, t1 = r.t_event_end;
@@ -266,6 +312,7 @@ StickSlipResult integrate_coulomb(const RoughBarModel& model, const BsOptions<do
       mode = mode_of(model, y[kVx], y[kVy], y[kOmega]);
       continue;
     }
+    if (++n_events > kMaxEvents) throw SolverError("coulomb law: more than " + std::to_string(kMaxEvents) + " rest events");
     const bool s = at_rest();
     out.events.push_back({t, s});
   }

@@ -38,9 +38,16 @@ inline constexpr int Dynamic = -1;
 /// The default step hook: never stops (compiled away).
 struct NoStepHook {
   template <class S>
-  bool operator()(S, const S*, S, const S*) const noexcept {
-    return false;
+  int operator()(S, const S*, S, const S*) const noexcept {
+    return 0;
   }
+};
+
+/// What a step hook asks for after an accepted step.
+enum StepHookAction : int {
+  kHookContinue = 0,     ///< commit the step and go on
+  kHookStopBefore = 1,   ///< an event lies inside the step: do not commit it, return at its start
+  kHookStopAfter = 2,    ///< commit the step, then return (an event at its end)
 };
 
 enum class Extrapolation { rational = 1, polynomial = 2 };
@@ -126,9 +133,10 @@ class BulirschStoer {
   }
 
   /// As above, with a hook called after every accepted step, before it is committed:
-  /// hook(t_old, y_old, t_new, y_new) returns true to stop there (an event lies in the
-  /// step). The integration then returns with `stopped_by_hook` set, y = y_old and
-  /// t_reached = t_old, so the caller can locate the event in [t_old, t_new] and restart.
+  /// hook(t_old, y_old, t_new, y_new) returns a StepHookAction. kHookStopBefore: the
+  /// integration returns with `stopped_by_hook` set, y = y_old and t_reached = t_old, so the
+  /// caller can locate an event in [t_old, t_new] and restart there. kHookStopAfter: the
+  /// step is committed (its outputs emitted) and the integration returns at t_new.
   template <class Rhs, class Observer, class StepHook>
   BsResult integrate(Rhs&& rhs, Scalar t0, Scalar* y, std::span<const Scalar> tout, Observer&& observer,
                      StepHook&& hook) {
@@ -157,6 +165,7 @@ class BulirschStoer {
     Scalar t = t0;
     for (int i = 0; i < n; ++i) y_[i] = y[i];
     bool have_f0 = false, last_rejected = false;
+    int hook_action = kHookContinue;
     int nonfinite_run = 0;
 
     std::size_t iout = 0;
@@ -300,7 +309,8 @@ class BulirschStoer {
       // 7.
       if constexpr (!std::is_same_v<std::decay_t<StepHook>, NoStepHook>) {
         const Scalar tnew = clipped ? tend : t + h;
-        if (hook(t, static_cast<const Scalar*>(&y_[0]), tnew, static_cast<const Scalar*>(&cur_[kc][0]))) {
+        hook_action = hook(t, static_cast<const Scalar*>(&y_[0]), tnew, static_cast<const Scalar*>(&cur_[kc][0]));
+        if (hook_action == kHookStopBefore) {
           ++res.naccpt;
           res.stopped_by_hook = true;
           res.t_event_end = static_cast<double>(tnew);
@@ -329,6 +339,11 @@ class BulirschStoer {
       last_rejected = false;
       res.t_reached = static_cast<double>(t);
       emit_reached();
+      if (hook_action == kHookStopAfter) {
+        res.stopped_by_hook = true;
+        res.t_event_end = static_cast<double>(t);
+        break;
+      }
     }
     for (int i = 0; i < n; ++i) y[i] = y_[i];
     return res;

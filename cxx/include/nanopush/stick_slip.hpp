@@ -59,7 +59,7 @@ using StickSlipObserver = std::function<void(double t, const double* y, const Wo
 StickSlipResult integrate_coulomb(const RoughBarModel& model, const BsOptions<double>& options, const double* y0,
                                   const std::vector<double>& tout, const StickSlipObserver& observer);
 
-/// The same with SUNDIALS CVODE (Adams, fixed-point iteration) and CVODE's root finding,
+/// The same with SUNDIALS CVODE (BDF, Newton, dense Jacobian) and CVODE's root finding,
 /// as an independent cross-check. Available when built with SUNDIALS.
 StickSlipResult integrate_coulomb_cvode(const RoughBarModel& model, double rtol, const std::vector<double>& atol,
                                         const double* y0, const std::vector<double>& tout,
