@@ -1,0 +1,356 @@
+// iCOR principles of thesis chapters 4-5 (see icor.hpp; models.md section D).
+#include "nanopush/icor.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "nanopush/error.hpp"
+#include "nanopush/roots.hpp"
+
+namespace nanopush::icor {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+void require_length(double L) { require_positive("L", L, "m"); }
+
+void require_push_on_rod(double yn, double L) {
+  require_length(L);
+  require_range("yn", yn, 0.0, 0.5 * L, "m; distance from the CM to the push point, at most b = L/2");
+}
+
+/// Sign of a polynomial as x -> +inf (dir = +1) or -inf (dir = -1).
+double sign_at_infinity(const std::vector<double>& c, int dir) {
+  const double lead = c.back();
+  const bool odd = (c.size() - 1) % 2 == 1;
+  double s = lead > 0.0 ? 1.0 : -1.0;
+  if (dir < 0 && odd) s = -s;
+  return s;
+}
+
+}  // namespace
+
+void Rod::validate() const {
+  require_positive("rod.length", length, "m");
+  require_positive("rod.radius", radius, "m");
+  require_positive("rod.density", density, "kg/m^3");
+  require_positive("rod.hamaker", hamaker, "J");
+  require_positive("rod.z0", z0, "m");
+  require_nonnegative("rod.gravity", gravity, "m/s^2");
+}
+double Rod::mass() const { return density * std::numbers::pi * radius * radius * length; }
+double Rod::inertia() const { return mass() * length * length / 12.0; }
+double Rod::gyration_squared() const { return length * length / 12.0; }
+double Rod::vdw_force() const {
+  return length * hamaker * std::sqrt(2.0 * radius) / (16.0 * std::pow(z0, 2.5));
+}
+double Rod::load() const { return mass() * gravity + vdw_force(); }
+
+Rod nanorod() { return Rod{}; }
+
+// ---- Chapter 4 ----------------------------------------------------------------------
+
+double experimental_fit(double yn, double L) {
+  require_push_on_rod(yn, L);
+  const double beta = (0.5 * L + yn) / L;  // push point from the lower end, normalised
+  const double alpha = 0.5 * std::sqrt(std::max(0.0, beta - 0.5));
+  return 0.5 * L - alpha * L;
+}
+
+double falvo_normalised(double x1_hat) {
+  require_range("x1/L", x1_hat, 0.0, 1.0, "normalised push point from the lower end");
+  return x1_hat - std::sqrt(x1_hat * x1_hat - 0.5 * (2.0 * x1_hat - 1.0));
+}
+
+double falvo(double yn, double L) {
+  require_push_on_rod(yn, L);
+  const double b = 0.5 * L;
+  return b - L * falvo_normalised((b + yn) / L);
+}
+
+double li_position(double l, double L) {
+  require_length(L);
+  require_range("l", l, 0.0, L, "m; push point from the left end");
+  const double root = std::sqrt(l * l - l * L + 0.5 * L * L);
+  return (l <= 0.5 * L) ? l + root : l - root;
+}
+
+double li(double yn, double L) {
+  require_push_on_rod(yn, L);
+  const double b = 0.5 * L;
+  return li_position(b - yn, L) - b;
+}
+
+double unknown_pressure(double yn, double L) {
+  require_length(L);
+  require_nonnegative("yn", yn, "m");
+  const double b = 0.5 * L;
+  return b * b / (std::hypot(b, yn) + yn);
+}
+
+double minimum_force(double mu, double W, double yn, double L) {
+  require_positive("mu", mu);
+  require_positive("W", W, "N");
+  return mu * W * unknown_pressure(yn, L) / (0.5 * L);
+}
+
+double known_pressure(double mu, double W, double yn, double F, double L) {
+  require_positive("F", F, "N");
+  const double Fmin = minimum_force(mu, W, yn, L);  // validates mu, W, yn, L
+  const double b = 0.5 * L, muW = mu * W;
+  double disc = b * b * F * F - muW * (muW * b * b - 2.0 * b * yn * F);
+  if (disc < 0.0) {
+    if (F >= Fmin * (1.0 - 8.0 * std::numeric_limits<double>::epsilon()))
+      disc = 0.0;  // F at the minimum force, rounding only
+    else
+      throw InputError("F", fmt(F), "must be >= the minimum force of eq 4.8, " + fmt(Fmin) + " N, for motion to start");
+  }
+  return (b * F + std::sqrt(disc)) / muW;
+}
+
+double force_from_icor(double mu, double W, double R, double L) {
+  require_positive("mu", mu);
+  require_positive("W", W, "N");
+  require_nonnegative("R", R, "m");
+  require_length(L);
+  return mu * W * R / (0.5 * L);
+}
+
+double force_unknown_pressure(double mu, double W, double R, double yn, double L) {
+  require_positive("mu", mu);
+  require_positive("W", W, "N");
+  require_finite("R", R, "m");
+  require_nonnegative("yn", yn, "m");
+  require_length(L);
+  if (!(R + yn > 0.0)) throw InputError("R", fmt(R), "R + yn must be > 0 (moment arm about the iCOR)");
+  const double b = 0.5 * L;
+  return mu * W * (b * b + R * R) / (2.0 * b * (R + yn));
+}
+
+// ---- Chapter 5 ----------------------------------------------------------------------
+
+double impulsive(double yn, double k2) {
+  require_nonnegative("yn", yn, "m");
+  require_positive("k2", k2, "m^2");
+  if (yn == 0.0) return kInf;
+  const double R = k2 / yn;
+  return R;  // may overflow to +inf for subnormal yn: still not NaN
+}
+
+std::array<double, 4> constrained_cubic_printed(double yn, const Rod& rod) {
+  rod.validate();
+  require_nonnegative("yn", yn, "m");
+  const double m = rod.mass(), g = rod.gravity, Fv = rod.vdw_force(), I = rod.inertia();
+  const double b = rod.half_length();
+  return {(-2.0 * g * m - 2.0 * Fv) * I * I + (b * b * g * m * m + b * b * Fv * m) * I, 0.0,
+          (-3.0 * g * m * m - 3.0 * Fv * m) * I, (2.0 * g * m * m * m + 2.0 * Fv * m * m) * yn};
+}
+
+std::array<double, 4> constrained_cubic(double yn, double L, double k2) {
+  require_length(L);
+  require_nonnegative("yn", yn, "m");
+  require_positive("k2", k2, "m^2");
+  const double b = 0.5 * L;
+  return {k2 * (b * b - 2.0 * k2), 0.0, -3.0 * k2, 2.0 * yn};
+}
+
+double constrained_force(double mu, double W, double R, double yn, double L, double k2) {
+  require_positive("mu", mu);
+  require_positive("W", W, "N");
+  require_finite("R", R, "m");
+  require_nonnegative("yn", yn, "m");
+  require_length(L);
+  require_positive("k2", k2, "m^2");
+  const double b = 0.5 * L;
+  const double num = -mu * W * R * (R * R + 2.0 * k2 - b * b);
+  const double den = 2.0 * b * (yn * R - k2);
+  if (den == 0.0) {
+    if (num == 0.0) throw SolverError("eq 5.2 is 0/0 at R = " + fmt(R) + " m, yn = " + fmt(yn) + " m");
+    return std::copysign(kInf, num);
+  }
+  return num / den;
+}
+
+std::string to_string(CubicMethod m) { return m == CubicMethod::Brent ? "brent" : "eigen"; }
+
+BrentRoots real_roots_brent(const std::vector<double>& c_in) {
+  for (std::size_t i = 0; i < c_in.size(); ++i) require_finite("c[" + std::to_string(i) + "]", c_in[i]);
+  if (c_in.size() > 4) throw InputError("polynomial degree", std::to_string(c_in.size() - 1), "must be <= 3");
+  std::vector<double> c = c_in;
+  BrentRoots out;
+  const double big = std::numeric_limits<double>::max() / 16.0;
+  while (!c.empty()) {  // the same deflation rule as roots::polynomial_roots
+    const double lead = c.back();
+    bool infinite = (lead == 0.0);
+    if (!infinite)
+      for (std::size_t i = 0; i + 1 < c.size(); ++i)
+        if (std::fabs(c[i]) > big * std::fabs(lead)) { infinite = true; break; }
+    if (!infinite) break;
+    c.pop_back();
+    ++out.at_infinity;
+  }
+  if (c.empty()) throw InputError("polynomial coefficients", "all zero", "at least one coefficient must be non-zero");
+  const std::size_t n = c.size() - 1;
+  if (n == 0) return out;
+  auto p = [&c](double x) { return roots::polyval(c, x); };
+
+  // Critical points: real roots of p'(x) (degree n - 1 <= 2), by the stable quadratic formula.
+  std::vector<double> crit;
+  if (n == 2) {
+    crit.push_back(-c[1] / (2.0 * c[2]));
+  } else if (n == 3) {
+    const double a2 = 3.0 * c[3], a1 = 2.0 * c[2], a0 = c[1];
+    const double disc = a1 * a1 - 4.0 * a2 * a0;
+    if (disc > 0.0) {
+      const double q = -0.5 * (a1 + std::copysign(std::sqrt(disc), a1));
+      crit.push_back(q / a2);
+      crit.push_back(q != 0.0 ? a0 / q : -q / a2);
+    } else if (disc == 0.0) {
+      crit.push_back(-a1 / (2.0 * a2));
+    }
+    std::sort(crit.begin(), crit.end());
+  }
+
+  roots::BrentOptions opt;
+  auto solve_on = [&](double lo, double hi) {
+    const auto r = roots::brent(p, lo, hi, opt);
+    out.iterations += r.iterations;
+    if (!r.converged) throw SolverError("Brent did not converge on [" + fmt(lo) + ", " + fmt(hi) + "]");
+    out.roots.push_back(r.x);
+  };
+  // Exact zeros at the critical points (multiple roots).
+  for (double x : crit)
+    if (p(x) == 0.0) out.roots.push_back(x);
+  // Bounded monotone pieces.
+  for (std::size_t i = 0; i + 1 < crit.size(); ++i) {
+    const double fl = p(crit[i]), fh = p(crit[i + 1]);
+    if (fl != 0.0 && fh != 0.0 && (fl > 0.0) != (fh > 0.0)) solve_on(crit[i], crit[i + 1]);
+  }
+  // Unbounded monotone pieces: expand outward from the outermost critical points.
+  auto unbounded = [&](double from, int dir) {
+    const double f0 = p(from);
+    if (f0 == 0.0) return;  // already recorded
+    if ((f0 > 0.0) == (sign_at_infinity(c, dir) > 0.0)) return;  // no root out there
+    const double step = dir * std::max(1.0, std::fabs(from));
+    const auto br = roots::bracket_outward(p, from, step, 2.0);
+    if (!br) {
+      ++out.at_infinity;  // the root lies beyond the largest double
+      return;
+    }
+    solve_on(br->first, br->second);
+  };
+  if (crit.empty()) {
+    // Monotone everywhere: exactly one real root, on the side where p changes sign.
+    const double f0 = p(0.0);
+    if (f0 == 0.0) out.roots.push_back(0.0);
+    else unbounded(0.0, (f0 > 0.0) == (sign_at_infinity(c, +1) > 0.0) ? -1 : +1);
+  } else {
+    unbounded(crit.front(), -1);
+    unbounded(crit.back(), +1);
+  }
+  std::sort(out.roots.begin(), out.roots.end());
+  return out;
+}
+
+CubicSolution solve_constrained_cubic(double yn, double L, double k2, CubicMethod method) {
+  require_length(L);
+  require_nonnegative("yn", yn, "m");
+  require_positive("k2", k2, "m^2");
+  const double b = 0.5 * L, kappa = k2 / (b * b);
+  // Dimensionless r = R/b: (2 yn/b) r^3 - 3 kappa r^2 + kappa (1 - 2 kappa) = 0.
+  const std::vector<double> c = {kappa * (1.0 - 2.0 * kappa), 0.0, -3.0 * kappa, 2.0 * yn / b};
+  CubicSolution s;
+  s.yn = yn;
+  std::vector<double> r;
+  if (method == CubicMethod::Brent) {
+    auto br = real_roots_brent(c);
+    r = std::move(br.roots);
+    s.at_infinity = br.at_infinity;
+    s.complex_roots = 3 - s.at_infinity - static_cast<int>(r.size());
+  } else {
+    auto pr = roots::polynomial_roots(c);
+    s.at_infinity = pr.at_infinity;
+    for (const auto& z : pr.roots) {
+      if (z.imag() == 0.0) r.push_back(z.real());
+      else ++s.complex_roots;
+    }
+    std::sort(r.begin(), r.end());
+  }
+  for (double x : r) {
+    const double scale = roots::polyscale(c, x);
+    if (scale > 0.0) s.max_residual = std::max(s.max_residual, std::fabs(roots::polyval(c, x)) / scale);
+    s.real_roots.push_back(b * x);
+  }
+  for (double R : s.real_roots) {
+    if (R < 0.0) s.negative = R;  // ascending: the last negative is the closest to 0
+    if (R > 0.0 && !s.positive) s.positive = R;
+  }
+  return s;
+}
+
+// ---- Inverse maps -------------------------------------------------------------------
+
+namespace {
+void check_measured(const std::string& name, const Measured& m, const std::string& unit, bool positive) {
+  if (positive) require_positive(name, m.value, unit);
+  else require_nonnegative(name, m.value, unit);
+  require_nonnegative(name + " uncertainty", m.sigma, unit);
+}
+MuEstimate finish(MuEstimate e) {
+  double var = 0.0;
+  for (const auto& c : e.contributions) var += (c.derivative * c.sigma) * (c.derivative * c.sigma);
+  e.sigma = std::sqrt(var);
+  return e;
+}
+}  // namespace
+
+MuEstimate estimate_mu_from_force(const Rod& rod, Measured F, Measured yn, double sigma_L, double sigma_H) {
+  rod.validate();
+  check_measured("F", F, "N", true);
+  check_measured("yn", yn, "m", false);
+  require_range("yn", yn.value, 0.0, rod.half_length(), "m; push point on the rod, at most b = L/2");
+  require_nonnegative("L uncertainty", sigma_L, "m");
+  require_nonnegative("H uncertainty", sigma_H, "J");
+  const double b = rod.half_length(), W = rod.load(), s = std::hypot(yn.value, b);
+  MuEstimate e;
+  e.load = W;
+  e.mu = F.value * (s + yn.value) / (W * b);
+  // d ln mu: dF/F + dyn/s - (yn/(2 b s) + 1/L) dL - (F_vdw/(H W)) dH   (W proportional to L).
+  e.contributions = {
+      {"F", F.value, F.sigma, e.mu / F.value},
+      {"yn", yn.value, yn.sigma, e.mu / s},
+      {"L", rod.length, sigma_L, -e.mu * (yn.value / (2.0 * b * s) + 1.0 / rod.length)},
+      {"H", rod.hamaker, sigma_H, -e.mu * rod.vdw_force() / (rod.hamaker * W)},
+  };
+  return finish(e);
+}
+
+MuEstimate estimate_mu_from_icor(const Rod& rod, Measured F, Measured R, double sigma_L, double sigma_H) {
+  rod.validate();
+  check_measured("F", F, "N", true);
+  check_measured("R", R, "m", true);
+  require_nonnegative("L uncertainty", sigma_L, "m");
+  require_nonnegative("H uncertainty", sigma_H, "J");
+  const double b = rod.half_length(), W = rod.load();
+  MuEstimate e;
+  e.load = W;
+  e.mu = F.value * b / (W * R.value);
+  e.contributions = {
+      {"F", F.value, F.sigma, e.mu / F.value},
+      {"R", R.value, R.sigma, -e.mu / R.value},
+      {"L", rod.length, sigma_L, 0.0},
+      {"H", rod.hamaker, sigma_H, -e.mu * rod.vdw_force() / (rod.hamaker * W)},
+  };
+  return finish(e);
+}
+
+double round_significant(double x, int digits) {
+  if (x == 0.0 || !std::isfinite(x)) return x;
+  const double e = std::floor(std::log10(std::fabs(x)));
+  const double scale = std::pow(10.0, static_cast<double>(digits) - 1.0 - e);
+  return std::round(x * scale) / scale;
+}
+
+}  // namespace nanopush::icor
