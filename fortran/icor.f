@@ -249,17 +249,29 @@ C-----------------------------------------------------------------------
       C(2) = 0.0D0
       C(3) = -3.0D0*AKAP
       C(4) = 2.0D0*YN/B
+C     Overflowed scaled coefficients (absurd YN/RL or RK2/RL**2): reject.
+      IF (C(4) - C(4) .NE. 0.0D0 .OR. C(1) - C(1) .NE. 0.0D0) THEN
+        IERR = 1
+        RETURN
+      END IF
       IERR = 0
       RETURN
       END
 
 C-----------------------------------------------------------------------
-C     ICRPV -- the cubic C(1) + C(2) X + C(3) X**2 + C(4) X**3 (Horner);
-C     the EXTERNAL function handed to ZBRENT.
+C     ICRPV -- the cubic p(X) = C(1) + C(2) X + C(3) X**2 + C(4) X**3
+C     divided by MAX(1,|X|)**3: the same sign and zeros as p, without
+C     overflow for huge |X| (Horner in 1/X on the reversed coefficients).
+C     The EXTERNAL function handed to ZBRENT.
 C-----------------------------------------------------------------------
       DOUBLE PRECISION FUNCTION ICRPV(X, C)
-      DOUBLE PRECISION X, C(4)
-      ICRPV = ((C(4)*X + C(3))*X + C(2))*X + C(1)
+      DOUBLE PRECISION X, C(4), U
+      IF (ABS(X) .LE. 1.0D0) THEN
+        ICRPV = ((C(4)*X + C(3))*X + C(2))*X + C(1)
+      ELSE
+        U = 1.0D0/X
+        ICRPV = SIGN(1.0D0, X)*(((C(1)*U + C(2))*U + C(3))*U + C(4))
+      END IF
       RETURN
       END
 
@@ -293,13 +305,15 @@ C-----------------------------------------------------------------------
 
 C-----------------------------------------------------------------------
 C     ICRSUM -- sorts the real roots X(1..NR) ascending, scales them by B
-C     into ROOTS (metres), and returns RESMAX = max |p(x)|/sum|c_i x^i|.
+C     into ROOTS (metres) and returns RESMAX = max |p(x)|/sum|c_i x^i|
+C     (evaluated in 1/x for |x| > 1, so nothing overflows). A root that
+C     is finite in units of B but overflows in metres is moved to NINF.
 C-----------------------------------------------------------------------
-      SUBROUTINE ICRSUM(C, X, NR, B, ROOTS, RESMAX)
-      DOUBLE PRECISION C(4), X(*), B, ROOTS(*), RESMAX, T, P, S, AX
-      INTEGER NR, I, J
-      DOUBLE PRECISION ICRPV
-      EXTERNAL ICRPV
+      SUBROUTINE ICRSUM(C, X, NR, B, ROOTS, RESMAX, NINF)
+      DOUBLE PRECISION C(4), X(*), B, ROOTS(*), RESMAX, T, P, S, AX, U
+      DOUBLE PRECISION BIG
+      INTEGER NR, NINF, I, J, NOUT
+      PARAMETER (BIG = 1.7976931348623157D308)
       DO 20 I = 2, NR
         T = X(I)
         J = I - 1
@@ -314,59 +328,54 @@ C-----------------------------------------------------------------------
         X(J+1) = T
    20 CONTINUE
       RESMAX = 0.0D0
+      NOUT = 0
       DO 30 I = 1, NR
-        P = ICRPV(X(I), C)
         AX = ABS(X(I))
-        S = ((ABS(C(4))*AX + ABS(C(3)))*AX + ABS(C(2)))*AX + ABS(C(1))
+        IF (AX .LE. 1.0D0) THEN
+          P = ((C(4)*X(I) + C(3))*X(I) + C(2))*X(I) + C(1)
+          S = ((ABS(C(4))*AX + ABS(C(3)))*AX + ABS(C(2)))*AX
+     &        + ABS(C(1))
+        ELSE
+          U = 1.0D0/X(I)
+          P = ((C(1)*U + C(2))*U + C(3))*U + C(4)
+          U = ABS(U)
+          S = ((ABS(C(1))*U + ABS(C(2)))*U + ABS(C(3)))*U + ABS(C(4))
+        END IF
         IF (S .GT. 0.0D0) RESMAX = MAX(RESMAX, ABS(P)/S)
-        ROOTS(I) = B*X(I)
+        IF (AX .GT. 1.0D0 .AND. AX .GT. BIG/B) THEN
+          NINF = NINF + 1
+        ELSE
+          NOUT = NOUT + 1
+          ROOTS(NOUT) = B*X(I)
+        END IF
    30 CONTINUE
+      NR = NOUT
       RETURN
       END
 
 C-----------------------------------------------------------------------
-C     ICRLAP -- all roots of the constrained cubic (5.4) as eigenvalues
-C     of its companion matrix, LAPACK DGEEV (which balances the matrix,
-C     DGEBAL, before the Hessenberg QR iteration).
-C
-C     In:  YN [m] >= 0, RL [m] > 0, RK2 = I/M [m**2] > 0.
-C     Out: ROOTS(3) real roots ascending [m], NREAL of them;
-C          NCPLX non-real roots; NINF roots at infinity (YN -> 0);
-C          RESMAX max relative residual of the real roots; IERR.
-C     Workspace: queried from DGEEV (LWORK = -1) and checked against
-C     the local array before the real call.
+C     ICREIG -- eigenvalues WR + i WI of the companion matrix of the
+C     polynomial P(1) + P(2) x + ... + P(N+1) x**N (P(N+1) /= 0), by
+C     LAPACK DGEEV (which balances the matrix, DGEBAL, before the
+C     Hessenberg QR iteration). Workspace: queried (LWORK = -1) and
+C     checked against the local array. IERR 0, 2 (INFO /= 0) or 5.
 C-----------------------------------------------------------------------
-      SUBROUTINE ICRLAP(YN, RL, RK2, ROOTS, NREAL, NCPLX, NINF,
-     &                  RESMAX, IERR)
-      DOUBLE PRECISION YN, RL, RK2, ROOTS(3), RESMAX
-      INTEGER NREAL, NCPLX, NINF, IERR
+      SUBROUTINE ICREIG(P, N, WR, WI, IERR)
+      INTEGER N, IERR
+      DOUBLE PRECISION P(*), WR(3), WI(3)
       INTEGER LWMAX
       PARAMETER (LWMAX = 256)
-      DOUBLE PRECISION C(4), A(3,3), WR(3), WI(3), VL(1,1), VR(1,1)
-      DOUBLE PRECISION WORK(LWMAX), X(3), B
-      INTEGER N, INFO, LWORK, I, J
-      NREAL = 0
-      NCPLX = 0
-      NINF = 0
-      RESMAX = 0.0D0
-      DO 5 I = 1, 3
-        ROOTS(I) = 0.0D0
-    5 CONTINUE
-      CALL ICRCUB(YN, RL, RK2, C, IERR)
-      IF (IERR .NE. 0) RETURN
-      B = 0.5D0*RL
-      CALL ICRDEF(C, N, NINF)
-      IF (N .EQ. 0) RETURN
-C     Companion matrix, first-row form: A(1,J) = -C(N+1-J)/C(N+1),
+      DOUBLE PRECISION A(3,3), VL(1,1), VR(1,1), WORK(LWMAX)
+      INTEGER INFO, LWORK, I, J
+C     Companion matrix, first-row form: A(1,J) = -P(N+1-J)/P(N+1),
 C     ones on the subdiagonal.
       DO 20 J = 1, N
         DO 10 I = 1, N
           A(I,J) = 0.0D0
    10   CONTINUE
-        A(1,J) = -C(N+1-J)/C(N+1)
+        A(1,J) = -P(N+1-J)/P(N+1)
         IF (J .LT. N) A(J+1,J) = 1.0D0
    20 CONTINUE
-C     Workspace query, then the computation.
       CALL DGEEV('N', 'N', N, A, 3, WR, WI, VL, 1, VR, 1, WORK, -1,
      &           INFO)
       IF (INFO .NE. 0) THEN
@@ -385,7 +394,107 @@ C     Workspace query, then the computation.
         IERR = 2
         RETURN
       END IF
-      DO 30 I = 1, N
+      IERR = 0
+      RETURN
+      END
+
+C-----------------------------------------------------------------------
+C     ICRLAP -- all roots of the constrained cubic (5.4) as eigenvalues
+C     of companion matrices, LAPACK DGEEV (ICREIG). Roots of modulus > 1
+C     come from the companion matrix of p, the others as reciprocals of
+C     the eigenvalues of the companion matrix of the reversed polynomial
+C     x**N p(1/x): each root comes from the matrix in which it is among
+C     the largest eigenvalues, so the O(1) roots stay exact while the
+C     third root runs off to infinity (YN -> 0).
+C
+C     In:  YN [m] >= 0, RL [m] > 0, RK2 = I/M [m**2] > 0.
+C     Out: ROOTS(3) real roots ascending [m], NREAL of them;
+C          NCPLX non-real roots; NINF roots at infinity (YN -> 0);
+C          RESMAX max relative residual of the real roots; IERR.
+C-----------------------------------------------------------------------
+      SUBROUTINE ICRLAP(YN, RL, RK2, ROOTS, NREAL, NCPLX, NINF,
+     &                  RESMAX, IERR)
+      DOUBLE PRECISION YN, RL, RK2, ROOTS(3), RESMAX
+      INTEGER NREAL, NCPLX, NINF, IERR
+      DOUBLE PRECISION C(4), CR(4), WR(3), WI(3), VR(3), VI(3), X(3)
+      DOUBLE PRECISION B, T, BIG
+      INTEGER N, I, J, K, NZ
+      LOGICAL REVOK
+      PARAMETER (BIG = 1.7976931348623157D308/16.0D0)
+      NREAL = 0
+      NCPLX = 0
+      NINF = 0
+      RESMAX = 0.0D0
+      DO 5 I = 1, 3
+        ROOTS(I) = 0.0D0
+    5 CONTINUE
+      CALL ICRCUB(YN, RL, RK2, C, IERR)
+      IF (IERR .NE. 0) RETURN
+      B = 0.5D0*RL
+      CALL ICRDEF(C, N, NINF)
+      IF (N .EQ. 0) RETURN
+C     Exact zero roots (zero constant terms).
+      NZ = 0
+    6 CONTINUE
+      IF (NZ .LT. N .AND. C(NZ+1) .EQ. 0.0D0) THEN
+        NZ = NZ + 1
+        NREAL = NREAL + 1
+        X(NREAL) = 0.0D0
+        GO TO 6
+      END IF
+C     Shift out the zero roots: CR(1..N-NZ+1) is the remaining factor.
+      DO 7 I = 1, N - NZ + 1
+        CR(I) = C(I + NZ)
+    7 CONTINUE
+      N = N - NZ
+      IF (N .EQ. 0) GO TO 90
+      CALL ICREIG(CR, N, WR, WI, IERR)
+      IF (IERR .NE. 0) RETURN
+C     Reversed polynomial, unless its companion matrix would overflow.
+      REVOK = .TRUE.
+      DO 8 I = 2, N + 1
+        IF (ABS(CR(I)) .GT. BIG*ABS(CR(1))) REVOK = .FALSE.
+    8 CONTINUE
+      IF (REVOK) THEN
+        DO 9 I = 1, N + 1
+          C(I) = CR(N + 2 - I)
+    9   CONTINUE
+        CALL ICREIG(C, N, VR, VI, IERR)
+        IF (IERR .NE. 0) RETURN
+      END IF
+C     Sort both sets by decreasing modulus (insertion sort, N <= 3).
+      DO 20 I = 2, N
+        DO 15 J = I, 2, -1
+          IF (WR(J)**2 + WI(J)**2 .GT. WR(J-1)**2 + WI(J-1)**2) THEN
+            T = WR(J)
+            WR(J) = WR(J-1)
+            WR(J-1) = T
+            T = WI(J)
+            WI(J) = WI(J-1)
+            WI(J-1) = T
+          END IF
+          IF (REVOK) THEN
+            IF (VR(J)**2 + VI(J)**2 .GT. VR(J-1)**2 + VI(J-1)**2) THEN
+              T = VR(J)
+              VR(J) = VR(J-1)
+              VR(J-1) = T
+              T = VI(J)
+              VI(J) = VI(J-1)
+              VI(J-1) = T
+            END IF
+          END IF
+   15   CONTINUE
+   20 CONTINUE
+C     K roots of modulus > 1 from p's matrix; N - K from the reversed.
+      K = 0
+   25 CONTINUE
+      IF (K .LT. N) THEN
+        IF (.NOT. REVOK .OR. WR(K+1)**2 + WI(K+1)**2 .GT. 1.0D0) THEN
+          K = K + 1
+          GO TO 25
+        END IF
+      END IF
+      DO 30 I = 1, K
         IF (WI(I) .EQ. 0.0D0) THEN
           NREAL = NREAL + 1
           X(NREAL) = WR(I)
@@ -393,7 +502,18 @@ C     Workspace query, then the computation.
           NCPLX = NCPLX + 1
         END IF
    30 CONTINUE
-      CALL ICRSUM(C, X, NREAL, B, ROOTS, RESMAX)
+      DO 40 I = 1, N - K
+        IF (VI(I) .EQ. 0.0D0) THEN
+          NREAL = NREAL + 1
+          X(NREAL) = 1.0D0/VR(I)
+        ELSE
+          NCPLX = NCPLX + 1
+        END IF
+   40 CONTINUE
+   90 CONTINUE
+C     Residuals against the full cubic.
+      CALL ICRCUB(YN, RL, RK2, C, IERR)
+      CALL ICRSUM(C, X, NREAL, B, ROOTS, RESMAX, NINF)
       IERR = 0
       RETURN
       END
@@ -501,7 +621,7 @@ C     Bounded piece.
         FR = ICRPV(CR(2), C)
         IF (F0 .NE. 0.0D0 .AND. FR .NE. 0.0D0 .AND.
      &      ((F0 .GT. 0.0D0) .NEQV. (FR .GT. 0.0D0))) THEN
-          CALL ZBRENT(ICRPV, CR(1), CR(2), 0.0D0, 200, C, XR, FR,
+          CALL ZBRENT(ICRPV, CR(1), CR(2), 0.0D0, 5000, C, XR, FR,
      &                IT, IERR)
           NITER = NITER + IT
           IF (IERR .NE. 0) THEN
@@ -551,7 +671,7 @@ C       Sign of p at infinity in direction DIR.
           NINF = NINF + 1
           GO TO 30
         END IF
-        CALL ZBRENT(ICRPV, XL, XH, 0.0D0, 200, C, XR, FR, IT, IERR)
+        CALL ZBRENT(ICRPV, XL, XH, 0.0D0, 5000, C, XR, FR, IT, IERR)
         NITER = NITER + IT
         IF (IERR .NE. 0) THEN
           IERR = 3
@@ -561,7 +681,7 @@ C       Sign of p at infinity in direction DIR.
         X(NREAL) = XR
    30 CONTINUE
       NCPLX = 3 - NINF - NREAL
-      CALL ICRSUM(C, X, NREAL, B, ROOTS, RESMAX)
+      CALL ICRSUM(C, X, NREAL, B, ROOTS, RESMAX, NINF)
       IERR = 0
       RETURN
       END

@@ -194,7 +194,8 @@ BrentRoots real_roots_brent(const std::vector<double>& c_in) {
   if (c.empty()) throw InputError("polynomial coefficients", "all zero", "at least one coefficient must be non-zero");
   const std::size_t n = c.size() - 1;
   if (n == 0) return out;
-  auto p = [&c](double x) { return roots::polyval(c, x); };
+  // p(x)/max(1,|x|)^n: same sign and zeros as p, no overflow for huge |x|.
+  auto p = [&c](double x) { return roots::polyval_scaled(c, x); };
 
   // Critical points: real roots of p'(x) (degree n - 1 <= 2), by the stable quadratic formula.
   std::vector<double> crit;
@@ -259,6 +260,10 @@ CubicSolution solve_constrained_cubic(double yn, double L, double k2, CubicMetho
   require_nonnegative("yn", yn, "m");
   require_positive("k2", k2, "m^2");
   const double b = 0.5 * L, kappa = k2 / (b * b);
+  if (!std::isfinite(kappa * (1.0 - 2.0 * kappa)) || !std::isfinite(3.0 * kappa))
+    throw InputError("k2", fmt(k2), "k2/(L/2)^2 must be representable (got an overflow for L = " + fmt(L) + " m)");
+  if (!std::isfinite(2.0 * yn / b))
+    throw InputError("yn", fmt(yn), "yn/(L/2) must be representable (got an overflow for L = " + fmt(L) + " m)");
   // Dimensionless r = R/b: (2 yn/b) r^3 - 3 kappa r^2 + kappa (1 - 2 kappa) = 0.
   const std::vector<double> c = {kappa * (1.0 - 2.0 * kappa), 0.0, -3.0 * kappa, 2.0 * yn / b};
   CubicSolution s;
@@ -279,9 +284,9 @@ CubicSolution solve_constrained_cubic(double yn, double L, double k2, CubicMetho
     std::sort(r.begin(), r.end());
   }
   for (double x : r) {
-    const double scale = roots::polyscale(c, x);
-    if (scale > 0.0) s.max_residual = std::max(s.max_residual, std::fabs(roots::polyval(c, x)) / scale);
-    s.real_roots.push_back(b * x);
+    s.max_residual = std::max(s.max_residual, roots::poly_relative_residual(c, x));
+    if (std::isfinite(b * x)) s.real_roots.push_back(b * x);
+    else ++s.at_infinity;  // finite in units of b, beyond the largest double in metres
   }
   for (double R : s.real_roots) {
     if (R < 0.0) s.negative = R;  // ascending: the last negative is the closest to 0
@@ -351,6 +356,70 @@ double round_significant(double x, int digits) {
   const double e = std::floor(std::log10(std::fabs(x)));
   const double scale = std::pow(10.0, static_cast<double>(digits) - 1.0 - e);
   return std::round(x * scale) / scale;
+}
+
+// ---- The thesis' printed values -----------------------------------------------------
+
+int ThesisTableRow::digits() const {
+  int d = 0;
+  for (const char* c = mantissa; *c; ++c)
+    if (*c >= '0' && *c <= '9') ++d;
+  return d;
+}
+
+const std::vector<ThesisTableRow>& thesis_table_5_1() {
+  static const std::vector<ThesisTableRow> rows = {
+      {295e-9, 7.93e-8, "7.93", false},   {285e-9, 7.97e-8, "7.97", false},
+      {275e-9, 8.012e-8, "8.012", false}, {265e-9, 8.054e-8, "8.054", false},
+      {255e-9, 8.098e-8, "8.098", false}, {245e-9, 8.142e-8, "8.142", false},
+      {235e-9, 8.188e-8, "8.188", false}, {225e-9, 8.235e-8, "8.235", false},
+      {215e-9, 8.283e-8, "8.283", false}, {205e-9, 8.333e-8, "8.333", false},
+      {195e-9, 8.384e-8, "8.384", false}, {185e-9, 8.436e-8, "8.436", false},
+      {175e-9, 8.49e-8, "8.49", false},   {165e-9, 8.546e-8, "8.546", false},
+      {155e-9, 8.603e-8, "8.603", false}, {145e-9, 8.662e-8, "8.662", false},
+      {135e-9, 8.723e-8, "8.723", false}, {125e-9, 8.787e-8, "8.787", false},
+      {115e-9, 8.852e-8, "8.852", false}, {105e-9, 8.92e-8, "8.92", false},
+      {95e-9, 8.99e-8, "8.99", false},    {85e-9, 9.064e-8, "9.064", false},
+      {75e-9, 9.14e-8, "9.14", false},    {65e-9, 9.219e-8, "9.219", false},
+      {55e-9, 9.302e-8, "9.302", false},  {45e-9, 9.388e-8, "9.388", false},
+      {35e-9, 9.479e-8, "9.479", false},  {25e-9, 9.574e-8, "9.574", false},
+      {15e-9, 9.673e-8, "9.673", false},  {5e-9, 9.779e-8, "9.779", false},
+      {4e-9, 9.789e-8, "9.789", false},   {3e-9, 9.800e-8, "9.800", false},
+      {2e-9, 9.811e-8, "9.811", true},    {1e-9, 9.822e-8, "9.822", true},
+      {0.0, 9.833e-8, "9.833", true},
+  };
+  return rows;
+}
+
+double sample_std(const std::vector<double>& x) {
+  if (x.size() < 2) throw InputError("sample size", std::to_string(x.size()), "must be >= 2");
+  double mean = 0.0;
+  for (double v : x) mean += v;
+  mean /= static_cast<double>(x.size());
+  double ss = 0.0;
+  for (double v : x) ss += (v - mean) * (v - mean);
+  return std::sqrt(ss / static_cast<double>(x.size() - 1));
+}
+
+ErrorAnalysis error_analysis(double L, double k2, CubicMethod method, int n) {
+  if (n < 2) throw InputError("n", std::to_string(n), "must be >= 2");
+  std::vector<double> a, c;
+  for (int i = 0; i < n; ++i) {
+    const double yn = i * 1e-9;
+    a.push_back(unknown_pressure(yn, L) / 1e-9);
+    const auto s = solve_constrained_cubic(yn, L, k2, method);
+    if (!s.negative) throw SolverError("eq 5.4 has no negative root at yn = " + fmt(yn) + " m");
+    c.push_back(-*s.negative / 1e-9);
+  }
+  ErrorAnalysis e;
+  e.n = n;
+  e.std_unknown_pressure_nm = sample_std(a);
+  e.std_constrained_nm = sample_std(c);
+  for (int i = 0; i < n; ++i) {
+    e.mean_unknown_pressure_nm += a[static_cast<std::size_t>(i)] / n;
+    e.mean_constrained_nm += c[static_cast<std::size_t>(i)] / n;
+  }
+  return e;
 }
 
 }  // namespace nanopush::icor

@@ -171,4 +171,37 @@ MuEstimate estimate_mu_from_icor(const Rod& rod, Measured F, Measured R, double 
 /// Round to `digits` significant digits (for comparing with printed tables).
 double round_significant(double x, int digits);
 
+// ---- The thesis' printed values -----------------------------------------------------
+
+/// One row of Table 5.1 as printed: yn [m], the printed |R| [m] and its mantissa text
+/// (whose digit count is the printed precision); `plus_minus` where the thesis prints +-.
+struct ThesisTableRow {
+  double yn;
+  double printed;
+  const char* mantissa;
+  bool plus_minus;
+  [[nodiscard]] int digits() const;  ///< significant digits printed
+};
+/// Table 5.1, top (yn = 295 nm) to bottom (yn = 0), both printed columns being identical.
+const std::vector<ThesisTableRow>& thesis_table_5_1();
+
+/// Section 5.6.1.1: sample standard deviations printed for n = 296 push points.
+inline constexpr double kThesisStdUnknownPressure = 49.6987;  ///< eq 4.13 [nm]
+inline constexpr double kThesisStdConstrained = 5.3950;       ///< eq 5.4 [nm]
+
+/// The error analysis of section 5.6.1.1 as we reproduce it: yn = 0, 1, ..., n-1 nm
+/// (n = 296 covers 0..295 nm = 0..b), R in nanometres, sample standard deviation (n - 1
+/// in the denominator). For 5.4 the branch is Table 5.1's (negative root), |R|.
+struct ErrorAnalysis {
+  int n = 0;
+  double std_unknown_pressure_nm = 0.0;  ///< eq 4.13
+  double std_constrained_nm = 0.0;       ///< eq 5.4
+  double mean_unknown_pressure_nm = 0.0;
+  double mean_constrained_nm = 0.0;
+};
+ErrorAnalysis error_analysis(double L, double k2, CubicMethod method, int n = 296);
+
+/// Sample standard deviation (n - 1 denominator, two-pass).
+double sample_std(const std::vector<double>& x);
+
 }  // namespace nanopush::icor

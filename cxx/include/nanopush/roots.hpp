@@ -37,7 +37,7 @@ namespace nanopush::roots {
 
 struct BrentOptions {
   double xtol = 0.0;     ///< absolute tolerance on x (0: full machine precision)
-  int max_iter = 200;    ///< iteration cap (Brent needs at most ~ (log2(range/tol))^2)
+  int max_iter = 5000;   ///< cap; bisection alone needs <= ~2100 steps over the whole double range
 };
 
 struct BrentResult {
@@ -148,16 +148,26 @@ std::vector<std::pair<double, double>> bracket_scan(F&& f, double a, double b, i
 double polyval(const std::vector<double>& c_ascending, double x);
 /// The natural scale of p at x: sum |c_i| |x|^i (the backward-error denominator).
 double polyscale(const std::vector<double>& c_ascending, double x);
+/// p(x) / max(1, |x|)^n, n = c.size() - 1: the sign and the zeros of p without overflow
+/// for huge |x| (for |x| > 1 it is evaluated by Horner in 1/x on the reversed coefficients).
+double polyval_scaled(const std::vector<double>& c_ascending, double x);
+/// |p(x)| / sum |c_i x^i| evaluated without overflow (0 when p has a zero scale at x).
+double poly_relative_residual(const std::vector<double>& c_ascending, double x);
 
 struct PolynomialRoots {
   std::vector<std::complex<double>> roots;  ///< finite roots, real parts ascending
   int at_infinity = 0;  ///< degree lost to a zero / underflowing leading coefficient
 };
 
-/// All roots of c[0] + c[1] x + ... + c[n] x^n as eigenvalues of the balanced companion
-/// matrix (Eigen's real Schur decomposition). A leading coefficient that is zero, or so
-/// small that c_i/c_n overflows, is deflated and counted in `at_infinity`. Throws
-/// InputError for non-finite or all-zero coefficients.
+/// All roots of c[0] + c[1] x + ... + c[n] x^n as eigenvalues of balanced companion
+/// matrices (Eigen's real Schur decomposition). Roots of modulus > 1 are taken from the
+/// companion matrix of p, roots of modulus <= 1 as reciprocals of the eigenvalues of the
+/// companion matrix of the reversed polynomial x^n p(1/x): the QR iteration is accurate to
+/// eps times the norm of the balanced matrix, so each root comes from the matrix in which it
+/// is among the largest. This keeps the O(1) roots exact when another root runs off to
+/// infinity (the leading coefficient -> 0). A leading coefficient that is zero, or so small
+/// that c_i/c_n overflows, is deflated and counted in `at_infinity`; zero constant terms
+/// give exact zero roots. Throws InputError for non-finite or all-zero coefficients.
 PolynomialRoots polynomial_roots(const std::vector<double>& c_ascending);
 
 /// Parlett-Reinsch balancing (radix 2) of a square matrix in place: a diagonal similarity
