@@ -377,8 +377,10 @@ void step_table5_1(ReproduceContext& ctx) {
     line << std::setprecision(7);
     line << "| " << row.yn * 1e9 << " | " << (row.plus_minus ? "±" : "") << row.mantissa << "e-8 | "
          << *sol[0].negative << " | " << std::setprecision(2) << (-*sol[0].negative - row.printed) / row.printed
-         << " | " << (all_match ? "yes" : "**no**") << " | " << std::setprecision(7)
-         << (sol[0].positive ? csv_number(*sol[0].positive).substr(0, 12) : std::string("—")) << " | "
+         << " | " << (all_match ? "yes" : "**no**") << " | " << std::setprecision(7);
+    if (sol[0].positive) line << *sol[0].positive;
+    else line << "—";
+    line << " | "
          << std::setprecision(2) << spread << " |\n";
     ctx.report << line.str();
   }
