@@ -387,3 +387,63 @@ TEST_CASE("Friction coefficient estimates: first-order uncertainty vs finite dif
   CHECK_THROWS_AS(icor::estimate_mu_from_force(rod, {F, -1.0}, {yn, 0}), InputError);
   CHECK_THROWS_AS(icor::estimate_mu_from_icor(rod, {F, 0}, {0.0, 0}), InputError);
 }
+
+TEST_CASE("Extension point: the iCOR read off a velocity state has zero velocity", "[icor][unit]") {
+  std::mt19937_64 gen(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int i = 0; i < 100; ++i) {
+    const double vx = u(gen), vy = u(gen), w = u(gen);
+    const auto c = icor::icor_from_velocity(vx, vy, w);
+    // Velocity of the point c: v + omega z x c = (vx - w cy, vy + w cx) = 0.
+    CHECK(std::fabs(vx - w * c.cy) <= 1e-14 * (std::fabs(vx) + std::fabs(w * c.cy)));
+    CHECK(std::fabs(vy + w * c.cx) <= 1e-14 * (std::fabs(vy) + std::fabs(w * c.cx)));
+    CHECK(c.R == Approx(std::hypot(vx, vy) / std::fabs(w)).epsilon(1e-14));
+  }
+  // Push along +x at yn > 0 turns the rod clockwise: the iCOR is on the far side (y < 0).
+  const auto c = icor::icor_from_velocity(1.0, 0.0, -2.0);
+  CHECK(c.cx == 0.0);
+  CHECK(c.cy == -0.5);
+  const auto t = icor::icor_from_velocity(1.0, 0.0, 0.0);
+  CHECK(t.translation);
+  CHECK(std::isinf(t.R));
+  CHECK_THROWS_AS(icor::icor_from_velocity(std::nan(""), 0.0, 1.0), InputError);
+}
+
+TEST_CASE("Extension point: line-contact wrench against midpoint cubature", "[icor][numeric]") {
+  const double b = 295e-9;
+  for (double R : {0.0, 50e-9, 200e-9, 400e-9})
+    for (double alpha : {0.0, 0.3, M_PI / 2, 2.0, M_PI, 4.0}) {
+      INFO("R = " << R << " alpha = " << alpha);
+      const double cx = -R * std::cos(alpha), cy = -R * std::sin(alpha);
+      const int n = 200000;
+      double fx = 0, fy = 0, mf = 0;
+      for (int i = 0; i < n; ++i) {
+        const double y = -b + (i + 0.5) * 2.0 * b / n, dy = 2.0 * b / n;
+        const double vx = -(y - cy), vy = -cx, sp = std::hypot(vx, vy);  // omega = +1
+        if (sp == 0.0) continue;
+        const double dfx = -vx / sp / (2 * b) * dy, dfy = -vy / sp / (2 * b) * dy;
+        fx += dfx;
+        fy += dfy;
+        mf += -y * dfx;  // x = 0
+      }
+      const auto w = icor::line_contact_wrench(b, R, alpha);
+      CHECK(w.fx == Approx(fx).margin(1e-6));
+      CHECK(w.fy == Approx(fy).margin(1e-6));
+      CHECK(w.mf == Approx(mf).margin(1e-6 * b));
+    }
+}
+
+TEST_CASE("Extension point: the generic quasi-static solver with the line contact is eq 4.13", "[icor][numeric]") {
+  const double b = 295e-9, L = 2 * b;
+  auto wrench = [b](double R, double a) { return icor::line_contact_wrench(b, R, a); };
+  for (double yn : {10e-9, 50e-9, 150e-9, 295e-9}) {
+    INFO("yn = " << yn);
+    // Push along body +x at (0, yn): clockwise rotation about an iCOR on the far side.
+    const auto q = icor::quasi_static_icor(wrench, 0.0, yn, 1.0, 0.0, 0.8 * b, M_PI / 2 + 0.2, b);
+    REQUIRE(q.converged);
+    CHECK(q.omega_sign == -1);
+    CHECK(q.R == Approx(icor::unknown_pressure(yn, L)).epsilon(1e-9));
+    CHECK(std::remainder(q.alpha - M_PI / 2, 2 * M_PI) == Approx(0.0).margin(1e-9));
+    CHECK(q.force == Approx(icor::minimum_force(1.0, 1.0, yn, L)).epsilon(1e-9));
+  }
+}

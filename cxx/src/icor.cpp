@@ -295,6 +295,133 @@ CubicSolution solve_constrained_cubic(double yn, double L, double k2, CubicMetho
   return s;
 }
 
+// ---- Extension points ---------------------------------------------------------------
+
+VelocityIcor icor_from_velocity(double vx, double vy, double omega) {
+  require_finite("vx", vx, "m/s");
+  require_finite("vy", vy, "m/s");
+  require_finite("omega", omega, "rad/s");
+  VelocityIcor c;
+  if (omega == 0.0) {
+    c.translation = true;
+    c.R = kInf;
+    return c;
+  }
+  c.cx = -vy / omega;
+  c.cy = vx / omega;
+  c.R = std::hypot(c.cx, c.cy);
+  if (!std::isfinite(c.R)) {  // |v|/|omega| beyond the largest double: translation
+    c = VelocityIcor{};
+    c.translation = true;
+    c.R = kInf;
+  }
+  return c;
+}
+
+Wrench line_contact_wrench(double b, double R, double alpha) {
+  require_positive("b", b, "m");
+  require_nonnegative("R", R, "m");
+  require_finite("alpha", alpha, "rad");
+  // Points q = (0, y), |y| <= b; iCOR c = (cx, cy); for omega > 0 the velocity of q is
+  // omega (-(y - cy), -cx), so the friction density per unit mu W is
+  // (1/(2b)) ((y - cy), cx) / rho, rho = sqrt((y - cy)^2 + cx^2).
+  const double cx = -R * std::cos(alpha), cy = -R * std::sin(alpha);
+  const double u1 = b - cy, u0 = -b - cy, k = 1.0 / (2.0 * b);
+  Wrench w;
+  if (std::fabs(cx) <= 1e-15 * b) {
+    // iCOR on the rod axis: the density is (sign(u), 0)/(2b).
+    const double lp = std::max(0.0, u1) - std::max(0.0, u0);  // length with u > 0
+    const double ln = (u1 - u0) - lp;                           // length with u < 0
+    w.fx = k * (lp - ln);
+    w.fy = 0.0;
+    // mf = -int y fx(y) dy, y = u + cy.
+    auto int_u = [](double lo, double hi) { return 0.5 * (hi * hi - lo * lo); };
+    const double a_p = std::max(0.0, u0), b_p = std::max(0.0, u1);
+    const double a_n = std::min(0.0, u0), b_n = std::min(0.0, u1);
+    const double iy_pos = int_u(a_p, b_p) + cy * (b_p - a_p);
+    const double iy_neg = int_u(a_n, b_n) + cy * (b_n - a_n);
+    w.mf = -k * (iy_pos - iy_neg);
+    return w;
+  }
+  const double c2 = cx * cx, ac = std::fabs(cx);
+  const double r1 = std::hypot(u1, cx), r0 = std::hypot(u0, cx);
+  const double as = std::asinh(u1 / ac) - std::asinh(u0 / ac);
+  w.fx = k * (r1 - r0);
+  w.fy = k * cx * as;  // int cx/rho du = cx (asinh(u1/|cx|) - asinh(u0/|cx|))
+  // mf = sum q x f = -int y fx dy (x = 0); y = u + cy:
+  // int u^2/rho du = (u rho - c^2 asinh(u/|c|))/2, int u/rho du = rho.
+  const double iuu = 0.5 * ((u1 * r1 - c2 * std::asinh(u1 / ac)) - (u0 * r0 - c2 * std::asinh(u0 / ac)));
+  const double iu = r1 - r0;
+  w.mf = -k * (iuu + cy * iu);
+  return w;
+}
+
+QuasiStaticIcor quasi_static_icor(const FrictionWrenchFn& wrench, double px, double py, double dir_x, double dir_y,
+                                  double R0, double alpha0, double length_scale) {
+  require_finite("px", px, "m");
+  require_finite("py", py, "m");
+  require_positive("R0", R0, "m");
+  require_finite("alpha0", alpha0, "rad");
+  require_positive("length_scale", length_scale, "m");
+  const double en = std::hypot(dir_x, dir_y);
+  if (!(en > 0.0) || !std::isfinite(en)) throw InputError("push direction", "(" + fmt(dir_x) + ", " + fmt(dir_y) + ")", "must be a finite non-zero vector");
+  const double ex = dir_x / en, ey = dir_y / en;
+  const double arm = px * ey - py * ex;  // (p x e)_z
+  QuasiStaticIcor best;
+  for (int sgn : {-1, +1}) {
+    // Balance: F e + s f = 0, F arm + s mf = 0 with F = -s (f . e). Unknowns z = (ln R, alpha).
+    auto g = [&](double lnR, double a, double& F) {
+      const Wrench w = wrench(std::exp(lnR), a);
+      const double fx = sgn * w.fx, fy = sgn * w.fy, mf = sgn * w.mf;
+      F = -(fx * ex + fy * ey);
+      return std::array<double, 2>{fx * ey - fy * ex, (F * arm + mf) / length_scale};
+    };
+    double z0 = std::log(R0), z1 = alpha0, F = 0.0;
+    auto r = g(z0, z1, F);
+    auto norm = [](const std::array<double, 2>& v) { return std::max(std::fabs(v[0]), std::fabs(v[1])); };
+    QuasiStaticIcor q;
+    q.omega_sign = sgn;
+    for (int it = 1; it <= 100; ++it) {
+      q.iterations = it;
+      if (norm(r) <= 1e-13) { q.converged = true; break; }
+      const double h = 1e-7;
+      double Fd = 0.0;
+      const auto r0p = g(z0 + h, z1, Fd), r0m = g(z0 - h, z1, Fd);
+      const auto r1p = g(z0, z1 + h, Fd), r1m = g(z0, z1 - h, Fd);
+      const double J00 = (r0p[0] - r0m[0]) / (2 * h), J10 = (r0p[1] - r0m[1]) / (2 * h);
+      const double J01 = (r1p[0] - r1m[0]) / (2 * h), J11 = (r1p[1] - r1m[1]) / (2 * h);
+      const double det = J00 * J11 - J01 * J10;
+      if (!(std::fabs(det) > 0.0) || !std::isfinite(det)) break;
+      const double d0 = -(J11 * r[0] - J01 * r[1]) / det, d1 = -(-J10 * r[0] + J00 * r[1]) / det;
+      double t = 1.0;
+      bool moved = false;
+      for (int k = 0; k < 40; ++k, t *= 0.5) {
+        double Ft = 0.0;
+        const double s0 = std::clamp(d0 * t, -2.0, 2.0), s1 = std::clamp(d1 * t, -1.0, 1.0);
+        const auto rt = g(z0 + s0, z1 + s1, Ft);
+        if (std::isfinite(rt[0]) && std::isfinite(rt[1]) && norm(rt) < norm(r)) {
+          z0 += s0;
+          z1 += s1;
+          r = rt;
+          F = Ft;
+          moved = true;
+          break;
+        }
+      }
+      if (!moved) break;
+    }
+    g(z0, z1, F);
+    q.R = std::exp(z0);
+    q.alpha = z1;
+    q.force = F;
+    q.residual = norm(r);
+    if (norm(r) <= 1e-13) q.converged = true;
+    if (q.converged && F > 0.0 && (!best.converged || q.force < best.force)) best = q;
+    else if (!best.converged && (best.iterations == 0 || q.residual < best.residual)) best = q;
+  }
+  return best;
+}
+
 // ---- Inverse maps -------------------------------------------------------------------
 
 namespace {

@@ -15,6 +15,7 @@
 // and never return NaN: pure translation is R = +infinity, a root at infinity is counted.
 #pragma once
 #include <array>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -135,6 +136,47 @@ struct BrentRoots {
   int iterations = 0;  ///< total Brent iterations
 };
 BrentRoots real_roots_brent(const std::vector<double>& c_ascending);
+
+// ---- Extension points: the dynamic iCOR (item 3) and finite contacts (item 4) --------
+
+/// The iCOR read off a rigid-body velocity state (models.md section 0): relative to the CM
+/// it sits at c = (-v_y, v_x)/omega, R = |c|. omega = 0 is pure translation: R = +inf and
+/// c = (0, 0) with `translation` set. Any frame works (c comes back in the frame of v).
+struct VelocityIcor {
+  double cx = 0.0, cy = 0.0;  ///< iCOR relative to the CM [m]
+  double R = 0.0;             ///< |c| [m] (+inf for pure translation)
+  bool translation = false;
+};
+VelocityIcor icor_from_velocity(double vx, double vy, double omega);
+
+/// Friction resultant on a contact for a rotation about the iCOR c = -R (cos alpha,
+/// sin alpha) (body axes, relative to the CM) with omega > 0, per unit mu W: force
+/// (fx, fy) in body axes and moment mf about the CM (z). For omega < 0 it is negated.
+struct Wrench {
+  double fx = 0.0, fy = 0.0, mf = 0.0;
+};
+using FrictionWrenchFn = std::function<Wrench(double R, double alpha)>;
+
+/// Closed-form wrench of a thin rod of half-length b along body y' (line contact, uniform
+/// pressure mu W / (2b)): the a/b -> 0 limit any rectangle closed form must reach.
+Wrench line_contact_wrench(double b, double R, double alpha);
+
+/// Quasi-static iCOR for a push of fixed body direction (dir_x, dir_y) applied at the body
+/// point (px, py): solve F e + f(R, alpha) = 0 and (p x e) F + mf = 0 for R, alpha and
+/// F >= 0 (F per unit mu W), trying both senses of rotation, by Newton's method on
+/// (ln R, alpha) with a finite-difference Jacobian and backtracking, from (R0, alpha0).
+/// The finite-rectangle iCOR of issue 5 item 4 is this with the closed-form rectangle
+/// wrench of models.md B; with line_contact_wrench it is eq 4.13 (tested).
+struct QuasiStaticIcor {
+  double R = 0.0, alpha = 0.0;
+  double force = 0.0;   ///< |F| / (mu W)
+  int omega_sign = 0;   ///< +1 counter-clockwise, -1 clockwise
+  int iterations = 0;
+  bool converged = false;
+  double residual = 0.0;  ///< max |balance equation| at the answer (units of mu W, mu W m)
+};
+QuasiStaticIcor quasi_static_icor(const FrictionWrenchFn& wrench, double px, double py, double dir_x, double dir_y,
+                                  double R0, double alpha0, double length_scale);
 
 // ---- Inverse maps: friction coefficient from measurements (Figs 4.4, 4.5) -----------
 
