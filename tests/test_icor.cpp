@@ -447,3 +447,24 @@ TEST_CASE("Extension point: the generic quasi-static solver with the line contac
     CHECK(q.force == Approx(icor::minimum_force(1.0, 1.0, yn, L)).epsilon(1e-9));
   }
 }
+
+TEST_CASE("Errata evidence: at Table 5.1's root, F of eq 5.2 is positive and a local maximum in R", "[icor][regression]") {
+  const auto rod = icor::nanorod();
+  const double W = rod.load(), mu = 0.1;
+  for (double yn : {0.0, 1e-9, 50e-9, 150e-9, 295e-9}) {
+    INFO("yn = " << yn);
+    const auto s = icor::solve_constrained_cubic(yn, kL, kK2, CubicMethod::Brent);
+    REQUIRE(s.negative.has_value());
+    const double R = *s.negative, h = 1e-4 * std::fabs(R);
+    auto F = [&](double r) { return icor::constrained_force(mu, W, r, yn, kL, kK2); };
+    CHECK(F(R) > 0.0);
+    CHECK(F(R + h) < F(R));  // both neighbours lower: a maximum of F(R), not a minimum
+    CHECK(F(R - h) < F(R));
+    CHECK((F(R + h) - 2 * F(R) + F(R - h)) / (h * h) < 0.0);
+  }
+  // At yn = 0 in closed form: F(R) = 3 mu W (R^3 - b^2 R/3)/(2 b^3), so F(-b/3) = +mu W/9 is
+  // the local maximum and F(+b/3) = -mu W/9 the local minimum (a negative push).
+  const double b = 0.5 * kL;
+  CHECK(icor::constrained_force(mu, W, -b / 3, 0.0, kL, kK2) == Approx(mu * W / 9).epsilon(1e-14));
+  CHECK(icor::constrained_force(mu, W, b / 3, 0.0, kL, kK2) == Approx(-mu * W / 9).epsilon(1e-14));
+}
