@@ -335,10 +335,10 @@ void step_table5_1(ReproduceContext& ctx) {
   ctx.report << "\n## Table 5.1: iCOR from the constrained cubic (5.4), nanorod L = 590 nm\n\n"
              << "Signed roots of 2 yn R^3 - 3 k^2 R^2 + k^2 (b^2 - 2 k^2) = 0 (k^2 = I/m = L^2/12) from four solvers:\n"
              << "Brent and Eigen companion eigenvalues in C++, Brent and LAPACK DGEEV companion eigenvalues in\n"
-             << "FORTRAN 77. The thesis prints |R| of the negative root (the far side of the CM); `deviation` is\n"
+             << "FORTRAN 77. The thesis prints |R| of the negative root (models.md: the far side of the CM); `deviation` is\n"
              << "(|R_negative| - printed)/printed; `match` says |R_negative| rounded to the printed number of\n"
-             << "significant digits equals the printed value for all four solvers. The positive branch (other\n"
-             << "side of the CM) exists for yn < b/sqrt(3) = 170.3 nm; where the thesis prints +- (yn <= 2 nm)\n"
+             << "significant digits equals the printed value for all four solvers. The positive branch (the other\n"
+             << "branch) exists for yn < b/sqrt(3) = 170.3 nm; where the thesis prints +- (yn <= 2 nm)\n"
              << "both branches are shown exactly (erratum 9).\n\n"
              << "| yn [nm] | thesis [m] | R negative (Brent C++) [m] | deviation | match | R positive [m] | max spread of 4 solvers |\n"
              << "|---:|---:|---:|---:|:---:|---:|---:|\n";
@@ -607,6 +607,7 @@ void step_fig5_2(ReproduceContext& ctx) {
              << "Plotted with R > 0 on the far side of the CM from the push (the sign of chapter 4): the Table 5.1\n"
              << "branch of (5.4) is |R_negative|, its other branch -R_positive. At yn = 0 the two branches meet the\n"
              << "axis at +-b/3 = +-" << std::setprecision(5) << b / 3.0 * 1e9 << " nm (the bifurcation squares).\n"
+             << "(Side of the CM as models.md section D reads the cubic's signs; see docs/errata.md, iCOR item 5.)\n"
              << "Fig 5.3 (dynamic iCOR) needs the rough-surface model and is not produced by this step.\n";
 }
 

@@ -8,8 +8,9 @@
 // Sign convention of chapter 4 (eqs 4.2-4.13): R > 0 is the distance from the CM to the
 // iCOR on the far side of the CM from the push point (the moment arm of F about the iCOR
 // is R + yn). The cubic (5.4) is reported with the signs of its own roots: its negative
-// root is the one Table 5.1 tabulates (|R| printed); its smallest positive root is the
-// other branch (erratum 9).
+// root is the one Table 5.1 tabulates (|R| printed; models.md D reads it as the far side,
+// see docs/errata.md on the sign); its smallest positive root is the other branch
+// (erratum 9).
 //
 // All functions take SI values, reject bad input with InputError (field, value, range)
 // and never return NaN: pure translation is R = +infinity, a root at infinity is counted.
