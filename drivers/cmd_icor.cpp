@@ -299,7 +299,8 @@ void render_if_possible(ReproduceContext& ctx, const plot::Figure& fig, const st
   }
   std::ostringstream b;
   for (const auto& p : fig.panels) {
-    b << "set grid\nset key top right box opaque\n";
+    b << "set grid\nset key outside right top box\n";
+    if (p.logy) b << "set format y \"10^{%L}\"\n";
     b << "set title " << gp_quote(p.title.empty() ? fig.title : p.title) << "\n";
     b << "set xlabel " << gp_quote(p.xlabel) << "\nset ylabel " << gp_quote(p.ylabel) << "\n";
     if (p.logx) b << "set logscale x\n";
