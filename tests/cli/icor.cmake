@@ -1,0 +1,53 @@
+# nanopush icor: the command line is a test too (issue 5).
+add_test(NAME cli.icor.roots_both_branches
+         COMMAND $<TARGET_FILE:nanopush> icor roots --yn 1e-9)
+set_tests_properties(cli.icor.roots_both_branches PROPERTIES
+  PASS_REGULAR_EXPRESSION "lapack,f77,3,0,0,-9\\.82225349651171[0-9]*e-08,9\\.84447594571973[0-9]*e-08")
+
+add_test(NAME cli.icor.roots_bifurcation
+         COMMAND $<TARGET_FILE:nanopush> icor roots --yn 0)
+set_tests_properties(cli.icor.roots_bifurcation PROPERTIES
+  PASS_REGULAR_EXPRESSION "brent,f77,2,0,1,-9\\.83333333333333[0-9]*e-08,9\\.83333333333333[0-9]*e-08")
+
+add_test(NAME cli.icor.roots_sweep
+         COMMAND $<TARGET_FILE:nanopush> icor roots --n 5 --log --yn-min 1e-15)
+set_tests_properties(cli.icor.roots_sweep PROPERTIES PASS_REGULAR_EXPRESSION "^yn,solver,language")
+
+add_test(NAME cli.icor.bad_yn_fails
+         COMMAND $<TARGET_FILE:nanopush> icor roots --yn -1e-9)
+set_tests_properties(cli.icor.bad_yn_fails PROPERTIES WILL_FAIL TRUE)
+add_test(NAME cli.icor.bad_yn_message
+         COMMAND $<TARGET_FILE:nanopush> icor roots --yn -1e-9)
+set_tests_properties(cli.icor.bad_yn_message PROPERTIES
+  PASS_REGULAR_EXPRESSION "--yn = -1[.0-9e-]*: must be >= 0 \\(m\\)")
+
+add_test(NAME cli.icor.bad_length_fails
+         COMMAND $<TARGET_FILE:nanopush> icor roots --yn 1e-9 --length 0)
+set_tests_properties(cli.icor.bad_length_fails PROPERTIES WILL_FAIL TRUE)
+add_test(NAME cli.icor.bad_length_message
+         COMMAND $<TARGET_FILE:nanopush> icor roots --yn 1e-9 --length -1e-9)
+set_tests_properties(cli.icor.bad_length_message PROPERTIES
+  PASS_REGULAR_EXPRESSION "rod.length = -1[.0-9e-]*: must be > 0 \\(m\\)")
+
+add_test(NAME cli.icor.formulas
+         COMMAND $<TARGET_FILE:nanopush> icor formulas --n 5)
+set_tests_properties(cli.icor.formulas PROPERTIES PASS_REGULAR_EXPRESSION "^yn,R_4_1,R_4_2,R_4_3,R_4_13")
+
+add_test(NAME cli.icor.estimate_mu_from_force
+         COMMAND $<TARGET_FILE:nanopush> icor estimate-mu --force 1e-6 --force-sigma 3e-8 --yn 200e-9
+                 --yn-sigma 5e-9 --hamaker-sigma 2e-20)
+set_tests_properties(cli.icor.estimate_mu_from_force PROPERTIES
+  PASS_REGULAR_EXPRESSION "mu = 0\\.374656 \\+- 0\\.0202022")
+
+add_test(NAME cli.icor.estimate_mu_from_icor
+         COMMAND $<TARGET_FILE:nanopush> icor estimate-mu --force 1e-6 --icor 150e-9 --icor-sigma 5e-9)
+set_tests_properties(cli.icor.estimate_mu_from_icor PROPERTIES PASS_REGULAR_EXPRESSION "eq 4\\.10.*mu = ")
+
+add_test(NAME cli.icor.estimate_mu_needs_one_map
+         COMMAND $<TARGET_FILE:nanopush> icor estimate-mu --force 1e-6 --yn 1e-7 --icor 1e-7)
+set_tests_properties(cli.icor.estimate_mu_needs_one_map PROPERTIES WILL_FAIL TRUE)
+
+add_test(NAME cli.icor.reproduce
+         COMMAND $<TARGET_FILE:nanopush> reproduce --quick --out ${CMAKE_CURRENT_BINARY_DIR}/icor_reproduce
+                 --only table5_1 --only icor_error_analysis --only fig4_2 --only fig4_3 --only fig4_4
+                 --only fig4_5 --only fig5_2)
