@@ -1,0 +1,166 @@
+// nanopush deck / legacy: write a scene as the classic input deck of the FORTRAN 77 main
+// program (fortran/prog_nanobar.f), and run that program on it to check it reproduces the
+// F77 engine as nanopush drives it.
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "nanopush/error.hpp"
+#include "nanopush/io.hpp"
+#include "nanopush/simulate.hpp"
+#include "registry.hpp"
+
+namespace nanopush::cli {
+namespace {
+
+std::string e(double v) {
+  char b[40];
+  std::snprintf(b, sizeof b, "%.17E", v);
+  return b;
+}
+
+/// The deck: each data line preceded by a comment line (see fortran/prog_nanobar.f).
+std::string deck_text(const Scene& sc, double rtol, const std::vector<double>& atol) {
+  std::ostringstream d;
+  const double xn = sc.push.pbx, yn = -sc.push.pby;  // thesis mapping, inverted
+  d << "* nanopush deck for scene " << sc.name << " (" << sc.source.string() << ")\n"
+    << (sc.description.empty() ? sc.name : sc.description).substr(0, 72) << "\n"
+    << "* XN YN [m] (thesis push coordinates: body point (XN, -YN))\n"
+    << e(xn) << " " << e(yn) << "\n"
+    << "* CMX CMY [m] THETA0 [rad]\n"
+    << e(sc.initial[kX]) << " " << e(sc.initial[kY]) << " " << e(sc.initial[kTheta]) << "\n"
+    << "* VX0 VY0 [m/s] OMEGA0 [rad/s]\n"
+    << e(sc.initial[kVx]) << " " << e(sc.initial[kVy]) << " " << e(sc.initial[kOmega]) << "\n"
+    << "* F [N] BETA [rad] FVDW [N] MU G [m/s^2]\n"
+    << e(sc.push.force) << " " << e(sc.push.beta) << " " << e(sc.rough() ? sc.surface.f_vdw : 0.0) << " "
+    << e(sc.rough() ? sc.surface.mu : 0.0) << " " << e(sc.surface.g) << "\n"
+    << "* M [kg] I [kg m^2]\n"
+    << e(sc.mass) << " " << e(sc.inertia) << "\n"
+    << "* SA (width) SB (length) SC (height) [m]\n"
+    << e(sc.width) << " " << e(sc.length) << " " << e(sc.height) << "\n"
+    << "* TEND [s] NOUT RTOL\n"
+    << e(sc.solver.t_end) << " " << sc.solver.samples << " " << e(rtol) << "\n"
+    << "* ATOL(1..8)\n";
+  for (std::size_t i = 0; i < 8; ++i) d << e(atol[i]) << (i + 1 < 8 ? " " : "\n");
+  d << "* MAXSTP\n" << std::min<long>(sc.solver.max_steps, 2000000000L) << "\n";
+  return d.str();
+}
+
+void check_deck_scene(const Scene& sc) {
+  if (sc.rough() && sc.surface.normal_load > 0)
+    throw InputError("surface.normal_load", fmt(sc.surface.normal_load),
+                     "the legacy deck carries N as m g + F_vdw; remove normal_load to write a deck");
+  if (sc.solver.samples > 20001)
+    throw InputError("solver.samples", std::to_string(sc.solver.samples), "the legacy program holds at most 20001 samples");
+}
+
+struct DeckOptions {
+  std::string scene, out;
+  double rtol = 0;
+};
+
+int deck_cmd(const DeckOptions& o) {
+  const Scene sc = load_scene(resolve_scene(o.scene));
+  check_deck_scene(sc);
+  const double rtol = o.rtol > 0 ? o.rtol : sc.solver.rtol;
+  const std::string text = deck_text(sc, rtol, sc.atol_vector(rtol, sc.solver.atol, 8));
+  if (o.out.empty() || o.out == "-")
+    std::cout << text;
+  else
+    write_file_atomic(o.out, text);
+  return 0;
+}
+
+std::filesystem::path self_dir() {
+  char buf[4096];
+  const ssize_t n = ::readlink("/proc/self/exe", buf, sizeof buf - 1);
+  if (n <= 0) return ".";
+  buf[n] = 0;
+  return std::filesystem::path(buf).parent_path();
+}
+
+struct LegacyOptions {
+  std::string scene, program;
+  double tolerance = 0;
+};
+
+int legacy_cmd(const LegacyOptions& o) {
+  namespace fs = std::filesystem;
+  const Scene sc = load_scene(resolve_scene(o.scene));
+  check_deck_scene(sc);
+  const fs::path prog = o.program.empty() ? self_dir() / "nanobar" : fs::path(o.program);
+  if (!fs::exists(prog)) throw InputError("--program", prog.string(), "no such program (build target 'nanobar')");
+  const double rtol = sc.solver.rtol;
+  const auto atol = sc.atol_vector(rtol, sc.solver.atol, 8);
+  const fs::path tmp = fs::temp_directory_path() / ("nanopush-legacy-" + std::to_string(::getpid()));
+  fs::create_directories(tmp);
+  write_file_atomic(tmp / "case.deck", deck_text(sc, rtol, atol));
+  const std::string cmd = "'" + prog.string() + "' < '" + (tmp / "case.deck").string() + "' > '" + (tmp / "case.out").string() + "'";
+  const int rc = std::system(cmd.c_str());
+  std::ifstream in(tmp / "case.out");
+  std::string line;
+  std::vector<std::vector<double>> rows;
+  bool data = false;
+  std::cout << "legacy program " << prog.string() << " on " << sc.name << ":\n";
+  while (std::getline(in, line)) {
+    if (!data) {
+      std::cout << "  | " << line << "\n";
+      if (line.find("THETA [rad]") != std::string::npos) data = true;
+      continue;
+    }
+    std::istringstream ls(line);
+    std::vector<double> r;
+    std::string tok;
+    while (ls >> tok) r.push_back(std::strtod(tok.c_str(), nullptr));
+    if (r.size() == 10) rows.push_back(r);
+  }
+  fs::remove_all(tmp);
+  if (rc != 0) std::cout << "  (the legacy program exited with status " << rc << ")\n";
+  RunSettings rs;
+  rs.engine = "f77";
+  rs.law = "thesis";
+  rs.allow_partial = true;
+  const Trajectory tr = run_scene(sc, rs);
+  const std::size_t n = std::min(rows.size(), tr.rows.size());
+  double dev = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t c = 0; c < 10; ++c) {
+      const double a = rows[i][c], b = tr.rows[i][c];
+      dev = std::max(dev, std::fabs(a - b) / std::max({std::fabs(a), std::fabs(b), 1e-300}));
+    }
+  const double tol = o.tolerance > 0 ? o.tolerance : 1e-15;
+  std::cout << "  samples: legacy " << rows.size() << ", nanopush f77 engine " << tr.rows.size()
+            << "; largest relative difference " << dev << " (tolerance " << tol << ")\n";
+  const bool ok = rows.size() == tr.rows.size() && n > 0 && dev <= tol;
+  std::cout << (ok ? "  -> the legacy program reproduces the F77 engine\n" : "  -> MISMATCH\n");
+  return ok ? 0 : 1;
+}
+
+RegisterCommand reg_deck{{"deck", "Write a scene as the classic input deck of the FORTRAN 77 program 'nanobar'", 60,
+                          [](CLI::App& app) -> std::function<int()> {
+                            auto o = std::make_shared<DeckOptions>();
+                            app.add_option("SCENE", o->scene, "scene file or preset name")->required();
+                            app.add_option("--out", o->out, "deck file (default: standard output)");
+                            app.add_option("--rtol", o->rtol, "relative tolerance (default: the scene's)")
+                                ->check(CLI::PositiveNumber);
+                            return [o] { return deck_cmd(*o); };
+                          }}};
+
+RegisterCommand reg_legacy{{"legacy",
+                            "Run the FORTRAN 77 main program 'nanobar' on a scene's deck and compare it with the F77 "
+                            "engine as nanopush drives it",
+                            61, [](CLI::App& app) -> std::function<int()> {
+                              auto o = std::make_shared<LegacyOptions>();
+                              app.add_option("SCENE", o->scene, "scene file or preset name")->required();
+                              app.add_option("--program", o->program, "the legacy program (default: nanobar beside nanopush)");
+                              app.add_option("--tolerance", o->tolerance, "largest relative difference (default 1e-15)")
+                                  ->check(CLI::PositiveNumber);
+                              return [o] { return legacy_cmd(*o); };
+                            }}};
+
+}  // namespace
+}  // namespace nanopush::cli
