@@ -242,10 +242,12 @@ contains
     integer, intent(out), optional :: stat
     character(len=:), allocatable, intent(out), optional :: errmsg
     type(c_ptr) :: err
+    character(len=:), allocatable :: msg
     call destroy_scene(scene)
     err = c_new_error()
     scene%ptr = c_load_scene(err, to_c(path))
-    call finish(err, "nanopush_load_scene", stat, errmsg)
+    call finish(err, "nanopush_load_scene", msg, stat)
+    if (present(errmsg)) errmsg = msg
   end subroutine nanopush_load_scene
 
   !> Parse a scene from TOML text; source_name (default "<string>") is quoted in messages.
@@ -256,6 +258,7 @@ contains
     integer, intent(out), optional :: stat
     character(len=:), allocatable, intent(out), optional :: errmsg
     type(c_ptr) :: err
+    character(len=:), allocatable :: msg
     call destroy_scene(scene)
     err = c_new_error()
     if (present(source_name)) then
@@ -263,7 +266,8 @@ contains
     else
       scene%ptr = c_parse_scene(err, to_c(toml_text), to_c("<string>"))
     end if
-    call finish(err, "nanopush_parse_scene", stat, errmsg)
+    call finish(err, "nanopush_parse_scene", msg, stat)
+    if (present(errmsg)) errmsg = msg
   end subroutine nanopush_parse_scene
 
   subroutine destroy_scene(scene)
@@ -281,6 +285,7 @@ contains
     integer, intent(out), optional :: stat
     character(len=:), allocatable, intent(out), optional :: errmsg
     type(c_ptr) :: err
+    character(len=:), allocatable :: msg
     real(c_double) :: te, m, inert, y0(6)
     integer(c_int) :: ns, len_name, st
     character(kind=c_char), allocatable :: buf(:)
@@ -301,7 +306,8 @@ contains
     if (present(mass)) mass = m
     if (present(inertia)) inertia = inert
     if (present(initial)) initial = y0
-    call finish(err, "nanopush_scene_info", stat, errmsg)
+    call finish(err, "nanopush_scene_info", msg, stat)
+    if (present(errmsg)) errmsg = msg
   end subroutine nanopush_scene_info
 
   !> Integrate a scene as `nanopush run` does. traj(NANOPUSH_TRAJECTORY_COLUMNS, nrows) is
@@ -319,6 +325,7 @@ contains
     integer, intent(out), optional :: stat
     character(len=:), allocatable, intent(out), optional :: errmsg
     type(c_ptr) :: err, tr
+    character(len=:), allocatable :: msg
     real(c_double) :: r, a
     integer(c_int) :: nrows, st
     integer(c_int64_t) :: cnt(3)
@@ -340,7 +347,8 @@ contains
     end if
     if (.not. allocated(traj)) allocate (traj(NANOPUSH_TRAJECTORY_COLUMNS, 0))
     if (present(counts)) counts = cnt
-    call finish(err, "nanopush_run", stat, errmsg)
+    call finish(err, "nanopush_run", msg, stat)
+    if (present(errmsg)) errmsg = msg
   end subroutine nanopush_run
 
   !> Integrate y' = rhs(t, y, ctx) with the C++ Bulirsch-Stoer engine (dimension size(y)).
@@ -371,6 +379,7 @@ contains
     type(rhs_closure), target :: closure
     type(nanopush_context), target :: no_ctx
     type(c_ptr) :: err, integ
+    character(len=:), allocatable :: msg
     real(c_double) :: r, ycopy(size(y))
     real(c_double), allocatable :: a(:)
     integer(c_int64_t) :: cnt(3)
@@ -417,7 +426,8 @@ contains
       call c_delete_integrator(integ)
     end if
     if (present(counts)) counts = cnt
-    call finish(err, "nanopush_integrate", stat, errmsg)
+    call finish(err, "nanopush_integrate", msg, stat)
+    if (present(errmsg)) errmsg = msg
   end subroutine nanopush_integrate
 
   !> The C callback handed to nanopush_integrate: udata is the address of a rhs_closure.
@@ -437,30 +447,28 @@ contains
 
   ! ---- helpers --------------------------------------------------------------------------
 
-  !> Hand the outcome recorded in err to the caller (stat/errmsg) or stop with the message;
-  !> frees err.
-  subroutine finish(err, where, stat, errmsg)
+  !> The outcome recorded in err: msg (empty on success) and the status in stat, or, without
+  !> stat, error stop with the message. Frees err. (Wrappers copy msg to their optional errmsg
+  !> themselves: gfortran 12 mishandles an optional deferred-length errmsg passed on.)
+  subroutine finish(err, where, msg, stat)
     type(c_ptr), intent(inout) :: err
     character(len=*), intent(in) :: where
+    character(len=:), allocatable, intent(out) :: msg
     integer, intent(out), optional :: stat
-    character(len=:), allocatable, intent(out), optional :: errmsg
     integer :: st
-    character(len=:), allocatable :: msg
     if (.not. c_associated(err)) then
       st = NANOPUSH_OUT_OF_MEMORY
       msg = "out of memory"
     else
       st = int(c_check_error(err))
-      msg = error_message(err)
+      msg = ""
+      if (st /= NANOPUSH_OK) msg = error_message(err)
       call c_delete_error(err)
     end if
     if (present(stat)) then
       stat = st
-      if (present(errmsg)) errmsg = msg
     else if (st /= NANOPUSH_OK) then
       error stop "nanopush: " // where // ": " // msg
-    else if (present(errmsg)) then
-      errmsg = ""
     end if
   end subroutine finish
 
