@@ -63,6 +63,19 @@ int nanopush_scene_get_info(nanopush_error error, nanopush_scene scene, double* 
   });
 }
 
+int nanopush_scene_get_push(nanopush_error error, nanopush_scene scene, double* push) {
+  return guarded(error, [&] {
+    require_handle(scene, "scene");
+    require_handle(push, "push");
+    const nanopush::Push& p = scene->scene.push;
+    push[0] = p.force;
+    push[1] = p.beta;
+    push[2] = p.pbx;
+    push[3] = p.pby;
+    return NANOPUSH_OK;
+  });
+}
+
 nanopush_trajectory nanopush_run_scene(nanopush_error error, nanopush_scene scene, const char* engine,
                                        const char* method, double rtol, double atol) {
   nanopush_trajectory out = nullptr;

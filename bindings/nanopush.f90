@@ -147,6 +147,11 @@ module nanopush
       real(c_double), intent(out) :: t_end, mass, inertia, initial(6)
       integer(c_int), intent(out) :: samples
     end function c_scene_get_info
+    integer(c_int) function c_scene_get_push(error, scene, push) bind(C, name="nanopush_scene_get_push")
+      import :: c_int, c_ptr, c_double
+      type(c_ptr), value, intent(in) :: error, scene
+      real(c_double), intent(out) :: push(4)
+    end function c_scene_get_push
     type(c_ptr) function c_run_scene(error, scene, engine, method, rtol, atol) &
         bind(C, name="nanopush_run_scene")
       import :: c_ptr, c_char, c_double
@@ -276,21 +281,24 @@ contains
   end subroutine destroy_scene
 
   !> Scene summary: name, t_end [s], samples (output times 0..t_end), mass [kg], inertia
-  !> [kg m^2], initial(6) = (x [m], y [m], theta [rad], vx [m/s], vy [m/s], omega [rad/s]).
-  subroutine nanopush_scene_info(scene, name, t_end, samples, mass, inertia, initial, stat, errmsg)
+  !> [kg m^2], initial(6) = (x [m], y [m], theta [rad], vx [m/s], vy [m/s], omega [rad/s]),
+  !> push(4) = (F [N], beta [rad] world direction, pbx [m], pby [m] body-axes point of action).
+  subroutine nanopush_scene_info(scene, name, t_end, samples, mass, inertia, initial, push, stat, &
+                                 errmsg)
     type(nanopush_scene), intent(in) :: scene
     character(len=:), allocatable, intent(out), optional :: name
-    real(dp), intent(out), optional :: t_end, mass, inertia, initial(6)
+    real(dp), intent(out), optional :: t_end, mass, inertia, initial(6), push(4)
     integer, intent(out), optional :: samples
     integer, intent(out), optional :: stat
     character(len=:), allocatable, intent(out), optional :: errmsg
     type(c_ptr) :: err
     character(len=:), allocatable :: msg
-    real(c_double) :: te, m, inert, y0(6)
+    real(c_double) :: te, m, inert, y0(6), pu(4)
     integer(c_int) :: ns, len_name, st
     character(kind=c_char), allocatable :: buf(:)
     err = c_new_error()
     st = c_scene_get_info(err, scene%ptr, te, ns, m, inert, y0)
+    if (st == 0) st = c_scene_get_push(err, scene%ptr, pu)
     if (st == 0 .and. present(name)) then
       allocate (buf(1))
       len_name = c_scene_get_name(err, scene%ptr, buf, 1_c_int)
@@ -306,6 +314,7 @@ contains
     if (present(mass)) mass = m
     if (present(inertia)) inertia = inert
     if (present(initial)) initial = y0
+    if (present(push)) push = pu
     call finish(err, "nanopush_scene_info", msg, stat)
     if (present(errmsg)) errmsg = msg
   end subroutine nanopush_scene_info

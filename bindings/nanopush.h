@@ -81,6 +81,10 @@ int nanopush_scene_get_name(nanopush_error error, nanopush_scene scene, char* bu
 int nanopush_scene_get_info(nanopush_error error, nanopush_scene scene, double* t_end, int* samples,
                             double* mass, double* inertia, double* initial);
 
+/* The constant push: push[4] = (F [N] magnitude, beta [rad] world direction of the force,
+ * pbx [m], pby [m] the body-axes point of the centre-of-mass frame where it acts). */
+int nanopush_scene_get_push(nanopush_error error, nanopush_scene scene, double* push);
+
 /* ---- Runs ------------------------------------------------------------------------------ */
 typedef struct nanopush_trajectory_s* nanopush_trajectory;
 
