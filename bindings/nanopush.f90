@@ -396,9 +396,11 @@ contains
     r = 1e-10_dp
     if (present(rtol)) r = rtol
     if (present(atol)) then
-      a = atol
+      allocate (a(size(atol)))
+      a(:) = atol
     else
-      a = [1e-10_dp]
+      allocate (a(1))
+      a(1) = 1e-10_dp
     end if
     cnt = 0
     allocate (yout(size(y), size(tout)))

@@ -25,13 +25,15 @@ contains
     integer :: i, stat
     if (k == 1) then
       p%mu = 5
-      y = [2.0_dp, 0.0_dp]
+      allocate (y(2))
+      y(:) = [2.0_dp, 0.0_dp]
       tout = [(20.0_dp * (i - 1) / (nout - 1), i = 1, nout)]
       call nanopush_integrate(vdp, 0.0_dp, y, tout, yout, rtol=1e-12_dp, atol=[1e-12_dp], ctx=p, &
                               counts=counts, stat=stat)
     else
       p%mu = 1
-      y = kepler_start(0.8_dp)
+      allocate (y(4))
+      y(:) = kepler_start(0.8_dp)
       tout = [(4 * pi * (i - 1) / (nout - 1), i = 1, nout)]
       call nanopush_integrate(kep, 0.0_dp, y, tout, yout, rtol=1e-12_dp, atol=[1e-12_dp], &
                               method="modern", ctx=p, counts=counts, stat=stat)

@@ -11,7 +11,7 @@ program consumer_fortran
   real(dp) :: row(NANOPUSH_TRAJECTORY_COLUMNS), worst
   character(len=:), allocatable :: scene_path, engine, ref_path
   character(len=512) :: header
-  integer :: unit, i, ios, nref, differ
+  integer :: unit, ios, nref, differ
 
   if (command_argument_count() /= 3) error stop "usage: consumer_fortran SCENE.toml ENGINE REFERENCE.csv"
   scene_path = argument(1)
