@@ -122,7 +122,9 @@ int nanopush_trajectory_get_engine(nanopush_error error, nanopush_trajectory tra
 /* dydt[n] = f(t, y[n]); udata is passed through unchanged (it is how the callback reaches its
  * own data: never use globals). Return 0 on success, non-zero to stop the integration
  * (nanopush_integrate then returns NANOPUSH_RHS_FAILED and the message quotes the value).
- * A C++ callback must not let an exception escape. */
+ * A C++ callback should return a status rather than throw; if it throws anyway, the exception
+ * is caught inside the library and reported (NANOPUSH_BAD_INPUT for nanopush::InputError,
+ * NANOPUSH_OUT_OF_MEMORY for std::bad_alloc, NANOPUSH_INTERNAL otherwise). */
 typedef int (*nanopush_rhs)(int n, double t, const double* y, double* dydt, void* udata);
 
 typedef struct nanopush_integrator_s* nanopush_integrator;

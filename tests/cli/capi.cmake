@@ -45,3 +45,8 @@ target_link_libraries(capi_test_threads PRIVATE capi_test_problems Threads::Thre
 set_target_properties(capi_test_threads PROPERTIES Fortran_MODULE_DIRECTORY ${NANOPUSH_MODDIR}/capi_test_threads
                                                    LINKER_LANGUAGE Fortran)
 add_test(NAME capi.fortran_two_threads COMMAND capi_test_threads)
+
+# No C++ exception crosses the C API: exceptions thrown inside come back as status + message.
+add_executable(capi_test_exceptions ${_capi_dir}/test_capi_exceptions.cpp)
+target_link_libraries(capi_test_exceptions PRIVATE nanopush_capi nanopush_warnings)
+add_test(NAME capi.exceptions_caught COMMAND capi_test_exceptions)
