@@ -51,4 +51,13 @@ foreach(engine cxx f77)
   run(${build}/consumer_fortran ${SCENE} ${engine} ${WORK_DIR}/ref_${engine}.csv)
   message(STATUS "${RUN_OUT}")
 endforeach()
+# 4. A project without Fortran gets a clear message from the package, not a link error later.
+execute_process(COMMAND ${CMAKE_COMMAND} -S ${CONSUMER_SOURCE}/cxx_only -B ${WORK_DIR}/build_cxx_only -G ${GENERATOR}
+                        -DCMAKE_MAKE_PROGRAM=${MAKE_PROGRAM} -DCMAKE_C_COMPILER=${C_COMPILER}
+                        -DCMAKE_CXX_COMPILER=${CXX_COMPILER} -DCMAKE_PREFIX_PATH=${prefix}
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(rc EQUAL 0 OR NOT err MATCHES "nanopush: enable the Fortran language in this project")
+  message(FATAL_ERROR "a C/C++-only consumer should fail with the 'enable Fortran' message:\n${err}")
+endif()
+message(STATUS "a C/C++-only consumer is told to enable Fortran")
 message(STATUS "export test: all checks hold")
