@@ -1,0 +1,114 @@
+// C API: integrating a user's right-hand side (a C callback with udata) with the C++
+// Bulirsch-Stoer engine, dimension chosen at run time (bindings/nanopush.h).
+#include <cmath>
+#include <memory>
+#include <span>
+
+#include "capi_internal.hpp"
+#include "nanopush/bulirsch_stoer.hpp"
+
+using namespace nanopush::capi;
+
+namespace {
+
+/// The method name -> the engine's option presets.
+nanopush::BsOptions<double> preset(const std::string& method, double rtol, std::vector<double> atol) {
+  if (method.empty() || method == "faithful") return nanopush::BsOptions<double>::faithful(rtol, std::move(atol));
+  if (method == "modern") return nanopush::BsOptions<double>::modern(rtol, std::move(atol));
+  throw nanopush::InputError("method", "\"" + method + "\"", "must be faithful or modern");
+}
+
+}  // namespace
+
+extern "C" {
+
+nanopush_integrator nanopush_new_integrator(nanopush_error error, int n, const char* method, double rtol,
+                                            const double* atol, int natol) {
+  nanopush_integrator out = nullptr;
+  guarded(error, [&] {
+    if (n < 1) throw nanopush::InputError("n", std::to_string(n), "must be >= 1 (number of ODE components)");
+    nanopush::require_nonnegative("rtol", rtol);
+    if (natol != 1 && natol != n)
+      throw nanopush::InputError("natol", std::to_string(natol), "must be 1 or n = " + std::to_string(n));
+    require_handle(atol, "atol");
+    std::vector<double> a(atol, atol + natol);
+    for (int i = 0; i < natol; ++i) {
+      nanopush::require_nonnegative("atol[" + std::to_string(i) + "]", a[static_cast<std::size_t>(i)]);
+      if (a[static_cast<std::size_t>(i)] == 0 && rtol == 0)
+        throw nanopush::InputError("atol[" + std::to_string(i) + "]", "0", "must be > 0 when rtol = 0");
+    }
+    auto it = std::make_unique<nanopush_integrator_s>();
+    it->n = n;
+    it->options = preset(opt_string(method), rtol, std::move(a));
+    out = it.release();
+    return NANOPUSH_OK;
+  });
+  return out;
+}
+
+void nanopush_delete_integrator(nanopush_integrator* integrator) {
+  if (integrator) {
+    delete *integrator;
+    *integrator = nullptr;
+  }
+}
+
+int nanopush_integrator_set_steps(nanopush_error error, nanopush_integrator integrator, double h0, double hmax,
+                                  int64_t maxstp) {
+  return guarded(error, [&] {
+    require_handle(integrator, "integrator");
+    nanopush::require_nonnegative("h0", h0);
+    nanopush::require_nonnegative("hmax", hmax);
+    if (maxstp < 1) throw nanopush::InputError("maxstp", std::to_string(maxstp), "must be >= 1");
+    integrator->options.h0 = h0;
+    integrator->options.hmax = hmax;
+    integrator->options.maxstp = maxstp;
+    return NANOPUSH_OK;
+  });
+}
+
+int nanopush_integrator_set_extrapolation(nanopush_error error, nanopush_integrator integrator, int kmax,
+                                          int extrapolation) {
+  return guarded(error, [&] {
+    require_handle(integrator, "integrator");
+    if (kmax < 3 || kmax > 12) throw nanopush::InputError("kmax", std::to_string(kmax), "must be in [3, 12]");
+    if (extrapolation != 1 && extrapolation != 2)
+      throw nanopush::InputError("extrapolation", std::to_string(extrapolation),
+                                 "must be 1 (rational) or 2 (polynomial)");
+    integrator->options.kmax = kmax;
+    integrator->options.extrapolation = static_cast<nanopush::Extrapolation>(extrapolation);
+    return NANOPUSH_OK;
+  });
+}
+
+int nanopush_integrate(nanopush_error error, nanopush_integrator integrator, nanopush_rhs rhs, void* udata,
+                       double t0, double* y, int nout, const double* tout, double* yout, int64_t* counts) {
+  return guarded(error, [&] {
+    require_handle(integrator, "integrator");
+    if (!rhs) throw StatusError(NANOPUSH_NULL_HANDLE, "rhs = NULL: must be a right-hand-side function");
+    require_handle(y, "y");
+    if (nout < 1) throw nanopush::InputError("nout", std::to_string(nout), "must be >= 1 (number of output times)");
+    require_handle(tout, "tout");
+    if (counts) counts[0] = counts[1] = counts[2] = 0;
+    const int n = integrator->n;
+    // A fresh engine per call: its work arrays are local, so calls never share state.
+    nanopush::BulirschStoer<double, nanopush::Dynamic> bs(integrator->options, n);
+    auto f = [rhs, udata, n](double t, const double* yy, double* dydt) { return rhs(n, t, yy, dydt, udata); };
+    const std::size_t un = static_cast<std::size_t>(n);
+    const nanopush::BsResult res =
+        bs.integrate(f, t0, y, std::span<const double>(tout, static_cast<std::size_t>(nout)),
+                     [yout, un](std::size_t k, double, const double* yy) {
+                       if (yout) std::copy(yy, yy + un, yout + un * k);
+                     });
+    if (counts) {
+      counts[0] = res.nfcn;
+      counts[1] = res.naccpt;
+      counts[2] = res.nrejct;
+    }
+    if (!res.ok()) throw StatusError(static_cast<int>(res.status), std::string(nanopush::to_string(res.status)) +
+                                                                        (res.message.empty() ? "" : ": " + res.message));
+    return NANOPUSH_OK;
+  });
+}
+
+}  // extern "C"

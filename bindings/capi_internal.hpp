@@ -1,0 +1,110 @@
+// Internal to the C API (bindings/capi_*.cpp): the handle structs and the guard that turns every
+// C++ exception into a status code plus a message in the caller's error handle.
+// Public interface and conventions: bindings/nanopush.h.
+#pragma once
+#include <algorithm>
+#include <cstring>
+#include <exception>
+#include <new>
+#include <string>
+#include <vector>
+
+#include "nanopush.h"
+#include "nanopush/error.hpp"
+#include "nanopush/scene.hpp"
+#include "nanopush/simulate.hpp"
+
+struct nanopush_error_s {
+  int status = NANOPUSH_OK;
+  std::string message;
+};
+
+struct nanopush_scene_s {
+  nanopush::Scene scene;
+};
+
+struct nanopush_trajectory_s {
+  nanopush::Trajectory trajectory;
+};
+
+struct nanopush_integrator_s {
+  int n = 0;
+  nanopush::BsOptions<double> options;
+};
+
+namespace nanopush::capi {
+
+/// An error with an explicit API status (thrown inside the C API only, caught by guarded()).
+class StatusError : public std::runtime_error {
+ public:
+  StatusError(int status, const std::string& message) : std::runtime_error(message), status_(status) {}
+  [[nodiscard]] int status() const noexcept { return status_; }
+
+ private:
+  int status_;
+};
+
+/// Record status and message in the error handle (if any); returns status. Never throws: if the
+/// message cannot be stored (out of memory) the handle keeps the status and an empty message.
+inline int record(nanopush_error err, int status, const char* message) noexcept {
+  if (err) {
+    err->status = status;
+    try {
+      err->message = message ? message : "";
+    } catch (...) {
+      err->message.clear();
+    }
+  }
+  return status;
+}
+
+/// Status code for a SolverError from run_scene: its message quotes to_string(BsStatus).
+inline int solver_status(const char* what) noexcept {
+  for (const BsStatus s : {BsStatus::too_many_steps, BsStatus::step_underflow, BsStatus::rhs_failed,
+                           BsStatus::not_finite})
+    if (std::strstr(what, to_string(s))) return static_cast<int>(s);
+  return NANOPUSH_SOLVER_FAILED;
+}
+
+/// Run f() (returning a status) and translate any exception into a status + message.
+template <class F>
+int guarded(nanopush_error err, F&& f) noexcept {
+  try {
+    return f();
+  } catch (const StatusError& e) {
+    return record(err, e.status(), e.what());
+  } catch (const InputError& e) {
+    return record(err, NANOPUSH_BAD_INPUT, e.what());
+  } catch (const SolverError& e) {
+    return record(err, solver_status(e.what()), e.what());
+  } catch (const std::bad_alloc&) {
+    return record(err, NANOPUSH_OUT_OF_MEMORY, "out of memory");
+  } catch (const std::exception& e) {
+    return record(err, NANOPUSH_INTERNAL, e.what());
+  } catch (...) {
+    return record(err, NANOPUSH_INTERNAL, "unknown C++ exception");
+  }
+}
+
+/// Throw NANOPUSH_NULL_HANDLE naming the argument if p is null.
+template <class T>
+void require_handle(const T* p, const char* name) {
+  if (!p) throw StatusError(NANOPUSH_NULL_HANDLE, std::string(name) + " = NULL: must be a valid handle or pointer");
+}
+
+/// snprintf-style copy: NUL-terminated, truncated to size-1 characters; returns the full length.
+inline int copy_string(const std::string& s, char* buffer, int size) {
+  if (size < 0) throw InputError("size", std::to_string(size), "must be >= 0 (characters in the buffer)");
+  if (size > 0) {
+    if (!buffer) throw StatusError(NANOPUSH_NULL_HANDLE, "buffer = NULL: must point to size characters");
+    const std::size_t k = std::min(s.size(), static_cast<std::size_t>(size - 1));
+    std::memcpy(buffer, s.data(), k);
+    buffer[k] = '\0';
+  }
+  return static_cast<int>(std::min<std::size_t>(s.size(), 0x7fffffff));
+}
+
+/// Optional C string: NULL -> "".
+inline std::string opt_string(const char* s) { return s ? std::string(s) : std::string(); }
+
+}  // namespace nanopush::capi

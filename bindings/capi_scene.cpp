@@ -1,0 +1,155 @@
+// C API: scenes and runs (bindings/nanopush.h) over nanopush::load_scene / parse_scene / run_scene.
+#include <algorithm>
+#include <memory>
+
+#include "capi_internal.hpp"
+
+using namespace nanopush::capi;
+
+extern "C" {
+
+nanopush_scene nanopush_load_scene(nanopush_error error, const char* path) {
+  nanopush_scene out = nullptr;
+  guarded(error, [&] {
+    require_handle(path, "path");
+    auto s = std::make_unique<nanopush_scene_s>();
+    s->scene = nanopush::load_scene(path);
+    out = s.release();
+    return NANOPUSH_OK;
+  });
+  return out;
+}
+
+nanopush_scene nanopush_parse_scene(nanopush_error error, const char* toml_text, const char* source_name) {
+  nanopush_scene out = nullptr;
+  guarded(error, [&] {
+    require_handle(toml_text, "toml_text");
+    auto s = std::make_unique<nanopush_scene_s>();
+    s->scene = nanopush::parse_scene(toml_text, source_name ? source_name : "<string>");
+    out = s.release();
+    return NANOPUSH_OK;
+  });
+  return out;
+}
+
+void nanopush_delete_scene(nanopush_scene* scene) {
+  if (scene) {
+    delete *scene;
+    *scene = nullptr;
+  }
+}
+
+int nanopush_scene_get_name(nanopush_error error, nanopush_scene scene, char* buffer, int size) {
+  int n = -1;
+  guarded(error, [&] {
+    require_handle(scene, "scene");
+    n = copy_string(scene->scene.name, buffer, size);
+    return NANOPUSH_OK;
+  });
+  return n;
+}
+
+int nanopush_scene_get_info(nanopush_error error, nanopush_scene scene, double* t_end, int* samples,
+                            double* mass, double* inertia, double* initial) {
+  return guarded(error, [&] {
+    require_handle(scene, "scene");
+    const nanopush::Scene& sc = scene->scene;
+    if (t_end) *t_end = sc.solver.t_end;
+    if (samples) *samples = sc.solver.samples;
+    if (mass) *mass = sc.mass;
+    if (inertia) *inertia = sc.inertia;
+    if (initial) std::copy(sc.initial.begin(), sc.initial.end(), initial);
+    return NANOPUSH_OK;
+  });
+}
+
+int nanopush_scene_get_push(nanopush_error error, nanopush_scene scene, double* push) {
+  return guarded(error, [&] {
+    require_handle(scene, "scene");
+    require_handle(push, "push");
+    const nanopush::Push& p = scene->scene.push;
+    push[0] = p.force;
+    push[1] = p.beta;
+    push[2] = p.pbx;
+    push[3] = p.pby;
+    return NANOPUSH_OK;
+  });
+}
+
+nanopush_trajectory nanopush_run_scene(nanopush_error error, nanopush_scene scene, const char* engine,
+                                       const char* method, double rtol, double atol) {
+  nanopush_trajectory out = nullptr;
+  guarded(error, [&] {
+    require_handle(scene, "scene");
+    nanopush::RunSettings rs;
+    rs.engine = opt_string(engine);
+    rs.method = opt_string(method);
+    nanopush::require_finite("rtol", rtol);
+    nanopush::require_finite("atol", atol);
+    rs.rtol = rtol;
+    rs.atol = atol;
+    auto t = std::make_unique<nanopush_trajectory_s>();
+    t->trajectory = nanopush::run_scene(scene->scene, rs);
+    out = t.release();
+    return NANOPUSH_OK;
+  });
+  return out;
+}
+
+void nanopush_delete_trajectory(nanopush_trajectory* trajectory) {
+  if (trajectory) {
+    delete *trajectory;
+    *trajectory = nullptr;
+  }
+}
+
+int nanopush_trajectory_get_size(nanopush_error error, nanopush_trajectory trajectory, int* rows) {
+  return guarded(error, [&] {
+    require_handle(trajectory, "trajectory");
+    require_handle(rows, "rows");
+    *rows = static_cast<int>(trajectory->trajectory.rows.size());
+    return NANOPUSH_OK;
+  });
+}
+
+int nanopush_trajectory_get_data(nanopush_error error, nanopush_trajectory trajectory, int capacity,
+                                 double* data) {
+  return guarded(error, [&] {
+    require_handle(trajectory, "trajectory");
+    const auto& rows = trajectory->trajectory.rows;
+    if (capacity < 0 || static_cast<std::size_t>(capacity) < rows.size())
+      throw StatusError(NANOPUSH_BUFFER_TOO_SMALL, "capacity = " + std::to_string(capacity) +
+                                                       ": the trajectory has " + std::to_string(rows.size()) +
+                                                       " rows (query nanopush_trajectory_get_size)");
+    if (!rows.empty()) require_handle(data, "data");
+    static_assert(std::tuple_size_v<nanopush::TrajectoryRow> == NANOPUSH_TRAJECTORY_COLUMNS);
+    for (std::size_t i = 0; i < rows.size(); ++i)
+      std::copy(rows[i].begin(), rows[i].end(), data + NANOPUSH_TRAJECTORY_COLUMNS * i);
+    return NANOPUSH_OK;
+  });
+}
+
+int nanopush_trajectory_get_counts(nanopush_error error, nanopush_trajectory trajectory, int64_t* counts) {
+  return guarded(error, [&] {
+    require_handle(trajectory, "trajectory");
+    require_handle(counts, "counts");
+    const auto& st = trajectory->trajectory.stats;
+    counts[0] = st.nfcn;
+    counts[1] = st.naccpt;
+    counts[2] = st.nrejct;
+    return NANOPUSH_OK;
+  });
+}
+
+int nanopush_trajectory_get_engine(nanopush_error error, nanopush_trajectory trajectory, char* buffer,
+                                   int size) {
+  int n = -1;
+  guarded(error, [&] {
+    require_handle(trajectory, "trajectory");
+    n = copy_string(trajectory->trajectory.engine_label, buffer, size);
+    return NANOPUSH_OK;
+  });
+  return n;
+}
+
+}  // extern "C"

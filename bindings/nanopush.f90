@@ -1,0 +1,560 @@
+!> nanopush: the modern C++ solver from Fortran (`use nanopush`).
+!>
+!> Thin idiomatic wrappers over the C API (bindings/nanopush.h, target nanopush::capi), reached
+!> through bind(C) interfaces; no mangled names. All quantities SI.
+!>
+!> Errors: every wrapper takes optional `stat` (integer) and `errmsg` (deferred-length
+!> character, allocated by the call) arguments.
+!>   - With `stat` present, the caller decides: stat = NANOPUSH_OK (0) on success, else one of
+!>     the NANOPUSH_* codes below, and errmsg (if present) holds the message from C++, e.g.
+!>     "object.mass = -1: must be > 0 (kg)".
+!>   - Without `stat`, an error stops the program with `error stop "nanopush: <message>"`.
+!>
+!> Scenes: type(nanopush_scene) holds an opaque C handle; create it with nanopush_load_scene or
+!> nanopush_parse_scene and free it with nanopush_destroy (there is no finalizer: do not copy a
+!> scene by assignment). nanopush_run returns the trajectory as an allocatable array
+!> traj(NANOPUSH_TRAJECTORY_COLUMNS, nrows), one output time per column; rows of traj are
+!> t, x, y, theta, vx, vy, omega, fx, fy, mf (s, m, m, rad, m/s, m/s, rad/s, N, N, N m).
+!>
+!> Your own ODE with the C++ Bulirsch-Stoer (nanopush_integrate): write a subroutine with the
+!> interface nanopush_rhs_fn,
+!>
+!>     subroutine my_rhs(t, y, dydt, ctx, stat)
+!>       real(dp), intent(in) :: t, y(:)
+!>       real(dp), intent(out) :: dydt(:)
+!>       class(nanopush_context), intent(inout) :: ctx
+!>       integer, intent(inout) :: stat      ! 0 on entry; set non-zero to stop the integration
+!>
+!> Its data travel in `ctx`: extend nanopush_context with your fields
+!> (`type, extends(nanopush_context) :: my_data; real(dp) :: k; end type`), pass your object as
+!> the ctx argument of nanopush_integrate and reach the fields with `select type (ctx)`.
+!> A bind(C) trampoline receives the address of a closure (your procedure and your ctx) as the C
+!> callback's udata, so there is no module or global state: integrations are re-entrant, may be
+!> nested, and may run on several threads at once (one ctx per thread, or a read-only one).
+module nanopush
+  use, intrinsic :: iso_c_binding, only: c_int, c_double, c_int64_t, c_char, c_ptr, c_funptr, &
+                                         c_null_ptr, c_null_char, c_associated, c_loc, c_funloc, &
+                                         c_f_pointer
+  implicit none
+  private
+
+  !> Real kind of every nanopush quantity.
+  integer, parameter, public :: dp = c_double
+
+  !> Status codes (bindings/nanopush.h). 1..5 are the Bulirsch-Stoer codes (as the F77 IERR).
+  integer, parameter, public :: NANOPUSH_OK = 0, NANOPUSH_BAD_INPUT = 1, &
+                                NANOPUSH_TOO_MANY_STEPS = 2, NANOPUSH_STEP_UNDERFLOW = 3, &
+                                NANOPUSH_RHS_FAILED = 4, NANOPUSH_NOT_FINITE = 5, &
+                                NANOPUSH_SOLVER_FAILED = 6, NANOPUSH_NULL_HANDLE = 7, &
+                                NANOPUSH_BUFFER_TOO_SMALL = 8, NANOPUSH_OUT_OF_MEMORY = 9, &
+                                NANOPUSH_INTERNAL = 10
+  !> Rows of a trajectory array and their meaning.
+  integer, parameter, public :: NANOPUSH_TRAJECTORY_COLUMNS = 10
+  integer, parameter, public :: NANOPUSH_T = 1, NANOPUSH_X = 2, NANOPUSH_Y = 3, &
+                                NANOPUSH_THETA = 4, NANOPUSH_VX = 5, NANOPUSH_VY = 6, &
+                                NANOPUSH_OMEGA = 7, NANOPUSH_FX = 8, NANOPUSH_FY = 9, NANOPUSH_MF = 10
+
+  !> A scene (object, push, initial state, solver settings): opaque C handle.
+  type, public :: nanopush_scene
+    private
+    type(c_ptr) :: ptr = c_null_ptr
+  end type nanopush_scene
+
+  !> Base type of the user data handed to a right-hand side; extend it with your fields.
+  type, public :: nanopush_context
+  end type nanopush_context
+
+  abstract interface
+    !> A right-hand side dydt = f(t, y) for nanopush_integrate. Set stat non-zero to stop the
+    !> integration (nanopush_integrate then reports NANOPUSH_RHS_FAILED quoting the value).
+    subroutine nanopush_rhs_fn(t, y, dydt, ctx, stat)
+      import :: dp, nanopush_context
+      real(dp), intent(in) :: t
+      real(dp), intent(in) :: y(:)
+      real(dp), intent(out) :: dydt(:)
+      class(nanopush_context), intent(inout) :: ctx
+      integer, intent(inout) :: stat
+    end subroutine nanopush_rhs_fn
+  end interface
+
+  public :: nanopush_rhs_fn
+  public :: nanopush_api_version, nanopush_status_name
+  public :: nanopush_load_scene, nanopush_parse_scene, nanopush_destroy, nanopush_scene_info
+  public :: nanopush_run, nanopush_integrate
+
+  !> Free a handle (safe on a handle never created or already freed).
+  interface nanopush_destroy
+    module procedure destroy_scene
+  end interface nanopush_destroy
+
+  !> What the trampoline needs: the user's procedure and context (address passed as udata).
+  type :: rhs_closure
+    procedure(nanopush_rhs_fn), pointer, nopass :: f => null()
+    class(nanopush_context), pointer :: ctx => null()
+  end type rhs_closure
+
+  ! ---- The C API (bindings/nanopush.h) --------------------------------------------------
+  interface
+    integer(c_int) function c_get_api_version() bind(C, name="nanopush_get_api_version")
+      import :: c_int
+    end function c_get_api_version
+    type(c_ptr) function c_status_name(status) bind(C, name="nanopush_status_name")
+      import :: c_int, c_ptr
+      integer(c_int), value, intent(in) :: status
+    end function c_status_name
+    type(c_ptr) function c_new_error() bind(C, name="nanopush_new_error")
+      import :: c_ptr
+    end function c_new_error
+    integer(c_int) function c_check_error(error) bind(C, name="nanopush_check_error")
+      import :: c_int, c_ptr
+      type(c_ptr), value, intent(in) :: error
+    end function c_check_error
+    integer(c_int) function c_get_error(error, buffer, size) bind(C, name="nanopush_get_error")
+      import :: c_int, c_ptr, c_char
+      type(c_ptr), value, intent(in) :: error
+      character(kind=c_char), intent(out) :: buffer(*)
+      integer(c_int), value, intent(in) :: size
+    end function c_get_error
+    subroutine c_delete_error(error) bind(C, name="nanopush_delete_error")
+      import :: c_ptr
+      type(c_ptr), intent(inout) :: error
+    end subroutine c_delete_error
+    type(c_ptr) function c_load_scene(error, path) bind(C, name="nanopush_load_scene")
+      import :: c_ptr, c_char
+      type(c_ptr), value, intent(in) :: error
+      character(kind=c_char), intent(in) :: path(*)
+    end function c_load_scene
+    type(c_ptr) function c_parse_scene(error, text, source) bind(C, name="nanopush_parse_scene")
+      import :: c_ptr, c_char
+      type(c_ptr), value, intent(in) :: error
+      character(kind=c_char), intent(in) :: text(*), source(*)
+    end function c_parse_scene
+    subroutine c_delete_scene(scene) bind(C, name="nanopush_delete_scene")
+      import :: c_ptr
+      type(c_ptr), intent(inout) :: scene
+    end subroutine c_delete_scene
+    integer(c_int) function c_scene_get_name(error, scene, buffer, size) &
+        bind(C, name="nanopush_scene_get_name")
+      import :: c_int, c_ptr, c_char
+      type(c_ptr), value, intent(in) :: error, scene
+      character(kind=c_char), intent(out) :: buffer(*)
+      integer(c_int), value, intent(in) :: size
+    end function c_scene_get_name
+    integer(c_int) function c_scene_get_info(error, scene, t_end, samples, mass, inertia, &
+                                             initial) bind(C, name="nanopush_scene_get_info")
+      import :: c_int, c_ptr, c_double
+      type(c_ptr), value, intent(in) :: error, scene
+      real(c_double), intent(out) :: t_end, mass, inertia, initial(6)
+      integer(c_int), intent(out) :: samples
+    end function c_scene_get_info
+    integer(c_int) function c_scene_get_push(error, scene, push) bind(C, name="nanopush_scene_get_push")
+      import :: c_int, c_ptr, c_double
+      type(c_ptr), value, intent(in) :: error, scene
+      real(c_double), intent(out) :: push(4)
+    end function c_scene_get_push
+    type(c_ptr) function c_run_scene(error, scene, engine, method, rtol, atol) &
+        bind(C, name="nanopush_run_scene")
+      import :: c_ptr, c_char, c_double
+      type(c_ptr), value, intent(in) :: error, scene
+      character(kind=c_char), intent(in) :: engine(*), method(*)
+      real(c_double), value, intent(in) :: rtol, atol
+    end function c_run_scene
+    subroutine c_delete_trajectory(trajectory) bind(C, name="nanopush_delete_trajectory")
+      import :: c_ptr
+      type(c_ptr), intent(inout) :: trajectory
+    end subroutine c_delete_trajectory
+    integer(c_int) function c_trajectory_get_size(error, trajectory, rows) &
+        bind(C, name="nanopush_trajectory_get_size")
+      import :: c_int, c_ptr
+      type(c_ptr), value, intent(in) :: error, trajectory
+      integer(c_int), intent(out) :: rows
+    end function c_trajectory_get_size
+    integer(c_int) function c_trajectory_get_data(error, trajectory, capacity, data) &
+        bind(C, name="nanopush_trajectory_get_data")
+      import :: c_int, c_ptr, c_double
+      type(c_ptr), value, intent(in) :: error, trajectory
+      integer(c_int), value, intent(in) :: capacity
+      real(c_double), intent(out) :: data(*)
+    end function c_trajectory_get_data
+    integer(c_int) function c_trajectory_get_counts(error, trajectory, counts) &
+        bind(C, name="nanopush_trajectory_get_counts")
+      import :: c_int, c_ptr, c_int64_t
+      type(c_ptr), value, intent(in) :: error, trajectory
+      integer(c_int64_t), intent(out) :: counts(3)
+    end function c_trajectory_get_counts
+    type(c_ptr) function c_new_integrator(error, n, method, rtol, atol, natol) &
+        bind(C, name="nanopush_new_integrator")
+      import :: c_ptr, c_int, c_char, c_double
+      type(c_ptr), value, intent(in) :: error
+      integer(c_int), value, intent(in) :: n, natol
+      character(kind=c_char), intent(in) :: method(*)
+      real(c_double), value, intent(in) :: rtol
+      real(c_double), intent(in) :: atol(*)
+    end function c_new_integrator
+    subroutine c_delete_integrator(integrator) bind(C, name="nanopush_delete_integrator")
+      import :: c_ptr
+      type(c_ptr), intent(inout) :: integrator
+    end subroutine c_delete_integrator
+    integer(c_int) function c_integrator_set_steps(error, integrator, h0, hmax, maxstp) &
+        bind(C, name="nanopush_integrator_set_steps")
+      import :: c_int, c_ptr, c_double, c_int64_t
+      type(c_ptr), value, intent(in) :: error, integrator
+      real(c_double), value, intent(in) :: h0, hmax
+      integer(c_int64_t), value, intent(in) :: maxstp
+    end function c_integrator_set_steps
+    integer(c_int) function c_integrator_set_extrapolation(error, integrator, kmax, extrap) &
+        bind(C, name="nanopush_integrator_set_extrapolation")
+      import :: c_int, c_ptr
+      type(c_ptr), value, intent(in) :: error, integrator
+      integer(c_int), value, intent(in) :: kmax, extrap
+    end function c_integrator_set_extrapolation
+    integer(c_int) function c_integrate(error, integrator, rhs, udata, t0, y, nout, tout, yout, &
+                                        counts) bind(C, name="nanopush_integrate")
+      import :: c_int, c_ptr, c_funptr, c_double, c_int64_t
+      type(c_ptr), value, intent(in) :: error, integrator, udata
+      type(c_funptr), value, intent(in) :: rhs
+      real(c_double), value, intent(in) :: t0
+      real(c_double), intent(inout) :: y(*)
+      integer(c_int), value, intent(in) :: nout
+      real(c_double), intent(in) :: tout(*)
+      real(c_double), intent(inout) :: yout(*)
+      integer(c_int64_t), intent(out) :: counts(3)
+    end function c_integrate
+    integer(c_int) function c_strlen(s) bind(C, name="strlen")
+      import :: c_int, c_ptr
+      type(c_ptr), value, intent(in) :: s
+    end function c_strlen
+  end interface
+
+contains
+
+  !> Version of the C API: major * 10000 + minor * 100 + patch.
+  integer function nanopush_api_version()
+    nanopush_api_version = int(c_get_api_version())
+  end function nanopush_api_version
+
+  !> Short description of a status code, e.g. "bad input".
+  function nanopush_status_name(status) result(name)
+    integer, intent(in) :: status
+    character(len=:), allocatable :: name
+    name = c_string(c_status_name(int(status, c_int)))
+  end function nanopush_status_name
+
+  !> Load a scene from a TOML file (docs/scenes.md).
+  subroutine nanopush_load_scene(scene, path, stat, errmsg)
+    type(nanopush_scene), intent(inout) :: scene
+    character(len=*), intent(in) :: path
+    integer, intent(out), optional :: stat
+    character(len=:), allocatable, intent(out), optional :: errmsg
+    type(c_ptr) :: err
+    character(len=:), allocatable :: msg
+    call destroy_scene(scene)
+    err = c_new_error()
+    scene%ptr = c_load_scene(err, to_c(path))
+    call finish(err, "nanopush_load_scene", msg, stat)
+    if (present(errmsg)) errmsg = msg
+  end subroutine nanopush_load_scene
+
+  !> Parse a scene from TOML text; source_name (default "<string>") is quoted in messages.
+  subroutine nanopush_parse_scene(scene, toml_text, source_name, stat, errmsg)
+    type(nanopush_scene), intent(inout) :: scene
+    character(len=*), intent(in) :: toml_text
+    character(len=*), intent(in), optional :: source_name
+    integer, intent(out), optional :: stat
+    character(len=:), allocatable, intent(out), optional :: errmsg
+    type(c_ptr) :: err
+    character(len=:), allocatable :: msg
+    call destroy_scene(scene)
+    err = c_new_error()
+    if (present(source_name)) then
+      scene%ptr = c_parse_scene(err, to_c(toml_text), to_c(source_name))
+    else
+      scene%ptr = c_parse_scene(err, to_c(toml_text), to_c("<string>"))
+    end if
+    call finish(err, "nanopush_parse_scene", msg, stat)
+    if (present(errmsg)) errmsg = msg
+  end subroutine nanopush_parse_scene
+
+  subroutine destroy_scene(scene)
+    type(nanopush_scene), intent(inout) :: scene
+    call c_delete_scene(scene%ptr)
+  end subroutine destroy_scene
+
+  !> Scene summary: name, t_end [s], samples (output times 0..t_end), mass [kg], inertia
+  !> [kg m^2], initial(6) = (x [m], y [m], theta [rad], vx [m/s], vy [m/s], omega [rad/s]),
+  !> push(4) = (F [N], beta [rad] world direction, pbx [m], pby [m] body-axes point of action).
+  subroutine nanopush_scene_info(scene, name, t_end, samples, mass, inertia, initial, push, stat, &
+                                 errmsg)
+    type(nanopush_scene), intent(in) :: scene
+    character(len=:), allocatable, intent(out), optional :: name
+    real(dp), intent(out), optional :: t_end, mass, inertia, initial(6), push(4)
+    integer, intent(out), optional :: samples
+    integer, intent(out), optional :: stat
+    character(len=:), allocatable, intent(out), optional :: errmsg
+    type(c_ptr) :: err
+    character(len=:), allocatable :: msg
+    real(c_double) :: te, m, inert, y0(6), pu(4)
+    integer(c_int) :: ns, len_name, st
+    character(kind=c_char), allocatable :: buf(:)
+    err = c_new_error()
+    st = c_scene_get_info(err, scene%ptr, te, ns, m, inert, y0)
+    if (st == 0) st = c_scene_get_push(err, scene%ptr, pu)
+    if (st == 0 .and. present(name)) then
+      allocate (buf(1))
+      len_name = c_scene_get_name(err, scene%ptr, buf, 1_c_int)
+      if (len_name >= 0) then
+        deallocate (buf)
+        allocate (buf(len_name + 1))
+        len_name = c_scene_get_name(err, scene%ptr, buf, len_name + 1_c_int)
+        name = from_c(buf, int(len_name))
+      end if
+    end if
+    if (present(t_end)) t_end = te
+    if (present(samples)) samples = int(ns)
+    if (present(mass)) mass = m
+    if (present(inertia)) inertia = inert
+    if (present(initial)) initial = y0
+    if (present(push)) push = pu
+    call finish(err, "nanopush_scene_info", msg, stat)
+    if (present(errmsg)) errmsg = msg
+  end subroutine nanopush_scene_info
+
+  !> Integrate a scene as `nanopush run` does. traj(NANOPUSH_TRAJECTORY_COLUMNS, nrows) is
+  !> allocated: traj(:, i) = (t, x, y, theta, vx, vy, omega, fx, fy, mf) at output time i.
+  !>   engine "cxx" or "f77", method "faithful" or "modern" (default: the scene's);
+  !>   rtol (default or 0: the scene's); atol (default or < 0: the scene's; 0 = automatic);
+  !>   counts(3) = (RHS evaluations, accepted steps, rejected steps).
+  !> On failure traj is allocated with zero columns.
+  subroutine nanopush_run(scene, traj, engine, method, rtol, atol, counts, stat, errmsg)
+    type(nanopush_scene), intent(in) :: scene
+    real(dp), allocatable, intent(out) :: traj(:, :)
+    character(len=*), intent(in), optional :: engine, method
+    real(dp), intent(in), optional :: rtol, atol
+    integer(c_int64_t), intent(out), optional :: counts(3)
+    integer, intent(out), optional :: stat
+    character(len=:), allocatable, intent(out), optional :: errmsg
+    type(c_ptr) :: err, tr
+    character(len=:), allocatable :: msg
+    real(c_double) :: r, a
+    integer(c_int) :: nrows, st
+    integer(c_int64_t) :: cnt(3)
+    r = 0
+    a = -1
+    if (present(rtol)) r = rtol
+    if (present(atol)) a = atol
+    cnt = 0
+    nrows = 0
+    err = c_new_error()
+    tr = c_run_scene(err, scene%ptr, to_c(opt(engine)), to_c(opt(method)), r, a)
+    if (c_associated(tr)) then
+      st = c_trajectory_get_size(err, tr, nrows)
+      if (st == 0) st = c_trajectory_get_counts(err, tr, cnt)
+      if (st /= 0) nrows = 0
+      allocate (traj(NANOPUSH_TRAJECTORY_COLUMNS, nrows))
+      if (st == 0) st = c_trajectory_get_data(err, tr, nrows, traj)
+      call c_delete_trajectory(tr)
+    end if
+    if (.not. allocated(traj)) allocate (traj(NANOPUSH_TRAJECTORY_COLUMNS, 0))
+    if (present(counts)) counts = cnt
+    call finish(err, "nanopush_run", msg, stat)
+    if (present(errmsg)) errmsg = msg
+  end subroutine nanopush_run
+
+  !> Integrate y' = rhs(t, y, ctx) with the C++ Bulirsch-Stoer engine (dimension size(y)).
+  !>   t0 initial time; y in: state at t0, out: state at the last output time reached;
+  !>   tout(:) output times, t0 <= tout(1) <= ... ; yout(size(y), size(tout)) allocated,
+  !>   yout(:, k) = y(tout(k)) (columns not reached on failure are zero);
+  !>   rtol (default 1e-10), atol (size 1 or size(y), units of each component; default 1e-10);
+  !>   method "faithful" (default: the thesis configuration, the same steps as the F77 BSINT
+  !>   with iextr = 1, kmax = 8) or "modern"; h0 (0 = 1% of the span), hmax (0 = none),
+  !>   maxstp (default 100000), kmax (3..12), extrapolation (1 rational, 2 polynomial) override
+  !>   the method's; ctx is handed to rhs unchanged; counts(3) = (RHS evaluations, accepted,
+  !>   rejected steps).
+  subroutine nanopush_integrate(rhs, t0, y, tout, yout, rtol, atol, method, h0, hmax, maxstp, &
+                                kmax, extrapolation, ctx, counts, stat, errmsg)
+    procedure(nanopush_rhs_fn) :: rhs
+    real(dp), intent(in) :: t0
+    real(dp), intent(inout) :: y(:)
+    real(dp), intent(in) :: tout(:)
+    real(dp), allocatable, intent(out) :: yout(:, :)
+    real(dp), intent(in), optional :: rtol, atol(:)
+    character(len=*), intent(in), optional :: method
+    real(dp), intent(in), optional :: h0, hmax
+    integer, intent(in), optional :: maxstp, kmax, extrapolation
+    class(nanopush_context), intent(inout), target, optional :: ctx
+    integer(c_int64_t), intent(out), optional :: counts(3)
+    integer, intent(out), optional :: stat
+    character(len=:), allocatable, intent(out), optional :: errmsg
+    type(rhs_closure), target :: closure
+    type(nanopush_context), target :: no_ctx
+    type(c_ptr) :: err, integ
+    character(len=:), allocatable :: msg
+    real(c_double) :: r, ycopy(size(y))
+    real(c_double), allocatable :: a(:)
+    integer(c_int64_t) :: cnt(3)
+    integer(c_int) :: st
+    r = 1e-10_dp
+    if (present(rtol)) r = rtol
+    if (present(atol)) then
+      allocate (a(size(atol)))
+      a(:) = atol
+    else
+      allocate (a(1))
+      a(1) = 1e-10_dp
+    end if
+    cnt = 0
+    allocate (yout(size(y), size(tout)))
+    yout = 0
+    err = c_new_error()
+    integ = c_new_integrator(err, int(size(y), c_int), to_c(opt(method, "faithful")), r, a, &
+                             int(size(a), c_int))
+    if (c_associated(integ)) then
+      st = 0
+      if (present(h0) .or. present(hmax) .or. present(maxstp)) &
+        st = c_integrator_set_steps(err, integ, opt_real(h0, 0.0_dp), opt_real(hmax, 0.0_dp), &
+                                    int(opt_int(maxstp, 100000), c_int64_t))
+      if (st == 0 .and. (present(kmax) .or. present(extrapolation))) then
+        if (opt(method, "faithful") == "modern") then
+          st = c_integrator_set_extrapolation(err, integ, int(opt_int(kmax, 10), c_int), &
+                                              int(opt_int(extrapolation, 2), c_int))
+        else
+          st = c_integrator_set_extrapolation(err, integ, int(opt_int(kmax, 8), c_int), &
+                                              int(opt_int(extrapolation, 1), c_int))
+        end if
+      end if
+      if (st == 0) then
+        closure%f => rhs
+        if (present(ctx)) then
+          closure%ctx => ctx
+        else
+          closure%ctx => no_ctx
+        end if
+        ycopy = y
+        st = c_integrate(err, integ, c_funloc(rhs_trampoline), c_loc(closure), t0, ycopy, &
+                         int(size(tout), c_int), tout, yout, cnt)
+        y = ycopy
+      end if
+      call c_delete_integrator(integ)
+    end if
+    if (present(counts)) counts = cnt
+    call finish(err, "nanopush_integrate", msg, stat)
+    if (present(errmsg)) errmsg = msg
+  end subroutine nanopush_integrate
+
+  !> The C callback handed to nanopush_integrate: udata is the address of a rhs_closure.
+  integer(c_int) function rhs_trampoline(n, t, y, dydt, udata) bind(C)
+    integer(c_int), value, intent(in) :: n
+    real(c_double), value, intent(in) :: t
+    real(c_double), intent(in) :: y(n)
+    real(c_double), intent(out) :: dydt(n)
+    type(c_ptr), value, intent(in) :: udata
+    type(rhs_closure), pointer :: closure
+    integer :: st
+    call c_f_pointer(udata, closure)
+    st = 0
+    call closure%f(t, y, dydt, closure%ctx, st)
+    rhs_trampoline = int(st, c_int)
+  end function rhs_trampoline
+
+  ! ---- helpers --------------------------------------------------------------------------
+
+  !> The outcome recorded in err: msg (empty on success) and the status in stat, or, without
+  !> stat, error stop with the message. Frees err. (Wrappers copy msg to their optional errmsg
+  !> themselves: gfortran 12 mishandles an optional deferred-length errmsg passed on.)
+  subroutine finish(err, where, msg, stat)
+    type(c_ptr), intent(inout) :: err
+    character(len=*), intent(in) :: where
+    character(len=:), allocatable, intent(out) :: msg
+    integer, intent(out), optional :: stat
+    integer :: st
+    if (.not. c_associated(err)) then
+      st = NANOPUSH_OUT_OF_MEMORY
+      msg = "out of memory"
+    else
+      st = int(c_check_error(err))
+      msg = ""
+      if (st /= NANOPUSH_OK) msg = error_message(err)
+      call c_delete_error(err)
+    end if
+    if (present(stat)) then
+      stat = st
+    else if (st /= NANOPUSH_OK) then
+      error stop "nanopush: " // where // ": " // msg
+    end if
+  end subroutine finish
+
+  !> The message held by an error handle (query the length, then copy).
+  function error_message(err) result(msg)
+    type(c_ptr), intent(in) :: err
+    character(len=:), allocatable :: msg
+    character(kind=c_char) :: probe(1)
+    character(kind=c_char), allocatable :: buf(:)
+    integer(c_int) :: n
+    n = c_get_error(err, probe, 1_c_int)
+    allocate (buf(max(n, 0_c_int) + 1))
+    n = c_get_error(err, buf, int(size(buf), c_int))
+    msg = from_c(buf, int(max(n, 0_c_int)))
+  end function error_message
+
+  !> Fortran string -> NUL-terminated C character array (trailing blanks kept).
+  pure function to_c(s) result(cs)
+    character(len=*), intent(in) :: s
+    character(kind=c_char) :: cs(len(s) + 1)
+    integer :: i
+    do i = 1, len(s)
+      cs(i) = s(i:i)
+    end do
+    cs(len(s) + 1) = c_null_char
+  end function to_c
+
+  !> First n characters of a C character array -> Fortran string.
+  pure function from_c(cs, n) result(s)
+    character(kind=c_char), intent(in) :: cs(:)
+    integer, intent(in) :: n
+    character(len=:), allocatable :: s
+    integer :: i
+    allocate (character(len=n) :: s)
+    do i = 1, n
+      s(i:i) = cs(i)
+    end do
+  end function from_c
+
+  !> A static C string (char*) -> Fortran string.
+  function c_string(p) result(s)
+    type(c_ptr), intent(in) :: p
+    character(len=:), allocatable :: s
+    character(kind=c_char), pointer :: chars(:)
+    integer :: n
+    n = int(c_strlen(p))
+    call c_f_pointer(p, chars, [n])
+    s = from_c(chars, n)
+  end function c_string
+
+  pure function opt(s, default) result(r)
+    character(len=*), intent(in), optional :: s, default
+    character(len=:), allocatable :: r
+    if (present(s)) then
+      r = trim(s)
+    else if (present(default)) then
+      r = default
+    else
+      r = ""
+    end if
+  end function opt
+
+  pure real(dp) function opt_real(x, default)
+    real(dp), intent(in), optional :: x
+    real(dp), intent(in) :: default
+    opt_real = default
+    if (present(x)) opt_real = x
+  end function opt_real
+
+  pure integer function opt_int(x, default)
+    integer, intent(in), optional :: x
+    integer, intent(in) :: default
+    opt_int = default
+    if (present(x)) opt_int = x
+  end function opt_int
+
+
+end module nanopush

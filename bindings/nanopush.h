@@ -1,0 +1,173 @@
+/* nanopush: the C API of the modern C++ solver (implementation: bindings/capi_*.cpp,
+ * library target nanopush::capi; Fortran view: module nanopush, bindings/nanopush.f90).
+ *
+ * Conventions
+ *   - Every exported name starts with nanopush_ (macros with NANOPUSH_).
+ *   - Units: SI throughout (m, kg, s, rad, N). Arrays are contiguous doubles; shapes are given
+ *     beside each argument. "Column-major (r, c)" means element [i + r*j] is row i, column j,
+ *     which is the Fortran array a(r, c) and the C array a[c][r].
+ *   - Objects are opaque handles with a new / use / delete life cycle. delete functions take
+ *     the address of the handle, free it and set it to NULL; deleting NULL is a no-op.
+ *   - Errors: every function that can fail takes a nanopush_error as first argument and
+ *     returns a status (NANOPUSH_OK = 0 on success), or NULL for constructors. On failure the
+ *     status and a message ("<field> = <value>: <requirement>" for bad input) are recorded in
+ *     the error handle, which may be NULL if the caller only wants the status. A successful
+ *     call leaves the error handle unchanged. No C++ exception ever crosses this interface, and
+ *     nothing here stops the program.
+ *   - Strings returned to the caller are copied into caller buffers with explicit truncation,
+ *     snprintf style: the copy is always NUL-terminated (when size > 0) and the return value is
+ *     the full length of the string without the NUL, so a return value >= size means truncated.
+ *   - Re-entrant: there is no global state. Distinct handles may be used from distinct threads at
+ *     the same time; one handle must not be used by two threads at once.
+ */
+#ifndef NANOPUSH_H
+#define NANOPUSH_H
+
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Version of this interface: major * 10000 + minor * 100 + patch. */
+#define NANOPUSH_API_VERSION 100
+int nanopush_get_api_version(void);
+
+/* ---- Status codes ---------------------------------------------------------------------- */
+/* 1..5 are the Bulirsch-Stoer status codes (identical to the F77 engine's IERR). */
+#define NANOPUSH_OK 0
+#define NANOPUSH_BAD_INPUT 1        /* bad argument, bad scene value or key, missing file */
+#define NANOPUSH_TOO_MANY_STEPS 2   /* integrator: more than maxstp steps */
+#define NANOPUSH_STEP_UNDERFLOW 3   /* integrator: step size underflow */
+#define NANOPUSH_RHS_FAILED 4       /* integrator: the user's right-hand side returned non-zero */
+#define NANOPUSH_NOT_FINITE 5       /* integrator: non-finite error estimate */
+#define NANOPUSH_SOLVER_FAILED 6    /* another numerical failure */
+#define NANOPUSH_NULL_HANDLE 7      /* a required handle or pointer argument was NULL */
+#define NANOPUSH_BUFFER_TOO_SMALL 8 /* a caller array is too small; nothing was written */
+#define NANOPUSH_OUT_OF_MEMORY 9
+#define NANOPUSH_INTERNAL 10        /* any other C++ exception (a bug: please report) */
+
+/* Short fixed description of a status code ("bad input", ...); never NULL, static storage. */
+const char* nanopush_status_name(int status);
+
+/* ---- Error handle ---------------------------------------------------------------------- */
+typedef struct nanopush_error_s* nanopush_error;
+
+/* New error handle in the "no error" state; NULL only when out of memory. */
+nanopush_error nanopush_new_error(void);
+/* Status recorded in the handle (NANOPUSH_OK if none); NANOPUSH_NULL_HANDLE for NULL. */
+int nanopush_check_error(nanopush_error error);
+/* Copy the message into buffer[size] (truncated, NUL-terminated); returns its full length. */
+int nanopush_get_error(nanopush_error error, char* buffer, int size);
+/* Back to "no error". */
+void nanopush_clear_error(nanopush_error error);
+void nanopush_delete_error(nanopush_error* error);
+
+/* ---- Scenes (docs/scenes.md lists every key) ------------------------------------------- */
+typedef struct nanopush_scene_s* nanopush_scene;
+
+/* Load a scene from a TOML file at path (NUL-terminated). NULL on failure (see error). */
+nanopush_scene nanopush_load_scene(nanopush_error error, const char* path);
+/* Parse a scene from TOML text (NUL-terminated); source_name is used in messages (may be NULL). */
+nanopush_scene nanopush_parse_scene(nanopush_error error, const char* toml_text, const char* source_name);
+void nanopush_delete_scene(nanopush_scene* scene);
+
+/* Scene name copied into buffer[size]; returns its full length, or -1 on failure. */
+int nanopush_scene_get_name(nanopush_error error, nanopush_scene scene, char* buffer, int size);
+/* Scene summary; any output pointer may be NULL.
+ *   t_end [s]: end time; samples: number of output times (0, t_end/(samples-1), ..., t_end);
+ *   mass [kg]; inertia [kg m^2] about the centre of mass;
+ *   initial[6]: (x [m], y [m], theta [rad], vx [m/s], vy [m/s], omega [rad/s]) at t = 0. */
+int nanopush_scene_get_info(nanopush_error error, nanopush_scene scene, double* t_end, int* samples,
+                            double* mass, double* inertia, double* initial);
+
+/* The constant push: push[4] = (F [N] magnitude, beta [rad] world direction of the force,
+ * pbx [m], pby [m] the body-axes point of the centre-of-mass frame where it acts). */
+int nanopush_scene_get_push(nanopush_error error, nanopush_scene scene, double* push);
+
+/* ---- Runs ------------------------------------------------------------------------------ */
+typedef struct nanopush_trajectory_s* nanopush_trajectory;
+
+/* Number of trajectory columns: t, x, y, theta, vx, vy, omega, fx, fy, mf
+ * (s, m, m, rad, m/s, m/s, rad/s, N, N, N m; world axes; centre-of-mass state). */
+#define NANOPUSH_TRAJECTORY_COLUMNS 10
+
+/* Integrate the scene, as `nanopush run` does.
+ *   engine: "cxx" (modern C++ Bulirsch-Stoer) or "f77" (FORTRAN 77 BSINT); NULL or "" = scene's
+ *   method: "faithful" (steps identical to f77) or "modern" (C++ only); NULL or "" = scene's
+ *   rtol:   relative tolerance in [1e-30, 0.1]; 0 = scene's
+ *   atol:   absolute tolerance for every component; < 0 = scene's; 0 = rtol times each
+ *           component's natural scale
+ * Returns a trajectory, or NULL on failure (bad settings: NANOPUSH_BAD_INPUT; integrator failure:
+ * NANOPUSH_TOO_MANY_STEPS.. NANOPUSH_SOLVER_FAILED). */
+nanopush_trajectory nanopush_run_scene(nanopush_error error, nanopush_scene scene, const char* engine,
+                                       const char* method, double rtol, double atol);
+void nanopush_delete_trajectory(nanopush_trajectory* trajectory);
+
+/* Number of rows (output times) into *rows; columns = NANOPUSH_TRAJECTORY_COLUMNS. */
+int nanopush_trajectory_get_size(nanopush_error error, nanopush_trajectory trajectory, int* rows);
+/* Copy the trajectory into data, column-major (NANOPUSH_TRAJECTORY_COLUMNS, rows): data[c + 10*i]
+ * is column c at output time i (in Fortran: data(10, rows), one time per column).
+ * capacity is the number of rows data can hold; if capacity < rows nothing is written and
+ * NANOPUSH_BUFFER_TOO_SMALL is returned. */
+int nanopush_trajectory_get_data(nanopush_error error, nanopush_trajectory trajectory, int capacity,
+                                 double* data);
+/* Counts: counts[3] = (RHS evaluations, accepted steps, rejected steps). */
+int nanopush_trajectory_get_counts(nanopush_error error, nanopush_trajectory trajectory, int64_t* counts);
+/* Engine label ("cxx-faithful", "cxx-modern", "f77") into buffer[size]; full length or -1. */
+int nanopush_trajectory_get_engine(nanopush_error error, nanopush_trajectory trajectory, char* buffer,
+                                   int size);
+
+/* ---- Integrating a user's right-hand side with the C++ Bulirsch-Stoer ------------------ */
+/* dydt[n] = f(t, y[n]); udata is passed through unchanged (it is how the callback reaches its
+ * own data: never use globals). Return 0 on success, non-zero to stop the integration
+ * (nanopush_integrate then returns NANOPUSH_RHS_FAILED and the message quotes the value).
+ * A C++ callback should return a status rather than throw; if it throws anyway, the exception
+ * is caught inside the library and reported (NANOPUSH_BAD_INPUT for nanopush::InputError,
+ * NANOPUSH_OUT_OF_MEMORY for std::bad_alloc, NANOPUSH_INTERNAL otherwise). */
+typedef int (*nanopush_rhs)(int n, double t, const double* y, double* dydt, void* udata);
+
+typedef struct nanopush_integrator_s* nanopush_integrator;
+
+/* New Bulirsch-Stoer integrator of dimension n >= 1 (chosen at run time).
+ *   method: "faithful" (thesis configuration: rational extrapolation, kmax 8; takes the same
+ *           steps as the F77 BSINT with iextr = 1, kmax = 8) or "modern" (polynomial, kmax 10);
+ *           NULL or "" = faithful
+ *   rtol:   relative tolerance >= 0
+ *   atol[natol]: absolute tolerance in the units of each component, natol = 1 (one value for
+ *           all) or n; >= 0, and > 0 where rtol = 0
+ * Defaults: h0 = 1% of the span, no hmax, maxstp = 100000 (see nanopush_integrator_set_*). */
+nanopush_integrator nanopush_new_integrator(nanopush_error error, int n, const char* method, double rtol,
+                                            const double* atol, int natol);
+void nanopush_delete_integrator(nanopush_integrator* integrator);
+
+/* Step control: h0 [time units] initial step (0 = 1% of the span), hmax largest step (0 = none),
+ * maxstp maximum number of attempted steps (>= 1). */
+int nanopush_integrator_set_steps(nanopush_error error, nanopush_integrator integrator, double h0,
+                                  double hmax, int64_t maxstp);
+/* Extrapolation: kmax columns in 3..12; extrapolation 1 = rational (thesis), 2 = polynomial. */
+int nanopush_integrator_set_extrapolation(nanopush_error error, nanopush_integrator integrator, int kmax,
+                                          int extrapolation);
+
+/* Integrate y' = rhs(t, y) from t0 through the output times.
+ *   y[n]          in: state at t0; out: state at the last output time reached
+ *   nout, tout[nout]: output times, t0 <= tout[0] <= ... <= tout[nout-1] (tout[0] = t0 allowed)
+ *   yout          column-major (n, nout): yout[i + n*k] = y_i(tout[k]); may be NULL if unwanted.
+ *                 On failure the columns not reached are left unchanged.
+ *   counts[3]     out (may be NULL): RHS evaluations, accepted steps, rejected steps
+ * Status: NANOPUSH_OK, NANOPUSH_BAD_INPUT, NANOPUSH_TOO_MANY_STEPS, NANOPUSH_STEP_UNDERFLOW,
+ * NANOPUSH_RHS_FAILED, NANOPUSH_NOT_FINITE (as the F77 engine's IERR 0..5), NANOPUSH_NULL_HANDLE.
+ * The integrator keeps no state between calls except its options; it is not thread-safe to share
+ * one integrator between threads (create one per thread). */
+int nanopush_integrate(nanopush_error error, nanopush_integrator integrator, nanopush_rhs rhs, void* udata,
+                       double t0, double* y, int nout, const double* tout, double* yout, int64_t* counts);
+
+/* ---- Planned (not built yet) ----------------------------------------------------------- *
+ * Friction resultant (cxx/include/nanopush/friction.hpp) and the iCOR toolkit
+ * (cxx/include/nanopush/icor.hpp) get their functions here when those land; see
+ * bindings/capi_friction.cpp.todo and bindings/capi_icor.cpp.todo. */
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,48 @@
+# Install and export (issue 8). After `cmake --install`, other projects use
+#   find_package(nanopush CONFIG REQUIRED)
+# and link nanopush::core (C++ library), nanopush::capi (C API, nanopush.h),
+# nanopush::fortran (`use nanopush`), nanopush::f77 (FORTRAN 77 library) or nanopush::bridge
+# (its bind(C) shims, f77_*.h). Layout under the prefix:
+#   include/nanopush/*.hpp, include/nanopush.h, include/nanopush/f77_*.h
+#   include/nanopush/<CompilerID>-<version>/*.mod   (one compiler's .mod files never mix with another's)
+#   lib/libnanopush_*.a, lib/cmake/nanopush/, bin/nanopush, share/nanopush/scenes/
+include(GNUInstallDirs)
+include(CMakePackageConfigHelpers)
+
+# Installed include directories (the build-tree ones are BUILD_INTERFACE in each CMakeLists.txt).
+target_include_directories(nanopush_core PUBLIC $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
+target_include_directories(nanopush_bridge PUBLIC
+  $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}/nanopush>
+  $<INSTALL_INTERFACE:${NANOPUSH_INSTALL_MODDIR}>)
+set_target_properties(nanopush_core PROPERTIES EXPORT_NAME core)
+set_target_properties(nanopush_bridge PROPERTIES EXPORT_NAME bridge)
+set_target_properties(nanopush_f77 PROPERTIES EXPORT_NAME f77)
+# Linked PRIVATE by the static libraries, so it is exported as $<LINK_ONLY:...>: it gives
+# consumers nothing (no flags), but CMake needs it in the export set.
+set_target_properties(nanopush_warnings PROPERTIES EXPORT_NAME internal_warnings)
+
+install(TARGETS nanopush_core nanopush_bridge nanopush_f77 nanopush_capi nanopush_fortran nanopush_warnings
+        EXPORT nanopushTargets
+        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+        LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
+        RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(TARGETS nanopush RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/cxx/include/nanopush DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
+        FILES_MATCHING PATTERN "*.hpp")
+install(FILES ${PROJECT_SOURCE_DIR}/bindings/nanopush.h DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+file(GLOB _bridge_headers ${PROJECT_SOURCE_DIR}/bindings/f77_*.h)
+install(FILES ${_bridge_headers} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/nanopush)
+install(DIRECTORY ${NANOPUSH_MODDIR}/nanopush/ ${NANOPUSH_MODDIR}/bridge/
+        DESTINATION ${NANOPUSH_INSTALL_MODDIR} FILES_MATCHING PATTERN "*.mod")
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/drivers/scenes/ DESTINATION ${CMAKE_INSTALL_DATADIR}/nanopush/scenes)
+
+set(_cfgdir ${CMAKE_INSTALL_LIBDIR}/cmake/nanopush)
+install(EXPORT nanopushTargets NAMESPACE nanopush:: DESTINATION ${_cfgdir})
+set(NANOPUSH_WITH_SUNDIALS ${SUNDIALS_FOUND})
+configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/nanopushConfig.cmake.in
+  ${PROJECT_BINARY_DIR}/nanopushConfig.cmake INSTALL_DESTINATION ${_cfgdir})
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/nanopushConfigVersion.cmake
+  COMPATIBILITY SameMinorVersion)
+install(FILES ${PROJECT_BINARY_DIR}/nanopushConfig.cmake ${PROJECT_BINARY_DIR}/nanopushConfigVersion.cmake
+        DESTINATION ${_cfgdir})

@@ -1,0 +1,134 @@
+!> Errors raised in C++ (bad scene, bad argument, failing integration) reach the Fortran caller
+!> of `use nanopush` as a status and a message when it passes stat/errmsg; nothing crashes, and
+!> a successful call afterwards works and clears errmsg.
+program test_fortran_errors
+  use nanopush
+  use capi_test_problems
+  implicit none
+  integer :: failures = 0, stat
+  character(len=:), allocatable :: msg
+  type(nanopush_scene) :: scene, never_loaded
+  real(dp), allocatable :: traj(:, :), yout(:, :)
+  real(dp) :: y(2)
+  character(len=*), parameter :: nl = new_line("a")
+  character(len=*), parameter :: good_scene = &
+    "[object]" // nl // "length = 1e-7" // nl // "width = 5e-8" // nl // "mass = 1e-18" // nl // &
+    "[push]" // nl // "force = 1e-6" // nl // "xn = 1e-8" // nl // "yn = 2e-8" // nl // &
+    "[solver]" // nl // "t_end = 1e-9" // nl // "samples = 11" // nl
+  type(ode_params) :: p
+
+  ! Bad scene value: the C++ InputError names the field, the value and the range.
+  call nanopush_parse_scene(scene, replace(good_scene, "mass = 1e-18", "mass = -1"), "bad_mass.toml", &
+                            stat=stat, errmsg=msg)
+  call expect(stat, NANOPUSH_BAD_INPUT, msg, "object.mass = -1: must be > 0 (kg)", "bad mass")
+  ! Unknown key, TOML syntax error, missing file.
+  call nanopush_parse_scene(scene, good_scene // "lenght = 3" // nl, stat=stat, errmsg=msg)
+  call expect(stat, NANOPUSH_BAD_INPUT, msg, "lenght", "unknown key")
+  call nanopush_parse_scene(scene, "[object" // nl, stat=stat, errmsg=msg)
+  call expect(stat, NANOPUSH_BAD_INPUT, msg, "<string>", "TOML syntax error")
+  call nanopush_load_scene(scene, "/nonexistent/scene.toml", stat=stat, errmsg=msg)
+  call expect(stat, NANOPUSH_BAD_INPUT, msg, "/nonexistent/scene.toml", "missing file")
+  ! Using a scene that was never loaded: a null handle, not a crash.
+  call nanopush_run(never_loaded, traj, stat=stat, errmsg=msg)
+  call expect(stat, NANOPUSH_NULL_HANDLE, msg, "scene = NULL", "run on a null scene")
+  call check(size(traj, 2) == 0, "failed run: empty trajectory")
+
+  ! A good scene, then bad run arguments.
+  call nanopush_parse_scene(scene, good_scene, stat=stat, errmsg=msg)
+  call expect(stat, NANOPUSH_OK, msg, "", "good scene")
+  call nanopush_run(scene, traj, engine="gpu", stat=stat, errmsg=msg)
+  call expect(stat, NANOPUSH_BAD_INPUT, msg, "engine = gpu: must be cxx or f77", "bad engine")
+  call nanopush_run(scene, traj, method="sloppy", stat=stat, errmsg=msg)
+  call expect(stat, NANOPUSH_BAD_INPUT, msg, "method = sloppy", "bad method")
+  call nanopush_run(scene, traj, rtol=-1.0_dp, stat=stat, errmsg=msg)
+  call expect(stat, NANOPUSH_BAD_INPUT, msg, "rtol = -1: must be in [", "bad rtol")
+  ! ... and the scene still runs afterwards.
+  call nanopush_run(scene, traj, stat=stat, errmsg=msg)
+  call expect(stat, NANOPUSH_OK, msg, "", "good run")
+  call check(size(traj, 1) == NANOPUSH_TRAJECTORY_COLUMNS .and. size(traj, 2) == 11, "good run: 10 x 11")
+  call nanopush_destroy(scene)
+  call nanopush_destroy(scene)  ! twice: a no-op
+
+  ! Integrator arguments.
+  p%mu = 1
+  y = [2.0_dp, 0.0_dp]
+  call nanopush_integrate(vdp_rhs, 0.0_dp, y, [1.0_dp, 0.5_dp], yout, ctx=p, stat=stat, errmsg=msg)
+  call expect(stat, NANOPUSH_BAD_INPUT, msg, "non-decreasing", "decreasing output times")
+  call nanopush_integrate(vdp_rhs, 0.0_dp, y, [1.0_dp], yout, atol=[1e-9_dp, 1e-9_dp, 1e-9_dp], &
+                          ctx=p, stat=stat, errmsg=msg)
+  call expect(stat, NANOPUSH_BAD_INPUT, msg, "natol = 3: must be 1 or n = 2", "atol of the wrong size")
+  call nanopush_integrate(vdp_rhs, 0.0_dp, y, [1.0_dp], yout, method="euler", ctx=p, stat=stat, errmsg=msg)
+  call expect(stat, NANOPUSH_BAD_INPUT, msg, "method = ""euler""", "bad method")
+  call nanopush_integrate(vdp_rhs, 0.0_dp, y, [1.0_dp], yout, kmax=20, ctx=p, stat=stat, errmsg=msg)
+  call expect(stat, NANOPUSH_BAD_INPUT, msg, "kmax = 20: must be in [3, 12]", "bad kmax")
+  call nanopush_integrate(vdp_rhs, 0.0_dp, y, [1.0_dp], yout, rtol=-1e-3_dp, ctx=p, stat=stat, errmsg=msg)
+  call expect(stat, NANOPUSH_BAD_INPUT, msg, "rtol = -0.001: must be >= 0", "negative rtol")
+  call nanopush_integrate(vdp_rhs, 0.0_dp, y, [100.0_dp], yout, maxstp=5, ctx=p, stat=stat, errmsg=msg)
+  call expect(stat, NANOPUSH_TOO_MANY_STEPS, msg, "more than 5 steps", "maxstp exceeded")
+  ! The RHS reports a failure (stat = 7 once t > 0.5): the integration stops with status 4.
+  y = [2.0_dp, 0.0_dp]
+  call nanopush_integrate(failing_rhs, 0.0_dp, y, [0.25_dp, 1.0_dp], yout, ctx=p, stat=stat, errmsg=msg)
+  call expect(stat, NANOPUSH_RHS_FAILED, msg, "right-hand side returned status 7", "RHS failure")
+  call check(all(yout(:, 1) /= 0) .and. all(yout(:, 2) == 0), "RHS failure: first output kept, second not reached")
+  ! Status names.
+  call check(nanopush_status_name(NANOPUSH_BAD_INPUT) == "bad input", "status name")
+  call check(nanopush_api_version() == 100, "API version 0.1.0")
+
+  if (failures > 0) error stop "test_fortran_errors: failures above"
+  print '(a)', "all checks hold"
+
+contains
+
+  subroutine vdp_rhs(t, y, dydt, ctx, stat)
+    real(dp), intent(in) :: t, y(:)
+    real(dp), intent(out) :: dydt(:)
+    class(nanopush_context), intent(inout) :: ctx
+    integer, intent(inout) :: stat
+    select type (ctx)
+    type is (ode_params)
+      call van_der_pol(y, dydt, ctx%mu)
+    class default
+      stat = 99
+    end select
+  end subroutine vdp_rhs
+
+  subroutine failing_rhs(t, y, dydt, ctx, stat)
+    real(dp), intent(in) :: t, y(:)
+    real(dp), intent(out) :: dydt(:)
+    class(nanopush_context), intent(inout) :: ctx
+    integer, intent(inout) :: stat
+    call vdp_rhs(t, y, dydt, ctx, stat)
+    if (t > 0.5_dp) stat = 7
+  end subroutine failing_rhs
+
+  subroutine check(ok, what)
+    logical, intent(in) :: ok
+    character(len=*), intent(in) :: what
+    if (.not. ok) then
+      failures = failures + 1
+      print '(2a)', "FAIL: ", what
+    end if
+  end subroutine check
+
+  !> The status is the expected one and the message contains `fragment` (empty when OK).
+  subroutine expect(stat, want, msg, fragment, what)
+    integer, intent(in) :: stat, want
+    character(len=*), intent(in) :: msg, fragment, what
+    print '(a,": stat = ",i0,", errmsg = """,a,"""")', what, stat, msg
+    call check(stat == want, what // ": status")
+    if (want == NANOPUSH_OK) then
+      call check(len(msg) == 0, what // ": empty message on success")
+    else
+      call check(index(msg, fragment) > 0, what // ": message contains '" // fragment // "'")
+    end if
+  end subroutine expect
+
+  function replace(s, old, new) result(r)
+    character(len=*), intent(in) :: s, old, new
+    character(len=:), allocatable :: r
+    integer :: i
+    i = index(s, old)
+    r = s(:i - 1) // new // s(i + len(old):)
+  end function replace
+
+end program test_fortran_errors

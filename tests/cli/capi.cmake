@@ -1,0 +1,52 @@
+# Tests of the C API (bindings/nanopush.h) and the Fortran module `nanopush` (issue 8).
+# Sources in tests/capi/; one CTest per interop concern. (Defined here because tests/cli/*.cmake
+# is the hook the test directory includes; the targets need nanopush_capi / nanopush_fortran.)
+set(_capi_dir ${CMAKE_CURRENT_SOURCE_DIR}/capi)
+set(_capi_scene ${PROJECT_SOURCE_DIR}/drivers/scenes/thesis/fig3_6c.toml)
+
+# Shared Fortran test problems (a module over `use nanopush`).
+add_library(capi_test_problems STATIC ${_capi_dir}/problems.f90)
+target_link_libraries(capi_test_problems PUBLIC nanopush_fortran PRIVATE nanopush_warnings)
+set_target_properties(capi_test_problems PROPERTIES Fortran_MODULE_DIRECTORY ${NANOPUSH_MODDIR}/capi_test_problems)
+target_include_directories(capi_test_problems PUBLIC ${NANOPUSH_MODDIR}/capi_test_problems)
+
+# C: handles, NULLs, truncation, query-then-copy, engines agree, C callback with udata.
+add_executable(capi_test_c ${_capi_dir}/test_capi.c)
+target_link_libraries(capi_test_c PRIVATE nanopush_capi nanopush_warnings m)
+add_test(NAME capi.c_api COMMAND capi_test_c ${_capi_scene})
+
+# Fortran RHS through the C++ Bulirsch-Stoer vs the same problem through the F77 BSINT: 1e-12.
+add_executable(capi_test_rhs_vs_f77 ${_capi_dir}/test_fortran_rhs_vs_f77.f90)
+target_link_libraries(capi_test_rhs_vs_f77 PRIVATE capi_test_problems nanopush_f77 nanopush_warnings)
+set_target_properties(capi_test_rhs_vs_f77 PROPERTIES Fortran_MODULE_DIRECTORY ${NANOPUSH_MODDIR}/capi_test_rhs_vs_f77)
+add_test(NAME capi.fortran_rhs_vs_f77 COMMAND capi_test_rhs_vs_f77)
+
+# C++ errors reach the Fortran caller as stat + errmsg; nothing crashes.
+add_executable(capi_test_errors ${_capi_dir}/test_fortran_errors.f90)
+target_link_libraries(capi_test_errors PRIVATE capi_test_problems nanopush_warnings)
+set_target_properties(capi_test_errors PROPERTIES Fortran_MODULE_DIRECTORY ${NANOPUSH_MODDIR}/capi_test_errors)
+add_test(NAME capi.fortran_errors COMMAND capi_test_errors)
+
+# Without stat: error stop with the C++ message (message test + non-zero exit test).
+add_executable(capi_error_stop ${_capi_dir}/error_stop_without_stat.f90)
+target_link_libraries(capi_error_stop PRIVATE nanopush_fortran nanopush_warnings)
+set_target_properties(capi_error_stop PROPERTIES Fortran_MODULE_DIRECTORY ${NANOPUSH_MODDIR}/capi_error_stop)
+add_test(NAME capi.fortran_error_stop_message COMMAND capi_error_stop)
+set_tests_properties(capi.fortran_error_stop_message PROPERTIES
+  PASS_REGULAR_EXPRESSION "nanopush: nanopush_parse_scene: object.mass = -1: must be > 0 \\(kg\\)"
+  FAIL_REGULAR_EXPRESSION "not reached")
+add_test(NAME capi.fortran_error_stop_exit COMMAND capi_error_stop)
+set_tests_properties(capi.fortran_error_stop_exit PROPERTIES WILL_FAIL TRUE)
+
+# Two pthreads integrating different problems through the Fortran API = sequential runs.
+find_package(Threads REQUIRED)
+add_executable(capi_test_threads ${_capi_dir}/test_threads.c ${_capi_dir}/threads_problem.f90)
+target_link_libraries(capi_test_threads PRIVATE capi_test_problems Threads::Threads nanopush_warnings)
+set_target_properties(capi_test_threads PROPERTIES Fortran_MODULE_DIRECTORY ${NANOPUSH_MODDIR}/capi_test_threads
+                                                   LINKER_LANGUAGE Fortran)
+add_test(NAME capi.fortran_two_threads COMMAND capi_test_threads)
+
+# No C++ exception crosses the C API: exceptions thrown inside come back as status + message.
+add_executable(capi_test_exceptions ${_capi_dir}/test_capi_exceptions.cpp)
+target_link_libraries(capi_test_exceptions PRIVATE nanopush_capi nanopush_warnings)
+add_test(NAME capi.exceptions_caught COMMAND capi_test_exceptions)
