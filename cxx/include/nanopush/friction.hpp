@@ -259,5 +259,9 @@ int rectangle_friction_form(double a, double b, double R);
 /// for the errata tests: muN = 1, s = +1, body axes. May return NaN/Inf where the printed
 /// logarithms are undefined. Not for production use.
 FrictionWrench thesis_printed_friction(double a, double b, double R, double alpha);
+/// The same forms with the corrections of docs/errata.md (sign of fy', cubes in C4, sense
+/// factor on mf), still in the printed logarithmic form: correct where its logarithms are
+/// defined and R is moderate, NaN on iCOR edge lines, cancelling as R grows. For the errata tests.
+FrictionWrench thesis_corrected_friction(double a, double b, double R, double alpha, int sense);
 
 }  // namespace nanopush
