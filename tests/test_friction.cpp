@@ -111,6 +111,8 @@ TEST_CASE("friction: closed form vs adaptive cubature over 10 000 random iCORs",
     ++n;
   }
   REQUIRE(n >= 10000);
+  WARN("closed form vs cubature over " << n << " cases: worst relative |df| " << worst_f << ", worst |dmf|/(muN L) "
+                                       << worst_m);
   // Both forms are accurate to ~1e-13; say so, so a regression to 1e-11 is noticed.
   CHECK(worst_f <= 1e-12);
   CHECK(worst_m <= 1e-12);
