@@ -160,7 +160,7 @@ int run_bench(const Options& o) {
   std::mt19937_64 rng(1);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   const std::size_t N = 4096, M = N - 1;
-  std::vector<double> rn(N), rf(N), ra(N), al(N), vx(N), vy(N), om(N);
+  std::vector<double> rn(N), rf(N), ra(N), al(N), vx(N), vy(N), om(N);  // rf: far field, log-uniform
   for (std::size_t i = 0; i < N; ++i) {
     rn[i] = L * kFrictionFarField * u(rng);
     rf[i] = L * kFrictionFarField * std::pow(10.0, 8.0 * u(rng));
@@ -176,10 +176,21 @@ int run_bench(const Options& o) {
     const auto w = rectangle_friction_wrench(a, b, 1.0, rn[static_cast<std::size_t>(i) & M], al[static_cast<std::size_t>(i) & M], 1);
     return w.fx + w.mf;
   }));
-  rows.push_back(time_it("far field, 3 <= R/max(a,b) < 1e9 (12x12 GL series)", s, [&](long i) {
-    const auto w = rectangle_friction_wrench(a, b, 1.0, rf[static_cast<std::size_t>(i) & M], al[static_cast<std::size_t>(i) & M], 1);
-    return w.fx + w.mf;
-  }));
+  struct Band {
+    const char* what;
+    double lo, hi;
+  };
+  for (const Band& band : {Band{"far field, 3 <= R/max(a,b) < 8 (12x12 GL)", kFrictionFarField, kFrictionGl8From},
+                           Band{"far field, 8 <= R/max(a,b) < 24 (8x8 GL)", kFrictionGl8From, kFrictionGl6From},
+                           Band{"far field, 24 <= R/max(a,b) < 512 (6x6 GL)", kFrictionGl6From, kFrictionGl4From},
+                           Band{"far field, 512 <= R/max(a,b) < 1e9 (4x4 GL)", kFrictionGl4From, kFrictionAsymptotic}}) {
+    std::vector<double> rb(N);
+    for (auto& x : rb) x = L * band.lo * std::pow(band.hi / band.lo, u(rng));
+    rows.push_back(time_it(band.what, s, [&](long i) {
+      const auto w = rectangle_friction_wrench(a, b, 1.0, rb[static_cast<std::size_t>(i) & M], al[static_cast<std::size_t>(i) & M], 1);
+      return w.fx + w.mf;
+    }));
+  }
   rows.push_back(time_it("asymptotic, R >= 1e9 max(a,b)", s, [&](long i) {
     const auto w = rectangle_friction_wrench(a, b, 1.0, ra[static_cast<std::size_t>(i) & M], al[static_cast<std::size_t>(i) & M], 1);
     return w.fx + w.mf;

@@ -4,8 +4,9 @@ C     with uniform pressure (models.md section B; thesis eqs 3.27-3.50
 C     and Appendix B, with the corrections of docs/errata.md).
 C     Same algorithm as cxx/include/nanopush/friction.hpp:
 C       RHO = R/MAX(A,B) below 3: exact corner closed form (asinh form);
-C       3 <= RHO < 1D9: point-symmetrised 12 x 12 Gauss-Legendre form
-C                       of the far-field series (no cancellation);
+C       3 <= RHO < 1D9: point-symmetrised N x N Gauss-Legendre form
+C                       of the far-field series (no cancellation),
+C                       N = 12, 8, 6, 4 from RHO = 3, 8, 24, 512;
 C       RHO >= 1D9:     asymptotic form (translation + 1/R moment).
 C
 C     Body axes at the CM; x' across the width (half-width A), y' along
@@ -204,7 +205,39 @@ C     XK = <(x X + y Y)/r>; (C, S) = (COS, SIN) ALPHA, RHO = R/MAX(A,B).
 C=======================================================================
       SUBROUTINE FRMEAN(A, B, RHO, C, S, XI, YI, XK)
       DOUBLE PRECISION A, B, RHO, C, S, XI, YI, XK, XC, YC
+      DOUBLE PRECISION G4X(2), G4W(2), G6X(3), G6W(3), G8X(4), G8W(4)
+      DOUBLE PRECISION G12X(6), G12W(6)
       EXTERNAL FRCLSD, FRFAR
+      DATA G4X /0.3399810435848562648026658D0,
+     &          0.8611363115940525752239465D0/
+      DATA G4W /0.6521451548625461426269361D0,
+     &          0.3478548451374538573730639D0/
+      DATA G6X /0.2386191860831969086305017D0,
+     &          0.6612093864662645136613996D0,
+     &          0.9324695142031520278123016D0/
+      DATA G6W /0.4679139345726910473898703D0,
+     &          0.3607615730481386075698335D0,
+     &          0.1713244923791703450402961D0/
+      DATA G8X /0.1834346424956498049394761D0,
+     &          0.525532409916328985817739D0,
+     &          0.7966664774136267395915539D0,
+     &          0.9602898564975362316835609D0/
+      DATA G8W /0.3626837833783619829651504D0,
+     &          0.3137066458778872873379622D0,
+     &          0.222381034453374470544356D0,
+     &          0.1012285362903762591525314D0/
+      DATA G12X /0.1252334085114689154724414D0,
+     &           0.3678314989981801937526915D0,
+     &           0.5873179542866174472967024D0,
+     &           0.7699026741943046870368938D0,
+     &           0.9041172563704748566784659D0,
+     &           0.9815606342467192506905491D0/
+      DATA G12W /0.2491470458134027850005624D0,
+     &           0.2334925365383548087608499D0,
+     &           0.2031674267230659217490645D0,
+     &           0.1600783285433462263346525D0,
+     &           0.1069393259953184309602547D0,
+     &           0.04717533638651182719461596D0/
       IF (.NOT. (RHO .LT. 1.0D9)) THEN
          XI = C
          YI = S
@@ -215,8 +248,14 @@ C=======================================================================
       YC = RHO*S
       IF (RHO .LT. 3.0D0) THEN
          CALL FRCLSD(A, B, XC, YC, XI, YI, XK)
+      ELSE IF (RHO .LT. 8.0D0) THEN
+         CALL FRFAR(A, B, XC, YC, 6, G12X, G12W, XI, YI, XK)
+      ELSE IF (RHO .LT. 24.0D0) THEN
+         CALL FRFAR(A, B, XC, YC, 4, G8X, G8W, XI, YI, XK)
+      ELSE IF (RHO .LT. 512.0D0) THEN
+         CALL FRFAR(A, B, XC, YC, 3, G6X, G6W, XI, YI, XK)
       ELSE
-         CALL FRFAR(A, B, XC, YC, XI, YI, XK)
+         CALL FRFAR(A, B, XC, YC, 2, G4X, G4W, XI, YI, XK)
       END IF
       RETURN
       END
@@ -265,48 +304,37 @@ C=======================================================================
       RETURN
       END
 C=======================================================================
-C     FRFAR -- far field: 12 x 12 Gauss-Legendre rule applied to the
-C     point-symmetrised integrands at (x, y) and (-x, -y). With
-C     d = x XC + y YC, e = x YC - y XC, rho**2 = x**2 + y**2, R = |XC,YC|
+C     FRFAR -- far field: 2NH x 2NH Gauss-Legendre rule (positive
+C     nodes GX, weights GW) applied to the point-symmetrised integrands
+C     at (x, y) and (-x, -y). With d = x XC + y YC, e = x YC - y XC,
+C     rho**2 = x**2 + y**2, R = |XC,YC|:
 C       h(+) + h(-) = e**2/R**2 (1/r+ + 1/r-)
 C                   + 8 d**2 e**2/(R**2 r+ r- (r+ + r-)(r+ r- + R**2 - rho**2))
 C=======================================================================
-      SUBROUTINE FRFAR(A, B, XC, YC, XI, YI, XK)
-      DOUBLE PRECISION A, B, XC, YC, XI, YI, XK
-      DOUBLE PRECISION GX(6), GW(6)
+      SUBROUTINE FRFAR(A, B, XC, YC, NH, GX, GW, XI, YI, XK)
+      INTEGER NH
+      DOUBLE PRECISION A, B, XC, YC, GX(NH), GW(NH), XI, YI, XK
       DOUBLE PRECISION R, RINV2, SX, SY, SK, X, Y, WY, TX, TY, TK
       DOUBLE PRECISION XP, YP, XM, YM, RP, RM, PI, PM, D, E, RHO, RR
       DOUBLE PRECISION EE
       INTEGER I, J
-      DATA GX /0.1252334085114689154724414D0,
-     &         0.3678314989981801937526915D0,
-     &         0.5873179542866174472967024D0,
-     &         0.7699026741943046870368938D0,
-     &         0.9041172563704748566784659D0,
-     &         0.9815606342467192506905491D0/
-      DATA GW /0.2491470458134027850005624D0,
-     &         0.2334925365383548087608499D0,
-     &         0.2031674267230659217490645D0,
-     &         0.1600783285433462263346525D0,
-     &         0.1069393259953184309602547D0,
-     &         0.04717533638651182719461596D0/
       R = SQRT(XC*XC + YC*YC)
       RINV2 = 1.0D0/(R*R)
       SX = 0.0D0
       SY = 0.0D0
       SK = 0.0D0
-      DO 20 I = 1, 6
+      DO 20 I = 1, NH
          X = A*GX(I)
          TX = 0.0D0
          TY = 0.0D0
          TK = 0.0D0
-         DO 10 J = 1, 12
-            IF (J .LE. 6) THEN
+         DO 10 J = 1, 2*NH
+            IF (J .LE. NH) THEN
                Y = B*GX(J)
                WY = GW(J)
             ELSE
-               Y = -(B*GX(J-6))
-               WY = GW(J-6)
+               Y = -(B*GX(J-NH))
+               WY = GW(J-NH)
             END IF
             XP = XC + X
             YP = YC + Y

@@ -192,7 +192,7 @@ TEST_CASE("friction: joins the translation limit smoothly for R/max(a,b) from 1e
         std::uniform_real_distribution<double> u(0.0, 1.0);
         std::vector<double> rhos;
         for (int i = 0; i <= 2600; ++i) rhos.push_back(std::pow(10.0, 2.0 + 13.0 * i / 2600.0));
-        for (double k : {kFrictionAsymptotic}) rhos.push_back(k);
+        for (double k : {kFrictionGl4From, kFrictionAsymptotic}) rhos.push_back(k);
         double worst_jump_f = 0.0, worst_jump_m = 0.0;
         for (double rho : rhos) {
           const double R = rho * L;
@@ -232,7 +232,7 @@ TEST_CASE("friction: no jump where the evaluation form switches", "[friction][nu
   for (int i = 0; i < 2000; ++i) {
     const double a = std::pow(10.0, -1.3 * u(rng)), b = std::pow(10.0, -1.3 * u(rng));
     const double L = std::max(a, b), alpha = 2 * kPi * u(rng);
-    for (double k : {kFrictionFarField, kFrictionAsymptotic}) {
+    for (double k : {kFrictionFarField, kFrictionGl8From, kFrictionGl6From, kFrictionGl4From, kFrictionAsymptotic}) {
       const double lo = k * L * (1 - 1e-15), hi = k * L * (1 + 1e-15);
       REQUIRE(rectangle_friction_form(a, b, lo) != rectangle_friction_form(a, b, hi));
       const auto w1 = rectangle_friction_wrench(a, b, 1.0, lo, alpha, 1);

@@ -54,8 +54,11 @@ FrictionWrench rectangle_friction_from_velocity_checked(double a, double b, doub
 int rectangle_friction_form(double a, double b, double R) {
   const double L = a > b ? a : b;
   const double rho = R / L;
-  if (!(rho < kFrictionAsymptotic)) return 2;
-  return rho < kFrictionFarField ? 0 : 1;
+  if (!(rho < kFrictionAsymptotic)) return 5;
+  if (rho < kFrictionFarField) return 0;
+  if (rho < kFrictionGl8From) return 1;
+  if (rho < kFrictionGl6From) return 2;
+  return rho < kFrictionGl4From ? 3 : 4;
 }
 
 namespace {

@@ -22,10 +22,10 @@
 //     logarithms of differences) is finite on edges, corners and at R = 0.
 //     Rounding error grows like eps rho^2 (force) and eps rho^3 (moment): cancellation.
 //  2. kFrictionFarField <= rho < kFrictionAsymptotic: the far-field multipole series of the
-//     integrand, evaluated exactly by a 12 x 12 product Gauss-Legendre rule applied to the
+//     integrand, evaluated exactly by an n x n product Gauss-Legendre rule applied to the
 //     point-symmetrised integrands (no cancellation: the O(R) odd part of the moment integrand
-//     is removed analytically). The rule integrates the series to total degree 23 exactly;
-//     the remainder is below 1e-16 for rho >= 3.
+//     is removed analytically). The rule integrates the series to degree 2n - 1 exactly;
+//     n = 12, 8, 6, 4 from rho = 3, 8, 24, 512 keeps the remainder below 1e-16.
 //  3. rho >= kFrictionAsymptotic (1e9): the two-term asymptotic form
 //       f = muN s (sin alpha, -cos alpha),  mf = -muN s (a^2 sin^2 alpha + b^2 cos^2 alpha)/(3R),
 //     whose neglected terms are O((max(a,b)/R)^2) < 1e-17 relative; it is also the exact
@@ -53,6 +53,12 @@ struct FrictionWrench {
 
 /// Switch from the corner-term closed form to the far-field form, in units of max(a, b).
 inline constexpr double kFrictionFarField = 3.0;
+/// Far-field Gauss-Legendre rule by distance (units of max(a, b)): 12 points from
+/// kFrictionFarField, then 8, 6 and 4 points from these values. The series' remainder after the
+/// exactly integrated degree 2n - 1 falls like (L/(2R))^(2n); each rule is used only where it
+/// is below 1e-16 (docs/friction.md has the measured errors).
+inline constexpr double kFrictionGl8From = 8.0, kFrictionGl6From = 24.0, kFrictionGl4From = 512.0;
+
 /// Switch from the far-field form to the asymptotic (translation + 1/R moment) form.
 inline constexpr double kFrictionAsymptotic = 1e9;
 /// Smallest accepted aspect ratio min(a,b)/max(a,b): the corner form loses about
@@ -135,7 +141,17 @@ inline MeanIntegrals closed_form(double a, double b, double xc, double yc) noexc
   return {ix, iy, sr / area - xc * ix - yc * iy};
 }
 
-/// Gauss-Legendre 12-point rule on [-1, 1]: positive nodes and their weights.
+/// Gauss-Legendre rules on [-1, 1] with 4, 6, 8 and 12 points: positive nodes and weights.
+inline constexpr double kGl4x[2] = {0.3399810435848562648026658, 0.8611363115940525752239465};
+inline constexpr double kGl4w[2] = {0.6521451548625461426269361, 0.3478548451374538573730639};
+inline constexpr double kGl6x[3] = {0.2386191860831969086305017, 0.6612093864662645136613996,
+                                    0.9324695142031520278123016};
+inline constexpr double kGl6w[3] = {0.4679139345726910473898703, 0.3607615730481386075698335,
+                                    0.1713244923791703450402961};
+inline constexpr double kGl8x[4] = {0.1834346424956498049394761, 0.525532409916328985817739,
+                                    0.7966664774136267395915539, 0.9602898564975362316835609};
+inline constexpr double kGl8w[4] = {0.3626837833783619829651504, 0.3137066458778872873379622,
+                                    0.222381034453374470544356, 0.1012285362903762591525314};
 inline constexpr double kGl12x[6] = {0.1252334085114689154724414, 0.3678314989981801937526915,
                                      0.5873179542866174472967024, 0.7699026741943046870368938,
                                      0.9041172563704748566784659, 0.9815606342467192506905491};
@@ -149,15 +165,17 @@ inline constexpr double kGl12w[6] = {0.2491470458134027850005624, 0.233492536538
 ///   h(+) + h(-) = e^2/R^2 (1/r+ + 1/r-) + 8 d^2 e^2 / (R^2 r+ r- (r+ + r-)(r+ r- + R^2 - rho^2)),
 /// a sum of non-negative terms (the O(R) odd part of h cancels analytically).
 /// Requires the rectangle well away from the iCOR (rho >= kFrictionFarField).
-inline MeanIntegrals far_field(double a, double b, double xc, double yc) noexcept {
+/// gx, gw: the h positive nodes and weights of a 2h-point Gauss-Legendre rule.
+inline MeanIntegrals far_field(double a, double b, double xc, double yc, const double* gx, const double* gw,
+                               int h) noexcept {
   const double r = std::sqrt(xc * xc + yc * yc), inv_r2 = 1.0 / (r * r);
   double sx = 0.0, sy = 0.0, sk = 0.0;
-  for (int i = 0; i < 6; ++i) {
-    const double x = a * kGl12x[i];
+  for (int i = 0; i < h; ++i) {
+    const double x = a * gx[i];
     double tx = 0.0, ty = 0.0, tk = 0.0;
-    for (int j = 0; j < 12; ++j) {
-      const double y = (j < 6) ? b * kGl12x[j] : -b * kGl12x[j - 6];
-      const double wy = (j < 6) ? kGl12w[j] : kGl12w[j - 6];
+    for (int j = 0; j < 2 * h; ++j) {
+      const double y = (j < h) ? b * gx[j] : -b * gx[j - h];
+      const double wy = (j < h) ? gw[j] : gw[j - h];
       const double xp = xc + x, yp = yc + y, xm = xc - x, ym = yc - y;
       const double rp = std::sqrt(xp * xp + yp * yp), rm = std::sqrt(xm * xm + ym * ym);
       const double ip = 1.0 / rp, im = 1.0 / rm;
@@ -171,9 +189,9 @@ inline MeanIntegrals far_field(double a, double b, double xc, double yc) noexcep
       const double ee = e * e * inv_r2;
       tk += wy * (ee * (ip + im) + 8.0 * d * d * ee / (rr * (rp + rm) * (rr + (r - rho) * (r + rho))));
     }
-    sx += kGl12w[i] * tx;
-    sy += kGl12w[i] * ty;
-    sk += kGl12w[i] * tk;
+    sx += gw[i] * tx;
+    sy += gw[i] * ty;
+    sk += gw[i] * tk;
   }
   // Sum of weights over [-1,1]^2 is 4; each symmetric pair was summed over half the x nodes,
   // so the mean is (pair sum)/(2 * 4) * 2 = pair sum / 4.
@@ -189,7 +207,10 @@ inline MeanIntegrals mean_integrals(double a, double b, double rho, double c, do
   }
   const double xc = rho * c, yc = rho * s;
   if (rho < kFrictionFarField) return closed_form(a, b, xc, yc);
-  return far_field(a, b, xc, yc);
+  if (rho < kFrictionGl8From) return far_field(a, b, xc, yc, kGl12x, kGl12w, 6);
+  if (rho < kFrictionGl6From) return far_field(a, b, xc, yc, kGl8x, kGl8w, 4);
+  if (rho < kFrictionGl4From) return far_field(a, b, xc, yc, kGl6x, kGl6w, 3);
+  return far_field(a, b, xc, yc, kGl4x, kGl4w, 2);
 }
 
 inline FrictionWrench wrench_from_means(const MeanIntegrals& m, double muN, double sense,
@@ -252,7 +273,8 @@ FrictionWrench rectangle_friction_from_velocity_checked(double a, double b, doub
                                                         double omega);
 
 /// Which evaluation form rectangle_friction_wrench uses at this geometry (for docs and tests):
-/// 0 = corner closed form, 1 = far-field Gauss-Legendre series, 2 = asymptotic.
+/// 0 = corner closed form; 1, 2, 3, 4 = far-field series with the 12-, 8-, 6-, 4-point
+/// Gauss-Legendre rule; 5 = asymptotic.
 int rectangle_friction_form(double a, double b, double R);
 
 /// The thesis' printed closed forms (eqs 3.45, 3.46, 3.47 with 3.48), transcribed literally
