@@ -10,7 +10,8 @@ C                       N = 12, 8, 6, 4 from RHO = 3, 8, 24, 512;
 C       RHO >= 1D9:     asymptotic form (translation + 1/R moment).
 C
 C     Body axes at the CM; x' across the width (half-width A), y' along
-C     the length (half-length B). The iCOR is at -R (COS ALPHA, SIN ALPHA).
+C     the length (half-length B). The iCOR is at
+C     -R (COS ALPHA, SIN ALPHA).
 C     FMUN   mu N, total friction force scale [N]
 C     ISENSE +1 counter-clockwise rotation (omega > 0), -1 clockwise
 C     FX, FY friction force in body axes [N]; FM moment about CM [N m]
@@ -309,7 +310,7 @@ C     nodes GX, weights GW) applied to the point-symmetrised integrands
 C     at (x, y) and (-x, -y). With d = x XC + y YC, e = x YC - y XC,
 C     rho**2 = x**2 + y**2, R = |XC,YC|:
 C       h(+) + h(-) = e**2/R**2 (1/r+ + 1/r-)
-C                   + 8 d**2 e**2/(R**2 r+ r- (r+ + r-)(r+ r- + R**2 - rho**2))
+C         + 8 d**2 e**2/(R**2 r+ r- (r+ + r-)(r+ r- + R**2 - rho**2))
 C=======================================================================
       SUBROUTINE FRFAR(A, B, XC, YC, NH, GX, GW, XI, YI, XK)
       INTEGER NH
