@@ -421,3 +421,34 @@ TEST_CASE("friction: cubature rule is exact for polynomials of degree 22 (GK15)"
     CHECK(r.value[0] == Approx(exact).margin(1e-15));
   }
 }
+
+TEST_CASE("friction: velocity interface matches the definition f = -mu p v/|v| integrated directly",
+          "[friction][numeric]") {
+  // Independent of the iCOR parametrisation: integrate -muN/(4ab) v(x)/|v(x)| with
+  // v(x) = v + omega z x x (body axes) and its moment about the CM, by nested cubature with
+  // break points at the point of zero velocity.
+  const double a = 27.5e-9, b = 50e-9, muN = 1.3;
+  struct V {
+    double vx, vy, om;
+  };
+  for (const V& c : {V{1e-3, 0.0, 3e4}, V{-2e-3, 5e-4, -1e5}, V{0.0, 1e-3, 2e4}, V{3e-3, -1e-3, 1e3},
+                     V{1e-4, 1e-4, -5e5}, V{0.0, 0.0, 7.0}}) {
+    const double cx = -c.vy / c.om, cy = c.vx / c.om;  // zero-velocity point (models.md §0)
+    auto g = [&](double x, double y, double* out) {
+      const double ux = c.vx - c.om * y, uy = c.vy + c.om * x;
+      const double s = std::hypot(ux, uy);
+      const double fx = s > 0 ? -ux / s : 0.0, fy = s > 0 ? -uy / s : 0.0;
+      out[0] = fx;
+      out[1] = fy;
+      out[2] = x * fy - y * fx;
+    };
+    auto r = nanopush::cubature::integrate_rectangle<3>(g, -a, a, -b, b, {cx}, {cy}, 1e-13 * 4 * a * b, 4000);
+    REQUIRE(r.converged);
+    const double A = 4 * a * b;
+    const auto w = rectangle_friction_from_velocity(a, b, muN, c.vx, c.vy, c.om);
+    INFO("v=(" << c.vx << "," << c.vy << ") omega=" << c.om);
+    CHECK(w.fx == Approx(muN * r.value[0] / A).margin(1e-11 * muN));
+    CHECK(w.fy == Approx(muN * r.value[1] / A).margin(1e-11 * muN));
+    CHECK(w.mf == Approx(muN * r.value[2] / A).margin(1e-11 * muN * b));
+  }
+}
