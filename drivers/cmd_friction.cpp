@@ -240,9 +240,9 @@ RegisterCommand reg{{"friction",
                      "'R,alpha,fx,fy,mf' (muN = 1, body axes); --bench times the evaluation forms",
                      30, [](CLI::App& app) -> std::function<int()> {
                        auto o = std::make_shared<Options>();
-                       app.add_option("--a", o->a, "half-width of the contact along body x' (m)")
+                       app.add_option("--a", o->a, "half-width of the contact along body x' (m; default: the thesis nanobar, 55 nm wide)")
                            ->capture_default_str();
-                       app.add_option("--b", o->b, "half-length of the contact along body y' (m)")
+                       app.add_option("--b", o->b, "half-length of the contact along body y' (m; default: the thesis nanobar, 100 nm long)")
                            ->capture_default_str();
                        app.add_option("--sense", o->sense,
                                       "+1 counter-clockwise rotation (omega > 0), -1 clockwise")
