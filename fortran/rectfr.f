@@ -16,7 +16,7 @@ C     FMUN   mu N, total friction force scale [N]
 C     ISENSE +1 counter-clockwise rotation (omega > 0), -1 clockwise
 C     FX, FY friction force in body axes [N]; FM moment about CM [N m]
 C     IERR   0 ok; 1 A, 2 B not finite and > 0; 3 aspect ratio
-C            MIN/MAX below 1D-6; 4 FMUN not finite and >= 0; 5 R not
+C            MIN/MAX below 1D-4; 4 FMUN not finite and >= 0; 5 R not
 C            finite and >= 0; 6 ALPHA not finite; 7 ISENSE not +-1.
 C     On error FX = FY = FM = 0. The routine never stops.
 C=======================================================================
@@ -111,7 +111,7 @@ C=======================================================================
          IERR = 1
       ELSE IF (FRBAD(B) .OR. .NOT. (B .GT. 0.0D0)) THEN
          IERR = 2
-      ELSE IF (.NOT. (MIN(A, B)/MAX(A, B) .GE. 1.0D-6)) THEN
+      ELSE IF (.NOT. (MIN(A, B)/MAX(A, B) .GE. 1.0D-4)) THEN
          IERR = 3
       ELSE IF (FRBAD(FMUN) .OR. .NOT. (FMUN .GE. 0.0D0)) THEN
          IERR = 4

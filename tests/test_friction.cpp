@@ -452,3 +452,27 @@ TEST_CASE("friction: velocity interface matches the definition f = -mu p v/|v| i
     CHECK(w.mf == Approx(muN * r.value[2] / A).margin(1e-11 * muN * b));
   }
 }
+
+TEST_CASE("friction: thin contacts down to the aspect-ratio limit vs cubature", "[friction][numeric]") {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  double worst_f = 0.0, worst_m = 0.0;
+  for (int i = 0; i < 600; ++i) {
+    const double thin = std::max(kFrictionMinAspect, std::pow(10.0, -4.0 * u(rng)));
+    const double a = (i % 2) ? 1e-7 : 1e-7 * thin, b = (i % 2) ? 1e-7 * thin : 1e-7;
+    const double L = std::max(a, b);
+    const double R = (i % 3 == 0) ? L * u(rng) : L * std::pow(10.0, 2.0 * u(rng) - 1.0);
+    const double alpha = 2 * kPi * u(rng);
+    const auto w = rectangle_friction_wrench(a, b, 1.0, R, alpha, 1);
+    const auto q = cubature_friction_wrench_uniform(a, b, 1.0, R, alpha, 1, 1e-13);
+    INFO("a=" << a << " b=" << b << " R=" << R << " alpha=" << alpha);
+    REQUIRE(q.converged);
+    const double ef = std::hypot(w.fx - q.wrench.fx, w.fy - q.wrench.fy) / std::hypot(q.wrench.fx, q.wrench.fy);
+    const double em = std::fabs(w.mf - q.wrench.mf) / L;
+    CHECK(ef <= 1e-10);
+    CHECK(em <= 1e-10);
+    worst_f = std::max(worst_f, ef);
+    worst_m = std::max(worst_m, em);
+  }
+  WARN("thin contacts: worst relative |df| " << worst_f << ", worst |dmf|/(muN L) " << worst_m);
+}

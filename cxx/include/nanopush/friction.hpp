@@ -62,8 +62,9 @@ inline constexpr double kFrictionGl8From = 8.0, kFrictionGl6From = 24.0, kFricti
 /// Switch from the far-field form to the asymptotic (translation + 1/R moment) form.
 inline constexpr double kFrictionAsymptotic = 1e9;
 /// Smallest accepted aspect ratio min(a,b)/max(a,b): the corner form loses about
-/// log10(max/min) digits to cancellation across the thin direction (docs/friction.md).
-inline constexpr double kFrictionMinAspect = 1e-6;
+/// log10(max/min) digits to cancellation across the thin direction (docs/friction.md), so
+/// this keeps the error below about 1e-11 (mf/(muN max(a,b)), f/muN).
+inline constexpr double kFrictionMinAspect = 1e-4;
 
 namespace friction_detail {
 
