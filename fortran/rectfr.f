@@ -16,7 +16,7 @@ C     FMUN   mu N, total friction force scale [N]
 C     ISENSE +1 counter-clockwise rotation (omega > 0), -1 clockwise
 C     FX, FY friction force in body axes [N]; FM moment about CM [N m]
 C     IERR   0 ok; 1 A, 2 B not finite and > 0; 3 aspect ratio
-C            MIN/MAX below 1D-4; 4 FMUN not finite and >= 0; 5 R not
+C            MIN/MAX below 1D-12; 4 FMUN not finite and >= 0; 5 R not
 C            finite and >= 0; 6 ALPHA not finite; 7 ISENSE not +-1.
 C     On error FX = FY = FM = 0. The routine never stops.
 C=======================================================================
@@ -111,7 +111,7 @@ C=======================================================================
          IERR = 1
       ELSE IF (FRBAD(B) .OR. .NOT. (B .GT. 0.0D0)) THEN
          IERR = 2
-      ELSE IF (.NOT. (MIN(A, B)/MAX(A, B) .GE. 1.0D-4)) THEN
+      ELSE IF (.NOT. (MIN(A, B)/MAX(A, B) .GE. 1.0D-12)) THEN
          IERR = 3
       ELSE IF (FRBAD(FMUN) .OR. .NOT. (FMUN .GE. 0.0D0)) THEN
          IERR = 4
@@ -265,43 +265,87 @@ C     FRCLSD -- corner-term closed form. Antiderivatives (corner terms)
 C       FX = (Y r + X**2 asinh(Y/|X|))/2
 C       FY = (X r + Y**2 asinh(X/|Y|))/2
 C       FR = X Y r/3 + (X**3 asinh(Y/|X|) + Y**3 asinh(X/|Y|))/6
-C     summed with signs + - - + over the four corners.
+C     combined as (F(x1,.) differenced across y) - (F(x0,.) differenced
+C     across y), the y difference taken across the thinner side
+C     (x and y transposed when A < B) by FRYDIF, without cancellation.
 C=======================================================================
       SUBROUTINE FRCLSD(A, B, XC, YC, XI, YI, XK)
       DOUBLE PRECISION A, B, XC, YC, XI, YI, XK
-      DOUBLE PRECISION XS(2), YS(2), SX, SY, SR, X, Y, R, AX, AY
-      DOUBLE PRECISION F1, F2, F3, SG, AREA
-      DOUBLE PRECISION FRSQAS
-      EXTERNAL FRSQAS
-      INTEGER I, J
-      XS(1) = XC - A
-      XS(2) = XC + A
-      YS(1) = YC - B
-      YS(2) = YC + B
-      SX = 0.0D0
-      SY = 0.0D0
-      SR = 0.0D0
-      DO 20 I = 1, 2
-         DO 10 J = 1, 2
-            X = XS(I)
-            Y = YS(J)
-            R = SQRT(X*X + Y*Y)
-            AX = FRSQAS(X, Y)
-            AY = FRSQAS(Y, X)
-            F1 = 0.5D0*(Y*R + AX)
-            F2 = 0.5D0*(X*R + AY)
-            F3 = X*Y*R/3.0D0 + (X*AX + Y*AY)/6.0D0
-            SG = -1.0D0
-            IF (I .EQ. J) SG = 1.0D0
-            SX = SX + SG*F1
-            SY = SY + SG*F2
-            SR = SR + SG*F3
-   10    CONTINUE
-   20 CONTINUE
+      DOUBLE PRECISION TA, TB, TXC, TYC, G1X, G1Y, G1R, G0X, G0Y, G0R
+      DOUBLE PRECISION AREA, TIX, TIY
+      LOGICAL TRANSP
+      EXTERNAL FRYDIF
+      TRANSP = A .LT. B
+      IF (TRANSP) THEN
+         TA = B
+         TB = A
+         TXC = YC
+         TYC = XC
+      ELSE
+         TA = A
+         TB = B
+         TXC = XC
+         TYC = YC
+      END IF
+      CALL FRYDIF(TXC + TA, TYC, TB, G1X, G1Y, G1R)
+      CALL FRYDIF(TXC - TA, TYC, TB, G0X, G0Y, G0R)
       AREA = 4.0D0*A*B
-      XI = SX/AREA
-      YI = SY/AREA
-      XK = SR/AREA - XC*XI - YC*YI
+      TIX = (G1X - G0X)/AREA
+      TIY = (G1Y - G0Y)/AREA
+      XK = (G1R - G0R)/AREA - TXC*TIX - TYC*TIY
+      IF (TRANSP) THEN
+         XI = TIY
+         YI = TIX
+      ELSE
+         XI = TIX
+         YI = TIY
+      END IF
+      RETURN
+      END
+C=======================================================================
+C     FRYDIF -- differences across y of the corner antiderivatives at
+C     fixed X, y0 = YC - B, y1 = YC + B (GX, GY, GR for FX, FY, FR),
+C     without cancellation when B << |YC|: y1 - y0 = 2B, y1 + y0 = 2YC,
+C     r1 - r0 = 4 B YC/(r0 + r1), and for y0, y1 of one sign
+C       asinh(y1/|X|) - asinh(y0/|X|) = asinh(4 B YC/(y1 r0 + y0 r1))
+C       asinh(X/|y1|) - asinh(X/|y0|)
+C                          = asinh(-4 B YC X/(y0 y1 (r0 + r1)))
+C=======================================================================
+      SUBROUTINE FRYDIF(X, YC, B, GX, GY, GR)
+      DOUBLE PRECISION X, YC, B, GX, GY, GR
+      DOUBLE PRECISION Y0, Y1, R0, R1, RS, DR, DYR, X2DA, DY2B, DY3B
+      DOUBLE PRECISION AX, YMIN, Y01, DA, B0, B1, DB
+      DOUBLE PRECISION FRASNH, FRSQAS
+      EXTERNAL FRASNH, FRSQAS
+      Y0 = YC - B
+      Y1 = YC + B
+      R0 = SQRT(X*X + Y0*Y0)
+      R1 = SQRT(X*X + Y1*Y1)
+      RS = R0 + R1
+      DR = 0.0D0
+      IF (RS .GT. 0.0D0) DR = 4.0D0*B*YC/RS
+      DYR = B*RS + YC*DR
+      AX = ABS(X)
+      YMIN = MIN(ABS(Y0), ABS(Y1))
+      IF ((Y0 .GT. 0.0D0 .OR. Y1 .LT. 0.0D0) .AND.
+     &    YMIN .GE. 1.0D-150*AX) THEN
+         Y01 = Y0*Y1
+         DA = FRASNH(4.0D0*B*YC/(Y1*R0 + Y0*R1))
+         B0 = FRASNH(X/ABS(Y0))
+         B1 = FRASNH(X/ABS(Y1))
+         DB = FRASNH(-4.0D0*B*YC*X/(Y01*RS))
+         X2DA = X*X*DA
+         DY2B = 2.0D0*B*YC*(B1 + B0) + 0.5D0*(Y1*Y1 + Y0*Y0)*DB
+         DY3B = B*(Y1*Y1 + Y1*Y0 + Y0*Y0)*(B1 + B0)
+     &        + 0.5D0*(Y1*Y1*Y1 + Y0*Y0*Y0)*DB
+      ELSE
+         X2DA = FRSQAS(X, Y1) - FRSQAS(X, Y0)
+         DY2B = FRSQAS(Y1, X) - FRSQAS(Y0, X)
+         DY3B = Y1*FRSQAS(Y1, X) - Y0*FRSQAS(Y0, X)
+      END IF
+      GX = 0.5D0*(DYR + X2DA)
+      GY = 0.5D0*(X*DR + DY2B)
+      GR = X*DYR/3.0D0 + (X*X2DA + DY3B)/6.0D0
       RETURN
       END
 C=======================================================================

@@ -18,9 +18,11 @@
 //  1. rho < kFrictionFarField: the exact corner-term closed form. Antiderivatives
 //       FX = (Y r + X^2 asinh(Y/|X|))/2, FY = (X r + Y^2 asinh(X/|Y|))/2,
 //       Fr = X Y r/3 + (X^3 asinh(Y/|X|) + Y^3 asinh(X/|Y|))/6
-//     summed with signs +,-,-,+ over the corners. The asinh form (instead of the thesis'
-//     logarithms of differences) is finite on edges, corners and at R = 0.
-//     Rounding error grows like eps rho^2 (force) and eps rho^3 (moment): cancellation.
+//     combined as F(x1,y1) - F(x0,y1) - F(x1,y0) + F(x0,y0), the difference across the
+//     thinner side formed without cancellation (y_difference). The asinh form (instead of the
+//     thesis' logarithms of differences) is finite on edges, corners and at R = 0.
+//     Rounding error grows like eps rho^2 (force) and eps rho^3 (moment) from the remaining
+//     difference along the long side.
 //  2. kFrictionFarField <= rho < kFrictionAsymptotic: the far-field multipole series of the
 //     integrand, evaluated exactly by an n x n product Gauss-Legendre rule applied to the
 //     point-symmetrised integrands (no cancellation: the O(R) odd part of the moment integrand
@@ -61,10 +63,9 @@ inline constexpr double kFrictionGl8From = 8.0, kFrictionGl6From = 24.0, kFricti
 
 /// Switch from the far-field form to the asymptotic (translation + 1/R moment) form.
 inline constexpr double kFrictionAsymptotic = 1e9;
-/// Smallest accepted aspect ratio min(a,b)/max(a,b): the corner form loses about
-/// log10(max/min) digits to cancellation across the thin direction (docs/friction.md), so
-/// this keeps the error below about 1e-11 (mf/(muN max(a,b)), f/muN).
-inline constexpr double kFrictionMinAspect = 1e-4;
+/// Smallest accepted aspect ratio min(a,b)/max(a,b) (tested down to this limit at full
+/// accuracy: the closed form differences the thin side without cancellation).
+inline constexpr double kFrictionMinAspect = 1e-12;
 
 namespace friction_detail {
 
@@ -117,8 +118,58 @@ struct MeanIntegrals {
   double ix, iy, km;
 };
 
-/// Form 1: corner-term closed form. All lengths in units of max(a, b).
+/// Differences across y of the corner antiderivatives at fixed X, y0 = yc - b, y1 = yc + b:
+///   gx = FX(X, y1) - FX(X, y0), gy = FY(...) - FY(...), gr = Fr(...) - Fr(...),
+/// formed without cancellation when b << |yc| (a thin contact): y1 - y0 = 2b, y1 + y0 = 2yc,
+/// r1 - r0 = 4 b yc/(r0 + r1), y1 r1 - y0 r0 = b (r0 + r1) + yc (r1 - r0), and for y0, y1 of
+/// one sign the asinh addition formula
+///   asinh(y1/|X|) - asinh(y0/|X|) = asinh(4 b yc/(y1 r0 + y0 r1)),
+///   asinh(X/|y1|) - asinh(X/|y0|) = asinh(-4 b yc X/(y0 y1 (r0 + r1))).
+struct YDifference {
+  double gx, gy, gr;
+};
+inline YDifference y_difference(double X, double yc, double b) noexcept {
+  const double y0 = yc - b, y1 = yc + b;
+  const double r0 = std::sqrt(X * X + y0 * y0), r1 = std::sqrt(X * X + y1 * y1);
+  const double rs = r0 + r1;
+  const double dr = rs > 0.0 ? 4.0 * b * yc / rs : 0.0;  // r1 - r0
+  const double dyr = b * rs + yc * dr;                   // y1 r1 - y0 r0
+  double x2da, dy2b, dy3b;  // X^2 D[asinh(Y/|X|)], D[Y^2 asinh(X/|Y|)], D[Y^3 asinh(X/|Y|)]
+  const double ax = std::fabs(X);
+  const double ymin = std::fmin(std::fabs(y0), std::fabs(y1));
+  if ((y0 > 0.0 || y1 < 0.0) && ymin >= 1e-150 * ax) {
+    const double y01 = y0 * y1;  // > 0
+    const double da = asinh_portable(4.0 * b * yc / (y1 * r0 + y0 * r1));
+    const double b0 = asinh_portable(X / std::fabs(y0)), b1 = asinh_portable(X / std::fabs(y1));
+    const double db = asinh_portable(-4.0 * b * yc * X / (y01 * rs));
+    x2da = X * X * da;
+    dy2b = 2.0 * b * yc * (b1 + b0) + 0.5 * (y1 * y1 + y0 * y0) * db;
+    dy3b = b * (y1 * y1 + y1 * y0 + y0 * y0) * (b1 + b0) + 0.5 * (y1 * y1 * y1 + y0 * y0 * y0) * db;
+  } else {  // y0 <= 0 <= y1: |y0|, |y1| <= 2b, nothing to cancel
+    x2da = sq_asinh(X, y1) - sq_asinh(X, y0);
+    dy2b = sq_asinh(y1, X) - sq_asinh(y0, X);
+    dy3b = y1 * sq_asinh(y1, X) - y0 * sq_asinh(y0, X);
+  }
+  return {0.5 * (dyr + x2da), 0.5 * (X * dr + dy2b), X * dyr / 3.0 + (X * x2da + dy3b) / 6.0};
+}
+
+/// Form 1: corner-term closed form, Delta_x Delta_y F with the y difference taken across the
+/// thinner side (transposing x and y when a < b) by y_difference, so a thin contact loses no
+/// digits; the x difference cancels like (R/max(a,b))^2 only. Lengths in units of max(a, b).
 inline MeanIntegrals closed_form(double a, double b, double xc, double yc) noexcept {
+  const bool transpose = a < b;
+  const double ta = transpose ? b : a, tb = transpose ? a : b;
+  const double txc = transpose ? yc : xc, tyc = transpose ? xc : yc;
+  const YDifference g1 = y_difference(txc + ta, tyc, tb), g0 = y_difference(txc - ta, tyc, tb);
+  const double area = 4.0 * a * b;
+  const double tix = (g1.gx - g0.gx) / area, tiy = (g1.gy - g0.gy) / area;
+  const double km = (g1.gr - g0.gr) / area - txc * tix - tyc * tiy;
+  return transpose ? MeanIntegrals{tiy, tix, km} : MeanIntegrals{tix, tiy, km};
+}
+
+/// The plain corner sum +F(x1,y1) - F(x0,y1) - F(x1,y0) + F(x0,y0) (for tests and docs:
+/// loses about log10(max(a,b)/min(a,b)) digits on thin contacts).
+inline MeanIntegrals closed_form_corner_sum(double a, double b, double xc, double yc) noexcept {
   const double xs[2] = {xc - a, xc + a};
   const double ys[2] = {yc - b, yc + b};
   double sx = 0.0, sy = 0.0, sr = 0.0;
