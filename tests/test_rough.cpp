@@ -125,7 +125,10 @@ TEST_CASE("Coulomb law: the CVODE cross-check agrees to 1e-8", "[rough][coulomb]
     sc.surface.mu = mu;
     RunSettings a, b;
     a.law = b.law = "coulomb";
-    a.rtol = b.rtol = 1e-11;
+    // CVODE's global error runs far above its rtol (BDF, order <= 5; ~1e-4 rad at 1e-10 where
+    // BS is within 1e-9), so the reference runs 100 times tighter, as in the reproduce step.
+    a.rtol = 1e-10;
+    b.rtol = 1e-12;
     b.method = "cvode";
     const Trajectory ta = run_scene(sc, a), tb = run_scene(sc, b);
     REQUIRE(ta.rows.size() == tb.rows.size());
