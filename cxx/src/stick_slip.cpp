@@ -97,13 +97,23 @@ RestAnalysis analyse_rest(const RoughBarModel& model, double theta) {
   return r;
 }
 
-WorldWrench coulomb_friction(const RoughBarModel& model, const double* y, const std::array<double, 3>& mode) {
+static WorldWrench coulomb_friction_cs(const RoughBarModel& model, double c, double s, const double* y,
+                                const std::array<double, 3>& mode) {
   const double L = length_scale(model);
   const double vx = y[kVx], vy = y[kVy], om = y[kOmega];
-  if (vx == 0.0 && vy == 0.0 && om == 0.0) return model.friction(y[kTheta], mode[0], mode[1], mode[2] / L);
+  if (vx == 0.0 && vy == 0.0 && om == 0.0) return model.friction_cs(c, s, mode[0], mode[1], mode[2] / L);
   const double g = vx * mode[0] + vy * mode[1] + om * L * mode[2];
-  if (g >= 0.0) return model.friction(y[kTheta], vx, vy, om);
-  return model.friction(y[kTheta], -vx, -vy, -om);
+  if (g >= 0.0) return model.friction_cs(c, s, vx, vy, om);
+  return model.friction_cs(c, s, -vx, -vy, -om);
+}
+
+WorldWrench coulomb_friction(const RoughBarModel& model, const double* y, const std::array<double, 3>& mode) {
+  return coulomb_friction_cs(model, std::cos(y[kTheta]), std::sin(y[kTheta]), y, mode);
+}
+
+void coulomb_rhs(const RoughBarModel& model, const double* y, const std::array<double, 3>& mode, double* d) {
+  const double c = std::cos(y[kTheta]), s = std::sin(y[kTheta]);
+  RoughBarModel::rhs_with(model, y, model.applied_cs(c, s), coulomb_friction_cs(model, c, s, y, mode), d);
 }
 
 namespace {
@@ -155,9 +165,7 @@ StickSlipResult integrate_coulomb(const RoughBarModel& model, const BsOptions<do
 
   BulirschStoer<double, kRoughStateSize> bs(options);
   auto rhs = [&](double, const double* yy, double* d) {
-    const WorldWrench ap = model.applied(yy[kTheta]);
-    const WorldWrench fr = coulomb_friction(model, yy, mode);
-    RoughBarModel::rhs_with(model, yy, ap, fr, d);
+    coulomb_rhs(model, yy, mode, d);
     return 0;
   };
   auto accumulate = [&](const BsResult& r) {
@@ -185,9 +193,7 @@ StickSlipResult integrate_coulomb(const RoughBarModel& model, const BsOptions<do
   auto terminal = [&](const double* yy) {
     if (std::fabs(yy[kVx]) <= vtol[0] && std::fabs(yy[kVy]) <= vtol[1] && std::fabs(yy[kOmega]) <= vtol[2]) return true;
     double d[kRoughStateSize];
-    const WorldWrench ap = model.applied(yy[kTheta]);
-    const WorldWrench fr = coulomb_friction(model, yy, mode);
-    RoughBarModel::rhs_with(model, yy, ap, fr, d);
+    coulomb_rhs(model, yy, mode, d);
     const double v2 = yy[kVx] * yy[kVx] + yy[kVy] * yy[kVy];
     const double vdotA = yy[kVx] * d[kVx] + yy[kVy] * d[kVy];
     const double acc = std::hypot(d[kVx], d[kVy]);

@@ -29,11 +29,7 @@ struct CvData {
 
 int cv_rhs(sunrealtype, N_Vector y, N_Vector yd, void* ud) {
   const auto* d = static_cast<const CvData*>(ud);
-  const double* yy = N_VGetArrayPointer(y);
-  double* dd = N_VGetArrayPointer(yd);
-  const WorldWrench ap = d->model->applied(yy[kTheta]);
-  const WorldWrench fr = coulomb_friction(*d->model, yy, d->mode);
-  RoughBarModel::rhs_with(*d->model, yy, ap, fr, dd);
+  coulomb_rhs(*d->model, N_VGetArrayPointer(y), d->mode, N_VGetArrayPointer(yd));
   return 0;
 }
 

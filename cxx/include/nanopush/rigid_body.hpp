@@ -24,7 +24,11 @@ struct Push {
   /// Torque about the CM at orientation theta: (R(theta) pb) x F.
   template <typename S>
   [[nodiscard]] S torque(S theta) const {
-    const S c = num::cos(theta), s = num::sin(theta);
+    return torque_cs(num::cos(theta), num::sin(theta));
+  }
+  /// The same from cos(theta), sin(theta) already at hand (hot path: computed once per RHS).
+  template <typename S>
+  [[nodiscard]] S torque_cs(S c, S s) const {
     const S pwx = S(pbx) * c - S(pby) * s;
     const S pwy = S(pbx) * s + S(pby) * c;
     const S fx = S(force) * num::cos(S(beta));

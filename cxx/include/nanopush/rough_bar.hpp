@@ -32,7 +32,11 @@ struct RoughBarModel {
   /// (erratum 3: fy = fx' sin theta + fy' cos theta).
   [[nodiscard]] WorldWrench friction(double theta, double vx, double vy, double omega) const noexcept {
     if (muN == 0.0) return {};
-    const double c = std::cos(theta), s = std::sin(theta);
+    return friction_cs(std::cos(theta), std::sin(theta), vx, vy, omega);
+  }
+  /// The same from c = cos(theta), s = sin(theta) (computed once per RHS evaluation).
+  [[nodiscard]] WorldWrench friction_cs(double c, double s, double vx, double vy, double omega) const noexcept {
+    if (muN == 0.0) return {};
     const double vbx = c * vx + s * vy, vby = -s * vx + c * vy;
     const FrictionWrench fb = rectangle_friction_from_velocity(geometry.a, geometry.b, muN, vbx, vby, omega);
     return {c * fb.fx - s * fb.fy, s * fb.fx + c * fb.fy, fb.mf};
@@ -40,7 +44,10 @@ struct RoughBarModel {
 
   /// Applied push wrench in world axes at orientation theta.
   [[nodiscard]] WorldWrench applied(double theta) const noexcept {
-    return {push.force * std::cos(push.beta), push.force * std::sin(push.beta), push.torque(theta)};
+    return applied_cs(std::cos(theta), std::sin(theta));
+  }
+  [[nodiscard]] WorldWrench applied_cs(double c, double s) const noexcept {
+    return {push.force * std::cos(push.beta), push.force * std::sin(push.beta), push.torque_cs(c, s)};
   }
 
   /// Right-hand side with a given friction wrench (shared by every friction law).
@@ -68,8 +75,9 @@ struct RoughBarModel {
 struct RoughBarThesisRhs {
   RoughBarModel model;
   int operator()(double, const double* y, double* d) const noexcept {
-    const WorldWrench ap = model.applied(y[kTheta]);
-    const WorldWrench fr = model.friction(y[kTheta], y[kVx], y[kVy], y[kOmega]);
+    const double c = std::cos(y[kTheta]), s = std::sin(y[kTheta]);
+    const WorldWrench ap = model.applied_cs(c, s);
+    const WorldWrench fr = model.friction_cs(c, s, y[kVx], y[kVy], y[kOmega]);
     RoughBarModel::rhs_with(model, y, ap, fr, d);
     return 0;
   }

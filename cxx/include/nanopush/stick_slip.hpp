@@ -70,4 +70,7 @@ StickSlipResult integrate_coulomb_cvode(const RoughBarModel& model, double rtol,
 /// whichever is on the mode's side; from the mode itself when V = 0.
 WorldWrench coulomb_friction(const RoughBarModel& model, const double* y, const std::array<double, 3>& mode);
 
+/// The coulomb-law right-hand side (8 states) with sliding mode `mode`.
+void coulomb_rhs(const RoughBarModel& model, const double* y, const std::array<double, 3>& mode, double* dydt);
+
 }  // namespace nanopush
