@@ -241,7 +241,7 @@ std::string report_section(const Scene& scene, const BenchOptions& o, const Benc
      << " step " << o.kstep << " (extended precision to k = " << o.kmax_extended << "), atol_i = rtol * scale_i; "
      << o.repeats << " timed solve(s) per point (median). Machine: " << machine() << ". Whole sweep: "
      << num3(r.seconds) << " s.\n\n"
-     << "Error: max over output times and components of |y_i - y_ref,i| / scale_i. Reference: " << r.reference.kind
+     << "Error: max over output times and components of |y_i - y_ref,i| / (scale_i + |y_ref,i|). Reference: " << r.reference.kind
      << " (" << r.reference.how << "); " << r.acceptance.explanation << ".\n";
   if (r.extended_check_rtol > 0)
     md << "Extended-precision check of the acceptance rule: C++ BS modern in __float128 at rtol "
