@@ -169,6 +169,7 @@ struct BenchOutcome {
   Ratios ratios;
   std::vector<std::string> engine_notes;
   double seconds = 0;
+  bool has_precision_plot = false;
 };
 
 BenchOutcome run_bench(const Scene& scene, const BenchOptions& o, std::ostream* log) {
@@ -216,6 +217,7 @@ BenchOutcome run_bench(const Scene& scene, const BenchOptions& o, std::ostream* 
     out.ratios.failures.push_back("quad C++ BS vs exact: " + out.extended_check.explanation);
   for (const auto& e : b.engines)
     if (e.precision == "double" || e.name == "cxx-faithful") out.engine_notes.push_back(e.label() + ": " + e.note);
+  out.has_precision_plot = std::any_of(out.rows.begin(), out.rows.end(), [](const Row& x) { return x.precision != "double"; });
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
   return out;
 }
@@ -233,6 +235,28 @@ std::string machine() {
   return model + ", " + std::to_string(std::thread::hardware_concurrency()) + " logical CPUs";
 }
 
+/// The two figures: every engine in double precision; the C++ BS in every precision run.
+/// Returns the PNGs written.
+std::vector<std::filesystem::path> plot_all(const std::vector<Row>& rows, const std::filesystem::path& csv,
+                                            const std::filesystem::path& png, const std::string& scene) {
+  std::vector<Row> dbl, prec;
+  for (const auto& r : rows) {
+    if (r.precision == "double") dbl.push_back(r);
+    if (r.engine.rfind("cxx-", 0) == 0) prec.push_back(r);
+  }
+  std::vector<std::filesystem::path> out;
+  bench::plot_work_precision(dbl, csv, png, "Work-precision in double precision, scene " + scene);
+  out.push_back(png);
+  if (prec.size() != dbl.size() || std::any_of(prec.begin(), prec.end(), [](const Row& r) { return r.precision != "double"; })) {
+    std::filesystem::path p2 = png;
+    p2.replace_extension();
+    p2 += "_precision.png";
+    bench::plot_work_precision(prec, csv, p2, "C++ Bulirsch-Stoer in double, long double and __float128, scene " + scene);
+    out.push_back(p2);
+  }
+  return out;
+}
+
 std::string report_section(const Scene& scene, const BenchOptions& o, const BenchOutcome& r,
                            const std::string& png_rel, const std::string& csv_rel) {
   std::ostringstream md;
@@ -246,7 +270,12 @@ std::string report_section(const Scene& scene, const BenchOptions& o, const Benc
   if (r.extended_check_rtol > 0)
     md << "Extended-precision check of the acceptance rule: C++ BS modern in __float128 at rtol "
        << num3(r.extended_check_rtol) << " against the exact solution: " << r.extended_check.explanation << ".\n";
-  md << "\n![work-precision](" << png_rel << ")\n\nData: `" << csv_rel << "`. Engines:\n\n";
+  md << "\n![work-precision](" << png_rel << ")\n";
+  if (r.has_precision_plot) {
+    std::string p2 = png_rel.substr(0, png_rel.size() - 4) + "_precision.png";
+    md << "\n![precision](" << p2 << ")\n";
+  }
+  md << "\nData: `" << csv_rel << "`. Engines:\n\n";
   for (const auto& n : r.engine_notes) md << "- " << n << "\n";
   md << r.ratios.markdown << "\n";
   return md.str();
@@ -274,7 +303,7 @@ int bench_cmd(BenchOptions o) {
   const BenchOutcome r = run_bench(scene, o, o.quiet ? nullptr : &std::cerr);
   bench::write_csv(r.rows, csv);
   std::string png_rel = png.filename().string();
-  if (!o.no_plot) bench::plot_work_precision(r.rows, csv, png, "Work-precision, scene " + scene.name);
+  if (!o.no_plot) plot_all(r.rows, csv, png, scene.name);
   std::cout << "# nanopush bench " << scene.name << "\n\n"
             << report_section(scene, o, r, o.no_plot ? "(no plot)" : png_rel, csv.string());
   std::cerr << "bench: " << r.rows.size() << " rows in " << csv.string() << (o.no_plot ? "" : ", plot " + png.string())
@@ -305,10 +334,11 @@ void reproduce_bench_smooth(ReproduceContext& ctx) {
   const fs::path csv = dir / "smooth_fig3_6a.csv", png = dir / "smooth_fig3_6a.png";
   bench::write_csv(r.rows, csv);
   ctx.produced(csv);
-  bench::plot_work_precision(r.rows, csv, png, "Work-precision: smooth nanobar (fig3_6a)");
-  ctx.produced(png);
-  fs::path gp = png;
-  ctx.produced(gp.replace_extension(".gp"));
+  for (const auto& f : plot_all(r.rows, csv, png, "fig3_6a (smooth nanobar)")) {
+    ctx.produced(f);
+    fs::path gp = f;
+    ctx.produced(gp.replace_extension(".gp"));
+  }
   ctx.report << "## Work-precision: the smooth nanobar against the exact solution (issue 7)\n\n"
              << report_section(scene, o, r, "bench/smooth_fig3_6a.png", "bench/smooth_fig3_6a.csv")
              << "\nTimings are measurements on this machine, not checks; only correctness (identical F77/C++ counts, "

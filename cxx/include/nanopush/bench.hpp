@@ -121,7 +121,8 @@ struct Row {
 const std::vector<std::string>& csv_columns();
 
 struct SweepSettings {
-  int repeats = 5;          ///< timed solves per point (median reported); 1 = no warm-up either
+  int repeats = 5;          ///< timed solves per point (median reported), after one untimed warm-up solve
+                            ///< (repeats = 1: no per-point warm-up, one per engine only)
   int kmin = 6, kmax = 26;  ///< rtol = 10^(-k/2); extended precision continues to its rtol_min
   int kmax_extended = 52;   ///< last k for engines whose rtol_min is below 1e-13
   int kstep = 1;
