@@ -109,9 +109,13 @@ double median(std::vector<double> v) {
 std::vector<Row> run_sweep(const Problem& p, const std::vector<Engine>& engines, const Reference& ref,
                            const SweepSettings& s) {
   if (s.repeats < 1) throw InputError("repeats", std::to_string(s.repeats), "must be >= 1");
+  if (s.repeats_extended < 0)
+    throw InputError("repeats_extended", std::to_string(s.repeats_extended), "must be >= 0 (0 = repeats)");
   std::vector<Row> rows;
   for (const auto& e : engines) {
-    const int kmax = e.rtol_min < 1e-13 * (1 - 1e-9) ? std::max(s.kmax, s.kmax_extended) : s.kmax;
+    const bool extended = e.precision != "double";
+    const int kmax = extended ? std::max(s.kmax, s.kmax_extended) : s.kmax;
+    const int repeats = extended && s.repeats_extended > 0 ? s.repeats_extended : s.repeats;
     const std::vector<double> rtols = tolerance_sweep(s.kmin, kmax, s.kstep, e.rtol_min);
     // One untimed solve per engine first: the first call of a process pays page faults,
     // lazy symbol binding and cold caches (several ms), which is not the integrator's cost.
@@ -124,11 +128,11 @@ std::vector<Row> run_sweep(const Problem& p, const std::vector<Engine>& engines,
       r.engine = e.name;
       r.precision = e.precision;
       r.rtol = rtol;
-      r.repeats = s.repeats;
-      if (s.repeats > 1) (void)e.solve(rtol);  // warm-up at this tolerance (caches, branch predictors)
+      r.repeats = repeats;
+      if (repeats > 1) (void)e.solve(rtol);  // warm-up at this tolerance (caches, branch predictors)
       const Solve first = e.solve(rtol);
       std::vector<double> wall{first.seconds};
-      for (int i = 1; i < s.repeats; ++i) wall.push_back(e.solve(rtol).seconds);
+      for (int i = 1; i < repeats; ++i) wall.push_back(e.solve(rtol).seconds);
       r.status = first.status;
       r.nfcn = first.nfcn;
       r.naccpt = first.naccpt;
@@ -137,7 +141,7 @@ std::vector<Row> run_sweep(const Problem& p, const std::vector<Engine>& engines,
       r.wall_s = median(wall);
       std::vector<double> rhs;
       if (e.time_rhs && r.nfcn > 0)
-        for (int i = 0; i < s.repeats; ++i) rhs.push_back(e.time_rhs(r.nfcn));
+        for (int i = 0; i < repeats; ++i) rhs.push_back(e.time_rhs(r.nfcn));
       r.rhs_s = median(rhs);
       r.overhead_ns_per_rhs = r.nfcn > 0 ? (r.wall_s - r.rhs_s) / static_cast<double>(r.nfcn) * 1e9
                                          : std::numeric_limits<double>::quiet_NaN();

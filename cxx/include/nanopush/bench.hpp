@@ -123,6 +123,7 @@ const std::vector<std::string>& csv_columns();
 struct SweepSettings {
   int repeats = 5;          ///< timed solves per point (median reported), after one untimed warm-up solve
                             ///< (repeats = 1: no per-point warm-up, one per engine only)
+  int repeats_extended = 0; ///< the same for long/quad engines (0 = repeats): their solves take 1-300 ms
   int kmin = 6, kmax = 26;  ///< rtol = 10^(-k/2); extended precision continues to its rtol_min
   int kmax_extended = 52;   ///< last k for engines whose rtol_min is below 1e-13
   int kstep = 1;
