@@ -28,7 +28,7 @@ struct BenchOptions {
   std::string plot;  // PNG; default beside the CSV
   std::vector<std::string> engines;
   std::vector<std::string> precisions;
-  int kmin = 6, kmax = 26, kmax_extended = 52, kstep = 1;
+  int kmin = 6, kmax = 26, kmax_extended = 52, kstep = 1, kstep_extended = 0;
   int repeats = 5, repeats_extended = 0;
   int samples = 0;
   bool quick = false, no_plot = false, quiet = false;
@@ -191,6 +191,7 @@ BenchOutcome run_bench(const Scene& scene, const BenchOptions& o, std::ostream* 
   s.kmax = o.kmax;
   s.kmax_extended = o.kmax_extended;
   s.kstep = o.kstep;
+  s.kstep_extended = o.kstep_extended;
   s.repeats = o.repeats;
   s.repeats_extended = o.repeats_extended;
   if (log)
@@ -263,7 +264,8 @@ std::string report_section(const Scene& scene, const BenchOptions& o, const Benc
   std::ostringstream md;
   md << "Scene `" << scene.name << "` (" << scene.description << "): " << scene.solver.samples
      << " output times over [0, " << scene.solver.t_end << "] s; rtol = 10^(-k/2), k = " << o.kmin << ".." << o.kmax
-     << " step " << o.kstep << " (extended precision to k = " << o.kmax_extended << "), atol_i = rtol * scale_i; "
+     << " step " << o.kstep << " (long/quad: to k = " << o.kmax_extended << " step "
+     << (o.kstep_extended > 0 ? o.kstep_extended : o.kstep) << "), atol_i = rtol * scale_i; "
      << o.repeats << " timed solve(s) per point (median)"
      << (o.repeats_extended > 0 && o.repeats_extended != o.repeats
              ? ", " + std::to_string(o.repeats_extended) + " in long/quad precision"
@@ -299,6 +301,7 @@ int bench_cmd(BenchOptions o) {
   require_range("--repeats", o.repeats, 1, 1000);
   require_range("--repeats-extended", o.repeats_extended, 0, 1000);
   require_range("--kstep", o.kstep, 1, 100);
+  require_range("--kstep-extended", o.kstep_extended, 0, 100);
   require_range("--kmin", o.kmin, 0, 60);
   require_range("--kmax", o.kmax, o.kmin, 60);
   require_range("--kmax-extended", o.kmax_extended, o.kmin, 60);
@@ -321,12 +324,16 @@ int bench_cmd(BenchOptions o) {
   return 0;
 }
 
-void reproduce_bench_smooth(ReproduceContext& ctx) {
+/// One work-precision reproduce step: `preset` (a scene under drivers/scenes) into
+/// <out>/bench/<file>.{csv,png}, a report section titled `heading`. The rough scenes of
+/// issue 4 register their steps with this too (see the end of this file).
+void reproduce_bench_scene(ReproduceContext& ctx, const std::string& step, const std::string& preset,
+                           const std::string& file, const std::string& heading, const std::string& label) {
   namespace fs = std::filesystem;
   const fs::path dir = ctx.out / "bench";
   fs::create_directories(dir);
   BenchOptions o;
-  o.scene = "fig3_6a";
+  o.scene = preset;
   o.precisions = {"double", "long", "quad"};
   if (ctx.quick) {
     o.kstep = 6;
@@ -334,23 +341,30 @@ void reproduce_bench_smooth(ReproduceContext& ctx) {
     o.precisions = {"double", "quad"};
   } else {
     o.repeats = 5;
-    o.repeats_extended = 1;  // a quad solve takes 10-300 ms: one timing is already stable
+    o.repeats_extended = 3;  // a quad solve takes 10-400 ms: every other tolerance, median of 3
+    o.kstep_extended = 2;
   }
-  const Scene scene = load_scene(scenes_dir() / "thesis" / "fig3_6a.toml");
+  const Scene scene = load_scene(resolve_scene(preset));
   const BenchOutcome r = run_bench(scene, o, nullptr);
-  const fs::path csv = dir / "smooth_fig3_6a.csv", png = dir / "smooth_fig3_6a.png";
+  const fs::path csv = dir / (file + ".csv"), png = dir / (file + ".png");
   bench::write_csv(r.rows, csv);
   ctx.produced(csv);
-  for (const auto& f : plot_all(r.rows, csv, png, "fig3_6a (smooth nanobar)")) {
+  for (const auto& f : plot_all(r.rows, csv, png, label)) {
     ctx.produced(f);
     fs::path gp = f;
     ctx.produced(gp.replace_extension(".gp"));
   }
-  ctx.report << "## Work-precision: the smooth nanobar against the exact solution (issue 7)\n\n"
-             << report_section(scene, o, r, "bench/smooth_fig3_6a.png", "bench/smooth_fig3_6a.csv")
+  ctx.report << "## " << heading << "\n\n"
+             << report_section(scene, o, r, "bench/" + file + ".png", "bench/" + file + ".csv")
              << "\nTimings are measurements on this machine, not checks; only correctness (identical F77/C++ counts, "
                 "successful solves, reference acceptance) can fail this step.\n\n";
-  for (const auto& f : r.ratios.failures) ctx.failures.push_back("bench_smooth: " + f);
+  for (const auto& f : r.ratios.failures) ctx.failures.push_back(step + ": " + f);
+}
+
+void reproduce_bench_smooth(ReproduceContext& ctx) {
+  reproduce_bench_scene(ctx, "bench_smooth", "thesis/fig3_6a", "smooth_fig3_6a",
+                        "Work-precision: the smooth nanobar against the exact solution (issue 7)",
+                        "fig3_6a (smooth nanobar)");
 }
 
 RegisterCommand reg{
@@ -373,6 +387,8 @@ RegisterCommand reg{
        app.add_option("--kmax-extended", o->kmax_extended, "last k in long/quad precision (52: rtol 1e-26)")
            ->capture_default_str();
        app.add_option("--kstep", o->kstep, "step in k")->capture_default_str();
+       app.add_option("--kstep-extended", o->kstep_extended, "step in k for long/quad engines (0 = --kstep)")
+           ->capture_default_str();
        app.add_option("--repeats", o->repeats, "timed solves per point; the median is reported")->capture_default_str();
        app.add_option("--repeats-extended", o->repeats_extended,
                       "timed solves per point for long/quad engines (0 = --repeats)")
@@ -386,6 +402,12 @@ RegisterCommand reg{
 RegisterReproduce step{{"bench_smooth",
                         "work-precision of every engine on the smooth nanobar (fig3_6a) against the exact solution",
                         70, reproduce_bench_smooth}};
+
+// Rough scenes (issue 4), once make_bench() knows the rough model and the presets exist:
+// RegisterReproduce step_rough{{"bench_rough", "work-precision, rough surface without stick (mu = 0.05, thesis law)",
+//     71, [](ReproduceContext& c) { reproduce_bench_scene(c, "bench_rough", "<preset mu=0.05>", "rough_mu005",
+//                                                         "Work-precision: rough surface, mu = 0.05", "mu = 0.05"); }}};
+// RegisterReproduce step_stick{{"bench_stick", "work-precision, stick-slip (mu = 0.15, coulomb law)", 72, ...}};
 
 }  // namespace
 }  // namespace nanopush::cli

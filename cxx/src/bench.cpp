@@ -116,7 +116,8 @@ std::vector<Row> run_sweep(const Problem& p, const std::vector<Engine>& engines,
     const bool extended = e.precision != "double";
     const int kmax = extended ? std::max(s.kmax, s.kmax_extended) : s.kmax;
     const int repeats = extended && s.repeats_extended > 0 ? s.repeats_extended : s.repeats;
-    const std::vector<double> rtols = tolerance_sweep(s.kmin, kmax, s.kstep, e.rtol_min);
+    const int kstep = extended && s.kstep_extended > 0 ? s.kstep_extended : s.kstep;
+    const std::vector<double> rtols = tolerance_sweep(s.kmin, kmax, kstep, e.rtol_min);
     // One untimed solve per engine first: the first call of a process pays page faults,
     // lazy symbol binding and cold caches (several ms), which is not the integrator's cost.
     if (!rtols.empty()) {

@@ -127,6 +127,7 @@ struct SweepSettings {
   int kmin = 6, kmax = 26;  ///< rtol = 10^(-k/2); extended precision continues to its rtol_min
   int kmax_extended = 52;   ///< last k for engines whose rtol_min is below 1e-13
   int kstep = 1;
+  int kstep_extended = 0;   ///< k step for long/quad engines (0 = kstep)
   std::function<void(const Row&)> progress;  ///< called after each row
 };
 
