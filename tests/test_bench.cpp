@@ -139,6 +139,17 @@ TEST_CASE("bench: reference acceptance (two runs agree to 1e-3 of the smallest p
   CHECK(accept_reference(ext, {r}).accepted);
   r.error = ext.disagreement * 10;  // a plotted error too close to the reference's own spread
   CHECK_FALSE(accept_reference(ext, {r}).accepted);
+  // Only successful double-precision rows count as "plotted" (extended-precision rows are
+  // judged against exact references only; failed rows have no error).
+  Row q1 = r, q2 = r, q3 = r;
+  q1.error = 1e-14;
+  q2.precision = "quad";
+  q2.error = 1e-25;
+  q3.status = 3;
+  q3.error = 1e-20;
+  CHECK(smallest_plotted_error({q1, q2, q3}) == 1e-14);
+  CHECK(std::isinf(smallest_plotted_error({q2, q3})));
+  CHECK_FALSE(accept_reference(ext, {q2, q3}).accepted);  // nothing plotted: nothing to accept against
   Reference ex;
   ex.kind = "exact";
   CHECK(accept_reference(ex, {r}).accepted);
