@@ -1,0 +1,222 @@
+#include "nanopush/bench.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "nanopush/error.hpp"
+#include "nanopush/io.hpp"
+#include "nanopush/plot.hpp"
+
+namespace nanopush::bench {
+
+std::vector<double> Problem::atol(double rtol) const {
+  std::vector<double> a(scale.size());
+  for (std::size_t i = 0; i < scale.size(); ++i) a[i] = rtol * scale[i];
+  return a;
+}
+
+double scaled_max_error(const Problem& p, const std::vector<quad>& a, const std::vector<quad>& b) {
+  const std::size_t n = static_cast<std::size_t>(p.n);
+  const std::size_t want = p.nout() * n;
+  if (a.size() != want || b.size() != want)
+    throw InputError("trajectory size", std::to_string(a.size()) + " / " + std::to_string(b.size()),
+                     "must be nout * n = " + std::to_string(want));
+  quad e = 0;
+  for (std::size_t k = 0; k < p.nout(); ++k)
+    for (std::size_t i = 0; i < n; ++i) {
+      const quad d = num::abs(a[k * n + i] - b[k * n + i]) / (quad(p.scale[i]) + num::abs(b[k * n + i]));
+      if (!num::isfinite(d)) return std::numeric_limits<double>::infinity();
+      e = std::max(e, d);
+    }
+  return static_cast<double>(e);
+}
+
+Acceptance accept_reference(const Problem& p, const std::vector<quad>& a, const std::vector<quad>& b,
+                            double smallest_error) {
+  Acceptance acc;
+  acc.disagreement = scaled_max_error(p, a, b);
+  acc.threshold = 1e-3 * smallest_error;
+  acc.accepted = std::isfinite(acc.disagreement) && smallest_error > 0 && acc.disagreement <= acc.threshold;
+  acc.explanation = "two reference runs disagree by " + fmt(acc.disagreement) + " (weighted max-abs); 1e-3 of the smallest "
+                    "plotted error " + fmt(smallest_error) + " is " + fmt(acc.threshold) + ": " +
+                    (acc.accepted ? "accepted" : "REJECTED");
+  return acc;
+}
+
+Reference extended_reference(const Problem& p, const Solve& a, const Solve& b, const std::string& how) {
+  if (a.status != 0 || b.status != 0)
+    throw SolverError("extended-precision reference failed: " + (a.status != 0 ? a.message : b.message));
+  Reference r;
+  r.kind = "extended";
+  r.how = how;
+  r.y = a.y;
+  r.disagreement = scaled_max_error(p, a.y, b.y);
+  return r;
+}
+
+double smallest_plotted_error(const std::vector<Row>& rows) {
+  double m = std::numeric_limits<double>::infinity();
+  for (const auto& r : rows)
+    if (r.status == 0 && r.precision == "double" && std::isfinite(r.error) && r.error > 0) m = std::min(m, r.error);
+  return m;
+}
+
+Acceptance accept_reference(const Reference& ref, const std::vector<Row>& rows) {
+  Acceptance acc;
+  const double smallest = smallest_plotted_error(rows);
+  acc.disagreement = ref.disagreement;
+  acc.threshold = 1e-3 * smallest;
+  if (ref.kind == "exact") {
+    acc.accepted = true;
+    acc.explanation = "exact reference";
+    return acc;
+  }
+  acc.accepted = std::isfinite(smallest) && ref.disagreement <= acc.threshold;
+  acc.explanation = "two reference runs disagree by " + fmt(ref.disagreement) + " (weighted max-abs); 1e-3 of the "
+                    "smallest plotted error " + fmt(smallest) + " is " + fmt(acc.threshold) + ": " +
+                    (acc.accepted ? "accepted" : "REJECTED");
+  return acc;
+}
+
+std::vector<double> tolerance_sweep(int kmin, int kmax, int kstep, double rtol_min) {
+  if (kstep < 1) throw InputError("kstep", std::to_string(kstep), "must be >= 1");
+  std::vector<double> v;
+  for (int k = kmin; k <= kmax; k += kstep) {
+    const double r = std::pow(10.0, -0.5 * k);
+    if (r < rtol_min * (1 - 1e-9)) break;
+    v.push_back(r);
+  }
+  return v;
+}
+
+const std::vector<std::string>& csv_columns() {
+  static const std::vector<std::string> c = {"engine", "precision", "rtol",   "error",  "nfcn",
+                                             "naccpt", "nrejct",    "wall_s", "rhs_s",  "overhead_ns_per_rhs",
+                                             "repeats", "status"};
+  return c;
+}
+
+namespace {
+double median(std::vector<double> v) {
+  if (v.empty()) return std::numeric_limits<double>::quiet_NaN();
+  std::sort(v.begin(), v.end());
+  const std::size_t m = v.size() / 2;
+  return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
+}
+}  // namespace
+
+std::vector<Row> run_sweep(const Problem& p, const std::vector<Engine>& engines, const Reference& ref,
+                           const SweepSettings& s) {
+  if (s.repeats < 1) throw InputError("repeats", std::to_string(s.repeats), "must be >= 1");
+  if (s.repeats_extended < 0)
+    throw InputError("repeats_extended", std::to_string(s.repeats_extended), "must be >= 0 (0 = repeats)");
+  std::vector<Row> rows;
+  for (const auto& e : engines) {
+    const bool extended = e.precision != "double";
+    const int kmax = extended ? std::max(s.kmax, s.kmax_extended) : s.kmax;
+    const int repeats = extended && s.repeats_extended > 0 ? s.repeats_extended : s.repeats;
+    const int kstep = extended && s.kstep_extended > 0 ? s.kstep_extended : s.kstep;
+    const std::vector<double> rtols = tolerance_sweep(s.kmin, kmax, kstep, e.rtol_min);
+    // One untimed solve per engine first: the first call of a process pays page faults,
+    // lazy symbol binding and cold caches (several ms), which is not the integrator's cost.
+    if (!rtols.empty()) {
+      const Solve w = e.solve(rtols.front());
+      if (e.time_rhs && w.nfcn > 0) (void)e.time_rhs(w.nfcn);
+    }
+    for (const double rtol : rtols) {
+      Row r;
+      r.engine = e.name;
+      r.precision = e.precision;
+      r.rtol = rtol;
+      r.repeats = repeats;
+      if (repeats > 1) (void)e.solve(rtol);  // warm-up at this tolerance (caches, branch predictors)
+      const Solve first = e.solve(rtol);
+      std::vector<double> wall{first.seconds};
+      for (int i = 1; i < repeats; ++i) wall.push_back(e.solve(rtol).seconds);
+      r.status = first.status;
+      r.nfcn = first.nfcn;
+      r.naccpt = first.naccpt;
+      r.nrejct = first.nrejct;
+      r.error = first.status == 0 ? scaled_max_error(p, first.y, ref.y) : std::numeric_limits<double>::quiet_NaN();
+      r.wall_s = median(wall);
+      std::vector<double> rhs;
+      if (e.time_rhs && r.nfcn > 0)
+        for (int i = 0; i < repeats; ++i) rhs.push_back(e.time_rhs(r.nfcn));
+      r.rhs_s = median(rhs);
+      r.overhead_ns_per_rhs = r.nfcn > 0 ? (r.wall_s - r.rhs_s) / static_cast<double>(r.nfcn) * 1e9
+                                         : std::numeric_limits<double>::quiet_NaN();
+      rows.push_back(r);
+      if (s.progress) s.progress(r);
+    }
+  }
+  return rows;
+}
+
+void write_csv(const std::vector<Row>& rows, const std::filesystem::path& path) {
+  AtomicFile f(path);
+  auto& o = f.stream();
+  const auto& c = csv_columns();
+  for (std::size_t i = 0; i < c.size(); ++i) o << (i ? "," : "") << c[i];
+  o << "\n";
+  for (const auto& r : rows) {
+    o << r.engine << "," << r.precision << "," << csv_number(r.rtol) << "," << csv_number(r.error) << "," << r.nfcn
+      << "," << r.naccpt << "," << r.nrejct << "," << csv_number(r.wall_s) << "," << csv_number(r.rhs_s) << ","
+      << csv_number(r.overhead_ns_per_rhs) << "," << r.repeats << "," << r.status << "\n";
+  }
+  f.commit();
+}
+
+namespace {
+/// gnuplot enhanced text: a literal underscore.
+std::string gp_text(const std::string& s) {
+  std::string r;
+  for (const char c : s) {
+    if (c == '_') r += '\\';
+    r += c;
+  }
+  return r;
+}
+}  // namespace
+
+void plot_work_precision(const std::vector<Row>& rows, const std::filesystem::path& csv,
+                         const std::filesystem::path& png, const std::string& title) {
+  std::vector<std::pair<std::string, std::string>> lines;
+  for (const auto& r : rows)
+    if (std::find(lines.begin(), lines.end(), std::make_pair(r.engine, r.precision)) == lines.end())
+      lines.emplace_back(r.engine, r.precision);
+  plot::Figure fig;
+  fig.title = gp_text(title);
+  fig.cols = 2;
+  fig.width = 1500;
+  fig.height = 650;
+  plot::Panel work, wall;
+  work.title = "error against RHS evaluations";
+  work.xlabel = "RHS evaluations";
+  wall.title = "error against wall time (median of repeated solves)";
+  wall.xlabel = "wall time [ms]";
+  for (auto* p : {&work, &wall}) {
+    p->ylabel = "error: max over outputs and components of |y - yref| / (scale + |yref|)";
+    p->logx = p->logy = true;
+    p->extra = "set key bottom left font ',8'\nset format y '10^{%L}'\nset format x '10^{%L}'";
+  }
+  // One distinct colour and point type per line (gnuplot's default cycle repeats after 8).
+  static const char* colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b", "#e377c2",
+                                  "#7f7f7f", "#bcbd22", "#17becf", "#000000", "#aec7e8", "#ffbb78", "#98df8a"};
+  static const char* points[] = {"5", "7", "9", "11", "13", "4", "6", "8", "10", "12", "2", "3", "1", "14"};
+  std::size_t i = 0;
+  for (const auto& [eng, prec] : lines) {
+    const std::string filt = "(strcol(1) eq '" + eng + "' && strcol(2) eq '" + prec + "' && $12 == 0 && $4 > 0 ? ";
+    const std::string y = filt + "$4 : 1/0)";
+    const std::string label = prec == "double" ? eng : eng + " (" + prec + ")";
+    const std::string style = std::string("linespoints lw 1.5 pt ") + points[i % 14] + " ps 0.8 lc rgb '" +
+                              colours[i % 14] + "'" + (prec == "double" ? "" : " dt 2");
+    work.series.push_back({csv, "5", y, label, style});
+    wall.series.push_back({csv, "($8*1e3)", y, label, style});
+    ++i;
+  }
+  fig.panels = {work, wall};
+  plot::render(fig, png);
+}
+
+}  // namespace nanopush::bench

@@ -1,0 +1,413 @@
+// nanopush bench: work-precision benchmark of every engine on one scene (issue 7), and the
+// reproduce step `bench_smooth` (work-precision plots of the smooth nanobar).
+// docs/performance.md documents the CSV, the measurements and the results.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <limits>
+#include <map>
+#include <sstream>
+#include <thread>
+
+#include "nanopush/bench_scene.hpp"
+#include "nanopush/error.hpp"
+#include "nanopush/io.hpp"
+#include "nanopush/plot.hpp"
+#include "registry.hpp"
+
+namespace nanopush::cli {
+namespace {
+
+using bench::Row;
+
+struct BenchOptions {
+  std::string scene = "fig3_6a";
+  std::string out;  // CSV; default bench_<scene>.csv
+  std::string plot;  // PNG; default beside the CSV
+  std::vector<std::string> engines;
+  std::vector<std::string> precisions;
+  int kmin = 6, kmax = 26, kmax_extended = 52, kstep = 1, kstep_extended = 0;
+  int repeats = 5, repeats_extended = 0;
+  int samples = 0;
+  bool quick = false, no_plot = false, quiet = false;
+};
+
+// ------------------------------------------------------------------ the issue's ratios
+/// Cheapest run of (engine, precision) whose error is <= target: {nfcn, wall_s}; NaN if none.
+std::pair<double, double> cheapest_at(const std::vector<Row>& rows, const std::string& eng, double target,
+                                      const std::string& prec = "double") {
+  double nf = std::numeric_limits<double>::quiet_NaN(), wall = nf;
+  for (const auto& r : rows) {
+    if (r.engine != eng || r.precision != prec || r.status != 0 || !(r.error <= target)) continue;
+    if (!(static_cast<double>(r.nfcn) >= nf)) nf = static_cast<double>(r.nfcn);
+    if (!(r.wall_s >= wall)) wall = r.wall_s;
+  }
+  return {nf, wall};
+}
+
+bool has_engine(const std::vector<Row>& rows, const std::string& eng, const std::string& prec = "double") {
+  return std::any_of(rows.begin(), rows.end(), [&](const Row& r) { return r.engine == eng && r.precision == prec; });
+}
+
+std::string num3(double v) {
+  if (!std::isfinite(v)) return "n/a";
+  std::ostringstream s;
+  s << std::setprecision(3) << v;
+  return s.str();
+}
+
+struct Ratios {
+  std::string markdown;
+  std::vector<std::string> failures;  ///< correctness checks only (never timings)
+};
+
+/// The "Done when" ratios of issue 7 that the rows can measure.
+Ratios measure_ratios(const std::vector<Row>& rows) {
+  Ratios out;
+  std::ostringstream md;
+  // 1. C++ BS against Boost.Odeint bulirsch_stoer, at equal achieved error.
+  for (const std::string peer : {"odeint-bs", "odeint-bs-dense"}) {
+    if (!has_engine(rows, peer)) continue;
+    for (const std::string cxx : {"cxx-faithful", "cxx-modern"}) {
+      if (!has_engine(rows, cxx)) continue;
+      md << "\n**" << cxx << " vs " << peer
+         << "** (cheapest run of each with error <= target; target wall <= 0.8, RHS <= 1.0):\n\n"
+         << "| error <= | RHS " << cxx << " | RHS " << peer << " | RHS ratio | wall " << cxx << " [ms] | wall " << peer
+         << " [ms] | wall ratio |\n|---|---|---|---|---|---|---|\n";
+      double worst_rhs = 0, worst_wall = 0;
+      for (int e = 6; e <= 12; ++e) {
+        const double target = std::pow(10.0, -e);
+        const auto [nc, wc] = cheapest_at(rows, cxx, target);
+        const auto [no, wo] = cheapest_at(rows, peer, target);
+        const double rr = nc / no, rw = wc / wo;
+        if (std::isfinite(rr)) worst_rhs = std::max(worst_rhs, rr);
+        if (std::isfinite(rw)) worst_wall = std::max(worst_wall, rw);
+        md << "| 1e-" << e << " | " << num3(nc) << " | " << num3(no) << " | " << num3(rr) << " | " << num3(wc * 1e3)
+           << " | " << num3(wo * 1e3) << " | " << num3(rw) << " |\n";
+      }
+      md << "\nWorst over 1e-6..1e-12: RHS ratio " << num3(worst_rhs) << (worst_rhs <= 1.0 ? " (met)" : " (NOT met)")
+         << ", wall ratio " << num3(worst_wall) << (worst_wall <= 0.8 ? " (met)" : " (NOT met)") << ".\n";
+    }
+  }
+  // 2. F77 against the C++ faithful engine: identical counts, wall-time ratio in [0.8, 1.25].
+  for (const std::string f77 : {"f77-callback", "f77-native"}) {
+    if (!has_engine(rows, f77) || !has_engine(rows, "cxx-faithful")) continue;
+    md << "\n**" << f77 << " vs cxx-faithful** (same rtol; target: identical counts, wall ratio in [0.8, 1.25]):\n\n"
+       << "| rtol | RHS f77 / C++ | accepted | rejected | wall ratio f77/C++ |\n|---|---|---|---|---|\n";
+    double lo = std::numeric_limits<double>::infinity(), hi = 0;
+    int mismatches = 0;
+    for (const auto& a : rows) {
+      if (a.engine != f77 || a.precision != "double") continue;
+      for (const auto& c : rows) {
+        if (c.engine != "cxx-faithful" || c.precision != "double" || c.rtol != a.rtol) continue;
+        const bool same = a.nfcn == c.nfcn && a.naccpt == c.naccpt && a.nrejct == c.nrejct;
+        if (!same) {
+          ++mismatches;
+          out.failures.push_back(f77 + " vs cxx-faithful at rtol " + fmt(a.rtol) + ": counts differ (" +
+                                 std::to_string(a.nfcn) + " vs " + std::to_string(c.nfcn) + " RHS)");
+        }
+        const double r = a.wall_s / c.wall_s;
+        lo = std::min(lo, r);
+        hi = std::max(hi, r);
+        md << "| " << num3(a.rtol) << " | " << a.nfcn << " / " << c.nfcn << (same ? "" : " **differ**") << " | "
+           << a.naccpt << " / " << c.naccpt << " | " << a.nrejct << " / " << c.nrejct << " | " << num3(r) << " |\n";
+      }
+    }
+    md << "\nCounts " << (mismatches ? "DIFFER" : "identical at every rtol") << "; wall ratio from " << num3(lo)
+       << " to " << num3(hi) << (lo >= 0.8 && hi <= 1.25 ? " (met)" : " (NOT met)") << ".\n";
+  }
+  // 3. Integrator overhead per RHS evaluation.
+  md << "\n**Integrator overhead** (wall time minus the time of as many bare RHS calls, per RHS call; target <= 10 ns "
+        "for the C++ BS):\n\n| engine | precision | ns per RHS (min / median / max over the sweep) | RHS cost [ns] "
+        "(median) |\n|---|---|---|---|\n";
+  std::vector<std::pair<std::string, std::string>> seen;
+  for (const auto& r : rows)
+    if (std::find(seen.begin(), seen.end(), std::make_pair(r.engine, r.precision)) == seen.end())
+      seen.emplace_back(r.engine, r.precision);
+  for (const auto& [eng, prec] : seen) {
+    std::vector<double> ov, rc;
+    for (const auto& r : rows)
+      if (r.engine == eng && r.precision == prec && r.status == 0 && r.nfcn > 0) {
+        ov.push_back(r.overhead_ns_per_rhs);
+        rc.push_back(r.rhs_s / static_cast<double>(r.nfcn) * 1e9);
+      }
+    if (ov.empty()) continue;
+    std::sort(ov.begin(), ov.end());
+    std::sort(rc.begin(), rc.end());
+    md << "| " << eng << " | " << prec << " | " << num3(ov.front()) << " / " << num3(ov[ov.size() / 2]) << " / "
+       << num3(ov.back()) << " | " << num3(rc[rc.size() / 2]) << " |\n";
+  }
+  // 4. Extended precision.
+  md << "\n**Precision** (smallest error reached; target 1e-25 in extended precision):\n\n"
+        "| engine | precision | smallest error | at rtol | RHS | wall [ms] |\n|---|---|---|---|---|---|\n";
+  for (const auto& [eng, prec] : seen) {
+    if (eng.rfind("cxx-", 0) != 0) continue;
+    const Row* best = nullptr;
+    for (const auto& r : rows)
+      if (r.engine == eng && r.precision == prec && r.status == 0 && (!best || r.error < best->error)) best = &r;
+    if (best)
+      md << "| " << eng << " | " << prec << " | " << num3(best->error) << " | " << num3(best->rtol) << " | "
+         << best->nfcn << " | " << num3(best->wall_s * 1e3) << " |\n";
+  }
+  for (const auto& r : rows)
+    if (r.status != 0)
+      out.failures.push_back(r.engine + " (" + r.precision + ") failed at rtol " + fmt(r.rtol) + " with status " +
+                             std::to_string(r.status));
+  out.markdown = md.str();
+  return out;
+}
+
+// ------------------------------------------------------------------ running
+struct BenchOutcome {
+  std::vector<Row> rows;
+  bench::Reference reference;
+  bench::Acceptance acceptance;       ///< of the reference used
+  bench::Acceptance extended_check;   ///< exact references: a quad C++ BS run vs the exact solution
+  double extended_check_rtol = 0;
+  Ratios ratios;
+  std::vector<std::string> engine_notes;
+  double seconds = 0;
+  bool has_precision_plot = false;
+};
+
+BenchOutcome run_bench(const Scene& scene, const BenchOptions& o, std::ostream* log) {
+  const auto t_start = std::chrono::steady_clock::now();
+  bench::EngineConfig cfg;
+  cfg.only = o.engines;
+  if (!o.precisions.empty()) cfg.precisions = o.precisions;
+  const auto names = bench::engine_names(scene);
+  for (const auto& e : cfg.only)
+    if (std::find(names.begin(), names.end(), e) == names.end()) {
+      std::string all;
+      for (const auto& n : names) all += (all.empty() ? "" : ", ") + n;
+      throw InputError("--engines", e, "must be one of: " + all);
+    }
+  bench::Bench b = bench::make_bench(scene, cfg);
+  if (b.engines.empty()) throw InputError("--engines", "(selection)", "selects no engine");
+  bench::SweepSettings s;
+  s.kmin = o.kmin;
+  s.kmax = o.kmax;
+  s.kmax_extended = o.kmax_extended;
+  s.kstep = o.kstep;
+  s.kstep_extended = o.kstep_extended;
+  s.repeats = o.repeats;
+  s.repeats_extended = o.repeats_extended;
+  if (log)
+    s.progress = [log](const Row& r) {
+      *log << "  " << std::left << std::setw(16) << r.engine << std::setw(7) << r.precision << " rtol "
+           << std::setw(9) << std::setprecision(3) << r.rtol << " error " << std::setw(10) << r.error << " RHS "
+           << std::setw(8) << r.nfcn << " wall " << std::setw(9) << r.wall_s * 1e3 << " ms  overhead " << std::setw(7)
+           << r.overhead_ns_per_rhs << " ns/RHS" << (r.status ? "  FAILED" : "") << "\n"
+           << std::flush;
+    };
+  BenchOutcome out;
+  out.reference = b.reference;
+  out.rows = bench::run_sweep(b.problem, b.engines, b.reference, s);
+  out.acceptance = bench::accept_reference(b.reference, out.rows);
+  if (b.reference.kind == "exact") {
+    // The acceptance rule of extended references, exercised on the smooth scene: an
+    // independent quad run against the exact solution.
+    out.extended_check_rtol = 1e-26;
+    const bench::Solve q = bench::extended_run(scene, b.problem, out.extended_check_rtol, true);
+    out.extended_check = bench::accept_reference(b.problem, b.reference.y, q.y, bench::smallest_plotted_error(out.rows));
+  }
+  out.ratios = measure_ratios(out.rows);
+  if (!out.acceptance.accepted) out.ratios.failures.push_back("reference rejected: " + out.acceptance.explanation);
+  if (b.reference.kind == "exact" && !out.extended_check.accepted)
+    out.ratios.failures.push_back("quad C++ BS vs exact: " + out.extended_check.explanation);
+  for (const auto& e : b.engines)
+    if (e.precision == "double" || e.name == "cxx-faithful") out.engine_notes.push_back(e.label() + ": " + e.note);
+  out.has_precision_plot = std::any_of(out.rows.begin(), out.rows.end(), [](const Row& x) { return x.precision != "double"; });
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
+  return out;
+}
+
+std::string machine() {
+  std::string model = "unknown CPU";
+  if (FILE* f = popen("lscpu 2>/dev/null | sed -n 's/^Model name: *//p'", "r")) {
+    char buf[256];
+    if (fgets(buf, sizeof buf, f)) {
+      model = buf;
+      while (!model.empty() && (model.back() == '\n' || model.back() == ' ')) model.pop_back();
+    }
+    pclose(f);
+  }
+  return model + ", " + std::to_string(std::thread::hardware_concurrency()) + " logical CPUs";
+}
+
+/// The two figures: every engine in double precision; the C++ BS in every precision run.
+/// Returns the PNGs written.
+std::vector<std::filesystem::path> plot_all(const std::vector<Row>& rows, const std::filesystem::path& csv,
+                                            const std::filesystem::path& png, const std::string& scene) {
+  std::vector<Row> dbl, prec;
+  for (const auto& r : rows) {
+    if (r.precision == "double") dbl.push_back(r);
+    if (r.engine.rfind("cxx-", 0) == 0) prec.push_back(r);
+  }
+  std::vector<std::filesystem::path> out;
+  bench::plot_work_precision(dbl, csv, png, "Work-precision in double precision, scene " + scene);
+  out.push_back(png);
+  if (prec.size() != dbl.size() || std::any_of(prec.begin(), prec.end(), [](const Row& r) { return r.precision != "double"; })) {
+    std::filesystem::path p2 = png;
+    p2.replace_extension();
+    p2 += "_precision.png";
+    bench::plot_work_precision(prec, csv, p2, "C++ Bulirsch-Stoer in double, long double and __float128, scene " + scene);
+    out.push_back(p2);
+  }
+  return out;
+}
+
+std::string report_section(const Scene& scene, const BenchOptions& o, const BenchOutcome& r,
+                           const std::string& png_rel, const std::string& csv_rel) {
+  std::ostringstream md;
+  md << "Scene `" << scene.name << "` (" << scene.description << "): " << scene.solver.samples
+     << " output times over [0, " << scene.solver.t_end << "] s; rtol = 10^(-k/2), k = " << o.kmin << ".." << o.kmax
+     << " step " << o.kstep << " (long/quad: to k = " << o.kmax_extended << " step "
+     << (o.kstep_extended > 0 ? o.kstep_extended : o.kstep) << "), atol_i = rtol * scale_i; "
+     << o.repeats << " timed solve(s) per point (median)"
+     << (o.repeats_extended > 0 && o.repeats_extended != o.repeats
+             ? ", " + std::to_string(o.repeats_extended) + " in long/quad precision"
+             : std::string())
+     << ", after an untimed warm-up. Machine: " << machine() << ". Whole sweep: "
+     << num3(r.seconds) << " s.\n\n"
+     << "Error: max over output times and components of |y_i - y_ref,i| / (scale_i + |y_ref,i|). Reference: " << r.reference.kind
+     << " (" << r.reference.how << "); " << r.acceptance.explanation << ".\n";
+  if (r.extended_check_rtol > 0)
+    md << "Extended-precision check of the acceptance rule: C++ BS modern in __float128 at rtol "
+       << num3(r.extended_check_rtol) << " against the exact solution: " << r.extended_check.explanation << ".\n";
+  md << "\n![work-precision](" << png_rel << ")\n";
+  if (r.has_precision_plot) {
+    std::string p2 = png_rel.substr(0, png_rel.size() - 4) + "_precision.png";
+    md << "\n![precision](" << p2 << ")\n";
+  }
+  md << "\nData: `" << csv_rel << "`. Engines:\n\n";
+  for (const auto& n : r.engine_notes) md << "- " << n << "\n";
+  md << r.ratios.markdown << "\n";
+  return md.str();
+}
+
+int bench_cmd(BenchOptions o) {
+  Scene scene = load_scene(resolve_scene(o.scene));
+  if (o.samples != 0) {
+    require_range("--samples", o.samples, 2, 1e7);
+    scene.solver.samples = o.samples;
+  }
+  if (o.quick) {
+    o.kstep = 6;
+    o.repeats = 1;
+  }
+  require_range("--repeats", o.repeats, 1, 1000);
+  require_range("--repeats-extended", o.repeats_extended, 0, 1000);
+  require_range("--kstep", o.kstep, 1, 100);
+  require_range("--kstep-extended", o.kstep_extended, 0, 100);
+  require_range("--kmin", o.kmin, 0, 60);
+  require_range("--kmax", o.kmax, o.kmin, 60);
+  require_range("--kmax-extended", o.kmax_extended, o.kmin, 60);
+  namespace fs = std::filesystem;
+  const fs::path csv = o.out.empty() ? fs::path("bench_" + scene.name + ".csv") : fs::path(o.out);
+  fs::path png = o.plot.empty() ? fs::path(csv).replace_extension(".png") : fs::path(o.plot);
+  if (csv.has_parent_path()) fs::create_directories(csv.parent_path());
+  const BenchOutcome r = run_bench(scene, o, o.quiet ? nullptr : &std::cerr);
+  bench::write_csv(r.rows, csv);
+  std::string png_rel = png.filename().string();
+  if (!o.no_plot) plot_all(r.rows, csv, png, scene.name);
+  std::cout << "# nanopush bench " << scene.name << "\n\n"
+            << report_section(scene, o, r, o.no_plot ? "(no plot)" : png_rel, csv.string());
+  std::cerr << "bench: " << r.rows.size() << " rows in " << csv.string() << (o.no_plot ? "" : ", plot " + png.string())
+            << " (" << num3(r.seconds) << " s)\n";
+  if (!r.ratios.failures.empty()) {
+    for (const auto& f : r.ratios.failures) std::cerr << "bench: check failed: " << f << "\n";
+    return 4;
+  }
+  return 0;
+}
+
+/// One work-precision reproduce step: `preset` (a scene under drivers/scenes) into
+/// <out>/bench/<file>.{csv,png}, a report section titled `heading`. The rough scenes of
+/// issue 4 register their steps with this too (see the end of this file).
+void reproduce_bench_scene(ReproduceContext& ctx, const std::string& step, const std::string& preset,
+                           const std::string& file, const std::string& heading, const std::string& label) {
+  namespace fs = std::filesystem;
+  const fs::path dir = ctx.out / "bench";
+  fs::create_directories(dir);
+  BenchOptions o;
+  o.scene = preset;
+  o.precisions = {"double", "long", "quad"};
+  if (ctx.quick) {
+    o.kstep = 6;
+    o.repeats = 1;
+    o.precisions = {"double", "quad"};
+  } else {
+    o.repeats = 5;
+    o.repeats_extended = 3;  // a quad solve takes 10-400 ms: every other tolerance, median of 3
+    o.kstep_extended = 2;
+  }
+  const Scene scene = load_scene(resolve_scene(preset));
+  const BenchOutcome r = run_bench(scene, o, nullptr);
+  const fs::path csv = dir / (file + ".csv"), png = dir / (file + ".png");
+  bench::write_csv(r.rows, csv);
+  ctx.produced(csv);
+  for (const auto& f : plot_all(r.rows, csv, png, label)) {
+    ctx.produced(f);
+    fs::path gp = f;
+    ctx.produced(gp.replace_extension(".gp"));
+  }
+  ctx.report << "## " << heading << "\n\n"
+             << report_section(scene, o, r, "bench/" + file + ".png", "bench/" + file + ".csv")
+             << "\nTimings are measurements on this machine, not checks; only correctness (identical F77/C++ counts, "
+                "successful solves, reference acceptance) can fail this step.\n\n";
+  for (const auto& f : r.ratios.failures) ctx.failures.push_back(step + ": " + f);
+}
+
+void reproduce_bench_smooth(ReproduceContext& ctx) {
+  reproduce_bench_scene(ctx, "bench_smooth", "thesis/fig3_6a", "smooth_fig3_6a",
+                        "Work-precision: the smooth nanobar against the exact solution (issue 7)",
+                        "fig3_6a (smooth nanobar)");
+}
+
+RegisterCommand reg{
+    {"bench", "Work-precision benchmark: every engine over a sweep of tolerances on one scene (CSV + plot)", 60,
+     [](CLI::App& app) -> std::function<int()> {
+       auto o = std::make_shared<BenchOptions>();
+       app.add_option("SCENE", o->scene, "scene file or preset name (smooth surface)")->capture_default_str();
+       app.add_option("--out", o->out, "CSV output (default bench_<scene>.csv); columns in docs/performance.md");
+       app.add_option("--plot", o->plot, "work-precision PNG (default: the CSV's name with .png)");
+       app.add_flag("--no-plot", o->no_plot, "write the CSV only");
+       app.add_option("--engines", o->engines,
+                      "engines to run (default all): cxx-faithful, cxx-modern, f77-callback, f77-native, cvode-adams, "
+                      "cvode-bdf, arkode-erk8, odeint-bs, odeint-bs-dense");
+       app.add_option("--precision", o->precisions,
+                      "scalar of the C++ BS, repeatable: double (53-bit), long (x87 64-bit), quad (__float128, "
+                      "113-bit); default double")
+           ->check(CLI::IsMember({"double", "long", "quad"}));
+       app.add_option("--kmin", o->kmin, "first k of rtol = 10^(-k/2)")->capture_default_str();
+       app.add_option("--kmax", o->kmax, "last k in double precision (26: rtol 1e-13)")->capture_default_str();
+       app.add_option("--kmax-extended", o->kmax_extended, "last k in long/quad precision (52: rtol 1e-26)")
+           ->capture_default_str();
+       app.add_option("--kstep", o->kstep, "step in k")->capture_default_str();
+       app.add_option("--kstep-extended", o->kstep_extended, "step in k for long/quad engines (0 = --kstep)")
+           ->capture_default_str();
+       app.add_option("--repeats", o->repeats, "timed solves per point; the median is reported")->capture_default_str();
+       app.add_option("--repeats-extended", o->repeats_extended,
+                      "timed solves per point for long/quad engines (0 = --repeats)")
+           ->capture_default_str();
+       app.add_option("--samples", o->samples, "override the scene's number of output times (>= 2)");
+       app.add_flag("--quick", o->quick, "k step 6 and one repeat (seconds)");
+       app.add_flag("--quiet", o->quiet, "no per-row progress on standard error");
+       return [o] { return bench_cmd(*o); };
+     }}};
+
+RegisterReproduce step{{"bench_smooth",
+                        "work-precision of every engine on the smooth nanobar (fig3_6a) against the exact solution",
+                        70, reproduce_bench_smooth}};
+
+// Rough scenes (issue 4), once make_bench() knows the rough model and the presets exist:
+// RegisterReproduce step_rough{{"bench_rough", "work-precision, rough surface without stick (mu = 0.05, thesis law)",
+//     71, [](ReproduceContext& c) { reproduce_bench_scene(c, "bench_rough", "<preset mu=0.05>", "rough_mu005",
+//                                                         "Work-precision: rough surface, mu = 0.05", "mu = 0.05"); }}};
+// RegisterReproduce step_stick{{"bench_stick", "work-precision, stick-slip (mu = 0.15, coulomb law)", 72, ...}};
+
+}  // namespace
+}  // namespace nanopush::cli
