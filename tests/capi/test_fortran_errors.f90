@@ -72,7 +72,7 @@ program test_fortran_errors
   call check(all(yout(:, 1) /= 0) .and. all(yout(:, 2) == 0), "RHS failure: first output kept, second not reached")
   ! Status names.
   call check(nanopush_status_name(NANOPUSH_BAD_INPUT) == "bad input", "status name")
-  call check(nanopush_api_version() == 100, "API version 0.1.0")
+  call check(nanopush_api_version() == 200, "API version 0.2.0")
 
   if (failures > 0) error stop "test_fortran_errors: failures above"
   print '(a)', "all checks hold"
