@@ -574,16 +574,17 @@ contains
 
   ! ---- Friction resultant (C: nanopush_friction_*) -------------------------------------
 
-  !> Friction resultant w = (fx [N], fy [N], mf [N m]) in body axes, moment about the CM, over a
-  !> 2a x 2b rectangle (a [m] half-width along x', b [m] half-length along y') with uniform
+  !> Friction resultant w(3) = (fx [N], fy [N], mf [N m]) in body axes, moment about the CM, over
+  !> a 2a x 2b rectangle (a [m] half-width along x', b [m] half-length along y') with uniform
   !> pressure: muN [N] = mu N, iCOR at -R (cos alpha, sin alpha) [m, rad] from the CM, sense +1
-  !> (counter-clockwise) or -1. On failure w = NaN.
-  function nanopush_friction_wrench(a, b, muN, R, alpha, sense, stat, errmsg) result(w)
+  !> (counter-clockwise) or -1. On failure w = NaN. (A subroutine, not a function: gfortran 12
+  !> corrupts the optional deferred-length errmsg of an array-valued function.)
+  subroutine nanopush_friction_wrench(a, b, muN, R, alpha, sense, w, stat, errmsg)
     real(dp), intent(in) :: a, b, muN, R, alpha
     integer, intent(in) :: sense
+    real(dp), intent(out) :: w(3)
     integer, intent(out), optional :: stat
     character(len=:), allocatable, intent(out), optional :: errmsg
-    real(dp) :: w(3)
     type(c_ptr) :: err
     character(len=:), allocatable :: msg
     w = nan()
@@ -591,15 +592,15 @@ contains
     if (c_friction_wrench(err, a, b, muN, R, alpha, int(sense, c_int), w) /= 0) continue
     call finish(err, "nanopush_friction_wrench", msg, stat)
     if (present(errmsg)) errmsg = msg
-  end function nanopush_friction_wrench
+  end subroutine nanopush_friction_wrench
 
   !> The same from the body-axis rigid velocity: CM velocity (vx, vy) [m/s], omega [rad/s];
-  !> translation (omega = 0) and rest included. On failure w = NaN.
-  function nanopush_friction_from_velocity(a, b, muN, vx, vy, omega, stat, errmsg) result(w)
+  !> translation (omega = 0) and rest included; w(3) as above. On failure w = NaN.
+  subroutine nanopush_friction_from_velocity(a, b, muN, vx, vy, omega, w, stat, errmsg)
     real(dp), intent(in) :: a, b, muN, vx, vy, omega
+    real(dp), intent(out) :: w(3)
     integer, intent(out), optional :: stat
     character(len=:), allocatable, intent(out), optional :: errmsg
-    real(dp) :: w(3)
     type(c_ptr) :: err
     character(len=:), allocatable :: msg
     w = nan()
@@ -607,7 +608,7 @@ contains
     if (c_friction_from_velocity(err, a, b, muN, vx, vy, omega, w) /= 0) continue
     call finish(err, "nanopush_friction_from_velocity", msg, stat)
     if (present(errmsg)) errmsg = msg
-  end function nanopush_friction_from_velocity
+  end subroutine nanopush_friction_from_velocity
 
   ! ---- iCOR of a pushed nanorod (C: nanopush_icor_*) -----------------------------------
   ! Rod of length L [m], push at yn [m] (>= 0) from the CM, R [m] CM-to-iCOR distance (> 0 on
