@@ -61,7 +61,7 @@ contains
     case (2)
       msg = "b: must be a finite number > 0 (m, half-length along body y')"
     case (3)
-      msg = "b/a: aspect ratio must be in [1e-6, 1e6]"
+      msg = "b/a: aspect ratio must be in [1e-12, 1e12]"
     case (4)
       msg = "muN: must be a finite number >= 0 (N)"
     case (5)

@@ -3,7 +3,7 @@
  * (cxx/include/nanopush/friction.hpp): body axes at the centre of mass, x' across the width,
  * y' along the length, iCOR at -R (cos alpha, sin alpha). SI units. Functions return 0 on
  * success and a positive status otherwise (wrench set to zero); they never stop the program.
- * Status: 1 a, 2 b not finite > 0; 3 aspect ratio min/max < 1e-6; 4 muN not finite >= 0;
+ * Status: 1 a, 2 b not finite > 0; 3 aspect ratio min/max < 1e-12; 4 muN not finite >= 0;
  * 5 R not finite >= 0; 6 alpha not finite; 7 sense not +-1; 8 velocity not finite. */
 #ifndef NANOPUSH_F77_FRICTION_H
 #define NANOPUSH_F77_FRICTION_H

@@ -54,6 +54,7 @@ void print_summary(const Scene& sc, const Trajectory& tr, double seconds, std::o
 
 int run_cmd(const RunOptions& o) {
   const Scene sc = load_scene(resolve_scene(o.scene));
+  if (!o.quiet && !sc.load_report.empty()) std::cerr << sc.name << ": " << sc.load_report;
   RunSettings rs;
   rs.engine = o.engine;
   rs.method = o.method;
@@ -87,8 +88,12 @@ int run_cmd(const RunOptions& o) {
   }
   if (!o.quiet) {
     print_summary(sc, tr, dt, std::cerr);
-    for (const auto& e : tr.events)
-      std::cerr << "  came to rest at t = " << e.t << " s: " << (e.stuck ? "stuck (applied wrench inside the limit surface)" : "slid off again") << "\n";
+    for (const auto& e : tr.events) {
+      if (e.t == 0.0)
+        std::cerr << "  at rest at t = 0: " << (e.stuck ? "stays stuck (applied wrench inside the limit surface)" : "the push starts it sliding") << "\n";
+      else
+        std::cerr << "  came to rest at t = " << e.t << " s: " << (e.stuck ? "stuck (applied wrench inside the limit surface)" : "slid off again") << "\n";
+    }
     if (out != "-") std::cerr << "  trajectory (SI, world axes): " << out << "\n";
   }
   return 0;

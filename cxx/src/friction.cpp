@@ -54,12 +54,19 @@ FrictionWrench rectangle_friction_from_velocity_checked(double a, double b, doub
 int rectangle_friction_form(double a, double b, double R) {
   const double L = a > b ? a : b;
   const double rho = R / L;
-  if (!(rho < kFrictionAsymptotic)) return 2;
-  return rho < kFrictionFarField ? 0 : 1;
+  if (!(rho < kFrictionAsymptotic)) return 5;
+  if (rho < kFrictionFarField) return 0;
+  if (rho < kFrictionGl8From) return 1;
+  if (rho < kFrictionGl6From) return 2;
+  return rho < kFrictionGl4From ? 3 : 4;
 }
 
-FrictionWrench thesis_printed_friction(double a, double b, double R, double alpha) {
-  // Literal transcription of (3.45), (3.46), (3.47)-(3.48) with mu(mg + F_vdW) = 1, sign = +1.
+namespace {
+
+/// The thesis' closed forms (3.45)-(3.48) with muN = 1. corrected = false: literally as printed
+/// (sign(theta-dot) = +1). corrected = true: fy' with the sign of (3.43), C4 with cubes as in
+/// (B.37), and mf multiplied by sign(theta-dot) = sense (docs/errata.md).
+FrictionWrench thesis_form(double a, double b, double R, double alpha, bool corrected, int sense) {
   const double h1 = R * std::sin(alpha) - b, h2 = R * std::cos(alpha) + a;
   const double h3 = R * std::sin(alpha) + b, h4 = R * std::cos(alpha) - a;
   const auto sq = [](double u, double v) { return std::sqrt(u * u + v * v); };
@@ -70,11 +77,22 @@ FrictionWrench thesis_printed_friction(double a, double b, double R, double alph
                      h4 * h4 * std::log((s34 + h3) / (s14 + h1));
   const double c1 = b46, c2 = b45;
   const double c3 = -h1 * h2 * s12 + h2 * h3 * s23 - h3 * h4 * s34 + h1 * h4 * s14;
-  const double c4 = h1 * h1 * std::log((s12 - h2) / (s14 - h4)) + h2 * h2 * std::log((s23 + h3) / (s12 + h1)) +
-                    h3 * h3 * std::log((s34 - h4) / (s23 - h2)) + h4 * h4 * std::log((s14 + h1) / (s34 + h3));
-  const double ab = a * b;
-  return {b45 / (8.0 * ab), b46 / (8.0 * ab),
-          (R * std::cos(alpha) * c1 / 2.0 + R * std::sin(alpha) * c2 / 2.0 - c3 / 3.0 - c4 / 6.0) / (4.0 * ab)};
+  const auto p = [corrected](double h) { return corrected ? h * h * h : h * h; };
+  const double c4 = p(h1) * std::log((s12 - h2) / (s14 - h4)) + p(h2) * std::log((s23 + h3) / (s12 + h1)) +
+                    p(h3) * std::log((s34 - h4) / (s23 - h2)) + p(h4) * std::log((s14 + h1) / (s34 + h3));
+  const double ab = a * b, sg = corrected ? (sense < 0 ? -1.0 : 1.0) : 1.0;
+  const double mf = (R * std::cos(alpha) * c1 / 2.0 + R * std::sin(alpha) * c2 / 2.0 - c3 / 3.0 - c4 / 6.0) / (4.0 * ab);
+  return {sg * b45 / (8.0 * ab), (corrected ? -sg : 1.0) * b46 / (8.0 * ab), sg * mf};
+}
+
+}  // namespace
+
+FrictionWrench thesis_printed_friction(double a, double b, double R, double alpha) {
+  return thesis_form(a, b, R, alpha, false, 1);
+}
+
+FrictionWrench thesis_corrected_friction(double a, double b, double R, double alpha, int sense) {
+  return thesis_form(a, b, R, alpha, true, sense);
 }
 
 }  // namespace nanopush

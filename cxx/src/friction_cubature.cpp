@@ -99,16 +99,28 @@ FrictionCubatureResult cubature_friction_wrench_uniform(double a, double b, doub
   // iCOR on or near the contact: the y' integral analytically (1-D antiderivatives in Y of
   // X/r, Y/r and (x X + y Y)/r, not the 2-D corner form), the x' integral by adaptive GK15 with
   // a break point at the iCOR's x' (where the inner result has its X ln|X| singularity).
-  // Near the contact these antiderivatives cancel at most by a factor (R/max(a,b))^2 <= 4.
+  // Near the contact the remaining cancellation (across x') is at most a factor of a few.
+  // Differences across y' are formed without cancellation (a thin contact, b << |yc|, would
+  // otherwise lose |yc|/b): y1 - y0 = 2b and y1 + y0 = 2 yc exactly, r1 - r0 = 4 b yc/(r1 + r0),
+  // and for y0, y1 of one sign asinh(y1/|X|) - asinh(y0/|X|) = asinh(4 b yc/(y1 r0 + y0 r1))
+  // (the asinh addition formula; finite even at X = 0, where it equals ln(y1/y0)).
   const double y0 = s.yc - s.b, y1 = s.yc + s.b;
   auto inner = [&](double x, double* out) {
     const double X = s.xc + x;
     const double r0 = std::sqrt(X * X + y0 * y0), r1 = std::sqrt(X * X + y1 * y1);
-    const double xa0 = x_asinh(X, y0), xa1 = x_asinh(X, y1);  // X asinh(Y/|X|)
-    out[0] = xa1 - xa0;                                       // int X/r dY
-    out[1] = r1 - r0;                                         // int Y/r dY
-    // int (x X + y Y)/r dY with y = Y - yc: x X asinh + (Y r - X^2 asinh)/2 - yc r
-    out[2] = x * (xa1 - xa0) + 0.5 * ((y1 * r1 - X * xa1) - (y0 * r0 - X * xa0)) - s.yc * (r1 - r0);
+    const double dr = (r0 + r1 > 0.0) ? 4.0 * s.b * s.yc / (r1 + r0) : 0.0;  // r1 - r0
+    double xda;                                                                // X (asinh(y1/|X|) - asinh(y0/|X|))
+    if (y0 >= 0.0 || y1 <= 0.0) {
+      const double den = y1 * r0 + y0 * r1;
+      xda = (den != 0.0) ? X * std::asinh(4.0 * s.b * s.yc / den) : 0.0;
+    } else {
+      xda = x_asinh(X, y1) - x_asinh(X, y0);
+    }
+    out[0] = xda;  // int X/r dY
+    out[1] = dr;   // int Y/r dY
+    // int (x X + y Y)/r dY, y = Y - yc: x X dA + (D[Y r] - X^2 dA)/2 - yc dr with
+    // D[Y r] = y1 r1 - y0 r0 = b (r1 + r0) + yc dr.
+    out[2] = x * xda + 0.5 * (s.b * (r1 + r0) - s.yc * dr - X * xda);
   };
   const double area = 4.0 * s.a * s.b;
   auto res = cubature::integrate<3>(inner, -s.a, s.a, {-s.xc}, tol * area, 4000);

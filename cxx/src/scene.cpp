@@ -8,6 +8,7 @@
 #include <set>
 #include <sstream>
 
+#include "nanopush/environment.hpp"
 #include "nanopush/error.hpp"
 
 namespace nanopush {
@@ -108,7 +109,7 @@ Scene parse_scene(std::string_view text, const std::string& source_name) {
       << e.description();
     throw InputError(s.str());
   }
-  check_keys(root, "", {"scene", "object", "push", "initial", "surface", "solver"});
+  check_keys(root, "", {"scene", "object", "push", "initial", "surface", "solver", "environment", "body"});
   Scene sc;
   sc.source = source_name;
 
@@ -265,6 +266,49 @@ Scene parse_scene(std::string_view text, const std::string& source_name) {
       require_nonnegative("solver.hmax", *h, "s");
       sc.solver.hmax = *h;
     }
+  }
+  // [environment] and [body]: the normal load is assembled from the models the scene needs.
+  if (root.get("environment") || root.get("body")) {
+    if (!root.get("environment")) throw InputError("environment", "(missing)", "a [body] table needs an [environment] table");
+    if (!root.get("body"))
+      throw InputError("body", "(missing)", "an [environment] table needs a [body] table naming the material");
+    if (!sc.rough())
+      throw InputError("surface.kind", "\"" + sc.model + "\"", "[environment] sets the normal load of friction: use \"rough\"");
+    const auto& st = require_table(root, "surface");
+    for (const char* k : {"f_vdw", "normal_load", "g"})
+      if (st.get(k))
+        throw InputError(std::string("surface.") + k, "(present)",
+                         "the normal load comes from [environment] and [body]; remove this key");
+    const Environment env = parse_environment(require_table(root, "environment"));
+    const Body body = parse_body(require_table(root, "body"));
+    if (body.shape != Shape::bar) throw InputError("body.shape", std::string(shape_name(body.shape)), "the sliding model is a bar: must be \"bar\"");
+    auto same = [&](const char* key, double a, double b) {
+      if (std::fabs(a - b) > 1e-12 * std::max(std::fabs(a), std::fabs(b)))
+        throw InputError(std::string("body.") + key, fmt(a), "must equal object." + std::string(key) + " = " + fmt(b));
+    };
+    same("length", body.length, sc.length);
+    same("width", body.width, sc.width);
+    LoadOptions lo;
+    lo.rtol = sc.solver.rtol;
+    const LoadReport rep = assemble_normal_load(env, body, lo);
+    sc.surface.g = env.gravity;
+    // Sliding friction carries the load without the contact-adhesion term (eq 3.20 form).
+    sc.surface.normal_load = rep.sliding_load;
+    sc.load_report = rep.to_text() + "friction uses N = " + fmt(rep.sliding_load) + " N (the load without contact adhesion)\n";
+  } else if (sc.rough()) {
+    const double g = sc.mass * sc.surface.g, N = sc.normal_load();
+    std::ostringstream r;
+    r.precision(6);
+    if (sc.surface.normal_load > 0) {
+      r << "normal load N = " << N << " N (given as surface.normal_load)\n";
+    } else {
+      r << "normal load N = m g + F_vdw = " << N << " N\n"
+        << "  gravity  m g   = " << g << " N (" << (N > 0 ? g / N : 0) << " of N)\n"
+        << "  adhesion F_vdw = " << sc.surface.f_vdw << " N (" << (N > 0 ? sc.surface.f_vdw / N : 0)
+        << " of N, given)\n";
+    }
+    r << "friction limit mu N = " << sc.surface.mu * N << " N\n";
+    sc.load_report = r.str();
   }
   return sc;
 }

@@ -18,14 +18,16 @@
 //  1. rho < kFrictionFarField: the exact corner-term closed form. Antiderivatives
 //       FX = (Y r + X^2 asinh(Y/|X|))/2, FY = (X r + Y^2 asinh(X/|Y|))/2,
 //       Fr = X Y r/3 + (X^3 asinh(Y/|X|) + Y^3 asinh(X/|Y|))/6
-//     summed with signs +,-,-,+ over the corners. The asinh form (instead of the thesis'
-//     logarithms of differences) is finite on edges, corners and at R = 0.
-//     Rounding error grows like eps rho^2 (force) and eps rho^3 (moment): cancellation.
+//     combined as F(x1,y1) - F(x0,y1) - F(x1,y0) + F(x0,y0), the difference across the
+//     thinner side formed without cancellation (y_difference). The asinh form (instead of the
+//     thesis' logarithms of differences) is finite on edges, corners and at R = 0.
+//     Rounding error grows like eps rho^2 (force) and eps rho^3 (moment) from the remaining
+//     difference along the long side.
 //  2. kFrictionFarField <= rho < kFrictionAsymptotic: the far-field multipole series of the
-//     integrand, evaluated exactly by a 12 x 12 product Gauss-Legendre rule applied to the
+//     integrand, evaluated exactly by an n x n product Gauss-Legendre rule applied to the
 //     point-symmetrised integrands (no cancellation: the O(R) odd part of the moment integrand
-//     is removed analytically). The rule integrates the series to total degree 23 exactly;
-//     the remainder is below 1e-16 for rho >= 3.
+//     is removed analytically). The rule integrates the series to degree 2n - 1 exactly;
+//     n = 12, 8, 6, 4 from rho = 3, 8, 24, 512 keeps the remainder below 1e-16.
 //  3. rho >= kFrictionAsymptotic (1e9): the two-term asymptotic form
 //       f = muN s (sin alpha, -cos alpha),  mf = -muN s (a^2 sin^2 alpha + b^2 cos^2 alpha)/(3R),
 //     whose neglected terms are O((max(a,b)/R)^2) < 1e-17 relative; it is also the exact
@@ -53,11 +55,17 @@ struct FrictionWrench {
 
 /// Switch from the corner-term closed form to the far-field form, in units of max(a, b).
 inline constexpr double kFrictionFarField = 3.0;
+/// Far-field Gauss-Legendre rule by distance (units of max(a, b)): 12 points from
+/// kFrictionFarField, then 8, 6 and 4 points from these values. The series' remainder after the
+/// exactly integrated degree 2n - 1 falls like (L/(2R))^(2n); each rule is used only where it
+/// is below 1e-16 (docs/friction.md has the measured errors).
+inline constexpr double kFrictionGl8From = 8.0, kFrictionGl6From = 24.0, kFrictionGl4From = 512.0;
+
 /// Switch from the far-field form to the asymptotic (translation + 1/R moment) form.
 inline constexpr double kFrictionAsymptotic = 1e9;
-/// Smallest accepted aspect ratio min(a,b)/max(a,b): the corner form loses about
-/// log10(max/min) digits to cancellation across the thin direction (docs/friction.md).
-inline constexpr double kFrictionMinAspect = 1e-6;
+/// Smallest accepted aspect ratio min(a,b)/max(a,b) (tested down to this limit at full
+/// accuracy: the closed form differences the thin side without cancellation).
+inline constexpr double kFrictionMinAspect = 1e-12;
 
 namespace friction_detail {
 
@@ -110,8 +118,58 @@ struct MeanIntegrals {
   double ix, iy, km;
 };
 
-/// Form 1: corner-term closed form. All lengths in units of max(a, b).
+/// Differences across y of the corner antiderivatives at fixed X, y0 = yc - b, y1 = yc + b:
+///   gx = FX(X, y1) - FX(X, y0), gy = FY(...) - FY(...), gr = Fr(...) - Fr(...),
+/// formed without cancellation when b << |yc| (a thin contact): y1 - y0 = 2b, y1 + y0 = 2yc,
+/// r1 - r0 = 4 b yc/(r0 + r1), y1 r1 - y0 r0 = b (r0 + r1) + yc (r1 - r0), and for y0, y1 of
+/// one sign the asinh addition formula
+///   asinh(y1/|X|) - asinh(y0/|X|) = asinh(4 b yc/(y1 r0 + y0 r1)),
+///   asinh(X/|y1|) - asinh(X/|y0|) = asinh(-4 b yc X/(y0 y1 (r0 + r1))).
+struct YDifference {
+  double gx, gy, gr;
+};
+inline YDifference y_difference(double X, double yc, double b) noexcept {
+  const double y0 = yc - b, y1 = yc + b;
+  const double r0 = std::sqrt(X * X + y0 * y0), r1 = std::sqrt(X * X + y1 * y1);
+  const double rs = r0 + r1;
+  const double dr = rs > 0.0 ? 4.0 * b * yc / rs : 0.0;  // r1 - r0
+  const double dyr = b * rs + yc * dr;                   // y1 r1 - y0 r0
+  double x2da, dy2b, dy3b;  // X^2 D[asinh(Y/|X|)], D[Y^2 asinh(X/|Y|)], D[Y^3 asinh(X/|Y|)]
+  const double ax = std::fabs(X);
+  const double ymin = std::fmin(std::fabs(y0), std::fabs(y1));
+  if ((y0 > 0.0 || y1 < 0.0) && ymin >= 1e-150 * ax) {
+    const double y01 = y0 * y1;  // > 0
+    const double da = asinh_portable(4.0 * b * yc / (y1 * r0 + y0 * r1));
+    const double b0 = asinh_portable(X / std::fabs(y0)), b1 = asinh_portable(X / std::fabs(y1));
+    const double db = asinh_portable(-4.0 * b * yc * X / (y01 * rs));
+    x2da = X * X * da;
+    dy2b = 2.0 * b * yc * (b1 + b0) + 0.5 * (y1 * y1 + y0 * y0) * db;
+    dy3b = b * (y1 * y1 + y1 * y0 + y0 * y0) * (b1 + b0) + 0.5 * (y1 * y1 * y1 + y0 * y0 * y0) * db;
+  } else {  // y0 <= 0 <= y1: |y0|, |y1| <= 2b, nothing to cancel
+    x2da = sq_asinh(X, y1) - sq_asinh(X, y0);
+    dy2b = sq_asinh(y1, X) - sq_asinh(y0, X);
+    dy3b = y1 * sq_asinh(y1, X) - y0 * sq_asinh(y0, X);
+  }
+  return {0.5 * (dyr + x2da), 0.5 * (X * dr + dy2b), X * dyr / 3.0 + (X * x2da + dy3b) / 6.0};
+}
+
+/// Form 1: corner-term closed form, Delta_x Delta_y F with the y difference taken across the
+/// thinner side (transposing x and y when a < b) by y_difference, so a thin contact loses no
+/// digits; the x difference cancels like (R/max(a,b))^2 only. Lengths in units of max(a, b).
 inline MeanIntegrals closed_form(double a, double b, double xc, double yc) noexcept {
+  const bool transpose = a < b;
+  const double ta = transpose ? b : a, tb = transpose ? a : b;
+  const double txc = transpose ? yc : xc, tyc = transpose ? xc : yc;
+  const YDifference g1 = y_difference(txc + ta, tyc, tb), g0 = y_difference(txc - ta, tyc, tb);
+  const double area = 4.0 * a * b;
+  const double tix = (g1.gx - g0.gx) / area, tiy = (g1.gy - g0.gy) / area;
+  const double km = (g1.gr - g0.gr) / area - txc * tix - tyc * tiy;
+  return transpose ? MeanIntegrals{tiy, tix, km} : MeanIntegrals{tix, tiy, km};
+}
+
+/// The plain corner sum +F(x1,y1) - F(x0,y1) - F(x1,y0) + F(x0,y0) (for tests and docs:
+/// loses about log10(max(a,b)/min(a,b)) digits on thin contacts).
+inline MeanIntegrals closed_form_corner_sum(double a, double b, double xc, double yc) noexcept {
   const double xs[2] = {xc - a, xc + a};
   const double ys[2] = {yc - b, yc + b};
   double sx = 0.0, sy = 0.0, sr = 0.0;
@@ -135,7 +193,17 @@ inline MeanIntegrals closed_form(double a, double b, double xc, double yc) noexc
   return {ix, iy, sr / area - xc * ix - yc * iy};
 }
 
-/// Gauss-Legendre 12-point rule on [-1, 1]: positive nodes and their weights.
+/// Gauss-Legendre rules on [-1, 1] with 4, 6, 8 and 12 points: positive nodes and weights.
+inline constexpr double kGl4x[2] = {0.3399810435848562648026658, 0.8611363115940525752239465};
+inline constexpr double kGl4w[2] = {0.6521451548625461426269361, 0.3478548451374538573730639};
+inline constexpr double kGl6x[3] = {0.2386191860831969086305017, 0.6612093864662645136613996,
+                                    0.9324695142031520278123016};
+inline constexpr double kGl6w[3] = {0.4679139345726910473898703, 0.3607615730481386075698335,
+                                    0.1713244923791703450402961};
+inline constexpr double kGl8x[4] = {0.1834346424956498049394761, 0.525532409916328985817739,
+                                    0.7966664774136267395915539, 0.9602898564975362316835609};
+inline constexpr double kGl8w[4] = {0.3626837833783619829651504, 0.3137066458778872873379622,
+                                    0.222381034453374470544356, 0.1012285362903762591525314};
 inline constexpr double kGl12x[6] = {0.1252334085114689154724414, 0.3678314989981801937526915,
                                      0.5873179542866174472967024, 0.7699026741943046870368938,
                                      0.9041172563704748566784659, 0.9815606342467192506905491};
@@ -149,15 +217,17 @@ inline constexpr double kGl12w[6] = {0.2491470458134027850005624, 0.233492536538
 ///   h(+) + h(-) = e^2/R^2 (1/r+ + 1/r-) + 8 d^2 e^2 / (R^2 r+ r- (r+ + r-)(r+ r- + R^2 - rho^2)),
 /// a sum of non-negative terms (the O(R) odd part of h cancels analytically).
 /// Requires the rectangle well away from the iCOR (rho >= kFrictionFarField).
-inline MeanIntegrals far_field(double a, double b, double xc, double yc) noexcept {
+/// gx, gw: the h positive nodes and weights of a 2h-point Gauss-Legendre rule.
+inline MeanIntegrals far_field(double a, double b, double xc, double yc, const double* gx, const double* gw,
+                               int h) noexcept {
   const double r = std::sqrt(xc * xc + yc * yc), inv_r2 = 1.0 / (r * r);
   double sx = 0.0, sy = 0.0, sk = 0.0;
-  for (int i = 0; i < 6; ++i) {
-    const double x = a * kGl12x[i];
+  for (int i = 0; i < h; ++i) {
+    const double x = a * gx[i];
     double tx = 0.0, ty = 0.0, tk = 0.0;
-    for (int j = 0; j < 12; ++j) {
-      const double y = (j < 6) ? b * kGl12x[j] : -b * kGl12x[j - 6];
-      const double wy = (j < 6) ? kGl12w[j] : kGl12w[j - 6];
+    for (int j = 0; j < 2 * h; ++j) {
+      const double y = (j < h) ? b * gx[j] : -b * gx[j - h];
+      const double wy = (j < h) ? gw[j] : gw[j - h];
       const double xp = xc + x, yp = yc + y, xm = xc - x, ym = yc - y;
       const double rp = std::sqrt(xp * xp + yp * yp), rm = std::sqrt(xm * xm + ym * ym);
       const double ip = 1.0 / rp, im = 1.0 / rm;
@@ -171,9 +241,9 @@ inline MeanIntegrals far_field(double a, double b, double xc, double yc) noexcep
       const double ee = e * e * inv_r2;
       tk += wy * (ee * (ip + im) + 8.0 * d * d * ee / (rr * (rp + rm) * (rr + (r - rho) * (r + rho))));
     }
-    sx += kGl12w[i] * tx;
-    sy += kGl12w[i] * ty;
-    sk += kGl12w[i] * tk;
+    sx += gw[i] * tx;
+    sy += gw[i] * ty;
+    sk += gw[i] * tk;
   }
   // Sum of weights over [-1,1]^2 is 4; each symmetric pair was summed over half the x nodes,
   // so the mean is (pair sum)/(2 * 4) * 2 = pair sum / 4.
@@ -189,7 +259,10 @@ inline MeanIntegrals mean_integrals(double a, double b, double rho, double c, do
   }
   const double xc = rho * c, yc = rho * s;
   if (rho < kFrictionFarField) return closed_form(a, b, xc, yc);
-  return far_field(a, b, xc, yc);
+  if (rho < kFrictionGl8From) return far_field(a, b, xc, yc, kGl12x, kGl12w, 6);
+  if (rho < kFrictionGl6From) return far_field(a, b, xc, yc, kGl8x, kGl8w, 4);
+  if (rho < kFrictionGl4From) return far_field(a, b, xc, yc, kGl6x, kGl6w, 3);
+  return far_field(a, b, xc, yc, kGl4x, kGl4w, 2);
 }
 
 inline FrictionWrench wrench_from_means(const MeanIntegrals& m, double muN, double sense,
@@ -252,12 +325,17 @@ FrictionWrench rectangle_friction_from_velocity_checked(double a, double b, doub
                                                         double omega);
 
 /// Which evaluation form rectangle_friction_wrench uses at this geometry (for docs and tests):
-/// 0 = corner closed form, 1 = far-field Gauss-Legendre series, 2 = asymptotic.
+/// 0 = corner closed form; 1, 2, 3, 4 = far-field series with the 12-, 8-, 6-, 4-point
+/// Gauss-Legendre rule; 5 = asymptotic.
 int rectangle_friction_form(double a, double b, double R);
 
 /// The thesis' printed closed forms (eqs 3.45, 3.46, 3.47 with 3.48), transcribed literally
 /// for the errata tests: muN = 1, s = +1, body axes. May return NaN/Inf where the printed
 /// logarithms are undefined. Not for production use.
 FrictionWrench thesis_printed_friction(double a, double b, double R, double alpha);
+/// The same forms with the corrections of docs/errata.md (sign of fy', cubes in C4, sense
+/// factor on mf), still in the printed logarithmic form: correct where its logarithms are
+/// defined and R is moderate, NaN on iCOR edge lines, cancelling as R grows. For the errata tests.
+FrictionWrench thesis_corrected_friction(double a, double b, double R, double alpha, int sense);
 
 }  // namespace nanopush

@@ -47,6 +47,9 @@ struct Scene {
   Push push;
   std::array<double, kStateSize> initial{};  ///< x, y, theta, vx, vy, omega
   SolverSettings solver;
+  /// Term report of the normal load (rough scenes): from the [environment]/[body] models
+  /// when the scene names them, else the given m g + F_vdw.
+  std::string load_report;
 
   /// Output times 0, t_end/(samples-1), ..., t_end.
   [[nodiscard]] std::vector<double> output_times() const;
