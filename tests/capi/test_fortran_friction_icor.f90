@@ -3,7 +3,7 @@
 !> Usage: capi_test_friction_icor_fortran FORMULAS.csv MU RATIO ROOTS.csv FRICTION_PLUS.csv FRICTION_MINUS.csv
 !>   FORMULAS.csv   `nanopush icor formulas --mu MU --force-ratio RATIO ...` (the thesis nanorod)
 !>   ROOTS.csv      `nanopush icor roots ...` (rows of the C++ solvers brent and eigen are compared)
-!>   FRICTION_*.csv `nanopush friction --sense +1/-1` (or the library's output in the same format):
+!>   FRICTION_*.csv `nanopush friction --sense +1/-1`:
 !>                  R,alpha,fx,fy,mf for the nanobar (a = 27.5 nm, b = 50 nm), muN = 1
 !> Also checks eq 4.11 at the iCOR of eq 4.13 against the minimum force of eq 4.8 (the identity the
 !> thesis derives 4.13 from), to a few ulps.

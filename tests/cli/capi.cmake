@@ -53,7 +53,7 @@ add_test(NAME capi.exceptions_caught COMMAND capi_test_exceptions)
 
 # Friction and iCOR: the C API equals the C++ library bit for bit, errors come back as status +
 # message (capi.friction_icor_c); C and Fortran give the numbers of `nanopush icor formulas`,
-# `nanopush icor roots` and (when the CLI has it) `nanopush friction` (capi.friction_icor_cli).
+# `nanopush icor roots` and `nanopush friction` (capi.friction_icor_cli).
 add_executable(capi_test_friction_icor ${_capi_dir}/test_capi_friction_icor.cpp)
 target_link_libraries(capi_test_friction_icor PRIVATE nanopush_capi nanopush_warnings)
 add_test(NAME capi.friction_icor_c COMMAND capi_test_friction_icor)
@@ -61,14 +61,10 @@ add_executable(capi_test_friction_icor_fortran ${_capi_dir}/test_fortran_frictio
 target_link_libraries(capi_test_friction_icor_fortran PRIVATE nanopush_fortran nanopush_warnings)
 set_target_properties(capi_test_friction_icor_fortran PROPERTIES
   Fortran_MODULE_DIRECTORY ${NANOPUSH_MODDIR}/capi_test_friction_icor_fortran)
-set(_friction_cli OFF)
-if(EXISTS ${PROJECT_SOURCE_DIR}/drivers/cmd_friction.cpp)
-  set(_friction_cli ON)
-endif()
 add_test(NAME capi.friction_icor_cli
   COMMAND ${CMAKE_COMMAND} -DNANOPUSH=$<TARGET_FILE:nanopush> -DREF_EXE=$<TARGET_FILE:capi_test_friction_icor>
     -DFORTRAN_EXE=$<TARGET_FILE:capi_test_friction_icor_fortran> -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/capi_friction_icor
-    -DFRICTION_CLI=${_friction_cli} -P ${_capi_dir}/run_friction_icor_cli.cmake)
+    -P ${_capi_dir}/run_friction_icor_cli.cmake)
 set_tests_properties(capi.friction_icor_cli PROPERTIES PASS_REGULAR_EXPRESSION "friction/icor CLI comparison: all checks hold")
 
 # A rough-surface scene from Fortran, law chosen by the caller = `nanopush run --law` exactly.
