@@ -16,6 +16,13 @@
 !> traj(NANOPUSH_TRAJECTORY_COLUMNS, nrows), one output time per column; rows of traj are
 !> t, x, y, theta, vx, vy, omega, fx, fy, mf (s, m, m, rad, m/s, m/s, rad/s, N, N, N m).
 !>
+!> Rough-surface scenes: nanopush_run(..., law="thesis"|"coulomb") chooses the friction law.
+!>
+!> Closed forms (same numbers as the C++ library, bit for bit): nanopush_friction_wrench and
+!> nanopush_friction_from_velocity (friction resultant over a rectangle), the iCOR formulas
+!> nanopush_icor_<name> (eqs 4.1, 4.2, 4.3, 4.13, 4.7, 4.8, 4.10, 4.11, 5.2, 5.5: functions
+!> returning the value, NaN on failure) and nanopush_icor_cubic_roots (eq 5.4, Brent or Eigen).
+!>
 !> Your own ODE with the C++ Bulirsch-Stoer (nanopush_integrate): write a subroutine with the
 !> interface nanopush_rhs_fn,
 !>

@@ -139,7 +139,7 @@ contains
     character(len=*), intent(in) :: path
     integer, intent(in) :: sense
     character(len=4096) :: line
-    real(dp) :: c(5), w(3)
+    real(dp) :: c(5), wr(3)
     integer :: unit, ios, rows
     character(len=64) :: at
     open (newunit=unit, file=path, status="old", action="read")
@@ -152,10 +152,10 @@ contains
       call fields(line, c)
       rows = rows + 1
       write (at, '(" at R = ",es14.7,", alpha = ",f8.4,", sense ",i2)') c(1), c(2), sense
-      call nanopush_friction_wrench(a_bar, b_bar, 1.0_dp, c(1), c(2), sense, w)
-      call same(w(1), c(3), "friction fx" // at)
-      call same(w(2), c(4), "friction fy" // at)
-      call same(w(3), c(5), "friction mf" // at)
+      call nanopush_friction_wrench(a_bar, b_bar, 1.0_dp, c(1), c(2), sense, wr)
+      call same(wr(1), c(3), "friction fx" // at)
+      call same(wr(2), c(4), "friction fy" // at)
+      call same(wr(3), c(5), "friction mf" // at)
     end do
     close (unit)
     call check(rows >= 10, "friction: rows read")
