@@ -78,12 +78,18 @@ int nanopush_scene_get_push(nanopush_error error, nanopush_scene scene, double* 
 
 nanopush_trajectory nanopush_run_scene(nanopush_error error, nanopush_scene scene, const char* engine,
                                        const char* method, double rtol, double atol) {
+  return nanopush_run_scene_ex(error, scene, engine, method, nullptr, rtol, atol);
+}
+
+nanopush_trajectory nanopush_run_scene_ex(nanopush_error error, nanopush_scene scene, const char* engine,
+                                          const char* method, const char* law, double rtol, double atol) {
   nanopush_trajectory out = nullptr;
   guarded(error, [&] {
     require_handle(scene, "scene");
     nanopush::RunSettings rs;
     rs.engine = opt_string(engine);
     rs.method = opt_string(method);
+    rs.law = opt_string(law);
     nanopush::require_finite("rtol", rtol);
     nanopush::require_finite("atol", atol);
     rs.rtol = rtol;

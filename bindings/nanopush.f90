@@ -16,6 +16,13 @@
 !> traj(NANOPUSH_TRAJECTORY_COLUMNS, nrows), one output time per column; rows of traj are
 !> t, x, y, theta, vx, vy, omega, fx, fy, mf (s, m, m, rad, m/s, m/s, rad/s, N, N, N m).
 !>
+!> Rough-surface scenes: nanopush_run(..., law="thesis"|"coulomb") chooses the friction law.
+!>
+!> Closed forms (same numbers as the C++ library, bit for bit): nanopush_friction_wrench and
+!> nanopush_friction_from_velocity (friction resultant over a rectangle), the iCOR formulas
+!> nanopush_icor_<name> (eqs 4.1, 4.2, 4.3, 4.13, 4.7, 4.8, 4.10, 4.11, 5.2, 5.5: functions
+!> returning the value, NaN on failure) and nanopush_icor_cubic_roots (eq 5.4, Brent or Eigen).
+!>
 !> Your own ODE with the C++ Bulirsch-Stoer (nanopush_integrate): write a subroutine with the
 !> interface nanopush_rhs_fn,
 !>
@@ -35,6 +42,7 @@ module nanopush
   use, intrinsic :: iso_c_binding, only: c_int, c_double, c_int64_t, c_char, c_ptr, c_funptr, &
                                          c_null_ptr, c_null_char, c_associated, c_loc, c_funloc, &
                                          c_f_pointer
+  use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
   implicit none
   private
 
@@ -53,6 +61,9 @@ module nanopush
   integer, parameter, public :: NANOPUSH_T = 1, NANOPUSH_X = 2, NANOPUSH_Y = 3, &
                                 NANOPUSH_THETA = 4, NANOPUSH_VX = 5, NANOPUSH_VY = 6, &
                                 NANOPUSH_OMEGA = 7, NANOPUSH_FX = 8, NANOPUSH_FY = 9, NANOPUSH_MF = 10
+
+  !> Solvers of the constrained cubic (eq 5.4) for nanopush_icor_cubic_roots.
+  integer, parameter, public :: NANOPUSH_CUBIC_BRENT = 1, NANOPUSH_CUBIC_EIGEN = 2
 
   !> A scene (object, push, initial state, solver settings): opaque C handle.
   type, public :: nanopush_scene
@@ -81,6 +92,12 @@ module nanopush
   public :: nanopush_api_version, nanopush_status_name
   public :: nanopush_load_scene, nanopush_parse_scene, nanopush_destroy, nanopush_scene_info
   public :: nanopush_run, nanopush_integrate
+  public :: nanopush_friction_wrench, nanopush_friction_from_velocity
+  public :: nanopush_icor_experimental_fit, nanopush_icor_falvo, nanopush_icor_li, &
+            nanopush_icor_unknown_pressure, nanopush_icor_known_pressure, nanopush_icor_minimum_force, &
+            nanopush_icor_force_from_icor, nanopush_icor_force_unknown_pressure, &
+            nanopush_icor_constrained_force, nanopush_icor_impulsive, nanopush_icor_cubic_roots, &
+            nanopush_icor_nanorod, nanopush_icor_rod_properties
 
   !> Free a handle (safe on a handle never created or already freed).
   interface nanopush_destroy
@@ -152,13 +169,13 @@ module nanopush
       type(c_ptr), value, intent(in) :: error, scene
       real(c_double), intent(out) :: push(4)
     end function c_scene_get_push
-    type(c_ptr) function c_run_scene(error, scene, engine, method, rtol, atol) &
-        bind(C, name="nanopush_run_scene")
+    type(c_ptr) function c_run_scene_ex(error, scene, engine, method, law, rtol, atol) &
+        bind(C, name="nanopush_run_scene_ex")
       import :: c_ptr, c_char, c_double
       type(c_ptr), value, intent(in) :: error, scene
-      character(kind=c_char), intent(in) :: engine(*), method(*)
+      character(kind=c_char), intent(in) :: engine(*), method(*), law(*)
       real(c_double), value, intent(in) :: rtol, atol
-    end function c_run_scene
+    end function c_run_scene_ex
     subroutine c_delete_trajectory(trajectory) bind(C, name="nanopush_delete_trajectory")
       import :: c_ptr
       type(c_ptr), intent(inout) :: trajectory
@@ -220,6 +237,110 @@ module nanopush
       real(c_double), intent(inout) :: yout(*)
       integer(c_int64_t), intent(out) :: counts(3)
     end function c_integrate
+    integer(c_int) function c_friction_wrench(error, a, b, muN, R, alpha, sense, w) &
+        bind(C, name="nanopush_friction_wrench")
+      import :: c_int, c_ptr, c_double
+      type(c_ptr), value, intent(in) :: error
+      real(c_double), value, intent(in) :: a, b, muN, R, alpha
+      integer(c_int), value, intent(in) :: sense
+      real(c_double), intent(inout) :: w(3)
+    end function c_friction_wrench
+    integer(c_int) function c_friction_from_velocity(error, a, b, muN, vx, vy, omega, w) &
+        bind(C, name="nanopush_friction_from_velocity")
+      import :: c_int, c_ptr, c_double
+      type(c_ptr), value, intent(in) :: error
+      real(c_double), value, intent(in) :: a, b, muN, vx, vy, omega
+      real(c_double), intent(inout) :: w(3)
+    end function c_friction_from_velocity
+    ! iCOR formulas: inputs by value, the result through a pointer (left unchanged on failure).
+    integer(c_int) function c_icor_experimental_fit(error, yn, L, R) &
+        bind(C, name="nanopush_icor_experimental_fit")
+      import :: c_int, c_ptr, c_double
+      type(c_ptr), value, intent(in) :: error
+      real(c_double), value, intent(in) :: yn, L
+      real(c_double), intent(inout) :: R
+    end function c_icor_experimental_fit
+    integer(c_int) function c_icor_falvo(error, yn, L, R) bind(C, name="nanopush_icor_falvo")
+      import :: c_int, c_ptr, c_double
+      type(c_ptr), value, intent(in) :: error
+      real(c_double), value, intent(in) :: yn, L
+      real(c_double), intent(inout) :: R
+    end function c_icor_falvo
+    integer(c_int) function c_icor_li(error, yn, L, R) bind(C, name="nanopush_icor_li")
+      import :: c_int, c_ptr, c_double
+      type(c_ptr), value, intent(in) :: error
+      real(c_double), value, intent(in) :: yn, L
+      real(c_double), intent(inout) :: R
+    end function c_icor_li
+    integer(c_int) function c_icor_unknown_pressure(error, yn, L, R) &
+        bind(C, name="nanopush_icor_unknown_pressure")
+      import :: c_int, c_ptr, c_double
+      type(c_ptr), value, intent(in) :: error
+      real(c_double), value, intent(in) :: yn, L
+      real(c_double), intent(inout) :: R
+    end function c_icor_unknown_pressure
+    integer(c_int) function c_icor_known_pressure(error, mu, W, yn, F, L, R) &
+        bind(C, name="nanopush_icor_known_pressure")
+      import :: c_int, c_ptr, c_double
+      type(c_ptr), value, intent(in) :: error
+      real(c_double), value, intent(in) :: mu, W, yn, F, L
+      real(c_double), intent(inout) :: R
+    end function c_icor_known_pressure
+    integer(c_int) function c_icor_minimum_force(error, mu, W, yn, L, F) &
+        bind(C, name="nanopush_icor_minimum_force")
+      import :: c_int, c_ptr, c_double
+      type(c_ptr), value, intent(in) :: error
+      real(c_double), value, intent(in) :: mu, W, yn, L
+      real(c_double), intent(inout) :: F
+    end function c_icor_minimum_force
+    integer(c_int) function c_icor_force_from_icor(error, mu, W, R, L, F) &
+        bind(C, name="nanopush_icor_force_from_icor")
+      import :: c_int, c_ptr, c_double
+      type(c_ptr), value, intent(in) :: error
+      real(c_double), value, intent(in) :: mu, W, R, L
+      real(c_double), intent(inout) :: F
+    end function c_icor_force_from_icor
+    integer(c_int) function c_icor_force_unknown_pressure(error, mu, W, R, yn, L, F) &
+        bind(C, name="nanopush_icor_force_unknown_pressure")
+      import :: c_int, c_ptr, c_double
+      type(c_ptr), value, intent(in) :: error
+      real(c_double), value, intent(in) :: mu, W, R, yn, L
+      real(c_double), intent(inout) :: F
+    end function c_icor_force_unknown_pressure
+    integer(c_int) function c_icor_constrained_force(error, mu, W, R, yn, L, k2, F) &
+        bind(C, name="nanopush_icor_constrained_force")
+      import :: c_int, c_ptr, c_double
+      type(c_ptr), value, intent(in) :: error
+      real(c_double), value, intent(in) :: mu, W, R, yn, L, k2
+      real(c_double), intent(inout) :: F
+    end function c_icor_constrained_force
+    integer(c_int) function c_icor_impulsive(error, yn, k2, R) bind(C, name="nanopush_icor_impulsive")
+      import :: c_int, c_ptr, c_double
+      type(c_ptr), value, intent(in) :: error
+      real(c_double), value, intent(in) :: yn, k2
+      real(c_double), intent(inout) :: R
+    end function c_icor_impulsive
+    integer(c_int) function c_icor_cubic_roots(error, yn, L, k2, method, roots, nroots, ncomplex, &
+        at_infinity, negative, positive, max_residual) bind(C, name="nanopush_icor_cubic_roots")
+      import :: c_int, c_ptr, c_double
+      type(c_ptr), value, intent(in) :: error
+      real(c_double), value, intent(in) :: yn, L, k2
+      integer(c_int), value, intent(in) :: method
+      real(c_double), intent(inout) :: roots(3), negative, positive, max_residual
+      integer(c_int), intent(inout) :: nroots, ncomplex, at_infinity
+    end function c_icor_cubic_roots
+    integer(c_int) function c_icor_nanorod(error, rod) bind(C, name="nanopush_icor_nanorod")
+      import :: c_int, c_ptr, c_double
+      type(c_ptr), value, intent(in) :: error
+      real(c_double), intent(inout) :: rod(6)
+    end function c_icor_nanorod
+    integer(c_int) function c_icor_rod_properties(error, rod, props) &
+        bind(C, name="nanopush_icor_rod_properties")
+      import :: c_int, c_ptr, c_double
+      type(c_ptr), value, intent(in) :: error
+      real(c_double), intent(in) :: rod(6)
+      real(c_double), intent(inout) :: props(5)
+    end function c_icor_rod_properties
     integer(c_int) function c_strlen(s) bind(C, name="strlen")
       import :: c_int, c_ptr
       type(c_ptr), value, intent(in) :: s
@@ -321,14 +442,16 @@ contains
 
   !> Integrate a scene as `nanopush run` does. traj(NANOPUSH_TRAJECTORY_COLUMNS, nrows) is
   !> allocated: traj(:, i) = (t, x, y, theta, vx, vy, omega, fx, fy, mf) at output time i.
-  !>   engine "cxx" or "f77", method "faithful" or "modern" (default: the scene's);
+  !>   engine "cxx" or "f77", method "faithful" or "modern" (or "cvode": rough scenes, coulomb
+  !>   law, engine cxx) (default: the scene's); law, for rough scenes, "thesis" or "coulomb"
+  !>   (default: the scene's [surface] law);
   !>   rtol (default or 0: the scene's); atol (default or < 0: the scene's; 0 = automatic);
   !>   counts(3) = (RHS evaluations, accepted steps, rejected steps).
   !> On failure traj is allocated with zero columns.
-  subroutine nanopush_run(scene, traj, engine, method, rtol, atol, counts, stat, errmsg)
+  subroutine nanopush_run(scene, traj, engine, method, rtol, atol, counts, stat, errmsg, law)
     type(nanopush_scene), intent(in) :: scene
     real(dp), allocatable, intent(out) :: traj(:, :)
-    character(len=*), intent(in), optional :: engine, method
+    character(len=*), intent(in), optional :: engine, method, law
     real(dp), intent(in), optional :: rtol, atol
     integer(c_int64_t), intent(out), optional :: counts(3)
     integer, intent(out), optional :: stat
@@ -345,7 +468,7 @@ contains
     cnt = 0
     nrows = 0
     err = c_new_error()
-    tr = c_run_scene(err, scene%ptr, to_c(opt(engine)), to_c(opt(method)), r, a)
+    tr = c_run_scene_ex(err, scene%ptr, to_c(opt(engine)), to_c(opt(method)), to_c(opt(law)), r, a)
     if (c_associated(tr)) then
       st = c_trajectory_get_size(err, tr, nrows)
       if (st == 0) st = c_trajectory_get_counts(err, tr, cnt)
@@ -456,7 +579,268 @@ contains
     rhs_trampoline = int(st, c_int)
   end function rhs_trampoline
 
+  ! ---- Friction resultant (C: nanopush_friction_*) -------------------------------------
+
+  !> Friction resultant w(3) = (fx [N], fy [N], mf [N m]) in body axes, moment about the CM, over
+  !> a 2a x 2b rectangle (a [m] half-width along x', b [m] half-length along y') with uniform
+  !> pressure: muN [N] = mu N, iCOR at -R (cos alpha, sin alpha) [m, rad] from the CM, sense +1
+  !> (counter-clockwise) or -1. On failure w = NaN. (A subroutine, not a function: gfortran 12
+  !> corrupts the optional deferred-length errmsg of an array-valued function.)
+  subroutine nanopush_friction_wrench(a, b, muN, R, alpha, sense, w, stat, errmsg)
+    real(dp), intent(in) :: a, b, muN, R, alpha
+    integer, intent(in) :: sense
+    real(dp), intent(out) :: w(3)
+    integer, intent(out), optional :: stat
+    character(len=:), allocatable, intent(out), optional :: errmsg
+    type(c_ptr) :: err
+    character(len=:), allocatable :: msg
+    w = nan()
+    err = c_new_error()
+    if (c_friction_wrench(err, a, b, muN, R, alpha, int(sense, c_int), w) /= 0) continue
+    call finish(err, "nanopush_friction_wrench", msg, stat)
+    if (present(errmsg)) errmsg = msg
+  end subroutine nanopush_friction_wrench
+
+  !> The same from the body-axis rigid velocity: CM velocity (vx, vy) [m/s], omega [rad/s];
+  !> translation (omega = 0) and rest included; w(3) as above. On failure w = NaN.
+  subroutine nanopush_friction_from_velocity(a, b, muN, vx, vy, omega, w, stat, errmsg)
+    real(dp), intent(in) :: a, b, muN, vx, vy, omega
+    real(dp), intent(out) :: w(3)
+    integer, intent(out), optional :: stat
+    character(len=:), allocatable, intent(out), optional :: errmsg
+    type(c_ptr) :: err
+    character(len=:), allocatable :: msg
+    w = nan()
+    err = c_new_error()
+    if (c_friction_from_velocity(err, a, b, muN, vx, vy, omega, w) /= 0) continue
+    call finish(err, "nanopush_friction_from_velocity", msg, stat)
+    if (present(errmsg)) errmsg = msg
+  end subroutine nanopush_friction_from_velocity
+
+  ! ---- iCOR of a pushed nanorod (C: nanopush_icor_*) -----------------------------------
+  ! Rod of length L [m], push at yn [m] (>= 0) from the CM, R [m] CM-to-iCOR distance (> 0 on
+  ! the far side), mu [-], load W [N], push force F [N], k2 = I/m [m^2]. Each function returns
+  ! the formula's value (NaN on failure, with stat/errmsg or error stop as everywhere).
+
+  !> Eq 4.1 (experimental fit): R [m]; 0 <= yn <= L/2.
+  real(dp) function nanopush_icor_experimental_fit(yn, L, stat, errmsg) result(R)
+    real(dp), intent(in) :: yn, L
+    integer, intent(out), optional :: stat
+    character(len=:), allocatable, intent(out), optional :: errmsg
+    type(c_ptr) :: err
+    character(len=:), allocatable :: msg
+    R = nan()
+    err = c_new_error()
+    if (c_icor_experimental_fit(err, yn, L, R) /= 0) continue  ! the status is in err
+    call finish(err, "nanopush_icor_experimental_fit", msg, stat)
+    if (present(errmsg)) errmsg = msg
+  end function nanopush_icor_experimental_fit
+
+  !> Eq 4.2 (Falvo et al.): R [m]; 0 <= yn <= L/2.
+  real(dp) function nanopush_icor_falvo(yn, L, stat, errmsg) result(R)
+    real(dp), intent(in) :: yn, L
+    integer, intent(out), optional :: stat
+    character(len=:), allocatable, intent(out), optional :: errmsg
+    type(c_ptr) :: err
+    character(len=:), allocatable :: msg
+    R = nan()
+    err = c_new_error()
+    if (c_icor_falvo(err, yn, L, R) /= 0) continue  ! the status is in err
+    call finish(err, "nanopush_icor_falvo", msg, stat)
+    if (present(errmsg)) errmsg = msg
+  end function nanopush_icor_falvo
+
+  !> Eq 4.3 (Li et al.): R [m]; 0 <= yn <= L/2.
+  real(dp) function nanopush_icor_li(yn, L, stat, errmsg) result(R)
+    real(dp), intent(in) :: yn, L
+    integer, intent(out), optional :: stat
+    character(len=:), allocatable, intent(out), optional :: errmsg
+    type(c_ptr) :: err
+    character(len=:), allocatable :: msg
+    R = nan()
+    err = c_new_error()
+    if (c_icor_li(err, yn, L, R) /= 0) continue  ! the status is in err
+    call finish(err, "nanopush_icor_li", msg, stat)
+    if (present(errmsg)) errmsg = msg
+  end function nanopush_icor_li
+
+  !> Eq 4.13 (unknown pressure, minimum force): R = sqrt(b^2 + yn^2) - yn [m].
+  real(dp) function nanopush_icor_unknown_pressure(yn, L, stat, errmsg) result(R)
+    real(dp), intent(in) :: yn, L
+    integer, intent(out), optional :: stat
+    character(len=:), allocatable, intent(out), optional :: errmsg
+    type(c_ptr) :: err
+    character(len=:), allocatable :: msg
+    R = nan()
+    err = c_new_error()
+    if (c_icor_unknown_pressure(err, yn, L, R) /= 0) continue  ! the status is in err
+    call finish(err, "nanopush_icor_unknown_pressure", msg, stat)
+    if (present(errmsg)) errmsg = msg
+  end function nanopush_icor_unknown_pressure
+
+  !> Eq 4.7 (known pressure): R [m] for a push F >= the minimum force (eq 4.8).
+  real(dp) function nanopush_icor_known_pressure(mu, W, yn, F, L, stat, errmsg) result(R)
+    real(dp), intent(in) :: mu, W, yn, F, L
+    integer, intent(out), optional :: stat
+    character(len=:), allocatable, intent(out), optional :: errmsg
+    type(c_ptr) :: err
+    character(len=:), allocatable :: msg
+    R = nan()
+    err = c_new_error()
+    if (c_icor_known_pressure(err, mu, W, yn, F, L, R) /= 0) continue  ! the status is in err
+    call finish(err, "nanopush_icor_known_pressure", msg, stat)
+    if (present(errmsg)) errmsg = msg
+  end function nanopush_icor_known_pressure
+
+  !> Eq 4.8: minimum push force that starts motion, F [N].
+  real(dp) function nanopush_icor_minimum_force(mu, W, yn, L, stat, errmsg) result(F)
+    real(dp), intent(in) :: mu, W, yn, L
+    integer, intent(out), optional :: stat
+    character(len=:), allocatable, intent(out), optional :: errmsg
+    type(c_ptr) :: err
+    character(len=:), allocatable :: msg
+    F = nan()
+    err = c_new_error()
+    if (c_icor_minimum_force(err, mu, W, yn, L, F) /= 0) continue  ! the status is in err
+    call finish(err, "nanopush_icor_minimum_force", msg, stat)
+    if (present(errmsg)) errmsg = msg
+  end function nanopush_icor_minimum_force
+
+  !> Eq 4.10: F = mu W R / b [N].
+  real(dp) function nanopush_icor_force_from_icor(mu, W, R, L, stat, errmsg) result(F)
+    real(dp), intent(in) :: mu, W, R, L
+    integer, intent(out), optional :: stat
+    character(len=:), allocatable, intent(out), optional :: errmsg
+    type(c_ptr) :: err
+    character(len=:), allocatable :: msg
+    F = nan()
+    err = c_new_error()
+    if (c_icor_force_from_icor(err, mu, W, R, L, F) /= 0) continue  ! the status is in err
+    call finish(err, "nanopush_icor_force_from_icor", msg, stat)
+    if (present(errmsg)) errmsg = msg
+  end function nanopush_icor_force_from_icor
+
+  !> Eq 4.11: F = mu W (b^2 + R^2) / (2 b (R + yn)) [N]; R + yn > 0.
+  real(dp) function nanopush_icor_force_unknown_pressure(mu, W, R, yn, L, stat, errmsg) result(F)
+    real(dp), intent(in) :: mu, W, R, yn, L
+    integer, intent(out), optional :: stat
+    character(len=:), allocatable, intent(out), optional :: errmsg
+    type(c_ptr) :: err
+    character(len=:), allocatable :: msg
+    F = nan()
+    err = c_new_error()
+    if (c_icor_force_unknown_pressure(err, mu, W, R, yn, L, F) /= 0) continue  ! the status is in err
+    call finish(err, "nanopush_icor_force_unknown_pressure", msg, stat)
+    if (present(errmsg)) errmsg = msg
+  end function nanopush_icor_force_unknown_pressure
+
+  !> Eq 5.2 (erratum 5): push force F [N] for an assumed (signed) iCOR R; +-Inf at yn R = k2.
+  real(dp) function nanopush_icor_constrained_force(mu, W, R, yn, L, k2, stat, errmsg) result(F)
+    real(dp), intent(in) :: mu, W, R, yn, L, k2
+    integer, intent(out), optional :: stat
+    character(len=:), allocatable, intent(out), optional :: errmsg
+    type(c_ptr) :: err
+    character(len=:), allocatable :: msg
+    F = nan()
+    err = c_new_error()
+    if (c_icor_constrained_force(err, mu, W, R, yn, L, k2, F) /= 0) continue  ! the status is in err
+    call finish(err, "nanopush_icor_constrained_force", msg, stat)
+    if (present(errmsg)) errmsg = msg
+  end function nanopush_icor_constrained_force
+
+  !> Eq 5.5 (erratum 6): impulsive iCOR R = k2 / yn [m]; +Inf at yn = 0.
+  real(dp) function nanopush_icor_impulsive(yn, k2, stat, errmsg) result(R)
+    real(dp), intent(in) :: yn, k2
+    integer, intent(out), optional :: stat
+    character(len=:), allocatable, intent(out), optional :: errmsg
+    type(c_ptr) :: err
+    character(len=:), allocatable :: msg
+    R = nan()
+    err = c_new_error()
+    if (c_icor_impulsive(err, yn, k2, R) /= 0) continue  ! the status is in err
+    call finish(err, "nanopush_icor_impulsive", msg, stat)
+    if (present(errmsg)) errmsg = msg
+  end function nanopush_icor_impulsive
+
+  !> Roots of the constrained cubic (eq 5.4): roots(:) allocated with the finite real roots,
+  !> ascending [m]. method NANOPUSH_CUBIC_BRENT (default) or NANOPUSH_CUBIC_EIGEN; ncomplex
+  !> non-real roots (0 or 2); at_infinity roots lost as yn -> 0; negative = Table 5.1's branch
+  !> (negative root closest to 0), positive = the smallest positive root [m] (NaN when absent);
+  !> max_residual = max |p(R)| / sum |c_i R^i| over the real roots. On failure size(roots) = 0.
+  subroutine nanopush_icor_cubic_roots(yn, L, k2, roots, method, ncomplex, at_infinity, negative, &
+                                       positive, max_residual, stat, errmsg)
+    real(dp), intent(in) :: yn, L, k2
+    real(dp), allocatable, intent(out) :: roots(:)
+    integer, intent(in), optional :: method
+    integer, intent(out), optional :: ncomplex, at_infinity
+    real(dp), intent(out), optional :: negative, positive, max_residual
+    integer, intent(out), optional :: stat
+    character(len=:), allocatable, intent(out), optional :: errmsg
+    type(c_ptr) :: err
+    character(len=:), allocatable :: msg
+    real(c_double) :: r3(3), neg, pos, res
+    integer(c_int) :: nr, nc, ni
+    r3 = nan()
+    neg = nan()
+    pos = nan()
+    res = nan()
+    nr = 0
+    nc = 0
+    ni = 0
+    err = c_new_error()
+    if (c_icor_cubic_roots(err, yn, L, k2, int(opt_int(method, NANOPUSH_CUBIC_BRENT), c_int), r3, nr, nc, &
+                           ni, neg, pos, res) /= 0) continue
+    roots = r3(1:nr)
+    if (present(ncomplex)) ncomplex = int(nc)
+    if (present(at_infinity)) at_infinity = int(ni)
+    if (present(negative)) negative = neg
+    if (present(positive)) positive = pos
+    if (present(max_residual)) max_residual = res
+    call finish(err, "nanopush_icor_cubic_roots", msg, stat)
+    if (present(errmsg)) errmsg = msg
+  end subroutine nanopush_icor_cubic_roots
+
+  !> The thesis' nanorod: rod(6) = (L [m], radius [m], density [kg/m^3], Hamaker H [J],
+  !> rod-plane separation z0 [m], g [m/s^2]); edit it and pass it to nanopush_icor_rod_properties.
+  function nanopush_icor_nanorod() result(rod)
+    real(dp) :: rod(6)
+    type(c_ptr) :: err
+    character(len=:), allocatable :: msg
+    rod = nan()
+    err = c_new_error()
+    if (c_icor_nanorod(err, rod) /= 0) continue
+    call finish(err, "nanopush_icor_nanorod", msg)
+  end function nanopush_icor_nanorod
+
+  !> Derived quantities of a rod(6) (as nanopush_icor_nanorod): mass [kg], inertia about the CM
+  !> [kg m^2], k2 = I/m [m^2], f_vdw van der Waals force [N], load W = m g + F_vdw [N]: the k2
+  !> and W that `nanopush icor` uses. Outputs are NaN on failure.
+  subroutine nanopush_icor_rod_properties(rod, mass, inertia, k2, f_vdw, load, stat, errmsg)
+    real(dp), intent(in) :: rod(6)
+    real(dp), intent(out), optional :: mass, inertia, k2, f_vdw, load
+    integer, intent(out), optional :: stat
+    character(len=:), allocatable, intent(out), optional :: errmsg
+    type(c_ptr) :: err
+    character(len=:), allocatable :: msg
+    real(c_double) :: p(5)
+    p = nan()
+    err = c_new_error()
+    if (c_icor_rod_properties(err, rod, p) /= 0) continue
+    if (present(mass)) mass = p(1)
+    if (present(inertia)) inertia = p(2)
+    if (present(k2)) k2 = p(3)
+    if (present(f_vdw)) f_vdw = p(4)
+    if (present(load)) load = p(5)
+    call finish(err, "nanopush_icor_rod_properties", msg, stat)
+    if (present(errmsg)) errmsg = msg
+  end subroutine nanopush_icor_rod_properties
+
   ! ---- helpers --------------------------------------------------------------------------
+
+  !> Quiet NaN: the value of an output that a failed call did not produce.
+  real(dp) function nan()
+    nan = ieee_value(0.0_dp, ieee_quiet_nan)
+  end function nan
 
   !> The outcome recorded in err: msg (empty on success) and the status in stat, or, without
   !> stat, error stop with the message. Frees err. (Wrappers copy msg to their optional errmsg

@@ -30,7 +30,7 @@ extern "C" {
 #endif
 
 /* Version of this interface: major * 10000 + minor * 100 + patch. */
-#define NANOPUSH_API_VERSION 100
+#define NANOPUSH_API_VERSION 200
 int nanopush_get_api_version(void);
 
 /* ---- Status codes ---------------------------------------------------------------------- */
@@ -162,10 +162,84 @@ int nanopush_integrator_set_extrapolation(nanopush_error error, nanopush_integra
 int nanopush_integrate(nanopush_error error, nanopush_integrator integrator, nanopush_rhs rhs, void* udata,
                        double t0, double* y, int nout, const double* tout, double* yout, int64_t* counts);
 
-/* ---- Planned (not built yet) ----------------------------------------------------------- *
- * Friction resultant (cxx/include/nanopush/friction.hpp) and the iCOR toolkit
- * (cxx/include/nanopush/icor.hpp) get their functions here when those land; see
- * bindings/capi_friction.cpp.todo and bindings/capi_icor.cpp.todo. */
+/* Run with every setting, as `nanopush run` does: nanopush_run_scene plus
+ *   law: friction law of rough scenes ([surface] kind = "rough"): "thesis" (eq 3.40 sign law) or
+ *        "coulomb" (event-located stick-slip); NULL or "" = the scene's. Ignored by smooth scenes.
+ *   method may also be "cvode" (SUNDIALS cross-check: rough scenes, coulomb law, engine cxx). */
+nanopush_trajectory nanopush_run_scene_ex(nanopush_error error, nanopush_scene scene, const char* engine,
+                                          const char* method, const char* law, double rtol, double atol);
+
+/* ---- Friction resultant over a rectangular contact (docs/friction.md, models.md B) ----- */
+/* Coulomb friction over a 2a x 2b rectangle with uniform pressure, rigid rotation about the iCOR.
+ *   a [m]      half-width (along body x'), > 0; b [m] half-length (along body y'), > 0;
+ *              min(a,b)/max(a,b) not below the library's aspect limit (the message names it)
+ *   muN [N]    mu times the normal load, >= 0
+ *   R [m] >= 0, alpha [rad]: the iCOR sits at c = -R (cos alpha, sin alpha) from the centre of
+ *              mass, body axes
+ *   sense      +1 counter-clockwise (omega > 0), -1 clockwise
+ *   wrench[3]  out: (fx [N], fy [N], mf [N m]), body axes, moment about the centre of mass
+ * Identical (bit for bit) to nanopush::rectangle_friction_wrench_checked and `nanopush friction`
+ * (which prints it for muN = 1). Bad input: NANOPUSH_BAD_INPUT, wrench unchanged. */
+int nanopush_friction_wrench(nanopush_error error, double a, double b, double muN, double R, double alpha,
+                             int sense, double* wrench);
+/* The same from the rigid velocity in body axes: centre-of-mass velocity (vx, vy) [m/s] and
+ * omega [rad/s] (iCOR c = (-vy, vx)/omega); pure translation (omega = 0: f = -muN v/|v|, mf = 0)
+ * and rest (zero wrench) included. */
+int nanopush_friction_from_velocity(nanopush_error error, double a, double b, double muN, double vx, double vy,
+                                    double omega, double* wrench);
+
+/* ---- iCOR of a pushed nanorod (docs/icor.md, models.md D; thesis chapters 4-5) ---------- */
+/* One pattern for every formula: int nanopush_icor_<name>(error, inputs..., double* result).
+ * A rod of length L [m] (> 0, half-length b = L/2) is pushed perpendicular to its axis at
+ * yn [m] (>= 0) from its centre of mass; R [m] is the distance from the centre of mass to the
+ * iCOR (chapter 4 sign convention: R > 0 on the far side from the push point). mu [-] friction
+ * coefficient, W [N] normal load, F [N] push force, k2 [m^2] = I/m. Pure translation is
+ * R = +infinity (never NaN). Bad input: NANOPUSH_BAD_INPUT, *result unchanged.
+ * Identical (bit for bit) to the functions of nanopush::icor and to `nanopush icor formulas`. */
+int nanopush_icor_experimental_fit(nanopush_error error, double yn, double L, double* R);  /* eq 4.1, 0 <= yn <= b */
+int nanopush_icor_falvo(nanopush_error error, double yn, double L, double* R);             /* eq 4.2 */
+int nanopush_icor_li(nanopush_error error, double yn, double L, double* R);                /* eq 4.3 */
+int nanopush_icor_unknown_pressure(nanopush_error error, double yn, double L, double* R);  /* eq 4.13 */
+/* eq 4.7 (known pressure); requires F >= the minimum force of eq 4.8 */
+int nanopush_icor_known_pressure(nanopush_error error, double mu, double W, double yn, double F, double L,
+                                 double* R);
+/* eq 4.8: the minimum push force F [N] that starts motion */
+int nanopush_icor_minimum_force(nanopush_error error, double mu, double W, double yn, double L, double* F);
+/* eq 4.10: F [N] = mu W R / b */
+int nanopush_icor_force_from_icor(nanopush_error error, double mu, double W, double R, double L, double* F);
+/* eq 4.11: F [N] = mu W (b^2 + R^2) / (2 b (R + yn)); requires R + yn > 0 */
+int nanopush_icor_force_unknown_pressure(nanopush_error error, double mu, double W, double R, double yn, double L,
+                                         double* F);
+/* eq 5.2 (erratum 5): push force F [N] for an assumed iCOR R (signed, as the cubic's roots);
+ * +-infinity at the pole yn R = k2 */
+int nanopush_icor_constrained_force(nanopush_error error, double mu, double W, double R, double yn, double L,
+                                    double k2, double* F);
+/* eq 5.5 (erratum 6): impulsive iCOR R = k2 / yn [m]; +infinity at yn = 0 */
+int nanopush_icor_impulsive(nanopush_error error, double yn, double k2, double* R);
+
+/* Solvers of the constrained cubic (eq 5.4). */
+#define NANOPUSH_CUBIC_BRENT 1 /* van Wijngaarden-Dekker-Brent on brackets from the critical points */
+#define NANOPUSH_CUBIC_EIGEN 2 /* eigenvalues of the balanced companion matrix (Eigen) */
+/* Roots of the constrained cubic (eq 5.4) 2 yn R^3 - 3 k2 R^2 + k2 (b^2 - 2 k2) = 0.
+ *   method        NANOPUSH_CUBIC_BRENT or NANOPUSH_CUBIC_EIGEN
+ *   roots[3]      out: the finite real roots ascending [m]; the unused entries are NaN
+ *   nroots        out: how many finite real roots (0..3)
+ *   ncomplex      out: non-real roots (0 or 2); at_infinity out: roots lost as yn -> 0
+ *   negative      out: Table 5.1's branch (the negative root closest to 0) [m], NaN if none
+ *   positive      out: the other branch (the smallest positive root) [m], NaN if none
+ *   max_residual  out: max over the real roots of |p(R)| / sum |c_i R^i|
+ * Any output pointer except roots may be NULL. Identical to `nanopush icor roots`. */
+int nanopush_icor_cubic_roots(nanopush_error error, double yn, double L, double k2, int method, double* roots,
+                              int* nroots, int* ncomplex, int* at_infinity, double* negative, double* positive,
+                              double* max_residual);
+
+/* The thesis' nanorod (graphite, L = 590 nm, radius 13.5 nm): rod[6] = (L [m], radius [m],
+ * density [kg/m^3], Hamaker constant H [J], rod-plane separation z0 [m], g [m/s^2]). */
+int nanopush_icor_nanorod(nanopush_error error, double* rod);
+/* Derived quantities of a rod rod[6] (as above; every entry finite and > 0, g >= 0):
+ * props[5] = (mass [kg], inertia about the CM [kg m^2], k2 = I/m [m^2], van der Waals force
+ * F_vdw [N] (Parsegian), load W = m g + F_vdw [N]). The W and k2 of `nanopush icor`. */
+int nanopush_icor_rod_properties(nanopush_error error, const double* rod, double* props);
 
 #ifdef __cplusplus
 }

@@ -151,6 +151,52 @@ int main(int argc, char** argv) {
   CHECK(nanopush_new_integrator(err, 0, NULL, 1e-8, &atol, 1) == NULL);
   nanopush_delete_integrator(&bs);
   CHECK(bs == NULL);
+
+  /* Friction and iCOR from C: closed-form checks (bit-for-bit equality with the C++ library and
+   * the CLI is tested by capi.friction_icor_c and capi.friction_icor_cli). */
+  {
+    double w[3], wm[3], rod[6], props[5], R, roots[3], neg, pos, res;
+    int nr, nc, ni, i;
+    /* Pure translation (omega = 0): f = -muN v/|v|, mf = 0; v = (3, 4) m/s, muN = 5 N. */
+    CHECK(nanopush_friction_from_velocity(err, 27.5e-9, 50e-9, 5.0, 3.0, 4.0, 0.0, w) == NANOPUSH_OK);
+    CHECK(w[0] == -3.0 && w[1] == -4.0 && w[2] == 0.0);
+    /* Reversing the sense of rotation reverses the wrench. */
+    CHECK(nanopush_friction_wrench(err, 27.5e-9, 50e-9, 2e-6, 4e-8, 0.7, 1, w) == NANOPUSH_OK);
+    CHECK(nanopush_friction_wrench(err, 27.5e-9, 50e-9, 2e-6, 4e-8, 0.7, -1, wm) == NANOPUSH_OK);
+    CHECK(w[0] == -wm[0] && w[1] == -wm[1] && w[2] == -wm[2] && w[0] != 0.0);
+    CHECK(nanopush_friction_wrench(err, 27.5e-9, -1.0, 2e-6, 4e-8, 0.7, 1, w) == NANOPUSH_BAD_INPUT);
+    nanopush_get_error(err, msg, (int)sizeof msg);
+    CHECK(strstr(msg, "b = -1") != NULL);
+    nanopush_clear_error(err);
+    /* Eq 4.13 is sqrt(b^2 + yn^2) - yn; the cubic's roots solve 2 yn R^3 - 3 k2 R^2 + k2 (b^2 - 2 k2). */
+    CHECK(nanopush_icor_nanorod(err, rod) == NANOPUSH_OK);
+    CHECK(nanopush_icor_rod_properties(err, rod, props) == NANOPUSH_OK);
+    CHECK(nanopush_icor_unknown_pressure(err, 1e-7, rod[0], &R) == NANOPUSH_OK);
+    CHECK(fabs(R - (sqrt(0.25 * rod[0] * rod[0] + 1e-14) - 1e-7)) <= 1e-15 * R);
+    CHECK(nanopush_icor_cubic_roots(err, 1e-7, rod[0], props[2], NANOPUSH_CUBIC_EIGEN, roots, &nr, &nc, &ni, &neg,
+                                    &pos, &res) == NANOPUSH_OK);
+    CHECK(nr == 3 && nc == 0 && ni == 0 && neg == roots[0] && pos == roots[1] && neg < 0.0 && pos > 0.0 && res < 1e-14);
+    for (i = 0; i < nr; ++i) {
+      const double r = roots[i], k2 = props[2], b2 = 0.25 * rod[0] * rod[0];
+      const double p = 2e-7 * r * r * r - 3.0 * k2 * r * r + k2 * (b2 - 2.0 * k2);
+      const double scale = fabs(2e-7 * r * r * r) + fabs(3.0 * k2 * r * r) + fabs(k2 * (b2 - 2.0 * k2));
+      CHECK(fabs(p) <= 1e-14 * scale);
+    }
+    CHECK(nanopush_icor_falvo(err, 1e-7, 0.0, &R) == NANOPUSH_BAD_INPUT);
+    nanopush_get_error(err, msg, (int)sizeof msg);
+    CHECK(strstr(msg, "L = 0") != NULL);
+    nanopush_clear_error(err);
+  }
+  /* The friction law of rough scenes is checked by name even for a smooth scene. */
+  {
+    nanopush_scene sc = nanopush_load_scene(err, argv[1]);
+    nanopush_trajectory t = nanopush_run_scene_ex(err, sc, "cxx", NULL, "sticky", 0, -1);
+    CHECK(sc != NULL && t == NULL && nanopush_check_error(err) == NANOPUSH_BAD_INPUT);
+    nanopush_get_error(err, msg, (int)sizeof msg);
+    CHECK(strstr(msg, "law = sticky: must be thesis or coulomb") != NULL);
+    nanopush_clear_error(err);
+    nanopush_delete_scene(&sc);
+  }
   nanopush_delete_error(&err);
   CHECK(err == NULL);
 

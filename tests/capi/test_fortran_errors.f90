@@ -4,6 +4,7 @@
 program test_fortran_errors
   use nanopush
   use capi_test_problems
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
   implicit none
   integer :: failures = 0, stat
   character(len=:), allocatable :: msg
@@ -16,6 +17,8 @@ program test_fortran_errors
     "[push]" // nl // "force = 1e-6" // nl // "xn = 1e-8" // nl // "yn = 2e-8" // nl // &
     "[solver]" // nl // "t_end = 1e-9" // nl // "samples = 11" // nl
   type(ode_params) :: p
+  real(dp) :: w(3), r, rod(6), k2
+  real(dp), allocatable :: roots(:)
 
   ! Bad scene value: the C++ InputError names the field, the value and the range.
   call nanopush_parse_scene(scene, replace(good_scene, "mass = 1e-18", "mass = -1"), "bad_mass.toml", &
@@ -70,9 +73,60 @@ program test_fortran_errors
   call nanopush_integrate(failing_rhs, 0.0_dp, y, [0.25_dp, 1.0_dp], yout, ctx=p, stat=stat, errmsg=msg)
   call expect(stat, NANOPUSH_RHS_FAILED, msg, "right-hand side returned status 7", "RHS failure")
   call check(all(yout(:, 1) /= 0) .and. all(yout(:, 2) == 0), "RHS failure: first output kept, second not reached")
+  ! Friction and iCOR: bad arguments come back as stat + errmsg, the result is NaN; then a good
+  ! call with the same variables succeeds and clears errmsg.
+  call nanopush_friction_wrench(0.0_dp, 50e-9_dp, 1.0_dp, 1e-8_dp, 0.0_dp, 1, w, stat=stat, errmsg=msg)
+  call expect(stat, NANOPUSH_BAD_INPUT, msg, "a = 0: must be > 0", "friction a = 0")
+  call check(all(ieee_is_nan(w)), "friction a = 0: NaN wrench")
+  call nanopush_friction_wrench(-2e-9_dp, 50e-9_dp, 1.0_dp, 1e-8_dp, 0.0_dp, 1, w, stat=stat, errmsg=msg)
+  call expect(stat, NANOPUSH_BAD_INPUT, msg, "a = -2e-09: must be > 0", "friction a < 0")
+  call nanopush_friction_wrench(27.5e-9_dp, 50e-9_dp, 1.0_dp, 1e-8_dp, 0.0_dp, 0, w, stat=stat, errmsg=msg)
+  call expect(stat, NANOPUSH_BAD_INPUT, msg, "sense = 0: must be +1", "friction sense = 0")
+  call nanopush_friction_from_velocity(27.5e-9_dp, -1.0_dp, 1.0_dp, 1.0_dp, 0.0_dp, 1.0_dp, w, &
+                                       stat=stat, errmsg=msg)
+  call expect(stat, NANOPUSH_BAD_INPUT, msg, "b = -1: must be > 0", "friction_from_velocity b < 0")
+  call nanopush_friction_wrench(27.5e-9_dp, 50e-9_dp, 1.0_dp, 1e-8_dp, 0.0_dp, 1, w, stat=stat, errmsg=msg)
+  call expect(stat, NANOPUSH_OK, msg, "", "good friction call")
+  call check(all(.not. ieee_is_nan(w)) .and. w(2) < 0, "good friction call: finite wrench")
+  r = nanopush_icor_falvo(-1e-9_dp, 590e-9_dp, stat=stat, errmsg=msg)
+  call expect(stat, NANOPUSH_BAD_INPUT, msg, "yn = -1e-09", "falvo yn < 0")
+  call check(ieee_is_nan(r), "falvo yn < 0: NaN")
+  r = nanopush_icor_unknown_pressure(-1e-9_dp, 590e-9_dp, stat=stat, errmsg=msg)
+  call expect(stat, NANOPUSH_BAD_INPUT, msg, "yn = -1e-09", "unknown_pressure yn < 0")
+  r = nanopush_icor_li(1e-9_dp, 0.0_dp, stat=stat, errmsg=msg)
+  call expect(stat, NANOPUSH_BAD_INPUT, msg, "L = 0: must be > 0", "li L = 0")
+  r = nanopush_icor_experimental_fit(1e-9_dp, -3.0_dp, stat=stat, errmsg=msg)
+  call expect(stat, NANOPUSH_BAD_INPUT, msg, "L = -3: must be > 0", "experimental_fit L < 0")
+  r = nanopush_icor_minimum_force(0.1_dp, 1e-6_dp, 1e-9_dp, 0.0_dp, stat=stat, errmsg=msg)
+  call expect(stat, NANOPUSH_BAD_INPUT, msg, "L = 0", "minimum_force L = 0")
+  r = nanopush_icor_known_pressure(0.1_dp, 1e-6_dp, 0.0_dp, 1e-9_dp, 590e-9_dp, stat=stat, errmsg=msg)
+  call expect(stat, NANOPUSH_BAD_INPUT, msg, "minimum force", "known_pressure F below the minimum")
+  r = nanopush_icor_force_unknown_pressure(0.1_dp, 1e-6_dp, -1e-9_dp, 0.0_dp, 590e-9_dp, stat=stat, errmsg=msg)
+  call expect(stat, NANOPUSH_BAD_INPUT, msg, "R + yn must be > 0", "force_unknown_pressure R + yn < 0")
+  r = nanopush_icor_impulsive(-1e-9_dp, 2.9e-14_dp, stat=stat, errmsg=msg)
+  call expect(stat, NANOPUSH_BAD_INPUT, msg, "yn = -1e-09", "impulsive yn < 0")
+  call nanopush_icor_cubic_roots(-1e-9_dp, 590e-9_dp, 2.9e-14_dp, roots, stat=stat, errmsg=msg)
+  call expect(stat, NANOPUSH_BAD_INPUT, msg, "yn = -1e-09", "cubic roots yn < 0")
+  call check(size(roots) == 0, "cubic roots yn < 0: no roots")
+  call nanopush_icor_cubic_roots(1e-9_dp, 0.0_dp, 2.9e-14_dp, roots, stat=stat, errmsg=msg)
+  call expect(stat, NANOPUSH_BAD_INPUT, msg, "L = 0", "cubic roots L = 0")
+  call nanopush_icor_cubic_roots(1e-9_dp, 590e-9_dp, 2.9e-14_dp, roots, method=7, stat=stat, errmsg=msg)
+  call expect(stat, NANOPUSH_BAD_INPUT, msg, "method = 7", "cubic roots bad method")
+  rod = nanopush_icor_nanorod()
+  rod(1) = -1
+  call nanopush_icor_rod_properties(rod, k2=k2, stat=stat, errmsg=msg)
+  call expect(stat, NANOPUSH_BAD_INPUT, msg, "rod.length = -1", "rod_properties L < 0")
+  call check(ieee_is_nan(k2), "rod_properties L < 0: NaN")
+  rod = nanopush_icor_nanorod()
+  call nanopush_icor_rod_properties(rod, k2=k2, stat=stat, errmsg=msg)
+  call expect(stat, NANOPUSH_OK, msg, "", "rod_properties of the nanorod")
+  call nanopush_icor_cubic_roots(1e-9_dp, rod(1), k2, roots, stat=stat, errmsg=msg)
+  call expect(stat, NANOPUSH_OK, msg, "", "good cubic roots")
+  call check(size(roots) == 3, "good cubic roots: three real roots at yn = 1 nm")
+
   ! Status names.
   call check(nanopush_status_name(NANOPUSH_BAD_INPUT) == "bad input", "status name")
-  call check(nanopush_api_version() == 100, "API version 0.1.0")
+  call check(nanopush_api_version() == 200, "API version 0.2.0")
 
   if (failures > 0) error stop "test_fortran_errors: failures above"
   print '(a)', "all checks hold"

@@ -50,3 +50,35 @@ add_test(NAME capi.fortran_two_threads COMMAND capi_test_threads)
 add_executable(capi_test_exceptions ${_capi_dir}/test_capi_exceptions.cpp)
 target_link_libraries(capi_test_exceptions PRIVATE nanopush_capi nanopush_warnings)
 add_test(NAME capi.exceptions_caught COMMAND capi_test_exceptions)
+
+# Friction and iCOR: the C API equals the C++ library bit for bit, errors come back as status +
+# message (capi.friction_icor_c); C and Fortran give the numbers of `nanopush icor formulas`,
+# `nanopush icor roots` and `nanopush friction` (capi.friction_icor_cli).
+add_executable(capi_test_friction_icor ${_capi_dir}/test_capi_friction_icor.cpp)
+target_link_libraries(capi_test_friction_icor PRIVATE nanopush_capi nanopush_warnings)
+add_test(NAME capi.friction_icor_c COMMAND capi_test_friction_icor)
+add_executable(capi_test_friction_icor_fortran ${_capi_dir}/test_fortran_friction_icor.f90)
+target_link_libraries(capi_test_friction_icor_fortran PRIVATE nanopush_fortran nanopush_warnings)
+set_target_properties(capi_test_friction_icor_fortran PROPERTIES
+  Fortran_MODULE_DIRECTORY ${NANOPUSH_MODDIR}/capi_test_friction_icor_fortran)
+add_test(NAME capi.friction_icor_cli
+  COMMAND ${CMAKE_COMMAND} -DNANOPUSH=$<TARGET_FILE:nanopush> -DREF_EXE=$<TARGET_FILE:capi_test_friction_icor>
+    -DFORTRAN_EXE=$<TARGET_FILE:capi_test_friction_icor_fortran> -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/capi_friction_icor
+    -P ${_capi_dir}/run_friction_icor_cli.cmake)
+set_tests_properties(capi.friction_icor_cli PROPERTIES PASS_REGULAR_EXPRESSION "friction/icor CLI comparison: all checks hold")
+
+# A rough-surface scene from Fortran, law chosen by the caller = `nanopush run --law` exactly.
+add_executable(capi_test_rough ${_capi_dir}/test_fortran_rough.f90)
+target_link_libraries(capi_test_rough PRIVATE nanopush_fortran nanopush_warnings)
+set_target_properties(capi_test_rough PROPERTIES Fortran_MODULE_DIRECTORY ${NANOPUSH_MODDIR}/capi_test_rough)
+set(_rough_scene ${PROJECT_SOURCE_DIR}/drivers/scenes/thesis/fig3_15.toml)
+foreach(_law thesis coulomb)
+  add_test(NAME capi.fortran_rough_${_law}_reference
+    COMMAND nanopush run ${_rough_scene} --engine cxx --law ${_law} --quiet
+      --out ${CMAKE_CURRENT_BINARY_DIR}/capi_rough_${_law}.csv)
+  set_tests_properties(capi.fortran_rough_${_law}_reference PROPERTIES FIXTURES_SETUP capi_rough_${_law})
+  add_test(NAME capi.fortran_rough_${_law}
+    COMMAND capi_test_rough ${_rough_scene} ${_law} ${CMAKE_CURRENT_BINARY_DIR}/capi_rough_${_law}.csv)
+  set_tests_properties(capi.fortran_rough_${_law} PROPERTIES FIXTURES_REQUIRED capi_rough_${_law}
+    PASS_REGULAR_EXPRESSION "identical to nanopush run")
+endforeach()

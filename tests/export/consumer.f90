@@ -2,7 +2,9 @@
 !> `use nanopush` and compare every number with the CSV written by
 !> `nanopush run SCENE --engine ENGINE --out REFERENCE.csv` (printed with 17 significant digits,
 !> so reading it back gives the same doubles: the comparison is exact).
-!> Usage: consumer_fortran SCENE.toml ENGINE REFERENCE.csv
+!> Usage: consumer_fortran SCENE.toml ENGINE REFERENCE.csv [FRICTION.csv]
+!> With FRICTION.csv (`nanopush friction` output: R,alpha,fx,fy,mf for the nanobar a = 27.5 nm,
+!> b = 50 nm, muN = 1, sense +1) it also checks nanopush_friction_wrench at every row, exactly.
 program consumer_fortran
   use nanopush
   implicit none
@@ -13,7 +15,7 @@ program consumer_fortran
   character(len=512) :: header
   integer :: unit, ios, nref, differ
 
-  if (command_argument_count() /= 3) error stop "usage: consumer_fortran SCENE.toml ENGINE REFERENCE.csv"
+  if (command_argument_count() < 3) error stop "usage: consumer_fortran SCENE.toml ENGINE REFERENCE.csv [FRICTION.csv]"
   scene_path = argument(1)
   engine = argument(2)
   ref_path = argument(3)
@@ -43,8 +45,32 @@ program consumer_fortran
   if (nref /= size(traj, 2)) error stop "consumer_fortran: row count differs from nanopush run"
   if (differ /= 0) error stop "consumer_fortran: numbers differ from nanopush run"
   print '(a)', "consumer_fortran: identical to nanopush run"
+  if (command_argument_count() >= 4) call check_friction(argument(4))
 
 contains
+
+  !> nanopush_friction_wrench at every row of `nanopush friction` output (sense +1).
+  subroutine check_friction(path)
+    character(len=*), intent(in) :: path
+    real(dp) :: c(5), w(3)
+    integer :: u, rows, bad
+    open (newunit=u, file=path, status="old", action="read")
+    read (u, '(a)') header
+    if (trim(header) /= "R,alpha,fx,fy,mf") error stop "consumer_fortran: unexpected friction CSV header"
+    rows = 0
+    bad = 0
+    do
+      read (u, *, iostat=ios) c
+      if (ios /= 0) exit
+      rows = rows + 1
+      call nanopush_friction_wrench(27.5e-9_dp, 50e-9_dp, 1.0_dp, c(1), c(2), 1, w)
+      if (any(w /= c(3:5))) bad = bad + 1
+    end do
+    close (u)
+    print '(a,i0,a,i0,a)', "consumer_fortran: friction wrench at ", rows, " points, ", bad, " differ"
+    if (rows == 0 .or. bad /= 0) error stop "consumer_fortran: friction wrench differs from nanopush friction"
+    print '(a)', "consumer_fortran: friction wrench identical to nanopush friction"
+  end subroutine check_friction
 
   function argument(i) result(a)
     integer, intent(in) :: i

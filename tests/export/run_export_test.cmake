@@ -36,7 +36,30 @@ if(NOT dir_line STREQUAL "nanopush_DIR = ${prefix}/lib/cmake/nanopush")
 endif()
 run(${CMAKE_COMMAND} --build ${build})
 
-# 3. Same numbers as `nanopush run` (the installed CLI), for both engines.
+# 3. Same numbers as the installed CLI: `nanopush friction` (C API from C++, Fortran module) ...
+set(points "R,alpha\n")
+foreach(R 0 1e-09 3e-08 1.2e-07 1.5e-07 1e-06 1)
+  foreach(alpha 0 0.7 -2.2)
+    string(APPEND points "${R},${alpha}\n")
+  endforeach()
+endforeach()
+file(WRITE ${WORK_DIR}/friction_points.csv "${points}")
+execute_process(COMMAND ${prefix}/bin/nanopush friction --sense 1 INPUT_FILE ${WORK_DIR}/friction_points.csv
+                OUTPUT_FILE ${WORK_DIR}/friction_ref.csv RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "nanopush friction failed (${rc})")
+endif()
+file(READ ${WORK_DIR}/friction_ref.csv friction_ref)
+execute_process(COMMAND ${build}/consumer_cxx --friction 1 INPUT_FILE ${WORK_DIR}/friction_points.csv
+                RESULT_VARIABLE rc OUTPUT_VARIABLE friction_cxx ERROR_VARIABLE err)
+if(NOT rc EQUAL 0 OR NOT friction_cxx STREQUAL friction_ref)
+  file(WRITE ${WORK_DIR}/friction_consumer_cxx.csv "${friction_cxx}")
+  message(FATAL_ERROR "consumer_cxx --friction (${rc}) differs from nanopush friction: compare "
+                      "${WORK_DIR}/friction_consumer_cxx.csv with ${WORK_DIR}/friction_ref.csv\n${err}")
+endif()
+message(STATUS "consumer_cxx --friction (C API): identical to nanopush friction")
+
+# ... and `nanopush run`, for both engines.
 foreach(engine cxx f77)
   run(${prefix}/bin/nanopush run ${SCENE} --engine ${engine} --out ${WORK_DIR}/ref_${engine}.csv --quiet)
   file(READ ${WORK_DIR}/ref_${engine}.csv ref)
@@ -48,7 +71,7 @@ foreach(engine cxx f77)
   endif()
   string(LENGTH "${ref}" nbytes)
   message(STATUS "consumer_cxx (${engine}): identical to nanopush run (${nbytes} bytes of CSV)")
-  run(${build}/consumer_fortran ${SCENE} ${engine} ${WORK_DIR}/ref_${engine}.csv)
+  run(${build}/consumer_fortran ${SCENE} ${engine} ${WORK_DIR}/ref_${engine}.csv ${WORK_DIR}/friction_ref.csv)
   message(STATUS "${RUN_OUT}")
 endforeach()
 # 4. A project without Fortran gets a clear message from the package, not a link error later.

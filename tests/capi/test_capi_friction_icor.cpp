@@ -1,0 +1,221 @@
+// The friction and iCOR entry points of the C API (bindings/nanopush.h) return exactly the numbers
+// of the C++ library (bit for bit: same doubles, NaN where both are NaN), and bad input comes back
+// as a status and a message with the outputs untouched.
+//
+// Usage: capi_test_friction_icor [POINTS.csv SENSE OUT.csv]
+//   With arguments it also writes the library's friction wrench (muN = 1, the nanobar's a and b:
+//   the defaults of `nanopush friction`) for each "R,alpha" line of POINTS.csv, in the CSV format
+//   of `nanopush friction`, so the scripted test can compare the CLI and the Fortran module with it.
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "nanopush.h"
+#include "nanopush/friction.hpp"
+#include "nanopush/icor.hpp"
+#include "nanopush/io.hpp"
+
+namespace {
+
+int failures = 0, checks = 0;
+void check(bool ok, const std::string& what) {
+  ++checks;
+  if (!ok) {
+    ++failures;
+    std::fprintf(stderr, "FAIL: %s\n", what.c_str());
+  }
+}
+bool same(double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); }
+std::string message(nanopush_error err) {
+  char buf[512];
+  nanopush_get_error(err, buf, sizeof buf);
+  return buf;
+}
+
+constexpr double kBarA = 27.5e-9, kBarB = 50e-9;  // the thesis nanobar (models.md A)
+constexpr double kPi = 3.14159265358979323846;
+
+void friction_matches_library() {
+  const double Rs[] = {0.0, 1e-9, 27.5e-9, 50e-9, 57e-9, 149.9e-9, 150e-9, 1e-6, 1e-3, 1.0};
+  const double alphas[] = {0.0, 0.3, kPi / 2, 2.0, -1.1, kPi};
+  for (const double muN : {1.0, 2.5e-6})
+    for (const int sense : {1, -1})
+      for (const double R : Rs)
+        for (const double alpha : alphas) {
+          double w[3] = {0, 0, 0};
+          const int st = nanopush_friction_wrench(nullptr, kBarA, kBarB, muN, R, alpha, sense, w);
+          const auto ref = nanopush::rectangle_friction_wrench_checked(kBarA, kBarB, muN, R, alpha, sense);
+          std::ostringstream what;
+          what << "friction_wrench R = " << R << ", alpha = " << alpha << ", sense " << sense << ", muN " << muN;
+          check(st == NANOPUSH_OK && same(w[0], ref.fx) && same(w[1], ref.fy) && same(w[2], ref.mf), what.str());
+        }
+  // From the velocity: rotation either way, translation (omega = 0), rest, near-translation.
+  const double vs[][3] = {{1e-3, 2e-3, 1e4},  {-3e-3, 1e-3, -2e5}, {0.0, 0.0, 5.0},  {2e-3, -1e-3, 0.0},
+                          {0.0, 0.0, 0.0},     {1.0, 0.5, 1e-12},   {0.0, -4e-2, 8e5}, {7e-2, 0.0, -1e-3}};
+  for (const auto& v : vs) {
+    double w[3] = {0, 0, 0};
+    const int st = nanopush_friction_from_velocity(nullptr, kBarA, kBarB, 3e-6, v[0], v[1], v[2], w);
+    const auto ref = nanopush::rectangle_friction_from_velocity_checked(kBarA, kBarB, 3e-6, v[0], v[1], v[2]);
+    std::ostringstream what;
+    what << "friction_from_velocity (" << v[0] << ", " << v[1] << ", " << v[2] << ")";
+    check(st == NANOPUSH_OK && same(w[0], ref.fx) && same(w[1], ref.fy) && same(w[2], ref.mf), what.str());
+  }
+}
+
+void icor_matches_library() {
+  namespace icor = nanopush::icor;
+  const icor::Rod rod = icor::nanorod();
+  double r6[6], props[5];
+  check(nanopush_icor_nanorod(nullptr, r6) == NANOPUSH_OK, "nanorod");
+  check(r6[0] == rod.length && r6[1] == rod.radius && r6[2] == rod.density && r6[3] == rod.hamaker &&
+            r6[4] == rod.z0 && r6[5] == rod.gravity,
+        "nanorod = icor::nanorod()");
+  check(nanopush_icor_rod_properties(nullptr, r6, props) == NANOPUSH_OK, "rod_properties");
+  check(props[0] == rod.mass() && props[1] == rod.inertia() && props[2] == rod.gyration_squared() &&
+            props[3] == rod.vdw_force() && props[4] == rod.load(),
+        "rod_properties = Rod::mass/inertia/gyration_squared/vdw_force/load");
+  const double L = rod.length, b = 0.5 * L, k2 = rod.gyration_squared(), W = rod.load();
+  for (const double mu : {0.1, 0.37})
+    for (const double yn : {0.0, 1e-15, 1e-9, 50e-9, 98.3e-9, 200e-9, b}) {
+      const std::string at = " at yn = " + nanopush::csv_number(yn) + ", mu = " + nanopush::csv_number(mu);
+      double v = 0;
+      check(nanopush_icor_experimental_fit(nullptr, yn, L, &v) == 0 && same(v, icor::experimental_fit(yn, L)),
+            "eq 4.1" + at);
+      check(nanopush_icor_falvo(nullptr, yn, L, &v) == 0 && same(v, icor::falvo(yn, L)), "eq 4.2" + at);
+      check(nanopush_icor_li(nullptr, yn, L, &v) == 0 && same(v, icor::li(yn, L)), "eq 4.3" + at);
+      check(nanopush_icor_unknown_pressure(nullptr, yn, L, &v) == 0 && same(v, icor::unknown_pressure(yn, L)),
+            "eq 4.13" + at);
+      const double Fmin = icor::minimum_force(mu, W, yn, L);
+      check(nanopush_icor_minimum_force(nullptr, mu, W, yn, L, &v) == 0 && same(v, Fmin), "eq 4.8" + at);
+      for (const double F : {Fmin, 1.7 * Fmin})
+        check(nanopush_icor_known_pressure(nullptr, mu, W, yn, F, L, &v) == 0 &&
+                  same(v, icor::known_pressure(mu, W, yn, F, L)),
+              "eq 4.7" + at);
+      for (const double R : {0.0, 30e-9, 1e-6}) {
+        check(nanopush_icor_force_from_icor(nullptr, mu, W, R, L, &v) == 0 &&
+                  same(v, icor::force_from_icor(mu, W, R, L)),
+              "eq 4.10" + at);
+        if (R + yn > 0)
+          check(nanopush_icor_force_unknown_pressure(nullptr, mu, W, R, yn, L, &v) == 0 &&
+                    same(v, icor::force_unknown_pressure(mu, W, R, yn, L)),
+                "eq 4.11" + at);
+      }
+      for (const double R : {-9e-8, 1e-7, k2 / std::max(yn, 1e-30)})
+        check(nanopush_icor_constrained_force(nullptr, mu, W, R, yn, L, k2, &v) == 0 &&
+                  same(v, icor::constrained_force(mu, W, R, yn, L, k2)),
+              "eq 5.2" + at);
+      check(nanopush_icor_impulsive(nullptr, yn, k2, &v) == 0 && same(v, icor::impulsive(yn, k2)), "eq 5.5" + at);
+      for (const int method : {NANOPUSH_CUBIC_BRENT, NANOPUSH_CUBIC_EIGEN}) {
+        double roots[3], neg = 0, pos = 0, res = -1;
+        int nr = -1, nc = -1, ni = -1;
+        check(nanopush_icor_cubic_roots(nullptr, yn, L, k2, method, roots, &nr, &nc, &ni, &neg, &pos, &res) == 0,
+              "eq 5.4 status" + at);
+        const auto s = icor::solve_constrained_cubic(
+            yn, L, k2, method == NANOPUSH_CUBIC_BRENT ? icor::CubicMethod::Brent : icor::CubicMethod::Eigen);
+        const double nan = std::numeric_limits<double>::quiet_NaN();
+        bool ok = nr == static_cast<int>(s.real_roots.size()) && nc == s.complex_roots && ni == s.at_infinity &&
+                  same(neg, s.negative.value_or(nan)) && same(pos, s.positive.value_or(nan)) &&
+                  same(res, s.max_residual);
+        for (std::size_t i = 0; i < 3; ++i) ok = ok && same(roots[i], i < s.real_roots.size() ? s.real_roots[i] : nan);
+        check(ok, "eq 5.4 roots (method " + std::to_string(method) + ")" + at);
+        // Only roots is required: every other output may be NULL.
+        check(nanopush_icor_cubic_roots(nullptr, yn, L, k2, method, roots, nullptr, nullptr, nullptr, nullptr,
+                                        nullptr, nullptr) == 0,
+              "eq 5.4 with NULL outputs" + at);
+      }
+    }
+}
+
+/// status and message fragment of a failing call; the output must be left untouched.
+void expect_error(nanopush_error err, int status, int want_status, const char* fragment, bool untouched,
+                  const std::string& what) {
+  const std::string m = message(err);
+  check(status == want_status && nanopush_check_error(err) == want_status, what + ": status " + std::to_string(status));
+  check(m.find(fragment) != std::string::npos, what + ": message '" + m + "' should contain '" + fragment + "'");
+  check(untouched, what + ": output left unchanged");
+  nanopush_clear_error(err);
+}
+
+void bad_input() {
+  nanopush_error err = nanopush_new_error();
+  double w[3] = {7, 7, 7}, v = 7, roots[3] = {7, 7, 7};
+  const auto w_untouched = [&] { return w[0] == 7 && w[1] == 7 && w[2] == 7; };
+  expect_error(err, nanopush_friction_wrench(err, 0.0, kBarB, 1.0, 1e-8, 0.0, 1, w), NANOPUSH_BAD_INPUT, "a = 0",
+               w_untouched(), "friction a = 0");
+  expect_error(err, nanopush_friction_wrench(err, -1e-9, kBarB, 1.0, 1e-8, 0.0, 1, w), NANOPUSH_BAD_INPUT, "a = -1e-09",
+               w_untouched(), "friction a < 0");
+  expect_error(err, nanopush_friction_wrench(err, kBarA, kBarB, 1.0, -1e-8, 0.0, 1, w), NANOPUSH_BAD_INPUT, "R = -1e-08",
+               w_untouched(), "friction R < 0");
+  expect_error(err, nanopush_friction_wrench(err, kBarA, kBarB, 1.0, 1e-8, 0.0, 2, w), NANOPUSH_BAD_INPUT, "sense = 2",
+               w_untouched(), "friction sense = 2");
+  expect_error(err, nanopush_friction_wrench(err, kBarA, kBarB, 1.0, 1e-8, 0.0, 1, nullptr), NANOPUSH_NULL_HANDLE,
+               "wrench = NULL", true, "friction wrench = NULL");
+  expect_error(err, nanopush_friction_from_velocity(err, kBarA, 0.0, 1.0, 1.0, 0.0, 1.0, w), NANOPUSH_BAD_INPUT,
+               "b = 0", w_untouched(), "friction_from_velocity b = 0");
+  expect_error(err, nanopush_icor_falvo(err, -1e-9, 590e-9, &v), NANOPUSH_BAD_INPUT, "yn = -1e-09", v == 7,
+               "falvo yn < 0");
+  expect_error(err, nanopush_icor_unknown_pressure(err, 1e-9, 0.0, &v), NANOPUSH_BAD_INPUT, "L = 0", v == 7,
+               "unknown_pressure L = 0");
+  expect_error(err, nanopush_icor_li(err, 1e-9, -5.0, &v), NANOPUSH_BAD_INPUT, "L = -5", v == 7, "li L < 0");
+  expect_error(err, nanopush_icor_known_pressure(err, 0.1, 1e-6, 0.0, 1e-9, 590e-9, &v), NANOPUSH_BAD_INPUT,
+               "minimum force", v == 7, "known_pressure F below the minimum");
+  expect_error(err, nanopush_icor_impulsive(err, 1e-9, 0.0, &v), NANOPUSH_BAD_INPUT, "k2 = 0", v == 7,
+               "impulsive k2 = 0");
+  expect_error(err, nanopush_icor_falvo(err, 1e-9, 590e-9, nullptr), NANOPUSH_NULL_HANDLE, "result = NULL", true,
+               "falvo result = NULL");
+  expect_error(err, nanopush_icor_cubic_roots(err, -1e-9, 590e-9, 2.9e-14, 1, roots, nullptr, nullptr, nullptr,
+                                              nullptr, nullptr, nullptr),
+               NANOPUSH_BAD_INPUT, "yn = -1e-09", roots[0] == 7, "cubic yn < 0");
+  expect_error(err, nanopush_icor_cubic_roots(err, 1e-9, 590e-9, 2.9e-14, 3, roots, nullptr, nullptr, nullptr,
+                                              nullptr, nullptr, nullptr),
+               NANOPUSH_BAD_INPUT, "method = 3", roots[0] == 7, "cubic method = 3");
+  double rod[6];
+  nanopush_icor_nanorod(nullptr, rod);
+  rod[0] = 0.0;
+  double props[5] = {7, 7, 7, 7, 7};
+  expect_error(err, nanopush_icor_rod_properties(err, rod, props), NANOPUSH_BAD_INPUT, "rod.length = 0",
+               props[0] == 7, "rod_properties L = 0");
+  nanopush_delete_error(&err);
+}
+
+/// The library's friction wrench for each "R,alpha" line, in `nanopush friction`'s CSV format.
+int write_reference(const char* points, int sense, const char* out_path) {
+  std::ifstream in(points);
+  if (!in) {
+    std::fprintf(stderr, "cannot read %s\n", points);
+    return 2;
+  }
+  std::ostringstream o;
+  o << "R,alpha,fx,fy,mf\n";
+  std::string line;
+  int n = 0;
+  while (std::getline(in, line)) {
+    if (line.empty() || line == "R,alpha") continue;
+    const auto comma = line.find(',');
+    const double R = std::stod(line.substr(0, comma)), alpha = std::stod(line.substr(comma + 1));
+    const auto w = nanopush::rectangle_friction_wrench_checked(kBarA, kBarB, 1.0, R, alpha, sense);
+    using nanopush::csv_number;
+    o << csv_number(R) << ',' << csv_number(alpha) << ',' << csv_number(w.fx) << ',' << csv_number(w.fy) << ','
+      << csv_number(w.mf) << '\n';
+    ++n;
+  }
+  nanopush::write_file_atomic(out_path, o.str());
+  std::printf("library friction wrench (sense %d) at %d points -> %s\n", sense, n, out_path);
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  friction_matches_library();
+  icor_matches_library();
+  bad_input();
+  std::printf("%d checks, %d failures\n", checks, failures);
+  if (failures) return 1;
+  if (argc == 4) return write_reference(argv[1], std::atoi(argv[2]), argv[3]);
+  return 0;
+}
