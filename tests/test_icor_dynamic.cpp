@@ -211,6 +211,9 @@ TEST_CASE("Dynamic iCOR at the thesis' t = 1e-10 s lies between the quasi-static
   CHECK(icor::unknown_pressure(ycross, kL) == Approx(icor::impulsive(ycross, kK2)).epsilon(1e-14));
   for (double yn : {30e-9, 90e-9, 150e-9, 200e-9, 260e-9, 295e-9}) {
     const double qs = icor::rectangle_quasi_static(a, kB, yn).R, imp = icor::impulsive(yn, kK2);
+    // Away from the crossing: within a few nm of b/sqrt(3) the rotation's second-order effect
+    // (0.2 % at F = 5 mu W) exceeds the interval itself (docs/icor.md).
+    REQUIRE(std::fabs(imp - qs) >= 0.05 * qs);
     double prev = qs;
     for (double ratio : {1.1, 2.0, 5.0}) {
       const auto r = run(yn, ratio * muW, {1e-10});
