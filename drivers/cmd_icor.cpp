@@ -414,7 +414,7 @@ RegisterCommand reg{{"icor",
                                      "contact strip half-width a [m]; 0 = Hertz line contact under W/L (2.78 nm)")
                            ->capture_default_str();
                        d->add_option("--integrator", dopt->integrator,
-                                     "automatic | bulirsch-stoer | cvode (automatic: CVODE below 1.5 F_min, else BS)")
+                                     "automatic | bulirsch-stoer | cvode (automatic: CVODE below 1.09 F_min, else BS)")
                            ->capture_default_str();
                        d->add_option("--rtol", dopt->rtol, "relative tolerance [-]")->capture_default_str();
                        d->add_option("--out", dopt->out, "CSV file (default: standard output)");

@@ -135,7 +135,7 @@ DynamicIcorRun dynamic_icor(const DynamicIcorSetup& s) {
     r = integrate(s.integrator);
   } else {
 #ifdef NANOPUSH_HAVE_SUNDIALS
-    const bool near_min = s.force < 1.5 * run.minimum_force;
+    const bool near_min = s.force < 1.09 * run.minimum_force;
 #else
     const bool near_min = false;
 #endif

@@ -65,7 +65,7 @@ struct DynamicIcorSetup {
   /// direction relaxes to its self-similar value at a rate ~ 1/((F/F_min - 1) t): stiff from
   /// t = 0, where the explicit engine's first step after rest fails; far from it the thin
   /// strip (a << b) makes the wrench vary on the scale a as the iCOR drifts across the rod,
-  /// where BDF's error test can fail. `automatic` uses CVODE for F < 1.5 F_min (rectangle)
+  /// where BDF's error test can fail. `automatic` uses CVODE for F < 1.09 F_min (rectangle)
   /// and Bulirsch-Stoer otherwise, and falls back to the other on a SolverError.
   DynamicIntegrator integrator = DynamicIntegrator::automatic;
 };
