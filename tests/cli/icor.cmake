@@ -51,3 +51,36 @@ add_test(NAME cli.icor.reproduce
          COMMAND $<TARGET_FILE:nanopush> reproduce --quick --out ${CMAKE_CURRENT_BINARY_DIR}/icor_reproduce
                  --only table5_1 --only icor_error_analysis --only fig4_2 --only fig4_3 --only fig4_4
                  --only fig4_5 --only fig5_2)
+
+# nanopush icor dynamic: a push below the minimum force leaves the rod stuck; above it the
+# iCOR is read off the velocities (issue 5 item 3).
+add_test(NAME cli.icor.dynamic_stuck
+         COMMAND $<TARGET_FILE:nanopush> icor dynamic --yn 1e-7 --force-ratio 0.5)
+set_tests_properties(cli.icor.dynamic_stuck PROPERTIES PASS_REGULAR_EXPRESSION ",1e-10,stuck,,,,0,")
+add_test(NAME cli.icor.dynamic_moves
+         COMMAND $<TARGET_FILE:nanopush> icor dynamic --yn 1e-7 --force-ratio 2)
+set_tests_properties(cli.icor.dynamic_moves PROPERTIES
+  PASS_REGULAR_EXPRESSION ",1e-10,rotation,2\\.3634[0-9e.-]*,2\\.3632[0-9e.-]*,")
+add_test(NAME cli.icor.dynamic_bad_yn_fails
+         COMMAND $<TARGET_FILE:nanopush> icor dynamic --yn 1e-6)
+set_tests_properties(cli.icor.dynamic_bad_yn_fails PROPERTIES WILL_FAIL TRUE)
+add_test(NAME cli.icor.dynamic_bad_yn_message
+         COMMAND $<TARGET_FILE:nanopush> icor dynamic --yn 1e-6)
+set_tests_properties(cli.icor.dynamic_bad_yn_message PROPERTIES
+  PASS_REGULAR_EXPRESSION "--yn = 1e-06: must be in \\[0, 2\\.95e-07\\]")
+add_test(NAME cli.icor.dynamic_bad_integrator_fails
+         COMMAND $<TARGET_FILE:nanopush> icor dynamic --yn 1e-7 --integrator euler)
+set_tests_properties(cli.icor.dynamic_bad_integrator_fails PROPERTIES WILL_FAIL TRUE)
+
+# nanopush icor rectangle: a thin strip is eq 4.13 (issue 5 item 4).
+add_test(NAME cli.icor.rectangle_thin
+         COMMAND $<TARGET_FILE:nanopush> icor rectangle --n 3 --aspect 1e-4)
+set_tests_properties(cli.icor.rectangle_thin PROPERTIES
+  PASS_REGULAR_EXPRESSION "0\\.0001,[0-9e.-]+,[0-9e.-]+,1\\.47[0-9e.-]+,1\\.8232003[0-9e.-]*,1\\.5707963")
+add_test(NAME cli.icor.rectangle_bad_aspect_fails
+         COMMAND $<TARGET_FILE:nanopush> icor rectangle --aspect 2)
+set_tests_properties(cli.icor.rectangle_bad_aspect_fails PROPERTIES WILL_FAIL TRUE)
+add_test(NAME cli.icor.rectangle_bad_aspect_message
+         COMMAND $<TARGET_FILE:nanopush> icor rectangle --aspect 2)
+set_tests_properties(cli.icor.rectangle_bad_aspect_message PROPERTIES
+  PASS_REGULAR_EXPRESSION "--aspect = 2: must be in \\[1e-06, 1\\]")
