@@ -120,7 +120,8 @@ TEST_CASE("Finite-rectangle quasi-static iCOR: bad input is rejected", "[icor][r
   CHECK_THROWS_AS(icor::rectangle_quasi_static(0.0, kB, 1e-8), InputError);
   CHECK_THROWS_AS(icor::rectangle_quasi_static(1e-9, -kB, 1e-8), InputError);
   CHECK_THROWS_AS(icor::rectangle_quasi_static(1e-9, kB, -1e-8), InputError);
-  CHECK_THROWS_AS(icor::rectangle_quasi_static(1e-7 * kB, kB, 1e-8), InputError);  // a/b < 1e-6
+  // Aspect ratio below the friction closed form's limit (kFrictionMinAspect = 1e-12).
+  CHECK_THROWS_AS(icor::rectangle_quasi_static(1e-13 * kB, kB, 1e-8), InputError);
 }
 
 // ---- Item 3: the dynamic iCOR ----------------------------------------------------------

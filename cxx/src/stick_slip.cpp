@@ -191,9 +191,13 @@ StickSlipResult integrate_coulomb(const RoughBarModel& model, const BsOptions<do
   // absolute tolerance, or (decelerating) the distance and angle still to travel,
   // v^2/(2|a|) and omega^2/(2|alpha|), within the position and angle tolerances.
   auto terminal = [&](const double* yy) {
-    if (std::fabs(yy[kVx]) <= vtol[0] && std::fabs(yy[kVy]) <= vtol[1] && std::fabs(yy[kOmega]) <= vtol[2]) return true;
     double d[kRoughStateSize];
     coulomb_rhs(model, yy, mode, d);
+    // Only a slide that is running down can end: the kinetic energy must be falling. (A
+    // slide that has just started from rest has |V| below the tolerances too, but it speeds up.)
+    const double dke = model.mass * (yy[kVx] * d[kVx] + yy[kVy] * d[kVy]) + model.inertia * yy[kOmega] * d[kOmega];
+    if (!(dke < 0.0)) return false;
+    if (std::fabs(yy[kVx]) <= vtol[0] && std::fabs(yy[kVy]) <= vtol[1] && std::fabs(yy[kOmega]) <= vtol[2]) return true;
     const double v2 = yy[kVx] * yy[kVx] + yy[kVy] * yy[kVy];
     const double vdotA = yy[kVx] * d[kVx] + yy[kVy] * d[kVy];
     const double acc = std::hypot(d[kVx], d[kVy]);
@@ -203,6 +207,18 @@ StickSlipResult integrate_coulomb(const RoughBarModel& model, const BsOptions<do
     return lin_done && rot_done;
   };
   constexpr int kMaxEvents = 10000;
+  // A slide that starts from rest speeds up (the power margin is positive). If it is found
+  // at rest again before a single step of it could be committed, the start direction is
+  // not resolvable at this tolerance: the push lies within rounding of the limit surface
+  // (e.g. just above the minimum force), where the direction of a slide from rest is
+  // ill-conditioned. Say so at once instead of cycling through rest events.
+  long steps_in_slide = 1;
+  auto check_progress = [&] {
+    if (steps_in_slide == 0)
+      throw SolverError("coulomb law: the slide that started from rest at t = " + fmt(t) +
+                        " s stopped again within its first step; the push is too close to the limit surface for "
+                        "the start direction to be resolved (near the minimum force; the CVODE path copes)");
+  };
   int n_events = 0;
   // Speed below which a sign change of g is taken as "came to rest" (not a rotation of V by
   // more than 90 degrees within one step, which the error control makes implausible anyway).
@@ -232,6 +248,7 @@ StickSlipResult integrate_coulomb(const RoughBarModel& model, const BsOptions<do
     const auto hook_and_track = [&](double, const double*, double, const double* yn) {
       const double g = yn[kVx] * mode[0] + yn[kVy] * mode[1] + yn[kOmega] * L * mode[2];
       if (g < 0.0) return static_cast<int>(kHookStopBefore);
+      ++steps_in_slide;
       if (terminal(yn)) {
         snapped = true;
         return static_cast<int>(kHookStopAfter);
@@ -263,7 +280,9 @@ StickSlipResult integrate_coulomb(const RoughBarModel& model, const BsOptions<do
       // (the push's work over that motion is below F times the position tolerance).
       y[kWorkFric] -= model.kinetic_energy(y.data());
       if (++n_events > kMaxEvents) throw SolverError("coulomb law: more than " + std::to_string(kMaxEvents) + " rest events");
+      check_progress();
       const bool s = at_rest();
+      steps_in_slide = 0;
       out.events.push_back({t, s});
       continue;
     }
@@ -319,7 +338,9 @@ StickSlipResult integrate_coulomb(const RoughBarModel& model, const BsOptions<do
       continue;
     }
     if (++n_events > kMaxEvents) throw SolverError("coulomb law: more than " + std::to_string(kMaxEvents) + " rest events");
+    check_progress();
     const bool s = at_rest();
+    steps_in_slide = 0;
     out.events.push_back({t, s});
   }
   out.stuck_at_end = stuck;
