@@ -47,6 +47,12 @@ program consumer_fortran
   print '(a)', "consumer_fortran: identical to nanopush run"
   if (command_argument_count() >= 4) call check_friction(argument(4))
 
+  ! Main-program allocatables live until the end: free them so LeakSanitizer checks the library.
+  if (allocated(traj)) deallocate(traj)
+  if (allocated(scene_path)) deallocate(scene_path)
+  if (allocated(engine)) deallocate(engine)
+  if (allocated(ref_path)) deallocate(ref_path)
+
 contains
 
   !> nanopush_friction_wrench at every row of `nanopush friction` output (sense +1).
