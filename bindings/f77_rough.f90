@@ -42,12 +42,12 @@ module nanopush_f77_rough
 
 contains
 
-  !> One evaluation of the F77 rough-bar RHS (8 states, 9 parameters); returns its IERR.
+  !> One evaluation of the F77 rough-bar RHS (8 states, 12 parameters); returns its IERR.
   integer(c_int) function np_f77_rough_bar_rhs(t, y, dydt, params) bind(C, name="np_f77_rough_bar_rhs")
     real(c_double), value, intent(in) :: t
     real(c_double), intent(in) :: y(8)
     real(c_double), intent(out) :: dydt(8)
-    real(c_double), intent(in) :: params(9)
+    real(c_double), intent(in) :: params(12)
     integer :: ipar(1), ierr
     ipar(1) = 0
     ierr = 0
@@ -64,7 +64,7 @@ contains
     real(c_double), intent(inout) :: y(*)
     real(c_double), intent(in) :: tout(*), atol(*)
     real(c_double), intent(inout) :: yout(*)
-    real(c_double), intent(in) :: params(9)
+    real(c_double), intent(in) :: params(12)
     integer(c_int), intent(out) :: nstat(3)
     integer :: ipar(1), ist(3), ierr
     nstat = 0_c_int

@@ -7,14 +7,16 @@
 extern "C" {
 #endif
 
-/* params[9]: m [kg], I [kg m^2], F [N], beta [rad], pbx [m], pby [m], a [m] (contact
- * half-width), b [m] (half-length), muN [N].
+/* params[12]: m [kg], I [kg m^2], F [N], beta [rad], pbx [m], pby [m], a [m] (contact
+ * half-width), b [m] (half-length), muN [N], and the world velocity direction
+ * (vx, vy, omega) whose friction acts when the body is exactly at rest (0, 0, 0: none,
+ * the thesis law).
  * y[8], dydt[8]: x [m], y [m], theta [rad], vx [m/s], vy [m/s], omega [rad/s],
  * W_push [J], W_fric [J] (work accumulators). Returns 0, or the friction routine's status. */
 int np_f77_rough_bar_rhs(double t, const double* y, double* dydt, const double* params);
 
 /* Integrate the rough bar with the F77 Bulirsch-Stoer driver; n must be 8; other arguments
- * as np_f77_bsint_smooth_bar (f77_bsint.h) with params[9] as above. */
+ * as np_f77_bsint_smooth_bar (f77_bsint.h) with params[12] as above. */
 int np_f77_bsint_rough_bar(int n, double t0, double* y, int nout, const double* tout, double* yout, double rtol,
                            const double* atol, double h0, double hmax, int kmax, int iextr, int maxstp,
                            const double* params, int* nstat);

@@ -9,6 +9,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "nanopush/deck.hpp"
 #include "nanopush/error.hpp"
 #include "nanopush/io.hpp"
 #include "nanopush/simulate.hpp"
@@ -16,39 +17,6 @@
 
 namespace nanopush::cli {
 namespace {
-
-std::string e(double v) {
-  char b[40];
-  std::snprintf(b, sizeof b, "%.17E", v);
-  return b;
-}
-
-/// The deck: each data line preceded by a comment line (see fortran/prog_nanobar.f).
-std::string deck_text(const Scene& sc, double rtol, const std::vector<double>& atol) {
-  std::ostringstream d;
-  const double xn = sc.push.pbx, yn = -sc.push.pby;  // thesis mapping, inverted
-  d << "* nanopush deck for scene " << sc.name << " (" << sc.source.string() << ")\n"
-    << (sc.description.empty() ? sc.name : sc.description).substr(0, 72) << "\n"
-    << "* XN YN [m] (thesis push coordinates: body point (XN, -YN))\n"
-    << e(xn) << " " << e(yn) << "\n"
-    << "* CMX CMY [m] THETA0 [rad]\n"
-    << e(sc.initial[kX]) << " " << e(sc.initial[kY]) << " " << e(sc.initial[kTheta]) << "\n"
-    << "* VX0 VY0 [m/s] OMEGA0 [rad/s]\n"
-    << e(sc.initial[kVx]) << " " << e(sc.initial[kVy]) << " " << e(sc.initial[kOmega]) << "\n"
-    << "* F [N] BETA [rad] FVDW [N] MU G [m/s^2]\n"
-    << e(sc.push.force) << " " << e(sc.push.beta) << " " << e(sc.rough() ? sc.surface.f_vdw : 0.0) << " "
-    << e(sc.rough() ? sc.surface.mu : 0.0) << " " << e(sc.surface.g) << "\n"
-    << "* M [kg] I [kg m^2]\n"
-    << e(sc.mass) << " " << e(sc.inertia) << "\n"
-    << "* SA (width) SB (length) SC (height) [m]\n"
-    << e(sc.width) << " " << e(sc.length) << " " << e(sc.height) << "\n"
-    << "* TEND [s] NOUT RTOL\n"
-    << e(sc.solver.t_end) << " " << sc.solver.samples << " " << e(rtol) << "\n"
-    << "* ATOL(1..8)\n";
-  for (std::size_t i = 0; i < 8; ++i) d << e(atol[i]) << (i + 1 < 8 ? " " : "\n");
-  d << "* MAXSTP\n" << std::min<long>(sc.solver.max_steps, 2000000000L) << "\n";
-  return d.str();
-}
 
 void check_deck_scene(const Scene& sc) {
   if (sc.rough() && sc.surface.normal_load > 0)
@@ -67,7 +35,7 @@ int deck_cmd(const DeckOptions& o) {
   const Scene sc = load_scene(resolve_scene(o.scene));
   check_deck_scene(sc);
   const double rtol = o.rtol > 0 ? o.rtol : sc.solver.rtol;
-  const std::string text = deck_text(sc, rtol, sc.atol_vector(rtol, sc.solver.atol, 8));
+  const std::string text = legacy_deck(sc, rtol, sc.atol_vector(rtol, sc.solver.atol, 8));
   if (o.out.empty() || o.out == "-")
     std::cout << text;
   else
@@ -98,7 +66,7 @@ int legacy_cmd(const LegacyOptions& o) {
   const auto atol = sc.atol_vector(rtol, sc.solver.atol, 8);
   const fs::path tmp = fs::temp_directory_path() / ("nanopush-legacy-" + std::to_string(::getpid()));
   fs::create_directories(tmp);
-  write_file_atomic(tmp / "case.deck", deck_text(sc, rtol, atol));
+  write_file_atomic(tmp / "case.deck", legacy_deck(sc, rtol, atol));
   const std::string cmd = "'" + prog.string() + "' < '" + (tmp / "case.deck").string() + "' > '" + (tmp / "case.out").string() + "'";
   const int rc = std::system(cmd.c_str());
   std::ifstream in(tmp / "case.out");
@@ -116,7 +84,7 @@ int legacy_cmd(const LegacyOptions& o) {
     std::vector<double> r;
     std::string tok;
     while (ls >> tok) r.push_back(std::strtod(tok.c_str(), nullptr));
-    if (r.size() == 10) rows.push_back(r);
+    if (r.size() == 12) rows.push_back(r);
   }
   fs::remove_all(tmp);
   if (rc != 0) std::cout << "  (the legacy program exited with status " << rc << ")\n";

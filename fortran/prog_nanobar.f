@@ -20,9 +20,12 @@ C       SA SB SC                   width, length, height [m]
 C       TEND NOUT RTOL             end time [s], samples, tolerance
 C       ATOL(1..8)                 absolute tolerances
 C       MAXSTP                     step budget
+C       VXR VYR OMR                friction direction at rest (0 0 0:
+C                                  none, the thesis law)
 C     Output: the caption header of the thesis' figures, then one
-C     line per sample: T X Y THETA VX VY OMEGA FX FY MF (SI, E25.17,
-C     every digit of the double, so runs can be compared exactly).
+C     line per sample: T X Y THETA VX VY OMEGA FX FY MF WPUSH WFRIC
+C     (work of the push and of friction) (SI, E25.17 in
+C     double, E43.35 in the -freal-8-real-16 build: every digit).
 C     A failure prints a message and stops with a non-zero code.
 C=======================================================================
       PROGRAM NANOBR
@@ -32,9 +35,11 @@ C=======================================================================
       DOUBLE PRECISION XN, YN, CMX, CMY, TH0, VX0, VY0, OM0
       DOUBLE PRECISION F, BETA, FVDW, FMU, G, RM, RI, SA, SB, SC
       DOUBLE PRECISION TEND, RTOL, ATOL(NMAX), Y(NMAX)
-      DOUBLE PRECISION RPAR(9), TOUT(NOUTMX), YOUT(NMAX, NOUTMX)
+      DOUBLE PRECISION RPAR(12), TOUT(NOUTMX), YOUT(NMAX, NOUTMX)
       DOUBLE PRECISION C, S, VBX, VBY, FBX, FBY, FM, FWX, FWY, FN
-      INTEGER NOUT, MAXSTP, IPAR(1), NSTAT(3), IERR, I, K
+      INTEGER NOUT, MAXSTP, IPAR(1), NSTAT(3), IERR, I, K, ND
+      DOUBLE PRECISION EPS
+      CHARACTER*24 FMTROW, FMTHDR
       EXTERNAL RGBAR
 C
       READ (5, '(A)', ERR=900, END=900) LINE
@@ -57,11 +62,26 @@ C
       READ (5, *, ERR=900, END=900) (ATOL(I), I = 1, NMAX)
       READ (5, '(A)', ERR=900, END=900) LINE
       READ (5, *, ERR=900, END=900) MAXSTP
+      READ (5, '(A)', ERR=900, END=900) LINE
+      READ (5, *, ERR=900, END=900) RPAR(10), RPAR(11), RPAR(12)
       IF (NOUT .LT. 2 .OR. NOUT .GT. NOUTMX) THEN
          WRITE (6, '(A,I10,A,I7,A)') ' NANOBAR: NOUT =', NOUT,
      &      ' must be in [2,', NOUTMX, ']'
          STOP 1
       END IF
+C
+C     Digits enough to read every bit back: 17 in double precision, 35
+C     when built with -freal-8-real-16 (nanobar_quad, the extended-
+C     precision reference). EPS is found the classic way.
+      EPS = 1D0
+    5 CONTINUE
+      IF (1D0 + 0.5D0*EPS .GT. 1D0) THEN
+         EPS = 0.5D0*EPS
+         GOTO 5
+      END IF
+      ND = INT(-LOG10(EPS)) + 2
+      WRITE (FMTROW, '(A,I2,A,I2,A)') '(12E', ND + 8, '.', ND, ')'
+      WRITE (FMTHDR, '(A,I2,A)') '(12A', ND + 8, ')'
 C
 C     Caption header, as printed under the thesis' figures.
       WRITE (6, '(A)') TITLE
@@ -115,9 +135,9 @@ C     Thesis mapping: body push point (XN, -YN); N = M G + FVDW.
       WRITE (6, 110) NSTAT(1), NSTAT(2), NSTAT(3)
   110 FORMAT (' RHS evaluations', I10, ', accepted steps', I8,
      &        ', rejected steps', I8)
-      WRITE (6, '(10A25)') 'T [s]', 'X [m]', 'Y [m]', 'THETA [rad]',
+      WRITE (6, FMTHDR) 'T [s]', 'X [m]', 'Y [m]', 'THETA [rad]',
      &   'VX [m/s]', 'VY [m/s]', 'OMEGA [rad/s]', 'FX [N]', 'FY [N]',
-     &   'MF [N m]'
+     &   'MF [N m]', 'WPUSH [J]', 'WFRIC [J]'
       DO 30 K = 1, NOUT
          IF (IERR .NE. 0 .AND. TOUT(K) .GT. 0D0 .AND.
      &       YOUT(1, K) .EQ. 0D0 .AND. YOUT(3, K) .EQ. 0D0) GOTO 40
@@ -126,7 +146,8 @@ C     Thesis mapping: body push point (XN, -YN); N = M G + FVDW.
          FWX = 0D0
          FWY = 0D0
          FM = 0D0
-         IF (RPAR(9) .NE. 0D0) THEN
+         IF (RPAR(9) .NE. 0D0 .AND. (YOUT(4, K) .NE. 0D0 .OR.
+     &       YOUT(5, K) .NE. 0D0 .OR. YOUT(6, K) .NE. 0D0)) THEN
             VBX = C*YOUT(4, K) + S*YOUT(5, K)
             VBY = -S*YOUT(4, K) + C*YOUT(5, K)
             CALL RECTFV(RPAR(7), RPAR(8), RPAR(9), VBX, VBY,
@@ -134,8 +155,8 @@ C     Thesis mapping: body push point (XN, -YN); N = M G + FVDW.
             FWX = C*FBX - S*FBY
             FWY = S*FBX + C*FBY
          END IF
-         WRITE (6, '(10E25.17)') TOUT(K), (YOUT(I, K), I = 1, 6),
-     &      FWX, FWY, FM
+         WRITE (6, FMTROW) TOUT(K), (YOUT(I, K), I = 1, 6),
+     &      FWX, FWY, FM, YOUT(7, K), YOUT(8, K)
    30 CONTINUE
    40 CONTINUE
       IF (IERR .NE. 0) THEN

@@ -17,6 +17,10 @@ C     RPAR(6) = PBY    push point, body y' [m]
 C     RPAR(7) = A      contact half-width (body x') [m]
 C     RPAR(8) = B      contact half-length (body y') [m]
 C     RPAR(9) = FMUN   mu times the normal load [N]
+C     RPAR(10..12)     velocity direction (VX, VY, OMEGA) whose friction
+C                      acts when the body is exactly at rest; all zero
+C                      (the thesis law) gives no friction at rest
+C                      (eq 3.40 has no direction there).
 C     IERR: 0, or the status of RECTFV for bad friction input.
 C     The arithmetic follows cxx/include/nanopush/rough_bar.hpp
 C     operation for operation.
@@ -25,7 +29,7 @@ C=======================================================================
       INTEGER N, IPAR(*), IERR
       DOUBLE PRECISION T, Y(N), DYDT(N), RPAR(*)
       DOUBLE PRECISION C, S, PWX, PWY, FX, FY, TAU
-      DOUBLE PRECISION VBX, VBY, FBX, FBY, FM, FWX, FWY
+      DOUBLE PRECISION VBX, VBY, FBX, FBY, FM, FWX, FWY, OM
       C = COS(Y(3))
       S = SIN(Y(3))
       PWX = RPAR(5)*C - RPAR(6)*S
@@ -39,9 +43,17 @@ C=======================================================================
          FWY = 0D0
          FM = 0D0
       ELSE
-         VBX = C*Y(4) + S*Y(5)
-         VBY = -S*Y(4) + C*Y(5)
-         CALL RECTFV(RPAR(7), RPAR(8), RPAR(9), VBX, VBY, Y(6),
+         IF (Y(4) .EQ. 0D0 .AND. Y(5) .EQ. 0D0 .AND. Y(6) .EQ. 0D0)
+     &      THEN
+            VBX = C*RPAR(10) + S*RPAR(11)
+            VBY = -S*RPAR(10) + C*RPAR(11)
+            OM = RPAR(12)
+         ELSE
+            VBX = C*Y(4) + S*Y(5)
+            VBY = -S*Y(4) + C*Y(5)
+            OM = Y(6)
+         END IF
+         CALL RECTFV(RPAR(7), RPAR(8), RPAR(9), VBX, VBY, OM,
      &               FBX, FBY, FM, IERR)
          IF (IERR .NE. 0) RETURN
          FWX = C*FBX - S*FBY

@@ -265,3 +265,23 @@ TEST_CASE("bench: sweep rows and the CSV carry the documented columns", "[bench]
   s.repeats = 0;
   CHECK_THROWS_WITH(run_sweep(b.problem, b.engines, b.reference, s), Catch::Contains("repeats"));
 }
+
+TEST_CASE("bench: rough scene against the extended-precision F77 program (-freal-8-real-16)", "[bench][rough]") {
+  const Scene sc = load_scene(std::string(NANOPUSH_SOURCE_DIR) + "/drivers/scenes/thesis/fig3_17.toml");
+  bench::EngineConfig cfg;
+  cfg.only = {"cxx-faithful", "f77-callback"};
+  const bench::Bench b = bench::make_bench(sc, cfg);
+  REQUIRE(b.problem.n == 8);
+  CHECK(b.reference.kind == "extended");
+  // The two REAL(16) runs (rtol 1e-20 and 1e-18) agree far below any double-precision error.
+  CHECK(b.reference.disagreement <= 1e-15);
+  REQUIRE(b.engines.size() == 2);
+  const bench::Solve c = b.engines[0].solve(1e-12), f = b.engines[1].solve(1e-12);
+  REQUIRE(c.status == 0);
+  REQUIRE(f.status == 0);
+  const double ec = bench::scaled_max_error(b.problem, c.y, b.reference.y);
+  INFO("C++ faithful at rtol 1e-12: error " << ec << " against the quad reference");
+  CHECK(ec <= 1e-9);
+  CHECK(c.nfcn == f.nfcn);
+  CHECK(bench::scaled_max_error(b.problem, c.y, f.y) == 0.0);
+}

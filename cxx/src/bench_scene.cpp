@@ -5,18 +5,33 @@
 #include "nanopush/elliptic.hpp"
 #include "nanopush/error.hpp"
 #include "nanopush/rigid_body.hpp"
+#include "nanopush/deck.hpp"
+#include "nanopush/io.hpp"
+#include "nanopush/rough_bar.hpp"
+#include "nanopush/stick_slip.hpp"
+
+#include <quadmath.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 
 namespace nanopush::bench {
 
 Problem problem_from_scene(const Scene& sc) {
   Problem p;
   p.name = sc.name;
-  p.n = kStateSize;
+  // Rough scenes carry the two work accumulators (rough_bar.hpp) as states 7 and 8.
+  p.n = sc.rough() ? kRoughStateSize : kStateSize;
   p.t0 = 0;
   p.y0.assign(sc.initial.begin(), sc.initial.end());
+  p.y0.resize(static_cast<std::size_t>(p.n), 0.0);
   p.tout = sc.output_times();
   const auto s = sc.state_scales();
-  p.scale.assign(s.begin(), s.begin() + kStateSize);  // state_scales() also covers the rough model's work states
+  p.scale.assign(s.begin(), s.begin() + p.n);
   return p;
 }
 
@@ -88,13 +103,101 @@ Solve solve_f77_native(const Problem& p, const std::array<double, 6>& params, do
 
 }  // namespace
 
+/// The rough-surface model for the benchmark: the thesis-law RHS (rough_bar.hpp) in double
+/// for every scalar (the friction closed form is double; the extended-precision reference
+/// comes from the F77 program built with -freal-8-real-16 instead).
+struct RoughBenchRhs {
+  RoughBarThesisRhs rhs;
+  template <class S>
+  int operator()(S t, const S* y, S* d) const {
+    double yd[kRoughStateSize], dd[kRoughStateSize];
+    for (int i = 0; i < kRoughStateSize; ++i) yd[i] = static_cast<double>(y[i]);
+    const int st = rhs(static_cast<double>(t), yd, dd);
+    for (int i = 0; i < kRoughStateSize; ++i) d[i] = static_cast<S>(dd[i]);
+    return st;
+  }
+};
+
+RoughBarModel bench_rough_model(const Scene& sc) {
+  RoughBarModel m;
+  m.mass = sc.mass;
+  m.inertia = sc.inertia;
+  m.geometry = sc.geometry;
+  m.muN = sc.surface.mu * sc.normal_load();
+  m.push = sc.push;
+  // Started from rest, the thesis law has no friction direction at t = 0 and its first step
+  // sees friction jump from 0 to mu N (a discontinuity no tolerance below ~1e-12 resolves).
+  // The benchmark starts it in the direction the body actually takes (Gauss' principle,
+  // stick_slip.hpp), the coulomb law's start; a scene that would stick is not benchmarked here.
+  const bool rest = sc.initial[kVx] == 0.0 && sc.initial[kVy] == 0.0 && sc.initial[kOmega] == 0.0;
+  if (rest && m.muN > 0) {
+    const RestAnalysis ra = analyse_rest(m, sc.initial[kTheta]);
+    if (ra.stuck) throw InputError("scene " + sc.name, "at rest inside the limit surface", "the bench scene must slide");
+    m.rest_direction = ra.accel;
+  }
+  return m;
+}
+
+/// One run of the extended-precision legacy program on the scene's deck at rtol.
+Solve quad_legacy_run(const Scene& sc, const Problem& p, const RoughBarModel& m, double rtol) {
+  namespace fs = std::filesystem;
+  const char* env = std::getenv("NANOPUSH_QUAD_PROGRAM");
+  const fs::path prog = env && *env ? fs::path(env) : fs::path(NANOPUSH_QUAD_PROGRAM);
+  if (!fs::exists(prog)) throw InputError("NANOPUSH_QUAD_PROGRAM", prog.string(), "no such program (target nanobar_quad)");
+  Scene s = sc;
+  s.solver.max_steps = 10000000;
+  const fs::path dir = fs::temp_directory_path() / ("nanopush-quad-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  write_file_atomic(dir / "case.deck", legacy_deck(s, rtol, p.atol(rtol), m.rest_direction));
+  const auto t0 = detail::Clock::now();
+  const std::string cmd = "'" + prog.string() + "' < '" + (dir / "case.deck").string() + "' > '" +
+                          (dir / "case.out").string() + "' 2>/dev/null";
+  const int rc = std::system(cmd.c_str());
+  Solve r;
+  r.seconds = detail::seconds_since(t0);
+  std::ifstream in(dir / "case.out");
+  std::string line;
+  bool data = false;
+  while (std::getline(in, line)) {
+    if (!data) {
+      if (line.find("RHS evaluations") != std::string::npos) {
+        long a = 0, b = 0, c = 0;
+        std::sscanf(line.c_str(), " RHS evaluations %ld, accepted steps %ld, rejected steps %ld", &a, &b, &c);
+        r.nfcn = a;
+        r.naccpt = b;
+        r.nrejct = c;
+      }
+      data = line.find("THETA [rad]") != std::string::npos;
+      continue;
+    }
+    std::istringstream ls(line);
+    std::vector<quad> v;
+    std::string tok;
+    while (ls >> tok) v.push_back(strtoflt128(tok.c_str(), nullptr));
+    if (v.size() != 12) continue;
+    for (int i : {1, 2, 3, 4, 5, 6, 10, 11}) r.y.push_back(v[static_cast<std::size_t>(i)]);
+  }
+  fs::remove_all(dir);
+  if (rc != 0 || r.y.size() != p.nout() * static_cast<std::size_t>(p.n)) {
+    r.status = 1;
+    r.message = "nanobar_quad at rtol " + fmt(rtol) + " failed (exit " + std::to_string(rc) + ", " +
+                std::to_string(r.y.size() / static_cast<std::size_t>(p.n)) + " samples)";
+  }
+  return r;
+}
+
 Solve extended_run(const Scene& sc, const Problem& p, double rtol, bool modern) {
-  if (sc.model != "smooth") throw InputError("surface.kind", sc.model, "the benchmark supports: smooth");
+  if (sc.rough()) {
+    (void)modern;
+    return quad_legacy_run(sc, p, bench_rough_model(sc), rtol);
+  }
+  if (sc.model != "smooth") throw InputError("surface.kind", sc.model, "the benchmark supports: smooth, rough");
   const SmoothBarRhs rhs{sc.mass, sc.inertia, sc.push};
   return solve_cxx_bs<quad, kStateSize>(p, rhs, rtol, modern, nullptr);
 }
 
 std::vector<std::string> engine_names(const Scene& sc) {
+  if (sc.rough()) return generic_engine_names();
   std::vector<std::string> v = generic_engine_names();
   if (sc.model == "smooth") v.insert(v.begin() + 3, "f77-native");
   return v;
@@ -127,9 +230,21 @@ Bench make_bench(const Scene& sc, const EngineConfig& cfg) {
       auto it = std::find_if(b.engines.begin(), b.engines.end(), [](const Engine& x) { return x.name == "f77-callback"; });
       b.engines.insert(it == b.engines.end() ? b.engines.end() : it + 1, std::move(e));
     }
-    // Rough scenes (issue 4) plug in here: else if (sc.model == "rough") { ... } (see the header).
+  } else if (sc.rough()) {
+    if (sc.surface.law != "thesis")
+      throw InputError("surface.law", sc.surface.law, "the benchmark integrates rough scenes under the thesis law (one ODE)");
+    const RoughBarModel m = bench_rough_model(sc);
+    auto rhs = std::make_shared<const RoughBenchRhs>(RoughBenchRhs{RoughBarThesisRhs{m}});
+    const Solve a = quad_legacy_run(sc, p, m, 1e-20);
+    const Solve c = quad_legacy_run(sc, p, m, 1e-18);
+    b.reference = extended_reference(p, a, c,
+                                     "fortran/prog_nanobar.f built with -freal-8-real-16 (nanobar_quad): rtol 1e-20 vs "
+                                     "1e-18, F77 friction and integrator in REAL(16)");
+    EngineConfig dcfg = cfg;
+    dcfg.precisions = {"double"};  // the friction closed form is double: no long/quad engines here
+    b.engines = generic_engines<kRoughStateSize>(p, rhs, samples_from(p, b.reference), dcfg);
   } else {
-    throw InputError("surface.kind", sc.model, "the benchmark supports: smooth");
+    throw InputError("surface.kind", sc.model, "the benchmark supports: smooth, rough");
   }
   return b;
 }

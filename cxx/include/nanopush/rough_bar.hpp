@@ -7,6 +7,7 @@
 // accumulators: W_push = ∫ (F·v + tau omega) dt and W_fric = ∫ (f·v + mf omega) dt [J], so
 // that the energy balance  ΔKE = W_push + W_fric  is checked on every run.
 #pragma once
+#include <array>
 #include <cmath>
 
 #include "nanopush/friction.hpp"
@@ -26,6 +27,9 @@ struct RoughBarModel {
   BarGeometry geometry;  ///< contact half-width a and half-length b
   double muN = 0;        ///< mu (m g + F_vdw) [N]
   Push push;
+  /// World velocity direction (vx, vy, omega) whose friction acts when the body is exactly at
+  /// rest; all zero (the thesis law) gives no friction at rest, where eq 3.40 has no direction.
+  std::array<double, 3> rest_direction{0.0, 0.0, 0.0};
 
   /// Friction from the world velocity (vx, vy) and omega at orientation theta: body-axis
   /// velocity v' = R(-theta) v, friction wrench at the implied iCOR, rotated back
@@ -77,7 +81,10 @@ struct RoughBarThesisRhs {
   int operator()(double, const double* y, double* d) const noexcept {
     const double c = std::cos(y[kTheta]), s = std::sin(y[kTheta]);
     const WorldWrench ap = model.applied_cs(c, s);
-    const WorldWrench fr = model.friction_cs(c, s, y[kVx], y[kVy], y[kOmega]);
+    const bool at_rest = y[kVx] == 0.0 && y[kVy] == 0.0 && y[kOmega] == 0.0;
+    const WorldWrench fr =
+        at_rest ? model.friction_cs(c, s, model.rest_direction[0], model.rest_direction[1], model.rest_direction[2])
+                : model.friction_cs(c, s, y[kVx], y[kVy], y[kOmega]);
     RoughBarModel::rhs_with(model, y, ap, fr, d);
     return 0;
   }
