@@ -9,6 +9,7 @@
 !> with transfer()). There is no global or saved state, so several integrations may run
 !> interleaved (a callback may itself start another integration) or on several threads.
 module nanopush_f77_bsint
+  use nanopush_f77_interfaces, only: bsint, smbar
   use, intrinsic :: iso_c_binding, only: c_int, c_double, c_ptr, c_funptr, c_intptr_t, &
                                          c_f_procpointer
   implicit none
@@ -31,41 +32,6 @@ module nanopush_f77_bsint
     end function c_rhs
   end interface
 
-  interface
-    !> FORTRAN 77 driver (fortran/bsint.f); argument list documented there.
-    subroutine bsint(fcn, n, t0, y, nout, tout, yout, rtol, atol, h0, hmax, kmax, iextr, &
-                     maxstp, rpar, ipar, nstat, ierr)
-      interface
-        subroutine fcn(n, t, y, dydt, rpar, ipar, ierr)
-          integer, intent(in) :: n
-          double precision, intent(in) :: t
-          double precision, intent(in) :: y(n)
-          double precision, intent(out) :: dydt(n)
-          double precision, intent(in) :: rpar(*)
-          integer, intent(inout) :: ipar(*)
-          integer, intent(inout) :: ierr
-        end subroutine fcn
-      end interface
-      integer, intent(in) :: n, nout, kmax, iextr, maxstp
-      double precision, intent(in) :: t0, tout(*), rtol, atol(*), h0, hmax
-      double precision, intent(inout) :: y(*)
-      double precision, intent(inout) :: yout(n, *)
-      double precision, intent(in) :: rpar(*)
-      integer, intent(inout) :: ipar(*)
-      integer, intent(out) :: nstat(3), ierr
-    end subroutine bsint
-
-    !> FORTRAN 77 smooth-nanobar RHS (fortran/smbar.f).
-    subroutine smbar(n, t, y, dydt, rpar, ipar, ierr)
-      integer, intent(in) :: n
-      double precision, intent(in) :: t
-      double precision, intent(in) :: y(n)
-      double precision, intent(out) :: dydt(n)
-      double precision, intent(in) :: rpar(*)
-      integer, intent(inout) :: ipar(*)
-      integer, intent(inout) :: ierr
-    end subroutine smbar
-  end interface
 
 contains
 

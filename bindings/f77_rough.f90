@@ -1,44 +1,12 @@
 !> Bridge to the FORTRAN 77 rough-surface nanobar (fortran/rgbar.f) integrated by the F77
 !> Bulirsch-Stoer driver (fortran/bsint.f). C prototypes, units and shapes: f77_rough.h.
 module nanopush_f77_rough
+  use nanopush_f77_interfaces, only: bsint, rgbar
   use, intrinsic :: iso_c_binding, only: c_int, c_double
   implicit none
   private
   public :: np_f77_rough_bar_rhs, np_f77_bsint_rough_bar
 
-  interface
-    subroutine bsint(fcn, n, t0, y, nout, tout, yout, rtol, atol, h0, hmax, kmax, iextr, &
-                     maxstp, rpar, ipar, nstat, ierr)
-      interface
-        subroutine fcn(n, t, y, dydt, rpar, ipar, ierr)
-          integer, intent(in) :: n
-          double precision, intent(in) :: t
-          double precision, intent(in) :: y(n)
-          double precision, intent(out) :: dydt(n)
-          double precision, intent(in) :: rpar(*)
-          integer, intent(inout) :: ipar(*)
-          integer, intent(inout) :: ierr
-        end subroutine fcn
-      end interface
-      integer, intent(in) :: n, nout, kmax, iextr, maxstp
-      double precision, intent(in) :: t0, tout(*), rtol, atol(*), h0, hmax
-      double precision, intent(inout) :: y(*)
-      double precision, intent(inout) :: yout(n, *)
-      double precision, intent(in) :: rpar(*)
-      integer, intent(inout) :: ipar(*)
-      integer, intent(out) :: nstat(3), ierr
-    end subroutine bsint
-
-    subroutine rgbar(n, t, y, dydt, rpar, ipar, ierr)
-      integer, intent(in) :: n
-      double precision, intent(in) :: t
-      double precision, intent(in) :: y(n)
-      double precision, intent(out) :: dydt(n)
-      double precision, intent(in) :: rpar(*)
-      integer, intent(inout) :: ipar(*)
-      integer, intent(inout) :: ierr
-    end subroutine rgbar
-  end interface
 
 contains
 

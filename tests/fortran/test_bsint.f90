@@ -85,31 +85,9 @@ end module bsint_test_rhs
 
 program test_bsint
   use bsint_test_rhs
+  use nanopush_f77_interfaces, only: bsint
   implicit none
 
-  interface
-    subroutine bsint(fcn, n, t0, y, nout, tout, yout, rtol, atol, h0, hmax, kmax, iextr, &
-                     maxstp, rpar, ipar, nstat, ierr)
-      interface
-        subroutine fcn(n, t, y, dydt, rpar, ipar, ierr)
-          integer, intent(in) :: n
-          double precision, intent(in) :: t
-          double precision, intent(in) :: y(n)
-          double precision, intent(out) :: dydt(n)
-          double precision, intent(in) :: rpar(*)
-          integer, intent(inout) :: ipar(*)
-          integer, intent(inout) :: ierr
-        end subroutine fcn
-      end interface
-      integer, intent(in) :: n, nout, kmax, iextr, maxstp
-      double precision, intent(in) :: t0, tout(*), rtol, atol(*), h0, hmax
-      double precision, intent(inout) :: y(*)
-      double precision, intent(inout) :: yout(n, *)
-      double precision, intent(in) :: rpar(*)
-      integer, intent(inout) :: ipar(*)
-      integer, intent(out) :: nstat(3), ierr
-    end subroutine bsint
-  end interface
 
   integer :: nfail = 0
 

@@ -1,0 +1,58 @@
+!> Explicit interfaces of the FORTRAN 77 routines (the fortran directory) that the bridge
+!> modules and the Fortran tests call: written once here, used everywhere
+!> (`use nanopush_f77_interfaces`). The F77 sources stay period-faithful (no modules); these
+!> interfaces let the compiler check every call made to them from modern Fortran.
+module nanopush_f77_interfaces
+  implicit none
+  public
+
+  interface
+    !> FORTRAN 77 driver (fortran/bsint.f); argument list documented there.
+    subroutine bsint(fcn, n, t0, y, nout, tout, yout, rtol, atol, h0, hmax, kmax, iextr, &
+                     maxstp, rpar, ipar, nstat, ierr)
+      interface
+        subroutine fcn(n, t, y, dydt, rpar, ipar, ierr)
+          integer, intent(in) :: n
+          double precision, intent(in) :: t
+          double precision, intent(in) :: y(n)
+          double precision, intent(out) :: dydt(n)
+          double precision, intent(in) :: rpar(*)
+          integer, intent(inout) :: ipar(*)
+          integer, intent(inout) :: ierr
+        end subroutine fcn
+      end interface
+      integer, intent(in) :: n, nout, kmax, iextr, maxstp
+      double precision, intent(in) :: t0, tout(*), rtol, atol(*), h0, hmax
+      double precision, intent(inout) :: y(*)
+      double precision, intent(inout) :: yout(n, *)
+      double precision, intent(in) :: rpar(*)
+      integer, intent(inout) :: ipar(*)
+      integer, intent(out) :: nstat(3), ierr
+    end subroutine bsint
+
+    !> FORTRAN 77 smooth-nanobar RHS (fortran/smbar.f).
+    subroutine smbar(n, t, y, dydt, rpar, ipar, ierr)
+      integer, intent(in) :: n
+      double precision, intent(in) :: t
+      double precision, intent(in) :: y(n)
+      double precision, intent(out) :: dydt(n)
+      double precision, intent(in) :: rpar(*)
+      integer, intent(inout) :: ipar(*)
+      integer, intent(inout) :: ierr
+    end subroutine smbar
+  end interface
+
+  interface
+    !> FORTRAN 77 rough-surface nanobar RHS (fortran/rgbar.f).
+    subroutine rgbar(n, t, y, dydt, rpar, ipar, ierr)
+      integer, intent(in) :: n
+      double precision, intent(in) :: t
+      double precision, intent(in) :: y(n)
+      double precision, intent(out) :: dydt(n)
+      double precision, intent(in) :: rpar(*)
+      integer, intent(inout) :: ipar(*)
+      integer, intent(inout) :: ierr
+    end subroutine rgbar
+  end interface
+
+end module nanopush_f77_interfaces
