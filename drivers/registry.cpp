@@ -25,7 +25,12 @@ std::filesystem::path resolve_scene(const std::string& arg) {
   namespace fs = std::filesystem;
   if (fs::exists(arg)) return arg;
   const fs::path dir = scenes_dir();
-  for (const fs::path& cand : {dir / (arg + ".toml"), dir / "thesis" / (arg + ".toml"), dir / arg}) {
+  for (const fs::path& cand : {dir / (arg + ".toml"), dir / arg}) {
+    if (fs::exists(cand) && fs::is_regular_file(cand)) return cand;
+  }
+  // Presets live in subdirectories (thesis/, bench/, examples/): search them in that order.
+  for (const char* sub : {"thesis", "bench", "examples"}) {
+    const fs::path cand = dir / sub / (arg + ".toml");
     if (fs::exists(cand) && fs::is_regular_file(cand)) return cand;
   }
   throw InputError("SCENE", arg, "no such file, and no preset of that name under " + dir.string());

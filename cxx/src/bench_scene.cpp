@@ -118,6 +118,55 @@ struct RoughBenchRhs {
   }
 };
 
+/// The coulomb-law RHS for RHS timing (the mode of a slide along +x).
+struct CoulombBenchRhs {
+  RoughBarModel model;
+  template <class S>
+  int operator()(S, const S* y, S* d) const {
+    double yd[kRoughStateSize], dd[kRoughStateSize];
+    for (int i = 0; i < kRoughStateSize; ++i) yd[i] = static_cast<double>(y[i]);
+    coulomb_rhs(model, yd, {1.0, 0.0, 0.0}, dd);
+    for (int i = 0; i < kRoughStateSize; ++i) d[i] = static_cast<S>(dd[i]);
+    return 0;
+  }
+};
+
+Solve coulomb_solve_from(const Problem& p, const std::function<StickSlipResult(const StickSlipObserver&)>& run) {
+  Solve s;
+  std::vector<double> yout;
+  yout.reserve(p.nout() * static_cast<std::size_t>(p.n));
+  const auto t0 = detail::Clock::now();
+  try {
+    const StickSlipResult r = run([&](double, const double* y, const WorldWrench&) {
+      for (int i = 0; i < p.n; ++i) yout.push_back(y[i]);
+    });
+    s.nfcn = r.stats.nfcn;
+    s.naccpt = r.stats.naccpt;
+    s.nrejct = r.stats.nrejct;
+  } catch (const std::exception& e) {
+    s.status = 1;
+    s.message = e.what();
+  }
+  s.seconds = detail::seconds_since(t0);
+  detail::store(s, yout);
+  if (s.status == 0 && s.y.size() != p.nout() * static_cast<std::size_t>(p.n)) {
+    s.status = 1;
+    s.message = "incomplete trajectory";
+  }
+  return s;
+}
+
+Solve solve_coulomb(const Problem& p, const RoughBarModel& m, double rtol, bool modern) {
+  auto opt = modern ? BsOptions<double>::modern(rtol, p.atol(rtol)) : BsOptions<double>::faithful(rtol, p.atol(rtol));
+  opt.maxstp = 1000000;
+  return coulomb_solve_from(p, [&](const StickSlipObserver& obs) { return integrate_coulomb(m, opt, p.y0.data(), p.tout, obs); });
+}
+
+Solve solve_coulomb_cvode(const Problem& p, const RoughBarModel& m, double rtol) {
+  return coulomb_solve_from(
+      p, [&](const StickSlipObserver& obs) { return integrate_coulomb_cvode(m, rtol, p.atol(rtol), p.y0.data(), p.tout, obs); });
+}
+
 RoughBarModel bench_rough_model(const Scene& sc) {
   RoughBarModel m;
   m.mass = sc.mass;
@@ -197,6 +246,11 @@ Solve extended_run(const Scene& sc, const Problem& p, double rtol, bool modern) 
 }
 
 std::vector<std::string> engine_names(const Scene& sc) {
+  if (sc.rough() && sc.surface.law == "coulomb") {
+    std::vector<std::string> v = {"cxx-events", "cvode-events"};
+    for (const auto& n : generic_engine_names()) v.push_back(n);
+    return v;
+  }
   if (sc.rough()) return generic_engine_names();
   std::vector<std::string> v = generic_engine_names();
   if (sc.model == "smooth") v.insert(v.begin() + 3, "f77-native");
@@ -230,9 +284,37 @@ Bench make_bench(const Scene& sc, const EngineConfig& cfg) {
       auto it = std::find_if(b.engines.begin(), b.engines.end(), [](const Engine& x) { return x.name == "f77-callback"; });
       b.engines.insert(it == b.engines.end() ? b.engines.end() : it + 1, std::move(e));
     }
+  } else if (sc.rough() && sc.surface.law == "coulomb") {
+    // Stick-slip: the event-locating integrators (C++ BS and CVODE) against every engine
+    // integrating the thesis-law ODE without event location (which chatters at rest).
+    const RoughBarModel m = bench_rough_model(sc);
+    RoughBarModel mc = m;
+    mc.rest_direction = {0.0, 0.0, 0.0};
+    const Solve a = solve_coulomb(p, mc, 1e-14, false), c = solve_coulomb(p, mc, 1e-13, true);
+    b.reference = extended_reference(p, a, c,
+                                     "event-locating C++ BS in double (no extended-precision coulomb engine): faithful "
+                                     "at rtol 1e-14 vs modern at 1e-13");
+    b.reference.kind = "double";
+    auto rhs = std::make_shared<const RoughBenchRhs>(RoughBenchRhs{RoughBarThesisRhs{m}});
+    const RhsSamples smp = samples_from(p, b.reference);
+    auto crhs = std::make_shared<const CoulombBenchRhs>(CoulombBenchRhs{mc});
+    for (const bool cvode : {false, true}) {
+      Engine e;
+      e.name = cvode ? "cvode-events" : "cxx-events";
+      if (!cfg.wants(e.name)) continue;
+      e.note = cvode ? "coulomb law: CVODE BDF with root finding on the rest events (stick_slip_cvode.cpp)"
+                     : "coulomb law: C++ BS faithful, rest events located, stick held (stick_slip.cpp)";
+      e.solve = [p, mc, cvode](double rtol) { return cvode ? solve_coulomb_cvode(p, mc, rtol) : solve_coulomb(p, mc, rtol, false); };
+      e.time_rhs = rhs_timer<double>(crhs, p.n, smp);
+      b.engines.push_back(std::move(e));
+    }
+    EngineConfig dcfg = cfg;
+    dcfg.precisions = {"double"};
+    for (auto& e : generic_engines<kRoughStateSize>(p, rhs, smp, dcfg)) {
+      e.note = "no event location (thesis-law ODE): " + e.note;
+      b.engines.push_back(std::move(e));
+    }
   } else if (sc.rough()) {
-    if (sc.surface.law != "thesis")
-      throw InputError("surface.law", sc.surface.law, "the benchmark integrates rough scenes under the thesis law (one ODE)");
     const RoughBarModel m = bench_rough_model(sc);
     auto rhs = std::make_shared<const RoughBenchRhs>(RoughBenchRhs{RoughBarThesisRhs{m}});
     const Solve a = quad_legacy_run(sc, p, m, 1e-20);

@@ -227,7 +227,7 @@ Solve solve_cvode(const Problem& p, const Rhs& rhs, double rtol, bool bdf, doubl
     if (flag == 0) flag = CVodeSetErrFile(o.mem, nullptr);
     if (flag == 0) flag = CVodeSVtolerances(o.mem, rtol, o.atol);
     if (flag == 0) flag = CVodeSetUserData(o.mem, const_cast<void*>(static_cast<const void*>(&rhs)));
-    if (flag == 0) flag = CVodeSetMaxNumSteps(o.mem, 1000000);
+    if (flag == 0) flag = CVodeSetMaxNumSteps(o.mem, 100000);  // the budget of every engine
     if (flag == 0) {
       if (bdf) {
         o.A = SUNDenseMatrix(n, n, o.ctx);
@@ -282,7 +282,7 @@ Solve solve_arkode_erk8(const Problem& p, const Rhs& rhs, double rtol, double* s
     if (flag == 0) flag = ERKStepSVtolerances(o.mem, rtol, o.atol);
     if (flag == 0) flag = ERKStepSetUserData(o.mem, const_cast<void*>(static_cast<const void*>(&rhs)));
     if (flag == 0) flag = ERKStepSetTableNum(o.mem, ARKODE_FEHLBERG_13_7_8);
-    if (flag == 0) flag = ERKStepSetMaxNumSteps(o.mem, 1000000);
+    if (flag == 0) flag = ERKStepSetMaxNumSteps(o.mem, 100000);  // the budget of every engine
     realtype t = p.t0;
     for (std::size_t k = 0; k < p.nout() && flag >= 0; ++k) {
       if (p.tout[k] > t) flag = ERKStepEvolve(o.mem, p.tout[k], o.y, &t, ARK_NORMAL);

@@ -29,7 +29,9 @@ struct ScaledSystem {
   void operator()(const state& u, state& dudt, double t) const {
     state y, f;
     for (int i = 0; i < N; ++i) y[i] = u[i] * scale[i];
-    ++*count;
+    // Budget: a chattering RHS (stick-slip without event location) would otherwise keep
+    // odeint busy for minutes; our engines stop at 100 000 steps, odeint at 2e6 evaluations.
+    if (++*count > 2000000) throw std::runtime_error("odeint: more than 2e6 RHS evaluations");
     if ((*rhs)(t, y.data(), f.data()) != 0) throw std::runtime_error("right-hand side failed");
     for (int i = 0; i < N; ++i) dudt[i] = f[i] * inv_scale[i];
   }
@@ -67,6 +69,9 @@ Solve solve_odeint_bs(const Problem& p, const Rhs& rhs, double rtol, bool dense,
       for (std::size_t k = 0; k < p.nout(); ++k) {
         int fails = 0;
         while (t < p.tout[k]) {
+          // The same budget as our engines (100 000 attempted steps): a chattering RHS would
+          // otherwise keep odeint stepping for ever.
+          if (s.naccpt + s.nrejct >= 100000) throw std::runtime_error("odeint: more than 100000 steps");
           double cur = std::min(dt, p.tout[k] - t);
           if (st.try_step(std::cref(sys), u, t, cur) == ode::success) {
             ++s.naccpt;
@@ -87,10 +92,13 @@ Solve solve_odeint_bs(const Problem& p, const Rhs& rhs, double rtol, bool dense,
       if (times.front() > p.t0) times.insert(times.begin(), p.t0);
       const std::size_t skip = times.size() - p.nout();
       const std::size_t steps =
-          ode::integrate_times(st, std::cref(sys), u, times.begin(), times.end(), dt0, [&](const state& x, double) {
-            if (k >= skip) record(k - skip, x);
-            ++k;
-          });
+          ode::integrate_times(
+              st, std::cref(sys), u, times.begin(), times.end(), dt0,
+              [&](const state& x, double) {
+                if (k >= skip) record(k - skip, x);
+                ++k;
+              },
+              ode::max_step_checker(100000));
       s.naccpt = static_cast<std::int64_t>(steps);
       s.nrejct = -1;
     }

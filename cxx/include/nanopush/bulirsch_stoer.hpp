@@ -142,7 +142,7 @@ class BulirschStoer {
                      StepHook&& hook) {
     BsResult res;
     res.t_reached = static_cast<double>(t0);
-    const int n = n_;
+    const int n = (N == Dynamic) ? n_ : N;  // a compile-time bound lets the loops unroll
     if (const char* why = validate(t0, y, tout)) {
       res.status = BsStatus::bad_input;
       res.message = why;
@@ -238,15 +238,19 @@ class BulirschStoer {
             nonfinite = true;
             break;
           }
-          const Scalar expo = Scalar(1) / Scalar(2 * j - 1);
-          const Scalar facmin = num::pow(kSafe3, expo);
-          Scalar fac;
-          if (err == 0)
-            fac = Scalar(1) / facmin;
+          // Step-size factor in double for every scalar: a few digits suffice, and pow in
+          // long double or __float128 costs as much as a cheap RHS. For Scalar = double these
+          // are exactly the F77 engine's operations.
+          const double errc = static_cast<double>(err);
+          const double expo = 1.0 / static_cast<double>(2 * j - 1);
+          const double facmin = std::pow(kSafe3, expo);
+          double fac;
+          if (errc == 0)
+            fac = 1.0 / facmin;
           else
-            fac = kSafe2 * num::pow(kSafe1 / err, expo);
-          fac = std::max(facmin / kFac4, std::min(Scalar(1) / facmin, fac));
-          hh[j] = h * fac;
+            fac = kSafe2 * std::pow(kSafe1 / errc, expo);
+          fac = std::max(facmin / kFac4, std::min(1.0 / facmin, fac));
+          hh[j] = h * static_cast<Scalar>(fac);
           w[j] = a[j] / hh[j];
           bool decided = false;
           if (j == k - 1) {
@@ -358,10 +362,10 @@ class BulirschStoer {
   }
 
  private:
-  static constexpr Scalar kSafe1 = Scalar(0.65);
-  static constexpr Scalar kSafe2 = Scalar(0.94);
-  static constexpr Scalar kSafe3 = Scalar(0.02);
-  static constexpr Scalar kFac4 = Scalar(4.0);
+  static constexpr double kSafe1 = 0.65;
+  static constexpr double kSafe2 = 0.94;
+  static constexpr double kSafe3 = 0.02;
+  static constexpr double kFac4 = 4.0;
   static constexpr Scalar kOrdDec = Scalar(0.8);
   static constexpr Scalar kOrdInc = Scalar(0.9);
   static constexpr int kMaxNonFinite = 10;
@@ -404,7 +408,7 @@ class BulirschStoer {
   // Gragg's modified midpoint rule with m substeps over [t, t+H]; result into out.
   template <class Rhs>
   int midpoint(Rhs& rhs, Scalar t, Scalar hbig, int m, Vec& out, BsResult& res) {
-    const int n = n_;
+    const int n = (N == Dynamic) ? n_ : N;  // a compile-time bound lets the loops unroll
     const Scalar hs = hbig / Scalar(m);
     for (int i = 0; i < n; ++i) {
       zm_[i] = y_[i];
@@ -429,7 +433,7 @@ class BulirschStoer {
 
   // Fill cur_[2..j] from cur_[1] (the new midpoint result) and prev_ (row j-1).
   void extrapolate(int j) {
-    const int n = n_;
+    const int n = (N == Dynamic) ? n_ : N;  // a compile-time bound lets the loops unroll
     const bool rational = opt_.extrapolation == Extrapolation::rational;
     for (int l = 2; l <= j; ++l) {
       const Scalar q = Scalar(seq(j)) / Scalar(seq(j - l + 1));
