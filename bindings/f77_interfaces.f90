@@ -55,4 +55,39 @@ module nanopush_f77_interfaces
     end subroutine rgbar
   end interface
 
+  !> FORTRAN 77 rolling formulas (fortran/rolling.f).
+  interface
+    subroutine rlfs(f, h, r, fs, ierr)
+      double precision, intent(in) :: f, h, r
+      double precision, intent(out) :: fs
+      integer, intent(out) :: ierr
+    end subroutine rlfs
+    subroutine rlres(w, ak, r, fs, ierr)
+      double precision, intent(in) :: w, ak, r
+      double precision, intent(out) :: fs
+      integer, intent(out) :: ierr
+    end subroutine rlres
+    subroutine rlmin(w, ak, r, amarg, f, ierr)
+      double precision, intent(in) :: w, ak, r, amarg
+      double precision, intent(out) :: f
+      integer, intent(out) :: ierr
+    end subroutine rlmin
+    subroutine rldec(f, h, r, amu, ans, wr, ak, mode, froll, fslid, fsreq, ierr)
+      double precision, intent(in) :: f, h, r, amu, ans, wr, ak
+      integer, intent(out) :: mode
+      double precision, intent(out) :: froll, fslid, fsreq
+      integer, intent(out) :: ierr
+    end subroutine rldec
+    subroutine rlvdw(ah, al, d, z0, fv, ierr)
+      double precision, intent(in) :: ah, al, d, z0
+      double precision, intent(out) :: fv
+      integer, intent(out) :: ierr
+    end subroutine rlvdw
+    subroutine rljkrl(r, es, w, p, b, ierr)
+      double precision, intent(in) :: r, es, w, p
+      double precision, intent(out) :: b
+      integer, intent(out) :: ierr
+    end subroutine rljkrl
+  end interface
+
 end module nanopush_f77_interfaces

@@ -2,6 +2,7 @@
 !> bindings/f77_rolling.h. Every function returns the F77 IERR (0 = ok, 1 = invalid
 !> argument, 2 = load below pull-off, 3 = no convergence); none stops the program.
 module nanopush_f77_rolling
+  use nanopush_f77_interfaces, only: rlfs, rlres, rlmin, rldec, rlvdw, rljkrl
   use, intrinsic :: iso_c_binding, only: c_int, c_double
   implicit none
   private
@@ -9,39 +10,6 @@ module nanopush_f77_rolling
             np_f77_rolling_min_force, np_f77_rolling_decide, &
             np_f77_rod_plane_vdw, np_f77_jkr_line_half_width
 
-  interface
-    subroutine rlfs(f, h, r, fs, ierr)
-      double precision, intent(in) :: f, h, r
-      double precision, intent(out) :: fs
-      integer, intent(out) :: ierr
-    end subroutine rlfs
-    subroutine rlres(w, ak, r, fs, ierr)
-      double precision, intent(in) :: w, ak, r
-      double precision, intent(out) :: fs
-      integer, intent(out) :: ierr
-    end subroutine rlres
-    subroutine rlmin(w, ak, r, amarg, f, ierr)
-      double precision, intent(in) :: w, ak, r, amarg
-      double precision, intent(out) :: f
-      integer, intent(out) :: ierr
-    end subroutine rlmin
-    subroutine rldec(f, h, r, amu, ans, wr, ak, mode, froll, fslid, fsreq, ierr)
-      double precision, intent(in) :: f, h, r, amu, ans, wr, ak
-      integer, intent(out) :: mode
-      double precision, intent(out) :: froll, fslid, fsreq
-      integer, intent(out) :: ierr
-    end subroutine rldec
-    subroutine rlvdw(ah, al, d, z0, fv, ierr)
-      double precision, intent(in) :: ah, al, d, z0
-      double precision, intent(out) :: fv
-      integer, intent(out) :: ierr
-    end subroutine rlvdw
-    subroutine rljkrl(r, es, w, p, b, ierr)
-      double precision, intent(in) :: r, es, w, p
-      double precision, intent(out) :: b
-      integer, intent(out) :: ierr
-    end subroutine rljkrl
-  end interface
 
 contains
 

@@ -4,30 +4,8 @@
 program test_rolling
   use, intrinsic :: iso_c_binding, only: c_double, c_int
   use nanopush_f77_rolling, only: np_f77_rolling_static_friction, np_f77_jkr_line_half_width
+  use nanopush_f77_interfaces, only: rlfs, rljkrl, rlvdw, rldec
   implicit none
-  interface
-    subroutine rlfs(f, h, r, fs, ierr)
-      double precision, intent(in) :: f, h, r
-      double precision, intent(out) :: fs
-      integer, intent(out) :: ierr
-    end subroutine rlfs
-    subroutine rljkrl(r, es, w, p, b, ierr)
-      double precision, intent(in) :: r, es, w, p
-      double precision, intent(out) :: b
-      integer, intent(out) :: ierr
-    end subroutine rljkrl
-    subroutine rlvdw(ah, al, d, z0, fv, ierr)
-      double precision, intent(in) :: ah, al, d, z0
-      double precision, intent(out) :: fv
-      integer, intent(out) :: ierr
-    end subroutine rlvdw
-    subroutine rldec(f, h, r, amu, ans, wr, ak, mode, froll, fslid, fsreq, ierr)
-      double precision, intent(in) :: f, h, r, amu, ans, wr, ak
-      integer, intent(out) :: mode
-      double precision, intent(out) :: froll, fslid, fsreq
-      integer, intent(out) :: ierr
-    end subroutine rldec
-  end interface
   double precision, parameter :: pi = 3.14159265358979323846d0
   double precision :: r, f, fs, b, p, fv, es, w, froll, fslid, fsreq
   real(c_double) :: fsc, bc
