@@ -17,7 +17,9 @@ struct PowerMargin {
   double theta;
   std::array<double, 3> w;  // M^{-1/2} W_applied
   double sm, si;            // sqrt(m), sqrt(I)
+  mutable std::int64_t calls = 0;
   double eval(const std::array<double, 3>& xi, std::array<double, 3>* grad) const {
+    ++calls;
     const WorldWrench f = m.friction(theta, xi[0] / sm, xi[1] / sm, xi[2] / si);
     const std::array<double, 3> ft = {f.fx / sm, f.fy / sm, f.mf / si};
     if (grad) *grad = {w[0] + ft[0], w[1] + ft[1], w[2] + ft[2]};
@@ -86,6 +88,7 @@ RestAnalysis analyse_rest(const RoughBarModel& model, double theta) {
     if (!improved) break;
   }
   r.margin = hbest;
+  r.evaluations = pm.calls;
   // On the limit surface within rounding counts as inside (friction can hold it).
   if (hbest <= 1e-12 * wn) {
     r.stuck = true;
@@ -149,6 +152,7 @@ StickSlipResult integrate_coulomb(const RoughBarModel& model, const BsOptions<do
   auto at_rest = [&]() {
     y[kVx] = y[kVy] = y[kOmega] = 0.0;
     const RestAnalysis ra = analyse_rest(model, y[kTheta]);
+    out.stats.nfcn += ra.evaluations;
     if (ra.stuck) {
       stuck = true;
     } else {
@@ -193,6 +197,7 @@ StickSlipResult integrate_coulomb(const RoughBarModel& model, const BsOptions<do
   auto terminal = [&](const double* yy) {
     double d[kRoughStateSize];
     coulomb_rhs(model, yy, mode, d);
+    ++out.stats.nfcn;  // an RHS evaluation like any other: counted
     // Only a slide that is running down can end: the kinetic energy must be falling. (A
     // slide that has just started from rest has |V| below the tolerances too, but it speeds up.)
     const double dke = model.mass * (yy[kVx] * d[kVx] + yy[kVy] * d[kVy]) + model.inertia * yy[kOmega] * d[kOmega];

@@ -81,6 +81,7 @@ StickSlipResult integrate_coulomb_cvode(const RoughBarModel& model, double rtol,
   auto at_rest = [&](double t) {
     y[kVx] = y[kVy] = y[kOmega] = 0.0;
     const RestAnalysis ra = analyse_rest(model, y[kTheta]);
+    out.stats.nfcn += ra.evaluations;
     stuck = ra.stuck;
     if (!ra.stuck) {
       const double n = std::sqrt(ra.accel[0] * ra.accel[0] + ra.accel[1] * ra.accel[1] +

@@ -32,6 +32,9 @@ struct RestAnalysis {
   double margin = 0;
   /// When sliding starts: the initial acceleration (ax, ay, alpha) [m/s², m/s², rad/s²].
   std::array<double, 3> accel{};
+  /// Friction evaluations the analysis took (counted as RHS evaluations by the integrators:
+  /// each costs what the right-hand side costs).
+  std::int64_t evaluations = 0;
 };
 
 /// Decide stick or slip for a body at rest at orientation theta (world axes).
