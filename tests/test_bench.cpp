@@ -94,7 +94,7 @@ TEST_CASE("bench: extended precision reaches 1e-25 against the exact smooth solu
   const Scene sc = smooth_scene("a");
   const Problem p = problem_from_scene(sc);
   const auto exact = smooth_exact(sc, p);
-  const Solve q = extended_run(sc, p, 1e-26, true);
+  const Solve q = extended_run(sc, p, 1e-28, true);
   REQUIRE(q.status == 0);
   CHECK(scaled_max_error(p, q.y, exact) <= 1e-25);
   // long double cannot: its floor is its epsilon (1.1e-19) times the accumulated rounding
@@ -110,7 +110,7 @@ TEST_CASE("bench: reference acceptance (two runs agree to 1e-3 of the smallest p
   const Scene sc = smooth_scene("a");
   const Problem p = problem_from_scene(sc);
   const auto exact = smooth_exact(sc, p);
-  const Solve q = extended_run(sc, p, 1e-26, true);
+  const Solve q = extended_run(sc, p, 1e-28, true);
   REQUIRE(q.status == 0);
   // Exact vs quad C++ BS: they agree to < 1e-25, so a plot down to 1e-16 is resolved.
   const Acceptance ok = accept_reference(p, exact, q.y, 1e-16);
@@ -177,12 +177,14 @@ TEST_CASE("bench: every engine wrapper reaches its tolerance on the smooth nanob
 #endif
   CHECK(names.count("f77-native") == 1);
   for (const auto& e : b.engines) {
-    // BS engines whose steps end on every output time: the global error at the outputs is
-    // within a few rtol (measured: <= 1.4 rtol). Engines that control the local error per
-    // step and interpolate the outputs (CVODE, ARKODE, Odeint dense) accumulate: their
-    // global error is bounded by the sum of the per-step local errors, naccpt * rtol, with
-    // a factor for interpolation and propagation (measured: <= 2.5 naccpt rtol).
-    const bool clipped = e.name.rfind("cxx-", 0) == 0 || e.name.rfind("f77-", 0) == 0 || e.name == "odeint-bs";
+    // BS engines whose steps end on every output time (400 short steps): the global error
+    // at the outputs is within a few rtol (measured: <= 1.4 rtol). Engines that control the
+    // local error per step and interpolate the outputs (CVODE, ARKODE, Odeint dense, and
+    // cxx-modern with its dense output) accumulate: their global error is bounded by the
+    // sum of the per-step local errors, naccpt * rtol, with a factor for interpolation and
+    // propagation (measured: <= 2.5 naccpt rtol; cxx-modern <= 4.5 naccpt rtol, its
+    // interpolant adding nothing: tests/test_dense_output.cpp).
+    const bool clipped = e.name == "cxx-faithful" || e.name.rfind("f77-", 0) == 0 || e.name == "odeint-bs";
     double err_loose = 0, err_tight = 0;
     for (const double rtol : {1e-5, 1e-6, 1e-8, 1e-10}) {
       INFO(e.name << " rtol " << rtol);

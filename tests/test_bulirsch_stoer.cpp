@@ -157,6 +157,22 @@ TEST_CASE("BS: no allocation while integrating (fixed size)", "[bs][unit]") {
   CHECK(std::isfinite(sink));
 }
 
+TEST_CASE("BS: no allocation while integrating (dense output, many outputs)", "[bs][dense][unit]") {
+  BulirschStoer<double, 2> bs(BsOptions<double>::modern(1e-12, {1e-12}));
+  double y[2] = {1, 0};
+  std::vector<double> tout(1001);
+  for (std::size_t i = 0; i < tout.size(); ++i) tout[i] = 30.0 * static_cast<double>(i) / 1000.0;
+  double sink = 0;
+  const long before = g_allocs.load();
+  auto r = bs.integrate(Oscillator{}, 0.0, y, std::span<const double>(tout),
+                        [&](std::size_t, double, const double* yy) { sink += yy[0]; });
+  const long after = g_allocs.load();
+  REQUIRE(r.ok());
+  CHECK(r.naccpt > 10);
+  CHECK(after == before);
+  CHECK(std::isfinite(sink));
+}
+
 TEST_CASE("BS: failures come back as statuses", "[bs][unit]") {
   SECTION("bad input") {
     BsOptions<double> o = BsOptions<double>::faithful(1e-8, {1e-8});

@@ -86,7 +86,15 @@ TEST_CASE("Fig 3.6, C++ engine: exact pendulum and uniform acceleration at rtol 
       CHECK(tr.rows.size() == 401);
       CHECK(e.theta <= 1e-10);
       CHECK(e.x_rel <= 1e-12);
-      CHECK(e.energy_rel <= 1e-10);
+      if (std::string(method) == "faithful") {
+        // 400 steps, each ending on an output time: the error stays within 100 rtol.
+        CHECK(e.energy_rel <= 1e-10);
+      } else {
+        // Dense output, 30-40 long steps: the local errors add up, bounded by
+        // 5 naccpt rtol as for every interpolating engine (tests/test_bench.cpp).
+        CHECK(tr.stats.naccpt < 60);
+        CHECK(e.energy_rel <= 5 * static_cast<double>(tr.stats.naccpt) * rs.rtol);
+      }
     }
   }
 }

@@ -124,8 +124,8 @@ struct SweepSettings {
   int repeats = 5;          ///< timed solves per point (median reported), after one untimed warm-up solve
                             ///< (repeats = 1: no per-point warm-up, one per engine only)
   int repeats_extended = 0; ///< the same for long/quad engines (0 = repeats): their solves take 1-300 ms
-  int kmin = 6, kmax = 26;  ///< rtol = 10^(-k/2); extended precision continues to its rtol_min
-  int kmax_extended = 52;   ///< last k for engines whose rtol_min is below 1e-13
+  int kmin = 6, kmax = 28;  ///< rtol = 10^(-k/2), each engine stopping at its rtol_min; extended precision continues to its rtol_min
+  int kmax_extended = 56;   ///< last k for engines whose rtol_min is below 1e-14 (56: rtol 1e-28)
   int kstep = 1;
   int kstep_extended = 0;   ///< k step for long/quad engines (0 = kstep)
   std::function<void(const Row&)> progress;  ///< called after each row

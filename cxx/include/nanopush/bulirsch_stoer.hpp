@@ -73,6 +73,12 @@ struct BsOptions {
   int kmax = 8;              ///< extrapolation columns, 3..12
   Extrapolation extrapolation = Extrapolation::rational;
   std::int64_t maxstp = 100000;
+  /// Dense output (Hairer, Nørsett & Wanner, §II.9; the interpolation of their code ODEX):
+  /// step numbers 2, 6, 10, 14, ... (4j-2), outputs interpolated from the extrapolation
+  /// tableau instead of clipping a step at every output time, interpolation error
+  /// controlled. Needs polynomial extrapolation. Off: every step ends on an output time,
+  /// step numbers 2, 4, 6, ... (the F77 engine's scheme).
+  bool dense = false;
 
   /// The thesis-era configuration; takes the F77 engine's steps exactly.
   static BsOptions faithful(Scalar rtol, std::vector<Scalar> atol) {
@@ -83,13 +89,15 @@ struct BsOptions {
     o.extrapolation = Extrapolation::rational;
     return o;
   }
-  /// Polynomial extrapolation (no poles), more columns for tight tolerances.
+  /// Polynomial extrapolation (no poles), more columns for tight tolerances, dense output
+  /// (steps not bound to the output times).
   static BsOptions modern(Scalar rtol, std::vector<Scalar> atol) {
     BsOptions o;
     o.rtol = rtol;
     o.atol = std::move(atol);
     o.kmax = 10;
     o.extrapolation = Extrapolation::polynomial;
+    o.dense = true;
     return o;
   }
 };
@@ -116,9 +124,34 @@ class BulirschStoer {
   explicit BulirschStoer(BsOptions<Scalar> opt, int n = N) : opt_(std::move(opt)), n_(n) {
     if constexpr (N == Dynamic) {
       const auto sz = static_cast<std::size_t>(n_ > 0 ? n_ : 1);
-      for (Vec* v : {&y_, &f0_, &zm_, &z_, &fz_, &sc_, &atol_}) v->assign(sz, Scalar(0));
+      for (Vec* v : {&y_, &f0_, &zm_, &z_, &fz_, &sc_, &atol_, &f1_, &yout_}) v->assign(sz, Scalar(0));
       for (auto& row : prev_) row.assign(sz, Scalar(0));
       for (auto& row : cur_) row.assign(sz, Scalar(0));
+    }
+    for (int j = 0; j < kKmaxLimit + 2; ++j) nj_[j] = opt_.dense ? 4 * j - 2 : 2 * j;
+    for (int j = 1; j < kKmaxLimit + 2; ++j) facmin_[j] = std::pow(kSafe3, 1.0 / static_cast<double>(2 * j - 1));
+    if (opt_.dense && n_ > 0) {
+      // Dense-output work space, allocated once: every right-hand side value of every
+      // line (line j has 4j-1 of them), the midpoint values, the interpolation coefficients.
+      const auto nn = static_cast<std::size_t>(n_);
+      fs_.assign(static_cast<std::size_t>(line_offset(kKmaxLimit + 1)) * nn, Scalar(0));
+      ys_.assign(static_cast<std::size_t>(kKmaxLimit + 2) * nn, Scalar(0));
+      dcoef_.assign(static_cast<std::size_t>(kMuLimit + 5) * nn, Scalar(0));
+      // Weights of the h^2 polynomial extrapolation to h = 0 from lines jb..je: the
+      // Lagrange form of Aitken–Neville in x_j = n_j^-2, w_j = prod_{l != j} x_l/(x_l - x_j).
+      wext_.assign(static_cast<std::size_t>(kL * kL * kL), Scalar(0));
+      for (int jb = 1; jb < kL; ++jb)
+        for (int je = jb; je < kL; ++je)
+          for (int j = jb; j <= je; ++j) {
+            const Scalar xj = Scalar(1) / (Scalar(nj_[j]) * Scalar(nj_[j]));
+            Scalar w = 1;
+            for (int l = jb; l <= je; ++l) {
+              if (l == j) continue;
+              const Scalar xl = Scalar(1) / (Scalar(nj_[l]) * Scalar(nj_[l]));
+              w = w * xl / (xl - xj);
+            }
+            wext_[widx(jb, je, j)] = w;
+          }
     }
   }
 
@@ -176,8 +209,11 @@ class BulirschStoer {
       }
     };
     emit_reached();
+    // Dense output: the last output time is the only one a step must end on.
+    const bool dense = opt_.dense;
+    Scalar hoptde = 0;  // step-size bound from the interpolation error (dense output), 0 = none
     while (iout < nout) {
-      const Scalar tend = tout[iout];
+      const Scalar tend = dense ? tout[nout - 1] : tout[iout];
       // 1.
       if (res.naccpt + res.nrejct >= opt_.maxstp) {
         res.status = BsStatus::too_many_steps;
@@ -217,7 +253,9 @@ class BulirschStoer {
         kc = 0;
         accept = false;
         for (int j = 1; j <= k + 1; ++j) {
-          if (const int st = midpoint(rhs, t, h, seq(j), cur_[1], res); st != 0) {
+          if (const int st = midpoint(rhs, t, h, seq(j), cur_[1], res, dense ? fs_line(j) : nullptr,
+                                      dense ? ys_line(j) : nullptr);
+              st != 0) {
             fail_rhs(res, st, t);
             failed = true;
             break;
@@ -243,7 +281,7 @@ class BulirschStoer {
           // are exactly the F77 engine's operations.
           const double errc = static_cast<double>(err);
           const double expo = 1.0 / static_cast<double>(2 * j - 1);
-          const double facmin = std::pow(kSafe3, expo);
+          const double facmin = facmin_[j];  // kSafe3^expo
           double fac;
           if (errc == 0)
             fac = 1.0 / facmin;
@@ -310,6 +348,25 @@ class BulirschStoer {
         last_rejected = true;
         continue;
       }
+      // 6a. Dense output: f at the step's end (the next step's f0), the interpolation
+      // polynomial, and its error estimate: a step whose interpolant is poor is rejected.
+      if (dense) {
+        const Scalar tnew = clipped ? tend : t + h;
+        const int st = rhs(tnew, static_cast<const Scalar*>(&cur_[kc][0]), &f1_[0]);
+        ++res.nfcn;
+        if (st != 0) {
+          fail_rhs(res, st, tnew);
+          break;
+        }
+        const double errint = build_dense(kc, h);
+        hoptde = h / static_cast<Scalar>(std::max(std::pow(errint, 1.0 / (mu_ + 4)), 0.01));
+        if (errint > 10.0) {
+          ++res.nrejct;
+          h = hoptde;
+          last_rejected = true;
+          continue;
+        }
+      }
       // 7.
       if constexpr (!std::is_same_v<std::decay_t<StepHook>, NoStepHook>) {
         const Scalar tnew = clipped ? tend : t + h;
@@ -322,9 +379,15 @@ class BulirschStoer {
         }
       }
       ++res.naccpt;
+      const Scalar t_old = t, h_step = h;
       t = clipped ? tend : t + h;
       for (int i = 0; i < n; ++i) y_[i] = cur_[kc][i];
-      have_f0 = false;
+      if (dense) {
+        for (int i = 0; i < n; ++i) f0_[i] = f1_[i];
+        have_f0 = true;
+      } else {
+        have_f0 = false;
+      }
       Scalar hnew;
       if (kopt <= kc)
         hnew = hh[kopt];
@@ -338,11 +401,25 @@ class BulirschStoer {
       }
       k = kopt;
       if (clipped) hnew = std::max(hnew, hwant);
+      if (dense && hoptde > 0) hnew = std::min(hnew, hoptde);
       if (opt_.hmax > 0) hnew = std::min(hnew, opt_.hmax);
       h = hnew;
       last_rejected = false;
       res.t_reached = static_cast<double>(t);
-      emit_reached();
+      if (dense) {
+        // Outputs inside the step from the interpolant; one at the step's end exactly.
+        while (iout < nout && tout[iout] <= t) {
+          if (tout[iout] == t) {
+            observer(iout, tout[iout], static_cast<const Scalar*>(&y_[0]));
+          } else {
+            dense_eval((tout[iout] - t_old) / h_step, &yout_[0]);
+            observer(iout, tout[iout], static_cast<const Scalar*>(&yout_[0]));
+          }
+          ++iout;
+        }
+      } else {
+        emit_reached();
+      }
       if (hook_action == kHookStopAfter) {
         res.stopped_by_hook = true;
         res.t_event_end = static_cast<double>(t);
@@ -370,7 +447,132 @@ class BulirschStoer {
   static constexpr Scalar kOrdInc = Scalar(0.9);
   static constexpr int kMaxNonFinite = 10;
 
-  static constexpr int seq(int j) { return 2 * j; }
+  static constexpr int kMuLimit = 2 * kKmaxLimit - 3;
+  static constexpr int kL = kKmaxLimit + 2;  // line index bound (1-based lines)
+  static constexpr std::size_t widx(int jb, int je, int j) {
+    return (static_cast<std::size_t>(jb) * kL + static_cast<std::size_t>(je)) * kL + static_cast<std::size_t>(j);
+  }  // highest midpoint derivative in the interpolant
+  int seq(int j) const { return nj_[j]; }
+  // First right-hand-side slot of line j (1-based) in fs_: line i holds 4i-1 slots.
+  static constexpr int line_offset(int j) { return (j - 1) * (2 * j - 1); }
+  Scalar* fs_line(int j) { return &fs_[static_cast<std::size_t>(line_offset(j)) * static_cast<std::size_t>(n_)]; }
+  Scalar* ys_line(int j) { return &ys_[static_cast<std::size_t>(j) * static_cast<std::size_t>(n_)]; }
+  Scalar* dcoef_row(int r) { return &dcoef_[static_cast<std::size_t>(r) * static_cast<std::size_t>(n_)]; }
+
+  // Dense output after an accepted step over [t, t+h] that used lines 1..kc (HNW §II.9):
+  // y at the midpoint and its derivatives of order 1..mu = 2kc-3 there, each extrapolated
+  // from central differences of the stored right-hand sides of the lines that have enough
+  // of them; then the polynomial P(θ) = H(θ) + θ²(1-θ)² Σ a_κ (θ-1/2)^κ/κ!, H the cubic
+  // Hermite interpolant of y and h·f at both ends, the a_κ making P^(κ)(1/2) equal the
+  // extrapolated h^κ y^(κ). Returns the interpolation error estimate (the size of the last
+  // term, weighted as the step's error; > 10 rejects the step).
+  double build_dense(int kc, Scalar h) {
+    const int n = (N == Dynamic) ? n_ : N;
+    const int mu = 2 * kc - 3;  // ODEX's default degree (mu + 4 for the polynomial)
+    mu_ = mu;
+    // rows: 0 y0, 1 Δ = y1 - y0, 2 α = Δ - h f1, 3 β = h f0 - Δ, 4 + κ: d_κ then a_κ
+    {
+      Scalar* r = dcoef_row(4);  // y at the midpoint, extrapolated from every line
+      for (int i = 0; i < n; ++i) r[i] = 0;
+      for (int j = 1; j <= kc; ++j) {
+        const Scalar w = wext_[widx(1, kc, j)];
+        const Scalar* ym = ys_line(j);
+        for (int i = 0; i < n; ++i) r[i] = r[i] + w * ym[i];
+      }
+    }
+    std::array<Scalar, kL> pw{};  // h (n_j/2)^p per line
+    for (int j = 1; j <= kc; ++j) pw[j] = h;
+    for (int kap = 1; kap <= mu; ++kap) {
+      const int p = kap - 1;        // order of the central difference (spacing 2 h_j)
+      const int kb = (kap + 1) / 2;  // first line with enough values: mid - p >= 0
+      // h^κ y^(κ)(mid) ≈ h (n_j/2)^p δ^p f_j(mid), extrapolated over lines kb..kc
+      Scalar* r = dcoef_row(4 + kap);
+      for (int i = 0; i < n; ++i) r[i] = 0;
+      for (int j = kb; j <= kc; ++j) {
+        const int half = seq(j) / 2;
+        const Scalar c = wext_[widx(kb, kc, j)] * pw[j];
+        const Scalar* src = fs_line(j) + static_cast<std::size_t>(half + p) * static_cast<std::size_t>(n_);
+        for (int i = 0; i < n; ++i) r[i] = r[i] + c * src[i];
+      }
+      if (kap == mu) break;
+      for (int j = 1; j <= kc; ++j) pw[j] = pw[j] * Scalar(seq(j) / 2);
+      // Next central difference (order p+1), in place: slot q then holds the difference
+      // centred at substep q - p - 1. Only the cone that the highest order P of the line
+      // (P = min(mu-1, 2j-1)) needs at the midpoint is formed.
+      for (int j = (kap + 2) / 2; j <= kc; ++j) {
+        const int mid = seq(j) / 2;
+        const int pmax = std::min(mu - 1, 2 * j - 1);
+        Scalar* fl = fs_line(j);
+        for (int q = mid + pmax; q >= mid - pmax + 2 * (p + 1); --q) {
+          Scalar* a = fl + static_cast<std::size_t>(q) * static_cast<std::size_t>(n_);
+          const Scalar* b = a - 2 * static_cast<std::size_t>(n_);
+          for (int i = 0; i < n; ++i) a[i] = a[i] - b[i];
+        }
+      }
+    }
+    double errsum = 0;
+    Scalar* r0 = dcoef_row(0);
+    Scalar* r1 = dcoef_row(1);
+    Scalar* r2 = dcoef_row(2);
+    Scalar* r3 = dcoef_row(3);
+    const Scalar* y1 = &cur_[kc][0];
+    for (int i = 0; i < n; ++i) {
+      const Scalar y0 = y_[i];
+      const Scalar del = y1[i] - y0;
+      const Scalar al = del - h * f1_[i];
+      const Scalar be = h * f0_[i] - del;
+      r0[i] = y0;
+      r1[i] = del;
+      r2[i] = al;
+      r3[i] = be;
+      // θ-derivatives of the Hermite cubic at θ = 1/2
+      const Scalar herm[4] = {Scalar(0.5) * (y0 + y1[i]) + Scalar(0.125) * (al + be), del + Scalar(0.25) * (al - be),
+                              -(al + be), Scalar(6) * (be - al)};
+      for (int kap = 0; kap <= mu; ++kap) {
+        Scalar v = dcoef_row(4 + kap)[i];
+        if (kap <= 3) v = v - herm[kap];
+        if (kap >= 2) v = v + Scalar(kap * (kap - 1) / 2) * dcoef_row(2 + kap)[i];
+        if (kap >= 4) v = v - Scalar(kap * (kap - 1) * (kap - 2) * (kap - 3)) * dcoef_row(kap)[i];
+        dcoef_row(4 + kap)[i] = Scalar(16) * v;
+      }
+      const Scalar sc = atol_[i] + opt_.rtol * std::max(num::abs(y0), num::abs(y1[i]));
+      const double q = static_cast<double>(dcoef_row(4 + mu)[i] / sc);
+      errsum += q * q;
+    }
+    // Store a_κ/κ! so that an evaluation needs no division.
+    Scalar fact = 1;
+    for (int kap = 2; kap <= mu; ++kap) {
+      fact = fact * Scalar(kap);
+      Scalar* r = dcoef_row(4 + kap);
+      for (int i = 0; i < n; ++i) r[i] = r[i] / fact;
+    }
+    // max over θ of θ²(1-θ)² |θ-1/2|^mu / mu!
+    const double sx = 0.5 * std::sqrt(static_cast<double>(mu) / (mu + 4.0));
+    double errfac = 1.0 / ((mu + 4.0) * (mu + 4.0));
+    for (int j = 1; j <= mu; ++j) errfac *= sx / j;
+    return std::sqrt(errsum / n) * errfac;
+  }
+
+  // The interpolant at θ = (t - t_old)/h of the last accepted step.
+  void dense_eval(Scalar theta, Scalar* out) {
+    const int n = (N == Dynamic) ? n_ : N;
+    const Scalar s = theta - Scalar(0.5), th1 = Scalar(1) - theta;
+    const Scalar w = (theta * th1) * (theta * th1);
+    const Scalar* d = &dcoef_[0];
+    const std::size_t nn = static_cast<std::size_t>(n);
+    // Horner in (θ - 1/2) over the a_κ/κ!, all components at once (independent chains).
+    const Scalar* a = d + static_cast<std::size_t>(4 + mu_) * nn;
+    for (int i = 0; i < n; ++i) out[i] = a[i];
+    for (int kap = mu_ - 1; kap >= 0; --kap) {
+      a = d + static_cast<std::size_t>(4 + kap) * nn;
+      for (int i = 0; i < n; ++i) out[i] = a[i] + out[i] * s;
+    }
+    for (int i = 0; i < n; ++i) {
+      const Scalar herm = d[i] + theta * (d[nn + i] + th1 * (d[2 * nn + i] * theta + d[3 * nn + i] * th1));
+      out[i] = herm + w * out[i];
+    }
+  }
+
   static Scalar sq(Scalar x) { return x * x; }
 
   const char* validate(Scalar t0, const Scalar* y, std::span<const Scalar> tout) const {
@@ -378,6 +580,8 @@ class BulirschStoer {
     if constexpr (N != Dynamic)
       if (n_ != N) return "n does not match the compile-time dimension";
     if (opt_.kmax < 3 || opt_.kmax > kKmaxLimit) return "kmax must be in [3, 12]";
+    if (opt_.dense && opt_.extrapolation != Extrapolation::polynomial)
+      return "dense output needs polynomial extrapolation";
     if (!(opt_.rtol >= 0)) return "rtol must be >= 0";
     if (opt_.atol.empty() || (opt_.atol.size() != 1 && opt_.atol.size() != static_cast<std::size_t>(n_)))
       return "atol must have 1 or n entries";
@@ -406,28 +610,36 @@ class BulirschStoer {
   }
 
   // Gragg's modified midpoint rule with m substeps over [t, t+H]; result into out.
+  // Dense output: fsl receives f at every substep 0..m (m+1 vectors), ymid the state at
+  // substep m/2; both null otherwise.
   template <class Rhs>
-  int midpoint(Rhs& rhs, Scalar t, Scalar hbig, int m, Vec& out, BsResult& res) {
+  int midpoint(Rhs& rhs, Scalar t, Scalar hbig, int m, Vec& out, BsResult& res, Scalar* fsl, Scalar* ymid) {
     const int n = (N == Dynamic) ? n_ : N;  // a compile-time bound lets the loops unroll
     const Scalar hs = hbig / Scalar(m);
     for (int i = 0; i < n; ++i) {
       zm_[i] = y_[i];
       z_[i] = y_[i] + hs * f0_[i];
     }
+    if (fsl)
+      for (int i = 0; i < n; ++i) fsl[i] = f0_[i];
     for (int s = 1; s <= m - 1; ++s) {
-      const int st = rhs(t + Scalar(s) * hs, static_cast<const Scalar*>(&z_[0]), &fz_[0]);
+      if (ymid && 2 * s == m)
+        for (int i = 0; i < n; ++i) ymid[i] = z_[i];
+      Scalar* fz = fsl ? fsl + static_cast<std::size_t>(s) * static_cast<std::size_t>(n_) : &fz_[0];
+      const int st = rhs(t + Scalar(s) * hs, static_cast<const Scalar*>(&z_[0]), fz);
       ++res.nfcn;
       if (st != 0) return st;
       for (int i = 0; i < n; ++i) {
-        const Scalar znew = zm_[i] + Scalar(2) * hs * fz_[i];
+        const Scalar znew = zm_[i] + Scalar(2) * hs * fz[i];
         zm_[i] = z_[i];
         z_[i] = znew;
       }
     }
-    const int st = rhs(t + hbig, static_cast<const Scalar*>(&z_[0]), &fz_[0]);
+    Scalar* fz = fsl ? fsl + static_cast<std::size_t>(m) * static_cast<std::size_t>(n_) : &fz_[0];
+    const int st = rhs(t + hbig, static_cast<const Scalar*>(&z_[0]), fz);
     ++res.nfcn;
     if (st != 0) return st;
-    for (int i = 0; i < n; ++i) out[i] = Scalar(0.5) * (z_[i] + zm_[i] + hs * fz_[i]);
+    for (int i = 0; i < n; ++i) out[i] = Scalar(0.5) * (z_[i] + zm_[i] + hs * fz[i]);
     return 0;
   }
 
@@ -438,24 +650,26 @@ class BulirschStoer {
     for (int l = 2; l <= j; ++l) {
       const Scalar q = Scalar(seq(j)) / Scalar(seq(j - l + 1));
       const Scalar r = q * q;
+      if (!rational) {
+        // Aitken–Neville; one division per column, not per component
+        const Scalar inv = Scalar(1) / (r - Scalar(1));
+        for (int i = 0; i < n; ++i) cur_[l][i] = cur_[l - 1][i] + (cur_[l - 1][i] - prev_[l - 1][i]) * inv;
+        continue;
+      }
       for (int i = 0; i < n; ++i) {
         const Scalar d = cur_[l - 1][i] - prev_[l - 1][i];
         Scalar val;
-        if (rational) {
-          const Scalar back = (l >= 3) ? prev_[l - 2][i] : Scalar(0);
-          const Scalar e = cur_[l - 1][i] - back;
-          bool done = false;
-          if (e != 0) {
-            const Scalar den = r * (Scalar(1) - d / e) - Scalar(1);
-            if (den != 0) {
-              val = cur_[l - 1][i] + d / den;
-              done = true;
-            }
+        const Scalar back = (l >= 3) ? prev_[l - 2][i] : Scalar(0);
+        const Scalar e = cur_[l - 1][i] - back;
+        bool done = false;
+        if (e != 0) {
+          const Scalar den = r * (Scalar(1) - d / e) - Scalar(1);
+          if (den != 0) {
+            val = cur_[l - 1][i] + d / den;
+            done = true;
           }
-          if (!done) val = cur_[l - 1][i] + d / (r - Scalar(1));
-        } else {
-          val = cur_[l - 1][i] + d / (r - Scalar(1));
         }
+        if (!done) val = cur_[l - 1][i] + d / (r - Scalar(1));
         cur_[l][i] = val;
       }
     }
@@ -463,7 +677,12 @@ class BulirschStoer {
 
   BsOptions<Scalar> opt_;
   int n_;
-  Vec y_{}, f0_{}, zm_{}, z_{}, fz_{}, sc_{}, atol_{};
+  Vec y_{}, f0_{}, zm_{}, z_{}, fz_{}, sc_{}, atol_{}, f1_{}, yout_{};
+  std::array<int, kKmaxLimit + 2> nj_{};  // step numbers of the lines, 1-based
+  std::array<double, kKmaxLimit + 2> facmin_{};  // smallest step-size factor per line
+  std::vector<Scalar> fs_, ys_, dcoef_;   // dense output (empty otherwise)
+  std::vector<Scalar> wext_;              // extrapolation weights, widx(jb, je, j)
+  int mu_ = 0;                            // highest midpoint derivative in the current interpolant
   std::array<Vec, kKmaxLimit + 2> prev_{}, cur_{};  // extrapolation rows, columns 1..kmax
 };
 
