@@ -408,12 +408,25 @@ C
 C     2D0*HS*FZ(L) is (2D0*HS)*FZ(L): the product 2D0*HS is hoisted.
       H2 = 2D0*HS
 C     Z(.,1) holds z(i) for even i, Z(.,2) for odd i: z(i+1) replaces
-C     z(i-1) in its column, so the substeps copy nothing.
+C     z(i-1) in its column, so the substeps copy nothing.  z(0) = Y is
+C     read in place by the first substep (i = 1), which writes z(2).
       DO 10 L = 1, N
-         Z(L, 1) = Y(L)
          Z(L, 2) = Y(L) + HS*F0(L)
    10 CONTINUE
-      DO 30 I = 1, M - 1
+      IF (M .GT. 1) THEN
+         CALL FCN(N, T + DBLE(1)*HS, Z(1, 2), FZ, RPAR, IPAR, IERR)
+         NFCN = NFCN + 1
+         IF (IERR .NE. 0) RETURN
+         DO 15 L = 1, N
+            Z(L, 1) = Y(L) + H2*FZ(L)
+   15    CONTINUE
+      ELSE
+C        M = 1: no substep; the smoothing step below needs z(0).
+         DO 16 L = 1, N
+            Z(L, 1) = Y(L)
+   16    CONTINUE
+      END IF
+      DO 30 I = 2, M - 1
 C        IC: column of z(i); IO: column of z(i-1), then of z(i+1).
          IC = MOD(I, 2) + 1
          IO = 3 - IC
