@@ -9,7 +9,7 @@
 !> with transfer()). There is no global or saved state, so several integrations may run
 !> interleaved (a callback may itself start another integration) or on several threads.
 module nanopush_f77_bsint
-  use nanopush_f77_interfaces, only: bsint, smbar
+  use nanopush_f77_interfaces, only: bsint, smbar, smbarp
   use, intrinsic :: iso_c_binding, only: c_int, c_double, c_ptr, c_funptr, c_intptr_t, &
                                          c_f_procpointer
   implicit none
@@ -93,14 +93,19 @@ contains
     real(c_double), intent(in) :: params(6)
     integer(c_int), intent(out) :: nstat(3)
     integer :: ipar(1), ist(3), ierr
+    double precision :: rpar(8)
     nstat = 0_c_int
     if (n /= 6) then
       np_f77_bsint_smooth_bar = 1_c_int
       return
     end if
+    ! smbar's rpar: the six parameters, then the push force (rpar(7:8)) that smbarp computes
+    ! once for the whole integration.
+    rpar(1:6) = params
+    call smbarp(rpar)
     ipar(1) = 0
     call bsint(smbar, int(n), t0, y, int(nout), tout, yout, rtol, atol, h0, hmax, int(kmax), &
-               int(iextr), int(maxstp), params, ipar, ist, ierr)
+               int(iextr), int(maxstp), rpar, ipar, ist, ierr)
     nstat = int(ist, c_int)
     np_f77_bsint_smooth_bar = int(ierr, c_int)
   end function np_f77_bsint_smooth_bar

@@ -40,6 +40,11 @@ module nanopush_f77_interfaces
       integer, intent(inout) :: ipar(*)
       integer, intent(inout) :: ierr
     end subroutine smbar
+
+    !> Sets rpar(7:8), the push force of smbar, from rpar(3:4) (fortran/smbar.f).
+    subroutine smbarp(rpar)
+      double precision, intent(inout) :: rpar(8)
+    end subroutine smbarp
   end interface
 
   interface

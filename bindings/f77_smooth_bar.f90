@@ -15,6 +15,9 @@ module nanopush_f77_smooth_bar
       integer, intent(in) :: ipar(*)
       integer, intent(out) :: ierr
     end subroutine smbar
+    subroutine smbarp(rpar)
+      double precision, intent(inout) :: rpar(8)
+    end subroutine smbarp
   end interface
 
 contains
@@ -28,8 +31,12 @@ contains
     real(c_double), intent(out) :: dydt(6)
     real(c_double), intent(in) :: params(6)
     integer :: ipar(1), ierr
+    double precision :: rpar(8)
+    ! smbar reads the push force from rpar(7:8), which smbarp derives from params(3:4).
+    rpar(1:6) = params
+    call smbarp(rpar)
     ipar(1) = 0
-    call smbar(6, t, y, dydt, params, ipar, ierr)
+    call smbar(6, t, y, dydt, rpar, ipar, ierr)
     np_f77_smooth_bar_rhs = int(ierr, c_int)
   end function np_f77_smooth_bar_rhs
 

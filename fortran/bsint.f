@@ -73,14 +73,17 @@ C=======================================================================
       INTEGER N, NOUT, KMAX, IEXTR, MAXSTP, IPAR(*), NSTAT(3), IERR
       DOUBLE PRECISION T0, Y(*), TOUT(*), YOUT(N,*), RTOL, ATOL(*),
      &                 H0, HMAX, RPAR(*)
-      DOUBLE PRECISION ORDINC, BIG
+      DOUBLE PRECISION ORDINC, BIG, SAFE3, FAC4
       INTEGER NNFMAX
       PARAMETER (ORDINC = 0.9D0, BIG = 1.7976931348623157D308)
+      PARAMETER (SAFE3 = 0.02D0, FAC4 = 4.0D0)
       PARAMETER (NNFMAX = 10)
       DOUBLE PRECISION YW(NMAX), F0(NMAX), YNEW(NMAX)
       DOUBLE PRECISION HH(KMAXX), W(KMAXX), A(KMAXX)
+      DOUBLE PRECISION FCT(3, KMAXX), RSQ(KMAXX, KMAXX)
       INTEGER NSEQ(KMAXX)
-      DOUBLE PRECISION T, H, HWANT, HNEW, TSPAN
+      DOUBLE PRECISION T, H, HWANT, HNEW, TSPAN, Q, FACMIN
+      INTEGER L
       INTEGER KM, MXS, NFCN, NACC, NREJ, NNF, K, KC, KOPT, IOUT, I, J
       INTEGER IE
       LOGICAL HAVEF0, LASTRJ, CLIP, ACCEPT, NONFIN
@@ -134,7 +137,29 @@ C     1); give them defined values all the same.
       DO 45 J = 1, KMAXX
          HH(J) = 0D0
          W(J) = 0D0
+         FCT(1, J) = 0D0
+         FCT(2, J) = 0D0
+         FCT(3, J) = 0D0
    45 CONTINUE
+C     Step-invariant factors of BSTRY and BSXTRP, computed once here
+C     with the very operations of doc steps 4b and 4c (so the values
+C     are the same bits as when computed at every step):
+C       FCT(1,j) = expo = 1/dble(2j-1), FCT(2,j) = facmin/FAC4,
+C       FCT(3,j) = 1/facmin, facmin = SAFE3**expo (j = 2..KM);
+C       RSQ(j,l) = r = q*q, q = dble(n_j)/dble(n_(j-l+1)) (2<=l<=j).
+C     The loops run to KM, a run-time bound, so the compiler cannot
+C     fold SAFE3**expo into a constant: pow is called at run time,
+C     as the C++ engine does.
+      DO 48 J = 2, KM
+         FCT(1, J) = 1D0/DBLE(2*J - 1)
+         FACMIN = SAFE3**FCT(1, J)
+         FCT(2, J) = FACMIN/FAC4
+         FCT(3, J) = 1D0/FACMIN
+         DO 47 L = 2, J
+            Q = DBLE(NSEQ(J))/DBLE(NSEQ(J-L+1))
+            RSQ(J, L) = Q*Q
+   47    CONTINUE
+   48 CONTINUE
 C
 C     ---- Start.
       TSPAN = TOUT(NOUT) - T0
@@ -190,8 +215,8 @@ C        3. Clip the step at the output time; underflow check.
          END IF
 C        4. Build the extrapolation table and decide.
          CALL BSTRY(FCN, N, T, YW, F0, H, K, IEXTR, RTOL, ATOL, NSEQ,
-     &              A, RPAR, IPAR, YNEW, HH, W, KC, ACCEPT, NONFIN,
-     &              NFCN, IE)
+     &              A, FCT, RSQ, RPAR, IPAR, YNEW, HH, W, KC, ACCEPT,
+     &              NONFIN, NFCN, IE)
          IF (IE .NE. 0) THEN
             IERR = 4
             GOTO 900
@@ -270,7 +295,8 @@ C=======================================================================
 C     BSTRY -- one attempted step of size H from (T, Y) with F0 =
 C     f(T, Y): builds rows j = 1..K+1 of the extrapolation table and
 C     stops at the column KC where the convergence monitor decides
-C     (doc step 4).
+C     (doc step 4).  FCT and RSQ: the step-invariant factors BSINT
+C     computes once (see there).
 C     Out: YNEW = T(KC,KC) (the candidate new state), HH(j), W(j)
 C     for j = 2..KC, KC, ACCEPT (decision), NONFIN (.TRUE. when an
 C     error estimate was not finite: ACCEPT is then .FALSE. and the
@@ -278,20 +304,21 @@ C     other outputs are undefined), NFCN incremented by the RHS
 C     evaluations made, IERR non-zero when FCN failed.
 C=======================================================================
       SUBROUTINE BSTRY(FCN, N, T, Y, F0, H, K, IEXTR, RTOL, ATOL,
-     &                 NSEQ, A, RPAR, IPAR, YNEW, HH, W, KC, ACCEPT,
-     &                 NONFIN, NFCN, IERR)
+     &                 NSEQ, A, FCT, RSQ, RPAR, IPAR, YNEW, HH, W, KC,
+     &                 ACCEPT, NONFIN, NFCN, IERR)
       INTEGER NMAX, KMAXX
       PARAMETER (NMAX = 64, KMAXX = 12)
       EXTERNAL FCN
       INTEGER N, K, IEXTR, NSEQ(*), IPAR(*), KC, NFCN, IERR
       DOUBLE PRECISION T, Y(N), F0(N), H, RTOL, ATOL(N), A(*),
-     &                 RPAR(*), YNEW(N), HH(*), W(*)
+     &                 FCT(3, KMAXX), RSQ(KMAXX, KMAXX), RPAR(*),
+     &                 YNEW(N), HH(*), W(*)
       LOGICAL ACCEPT, NONFIN
-      DOUBLE PRECISION SAFE1, SAFE2, SAFE3, FAC4, BIG
-      PARAMETER (SAFE1 = 0.65D0, SAFE2 = 0.94D0, SAFE3 = 0.02D0,
-     &           FAC4 = 4.0D0, BIG = 1.7976931348623157D308)
+      DOUBLE PRECISION SAFE1, SAFE2, BIG
+      PARAMETER (SAFE1 = 0.65D0, SAFE2 = 0.94D0,
+     &           BIG = 1.7976931348623157D308)
       DOUBLE PRECISION TAB(NMAX, KMAXX, KMAXX)
-      DOUBLE PRECISION S, SC, Q, ERR, EXPO, FACMIN, FAC
+      DOUBLE PRECISION S, SC, Q, ERR, FAC
       INTEGER I, J
 C
       ACCEPT = .FALSE.
@@ -304,7 +331,7 @@ C        a. Modified midpoint rule with n_j substeps: T(j,1).
      &               RPAR, IPAR, NFCN, IERR)
          IF (IERR .NE. 0) RETURN
 C        b. Extrapolate row j.
-         CALL BSXTRP(N, J, IEXTR, NSEQ, TAB)
+         CALL BSXTRP(N, J, IEXTR, RSQ, TAB)
          IF (J .LT. 2) GOTO 100
 C        c. Error estimate, step proposal and work for column j.
          S = 0D0
@@ -318,14 +345,13 @@ C        c. Error estimate, step proposal and work for column j.
             NONFIN = .TRUE.
             RETURN
          END IF
-         EXPO = 1D0/DBLE(2*J - 1)
-         FACMIN = SAFE3**EXPO
+C        expo = FCT(1,J), facmin/FAC4 = FCT(2,J), 1/facmin = FCT(3,J).
          IF (ERR .EQ. 0D0) THEN
-            FAC = 1D0/FACMIN
+            FAC = FCT(3, J)
          ELSE
-            FAC = SAFE2*(SAFE1/ERR)**EXPO
+            FAC = SAFE2*(SAFE1/ERR)**FCT(1, J)
          END IF
-         FAC = MAX(FACMIN/FAC4, MIN(1D0/FACMIN, FAC))
+         FAC = MAX(FCT(2, J), MIN(FCT(3, J), FAC))
          HH(J) = H*FAC
          W(J) = A(J)/HH(J)
 C        d. Convergence monitor.
@@ -374,32 +400,51 @@ C=======================================================================
       EXTERNAL FCN
       INTEGER N, M, IPAR(*), NFCN, IERR
       DOUBLE PRECISION T, Y(N), F0(N), H, TJ1(N), RPAR(*)
-      DOUBLE PRECISION ZA(NMAX), ZB(NMAX), ZN(NMAX), FZ(NMAX), HS
-      INTEGER I, L
+      DOUBLE PRECISION Z(NMAX, 2), FZ(NMAX), HS, H2
+      INTEGER I, L, IC, IO
 C
       IERR = 0
       HS = H/DBLE(M)
-C     ZA = z(i-1), ZB = z(i), starting with i = 1.
+C     2D0*HS*FZ(L) is (2D0*HS)*FZ(L): the product 2D0*HS is hoisted.
+      H2 = 2D0*HS
+C     Z(.,1) holds z(i) for even i, Z(.,2) for odd i: z(i+1) replaces
+C     z(i-1) in its column, so the substeps copy nothing.  z(0) = Y is
+C     read in place by the first substep (i = 1), which writes z(2).
       DO 10 L = 1, N
-         ZA(L) = Y(L)
-         ZB(L) = Y(L) + HS*F0(L)
+         Z(L, 2) = Y(L) + HS*F0(L)
    10 CONTINUE
-      DO 30 I = 1, M - 1
-         CALL FCN(N, T + DBLE(I)*HS, ZB, FZ, RPAR, IPAR, IERR)
+      IF (M .GT. 1) THEN
+         CALL FCN(N, T + DBLE(1)*HS, Z(1, 2), FZ, RPAR, IPAR, IERR)
+         NFCN = NFCN + 1
+         IF (IERR .NE. 0) RETURN
+         DO 15 L = 1, N
+            Z(L, 1) = Y(L) + H2*FZ(L)
+   15    CONTINUE
+      ELSE
+C        M = 1: no substep; the smoothing step below needs z(0).
+         DO 16 L = 1, N
+            Z(L, 1) = Y(L)
+   16    CONTINUE
+      END IF
+      DO 30 I = 2, M - 1
+C        IC: column of z(i); IO: column of z(i-1), then of z(i+1).
+         IC = MOD(I, 2) + 1
+         IO = 3 - IC
+         CALL FCN(N, T + DBLE(I)*HS, Z(1, IC), FZ, RPAR, IPAR, IERR)
          NFCN = NFCN + 1
          IF (IERR .NE. 0) RETURN
          DO 20 L = 1, N
-            ZN(L) = ZA(L) + 2D0*HS*FZ(L)
-            ZA(L) = ZB(L)
-            ZB(L) = ZN(L)
+            Z(L, IO) = Z(L, IO) + H2*FZ(L)
    20    CONTINUE
    30 CONTINUE
-C     Now ZB = z(M), ZA = z(M-1).
-      CALL FCN(N, T + H, ZB, FZ, RPAR, IPAR, IERR)
+C     Now z(M) is in column IC, z(M-1) in column IO.
+      IC = MOD(M, 2) + 1
+      IO = 3 - IC
+      CALL FCN(N, T + H, Z(1, IC), FZ, RPAR, IPAR, IERR)
       NFCN = NFCN + 1
       IF (IERR .NE. 0) RETURN
       DO 40 L = 1, N
-         TJ1(L) = 0.5D0*(ZB(L) + ZA(L) + HS*FZ(L))
+         TJ1(L) = 0.5D0*(Z(L, IC) + Z(L, IO) + HS*FZ(L))
    40 CONTINUE
       RETURN
       END
@@ -407,7 +452,8 @@ C
 C=======================================================================
 C     BSXTRP -- extrapolate row J of the table TAB(i, j, l) (component
 C     i, row j, column l) in h**2, columns l = 2..J (doc step 4b),
-C     with d = T(j,l-1) - T(j-1,l-1), r = q*q, q = n_j / n_(j-l+1):
+C     with d = T(j,l-1) - T(j-1,l-1), r = q*q = RSQ(j,l),
+C     q = n_j / n_(j-l+1) (RSQ is computed once by BSINT):
 C     IEXTR = 2, polynomial (Aitken-Neville):
 C        T(j,l) = T(j,l-1) + d/(r - 1)
 C     IEXTR = 1, rational (Stoer-Bulirsch), e = T(j,l-1) - T(j-1,l-2)
@@ -416,17 +462,16 @@ C        T(j,l) = T(j,l-1) + d/(r (1 - d/e) - 1),
 C        falling back to the polynomial formula when e = 0 or the
 C        denominator is 0.
 C=======================================================================
-      SUBROUTINE BSXTRP(N, J, IEXTR, NSEQ, TAB)
+      SUBROUTINE BSXTRP(N, J, IEXTR, RSQ, TAB)
       INTEGER NMAX, KMAXX
       PARAMETER (NMAX = 64, KMAXX = 12)
-      INTEGER N, J, IEXTR, NSEQ(*)
-      DOUBLE PRECISION TAB(NMAX, KMAXX, KMAXX)
-      DOUBLE PRECISION Q, R, D, E, DEN
+      INTEGER N, J, IEXTR
+      DOUBLE PRECISION RSQ(KMAXX, KMAXX), TAB(NMAX, KMAXX, KMAXX)
+      DOUBLE PRECISION R, D, E, DEN
       INTEGER I, L
 C
       DO 20 L = 2, J
-         Q = DBLE(NSEQ(J))/DBLE(NSEQ(J-L+1))
-         R = Q*Q
+         R = RSQ(J, L)
          DO 10 I = 1, N
             D = TAB(I, J, L-1) - TAB(I, J-1, L-1)
             IF (IEXTR .EQ. 1) THEN
