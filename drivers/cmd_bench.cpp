@@ -29,7 +29,7 @@ struct BenchOptions {
   std::vector<std::string> engines;
   std::vector<std::string> precisions;
   int kmin = 6, kmax = 28, kmax_extended = 56, kstep = 1, kstep_extended = 0;
-  int repeats = 5, repeats_extended = 0;
+  int repeats = 9, repeats_extended = 0;
   int samples = 0;
   bool quick = false, no_plot = false, quiet = false;
 };
@@ -367,7 +367,7 @@ void reproduce_bench_scene(ReproduceContext& ctx, const std::string& step, const
     o.repeats = 1;
     o.precisions = {"double", "quad"};
   } else {
-    o.repeats = 5;
+    o.repeats = 9;  // medians of 9: single load spikes on a shared machine do not move them
     o.repeats_extended = 3;  // a quad solve takes 10-400 ms: every other tolerance, median of 3
     o.kstep_extended = 2;
   }

@@ -121,7 +121,7 @@ struct Row {
 const std::vector<std::string>& csv_columns();
 
 struct SweepSettings {
-  int repeats = 5;          ///< timed solves per point (median reported), after one untimed warm-up solve
+  int repeats = 9;          ///< timed solves per point (median reported), after one untimed warm-up solve
                             ///< (repeats = 1: no per-point warm-up, one per engine only)
   int repeats_extended = 0; ///< the same for long/quad engines (0 = repeats): their solves take 1-300 ms
   int kmin = 6, kmax = 28;  ///< rtol = 10^(-k/2), each engine stopping at its rtol_min; extended precision continues to its rtol_min

@@ -124,7 +124,7 @@ class BulirschStoer {
   explicit BulirschStoer(BsOptions<Scalar> opt, int n = N) : opt_(std::move(opt)), n_(n) {
     if constexpr (N == Dynamic) {
       const auto sz = static_cast<std::size_t>(n_ > 0 ? n_ : 1);
-      for (Vec* v : {&y_, &f0_, &zm_, &z_, &fz_, &sc_, &atol_, &f1_, &yout_}) v->assign(sz, Scalar(0));
+      for (Vec* v : {&y_, &f0_, &zm_, &z_, &fz_, &sc_, &atol_, &f1_}) v->assign(sz, Scalar(0));
       for (auto& row : prev_) row.assign(sz, Scalar(0));
       for (auto& row : cur_) row.assign(sz, Scalar(0));
     }
@@ -137,21 +137,8 @@ class BulirschStoer {
       fs_.assign(static_cast<std::size_t>(line_offset(kKmaxLimit + 1)) * nn, Scalar(0));
       ys_.assign(static_cast<std::size_t>(kKmaxLimit + 2) * nn, Scalar(0));
       dcoef_.assign(static_cast<std::size_t>(kMuLimit + 5) * nn, Scalar(0));
-      // Weights of the h^2 polynomial extrapolation to h = 0 from lines jb..je: the
-      // Lagrange form of Aitken–Neville in x_j = n_j^-2, w_j = prod_{l != j} x_l/(x_l - x_j).
-      wext_.assign(static_cast<std::size_t>(kL * kL * kL), Scalar(0));
-      for (int jb = 1; jb < kL; ++jb)
-        for (int je = jb; je < kL; ++je)
-          for (int j = jb; j <= je; ++j) {
-            const Scalar xj = Scalar(1) / (Scalar(nj_[j]) * Scalar(nj_[j]));
-            Scalar w = 1;
-            for (int l = jb; l <= je; ++l) {
-              if (l == j) continue;
-              const Scalar xl = Scalar(1) / (Scalar(nj_[l]) * Scalar(nj_[l]));
-              w = w * xl / (xl - xj);
-            }
-            wext_[widx(jb, je, j)] = w;
-          }
+      yb_.assign(static_cast<std::size_t>(kBatch) * nn, Scalar(0));
+      (void)dense_tables();  // built once per process, here rather than inside a step
     }
   }
 
@@ -407,15 +394,23 @@ class BulirschStoer {
       last_rejected = false;
       res.t_reached = static_cast<double>(t);
       if (dense) {
-        // Outputs inside the step from the interpolant; one at the step's end exactly.
+        // Outputs inside the step from the interpolant, evaluated kBatch at a time (the
+        // Horner chains of different outputs are independent); one at the step's end exactly.
         while (iout < nout && tout[iout] <= t) {
           if (tout[iout] == t) {
             observer(iout, tout[iout], static_cast<const Scalar*>(&y_[0]));
-          } else {
-            dense_eval((tout[iout] - t_old) / h_step, &yout_[0]);
-            observer(iout, tout[iout], static_cast<const Scalar*>(&yout_[0]));
+            ++iout;
+            continue;
           }
-          ++iout;
+          std::array<Scalar, kBatch> theta{};
+          int m = 0;
+          while (m < kBatch && iout + static_cast<std::size_t>(m) < nout && tout[iout + static_cast<std::size_t>(m)] < t) {
+            theta[static_cast<std::size_t>(m)] = (tout[iout + static_cast<std::size_t>(m)] - t_old) / h_step;
+            ++m;
+          }
+          dense_eval(theta, m, &yb_[0]);
+          for (int b = 0; b < m; ++b, ++iout)
+            observer(iout, tout[iout], static_cast<const Scalar*>(&yb_[static_cast<std::size_t>(b * n)]));
         }
       } else {
         emit_reached();
@@ -448,9 +443,36 @@ class BulirschStoer {
   static constexpr int kMaxNonFinite = 10;
 
   static constexpr int kMuLimit = 2 * kKmaxLimit - 3;
+  static constexpr int kBatch = 4;  // outputs interpolated together
   static constexpr int kL = kKmaxLimit + 2;  // line index bound (1-based lines)
   static constexpr std::size_t widx(int jb, int je, int j) {
     return (static_cast<std::size_t>(jb) * kL + static_cast<std::size_t>(je)) * kL + static_cast<std::size_t>(j);
+  }
+  // Tables of the dense output, the same for every instance (step numbers 4j-2): weights of
+  // the h^2 polynomial extrapolation to h = 0 from lines jb..je, the Lagrange form of
+  // Aitken–Neville in x_j = n_j^-2, w_j = prod_{l != j} x_l/(x_l - x_j) at widx(jb, je, j);
+  // then the binomial coefficients C(p, r), p < kMuLimit, at kL^3 + p kMuLimit + r.
+  static const std::vector<Scalar>& dense_tables() {
+    static const std::vector<Scalar> t = [] {
+      std::vector<Scalar> v(static_cast<std::size_t>(kL * kL * kL + kMuLimit * kMuLimit), Scalar(0));
+      auto x = [](int j) { return Scalar(1) / (Scalar(4 * j - 2) * Scalar(4 * j - 2)); };
+      for (int jb = 1; jb < kL; ++jb)
+        for (int je = jb; je < kL; ++je)
+          for (int j = jb; j <= je; ++j) {
+            Scalar w = 1;
+            for (int l = jb; l <= je; ++l)
+              if (l != j) w = w * x(l) / (x(l) - x(j));
+            v[widx(jb, je, j)] = w;
+          }
+      Scalar* c = &v[static_cast<std::size_t>(kL * kL * kL)];
+      for (int p = 0; p < kMuLimit; ++p) {
+        c[p * kMuLimit] = 1;
+        for (int r = 1; r <= p; ++r)
+          c[p * kMuLimit + r] = c[(p - 1) * kMuLimit + r - 1] + (r <= p - 1 ? c[(p - 1) * kMuLimit + r] : Scalar(0));
+      }
+      return v;
+    }();
+    return t;
   }  // highest midpoint derivative in the interpolant
   int seq(int j) const { return nj_[j]; }
   // First right-hand-side slot of line j (1-based) in fs_: line i holds 4i-1 slots.
@@ -470,45 +492,39 @@ class BulirschStoer {
     const int n = (N == Dynamic) ? n_ : N;
     const int mu = 2 * kc - 3;  // ODEX's default degree (mu + 4 for the polynomial)
     mu_ = mu;
+    const std::vector<Scalar>& wext = dense_tables();
     // rows: 0 y0, 1 Δ = y1 - y0, 2 α = Δ - h f1, 3 β = h f0 - Δ, 4 + κ: d_κ then a_κ
     {
       Scalar* r = dcoef_row(4);  // y at the midpoint, extrapolated from every line
       for (int i = 0; i < n; ++i) r[i] = 0;
       for (int j = 1; j <= kc; ++j) {
-        const Scalar w = wext_[widx(1, kc, j)];
+        const Scalar w = wext[widx(1, kc, j)];
         const Scalar* ym = ys_line(j);
         for (int i = 0; i < n; ++i) r[i] = r[i] + w * ym[i];
       }
     }
+    const Scalar* binom = &wext[static_cast<std::size_t>(kL * kL * kL)];
     std::array<Scalar, kL> pw{};  // h (n_j/2)^p per line
     for (int j = 1; j <= kc; ++j) pw[j] = h;
+    const std::size_t nn = static_cast<std::size_t>(n_);
     for (int kap = 1; kap <= mu; ++kap) {
       const int p = kap - 1;        // order of the central difference (spacing 2 h_j)
       const int kb = (kap + 1) / 2;  // first line with enough values: mid - p >= 0
-      // h^κ y^(κ)(mid) ≈ h (n_j/2)^p δ^p f_j(mid), extrapolated over lines kb..kc
-      Scalar* r = dcoef_row(4 + kap);
+      // h^κ y^(κ)(mid) ≈ h (n_j/2)^p δ^p f_j(mid), δ^p f(mid) = Σ_r (-1)^r C(p,r) f(mid+p-2r),
+      // extrapolated over lines kb..kc: one linear combination of stored f values.
+      Scalar* __restrict__ r = dcoef_row(4 + kap);
       for (int i = 0; i < n; ++i) r[i] = 0;
       for (int j = kb; j <= kc; ++j) {
         const int half = seq(j) / 2;
-        const Scalar c = wext_[widx(kb, kc, j)] * pw[j];
-        const Scalar* src = fs_line(j) + static_cast<std::size_t>(half + p) * static_cast<std::size_t>(n_);
-        for (int i = 0; i < n; ++i) r[i] = r[i] + c * src[i];
-      }
-      if (kap == mu) break;
-      for (int j = 1; j <= kc; ++j) pw[j] = pw[j] * Scalar(seq(j) / 2);
-      // Next central difference (order p+1), in place: slot q then holds the difference
-      // centred at substep q - p - 1. Only the cone that the highest order P of the line
-      // (P = min(mu-1, 2j-1)) needs at the midpoint is formed.
-      for (int j = (kap + 2) / 2; j <= kc; ++j) {
-        const int mid = seq(j) / 2;
-        const int pmax = std::min(mu - 1, 2 * j - 1);
-        Scalar* fl = fs_line(j);
-        for (int q = mid + pmax; q >= mid - pmax + 2 * (p + 1); --q) {
-          Scalar* a = fl + static_cast<std::size_t>(q) * static_cast<std::size_t>(n_);
-          const Scalar* b = a - 2 * static_cast<std::size_t>(n_);
-          for (int i = 0; i < n; ++i) a[i] = a[i] - b[i];
+        const Scalar c = wext[widx(kb, kc, j)] * pw[j];
+        const Scalar* fl = fs_line(j);
+        for (int q = 0; q <= p; ++q) {
+          const Scalar cq = (q % 2 ? -c : c) * binom[p * kMuLimit + q];
+          const Scalar* __restrict__ src = fl + static_cast<std::size_t>(half + p - 2 * q) * nn;
+          for (int i = 0; i < n; ++i) r[i] = r[i] + cq * src[i];
         }
       }
+      for (int j = 1; j <= kc; ++j) pw[j] = pw[j] * Scalar(seq(j) / 2);
     }
     double errsum = 0;
     Scalar* r0 = dcoef_row(0);
@@ -553,23 +569,34 @@ class BulirschStoer {
     return std::sqrt(errsum / n) * errfac;
   }
 
-  // The interpolant at θ = (t - t_old)/h of the last accepted step.
-  void dense_eval(Scalar theta, Scalar* out) {
+  // The interpolant of the last accepted step at θ_b = (t_b - t_old)/h, b < m <= kBatch,
+  // into out[b n + i].
+  void dense_eval(const std::array<Scalar, kBatch>& theta, int m, Scalar* out) {
     const int n = (N == Dynamic) ? n_ : N;
-    const Scalar s = theta - Scalar(0.5), th1 = Scalar(1) - theta;
-    const Scalar w = (theta * th1) * (theta * th1);
-    const Scalar* d = &dcoef_[0];
     const std::size_t nn = static_cast<std::size_t>(n);
-    // Horner in (θ - 1/2) over the a_κ/κ!, all components at once (independent chains).
+    const Scalar* d = &dcoef_[0];
+    std::array<Scalar, kBatch> s{};
+    for (int b = 0; b < m; ++b) s[b] = theta[b] - Scalar(0.5);
+    // Horner in (θ - 1/2) over the a_κ/κ!: m·n independent chains.
     const Scalar* a = d + static_cast<std::size_t>(4 + mu_) * nn;
-    for (int i = 0; i < n; ++i) out[i] = a[i];
+    for (int b = 0; b < m; ++b)
+      for (int i = 0; i < n; ++i) out[b * n + i] = a[i];
     for (int kap = mu_ - 1; kap >= 0; --kap) {
       a = d + static_cast<std::size_t>(4 + kap) * nn;
-      for (int i = 0; i < n; ++i) out[i] = a[i] + out[i] * s;
+      for (int b = 0; b < m; ++b) {
+        const Scalar sb = s[b];
+        Scalar* o = out + b * n;
+        for (int i = 0; i < n; ++i) o[i] = a[i] + o[i] * sb;
+      }
     }
-    for (int i = 0; i < n; ++i) {
-      const Scalar herm = d[i] + theta * (d[nn + i] + th1 * (d[2 * nn + i] * theta + d[3 * nn + i] * th1));
-      out[i] = herm + w * out[i];
+    for (int b = 0; b < m; ++b) {
+      const Scalar th = theta[b], th1 = Scalar(1) - th;
+      const Scalar w = (th * th1) * (th * th1);
+      Scalar* o = out + b * n;
+      for (int i = 0; i < n; ++i) {
+        const Scalar herm = d[i] + th * (d[nn + i] + th1 * (d[2 * nn + i] * th + d[3 * nn + i] * th1));
+        o[i] = herm + w * o[i];
+      }
     }
   }
 
@@ -677,11 +704,10 @@ class BulirschStoer {
 
   BsOptions<Scalar> opt_;
   int n_;
-  Vec y_{}, f0_{}, zm_{}, z_{}, fz_{}, sc_{}, atol_{}, f1_{}, yout_{};
+  Vec y_{}, f0_{}, zm_{}, z_{}, fz_{}, sc_{}, atol_{}, f1_{};
   std::array<int, kKmaxLimit + 2> nj_{};  // step numbers of the lines, 1-based
   std::array<double, kKmaxLimit + 2> facmin_{};  // smallest step-size factor per line
-  std::vector<Scalar> fs_, ys_, dcoef_;   // dense output (empty otherwise)
-  std::vector<Scalar> wext_;              // extrapolation weights, widx(jb, je, j)
+  std::vector<Scalar> fs_, ys_, dcoef_, yb_;  // dense output (empty otherwise); yb_: kBatch outputs
   int mu_ = 0;                            // highest midpoint derivative in the current interpolant
   std::array<Vec, kKmaxLimit + 2> prev_{}, cur_{};  // extrapolation rows, columns 1..kmax
 };
