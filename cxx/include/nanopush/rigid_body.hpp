@@ -2,6 +2,7 @@
 // (models.md §A; thesis eqs 3.22–3.26 with erratum 1).
 #pragma once
 #include <cmath>
+#include <type_traits>
 
 #include "nanopush/scalar.hpp"
 
@@ -53,14 +54,25 @@ struct Push {
 struct SmoothBarRhs {
   double mass, inertia;
   Push push;
+  /// The push force components, computed once (in double; other scalars compute them in
+  /// their own precision at each call, so extended-precision runs keep every digit).
+  double fx_d, fy_d;
+  SmoothBarRhs(double m, double i, Push p)
+      : mass(m), inertia(i), push(p), fx_d(p.force * std::cos(p.beta)), fy_d(p.force * std::sin(p.beta)) {}
   template <typename S>
   int operator()(S /*t*/, const S* y, S* dydt) const {
     const S c = num::cos(y[kTheta]);
     const S s = num::sin(y[kTheta]);
     const S pwx = S(push.pbx) * c - S(push.pby) * s;
     const S pwy = S(push.pbx) * s + S(push.pby) * c;
-    const S fx = S(push.force) * num::cos(S(push.beta));
-    const S fy = S(push.force) * num::sin(S(push.beta));
+    S fx, fy;
+    if constexpr (std::is_same_v<S, double>) {
+      fx = fx_d;  // the same operations as below, done once
+      fy = fy_d;
+    } else {
+      fx = S(push.force) * num::cos(S(push.beta));
+      fy = S(push.force) * num::sin(S(push.beta));
+    }
     const S tau = pwx * fy - pwy * fx;
     dydt[kX] = y[kVx];
     dydt[kY] = y[kVy];
