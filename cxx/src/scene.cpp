@@ -233,7 +233,8 @@ Scene parse_scene(std::string_view text, const std::string& source_name) {
   // [solver]
   {
     const auto& t = require_table(root, "solver");
-    check_keys(t, "solver", {"t_end", "samples", "rtol", "atol", "engine", "method", "h0", "hmax", "max_steps"});
+    check_keys(t, "solver", {"t_end", "samples", "rtol", "atol", "engine", "method", "precision", "h0", "hmax",
+                         "max_steps"});
     if (auto ms = opt_number(t, "solver", "max_steps")) {
       if (!(*ms >= 1 && *ms <= 1e9) || std::floor(*ms) != *ms)
         throw InputError("solver.max_steps", fmt(*ms), "must be an integer in [1, 1000000000]");
@@ -258,6 +259,17 @@ Scene parse_scene(std::string_view text, const std::string& source_name) {
     require_one_of("solver.engine", sc.solver.engine, {"cxx", "f77"});
     sc.solver.method = opt_string(t, "solver", "method").value_or("faithful");
     require_one_of("solver.method", sc.solver.method, {"faithful", "modern", "cvode"});
+    sc.solver.precision = opt_string(t, "solver", "precision").value_or("double");
+    require_one_of("solver.precision", sc.solver.precision, {"double", "long", "quad"});
+    if (sc.solver.precision != "double") {
+      // The same rule as run_scene: extended precision needs the RHS templated on the scalar.
+      const std::string v = "\"" + sc.solver.precision + "\"";
+      const std::string need = "long and quad need solver.engine = \"cxx\", solver.method = \"faithful\" or "
+                               "\"modern\", on a smooth surface";
+      if (sc.rough()) throw InputError("solver.precision", v, need + " (the rough-surface friction is computed in double)");
+      if (sc.solver.engine != "cxx") throw InputError("solver.precision", v, need + " (the F77 engine is REAL*8)");
+      if (sc.solver.method == "cvode") throw InputError("solver.precision", v, need + " (CVODE is double)");
+    }
     if (auto h = opt_number(t, "solver", "h0")) {
       require_nonnegative("solver.h0", *h, "s");
       sc.solver.h0 = *h;

@@ -1,5 +1,7 @@
 #include "nanopush/simulate.hpp"
 
+#include <type_traits>
+
 #include "f77_bsint.h"
 #include "f77_rough.h"
 #include "nanopush/error.hpp"
@@ -25,6 +27,21 @@ RunSettings resolve_settings(const Scene& scene, RunSettings s) {
     throw InputError("method", "cvode", "the CVODE cross-check exists for rough scenes under the coulomb law only");
   if (s.engine == "f77" && scene.rough() && s.law == "coulomb")
     throw InputError("engine", "f77", "the F77 engine implements the thesis friction law only (use --engine cxx)");
+  // Precision: the field named is the one the value came from (the settings or the scene).
+  const std::string pfield = s.precision.empty() ? "solver.precision" : "precision";
+  if (s.precision.empty()) s.precision = scene.solver.precision;
+  if (s.precision != "double" && s.precision != "long" && s.precision != "quad")
+    throw InputError(pfield, s.precision, "must be double, long or quad");
+  if (s.precision != "double") {
+    // Extended precision exists where the right-hand side is templated on the scalar: the
+    // smooth-surface bar (SmoothBarRhs) in the C++ Bulirsch-Stoer.
+    const std::string need = "long and quad need engine = cxx, method faithful or modern, on a smooth scene";
+    if (s.engine != "cxx") throw InputError(pfield, s.precision, need + " (the F77 engine is REAL*8)");
+    if (scene.rough())
+      throw InputError(pfield, s.precision, need + " (the rough-surface friction is computed in double)");
+    if (s.method != "faithful" && s.method != "modern")
+      throw InputError(pfield, s.precision, need + " (CVODE is double)");
+  }
   return s;
 }
 
@@ -34,10 +51,11 @@ TrajectoryRow make_row(double t, const double* y, const WorldWrench& f = {}) {
   return {t, y[kX], y[kY], y[kTheta], y[kVx], y[kVy], y[kOmega], f.fx, f.fy, f.mf};
 }
 
-BsOptions<double> options_for(const Scene& sc, const RunSettings& s, const std::vector<double>& atol) {
-  auto opt = s.method == "modern" ? BsOptions<double>::modern(s.rtol, atol) : BsOptions<double>::faithful(s.rtol, atol);
-  opt.h0 = sc.solver.h0;
-  opt.hmax = sc.solver.hmax;
+template <class S = double>
+BsOptions<S> options_for(const Scene& sc, const RunSettings& s, const std::vector<S>& atol) {
+  auto opt = s.method == "modern" ? BsOptions<S>::modern(S(s.rtol), atol) : BsOptions<S>::faithful(S(s.rtol), atol);
+  opt.h0 = S(sc.solver.h0);
+  opt.hmax = S(sc.solver.hmax);
   opt.maxstp = sc.solver.max_steps;
   return opt;
 }
@@ -52,19 +70,41 @@ RoughBarModel rough_model(const Scene& sc) {
   return m;
 }
 
+/// The smooth bar in the C++ engine, integrated in scalar S (double, long double or
+/// __float128): initial state, output times, rtol and atol converted to S; the rows are the
+/// states rounded back to double. In double this is the plain double run.
+template <class S>
 Trajectory run_cxx_smooth(const Scene& sc, const RunSettings& s) {
+  constexpr bool extended = !std::is_same_v<S, double>;
   Trajectory tr;
   tr.engine_label = "cxx-" + s.method;
+  tr.precision = num::name<S>();
+  if constexpr (extended) tr.engine_label += "-" + tr.precision;
   tr.rtol = s.rtol;
   tr.atol = sc.atol_vector(s.rtol, s.atol);
-  BulirschStoer<double, kStateSize> bs(options_for(sc, s, tr.atol));
+  const std::vector<S> atol(tr.atol.begin(), tr.atol.end());
+  BulirschStoer<S, kStateSize> bs(options_for<S>(sc, s, atol));
   const SmoothBarRhs rhs{sc.mass, sc.inertia, sc.push};
-  const auto tout = sc.output_times();
-  std::array<double, kStateSize> y = sc.initial;
+  const auto tout_d = sc.output_times();
+  const std::vector<S> tout(tout_d.begin(), tout_d.end());
+  std::array<S, kStateSize> y;
+  std::copy(sc.initial.begin(), sc.initial.end(), y.begin());
   tr.rows.reserve(tout.size());
+  if constexpr (extended) tr.extended.reserve(tout.size());
   const double n = static_cast<double>(tout.size());
-  tr.stats = bs.integrate(rhs, 0.0, y.data(), std::span<const double>(tout), [&](std::size_t i, double t, const double* yy) {
-    tr.rows.push_back(make_row(t, yy));
+  tr.stats = bs.integrate(rhs, S(0), y.data(), std::span<const S>(tout), [&](std::size_t i, S t, const S* yy) {
+    if constexpr (extended) {
+      double yd[kStateSize];
+      std::array<num::quad, kStateSize> yq;
+      for (int c = 0; c < kStateSize; ++c) {
+        yd[c] = static_cast<double>(yy[c]);
+        yq[static_cast<std::size_t>(c)] = static_cast<num::quad>(yy[c]);
+      }
+      tr.rows.push_back(make_row(static_cast<double>(t), yd));
+      tr.extended.push_back(yq);
+    } else {
+      tr.rows.push_back(make_row(t, yy));
+    }
     if (s.progress) s.progress(static_cast<double>(i + 1) / n);
   });
   return tr;
@@ -179,8 +219,14 @@ Trajectory run_scene(const Scene& scene, const RunSettings& settings) {
   Trajectory tr;
   if (s.engine == "f77")
     tr = run_f77(scene, s);
+  else if (scene.rough())
+    tr = run_cxx_rough(scene, s);
+  else if (s.precision == "long")
+    tr = run_cxx_smooth<long double>(scene, s);
+  else if (s.precision == "quad")
+    tr = run_cxx_smooth<num::quad>(scene, s);
   else
-    tr = scene.rough() ? run_cxx_rough(scene, s) : run_cxx_smooth(scene, s);
+    tr = run_cxx_smooth<double>(scene, s);
   if (!tr.stats.ok()) {
     tr.complete = false;
     if (!s.allow_partial)

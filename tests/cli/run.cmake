@@ -26,6 +26,35 @@ set_tests_properties(cli.run.missing_scene_message PROPERTIES ENVIRONMENT "${_en
 add_test(NAME cli.run.bad_rtol COMMAND ${_np} run fig3_6a --rtol -1)
 set_tests_properties(cli.run.bad_rtol PROPERTIES WILL_FAIL TRUE)
 
+# --precision (issue 7): quad on a smooth scene runs and writes its CSV (exit status 0,
+# checked by the run itself; the file checked after it, stale copies removed before it).
+set(_quad_csv ${CMAKE_CURRENT_BINARY_DIR}/fig3_6a.quad.csv)
+add_test(NAME cli.run.precision_quad_clean COMMAND ${CMAKE_COMMAND} -E rm -f ${_quad_csv})
+set_tests_properties(cli.run.precision_quad_clean PROPERTIES FIXTURES_SETUP cli_quad_clean)
+add_test(NAME cli.run.precision_quad
+  COMMAND ${_np} run fig3_6a --precision quad --method modern --rtol 1e-20 --out ${_quad_csv})
+set_tests_properties(cli.run.precision_quad PROPERTIES ENVIRONMENT "${_env}"
+  FIXTURES_REQUIRED cli_quad_clean FIXTURES_SETUP cli_quad_csv)
+add_test(NAME cli.run.precision_quad_csv COMMAND ${CMAKE_COMMAND} -E cat ${_quad_csv})
+set_tests_properties(cli.run.precision_quad_csv PROPERTIES FIXTURES_REQUIRED cli_quad_csv
+  PASS_REGULAR_EXPRESSION "^t,x,y,theta,vx,vy,omega,fx,fy,mf\n0,0,0,-0.5,0,0,0,.*\n1.6000000000000001e-09,[^\n]*\n$")
+# The summary shows the precision and the wall time (the cost).
+add_test(NAME cli.run.precision_summary COMMAND ${_np} run fig3_6a --precision long --out -)
+set_tests_properties(cli.run.precision_summary PROPERTIES ENVIRONMENT "${_env}"
+  PASS_REGULAR_EXPRESSION "fig3_6a \\[cxx-faithful-long\\] rtol = 1e-12, precision long[^\n]*\n.*wall time [0-9.]+ m?s")
+# An unknown value: refused by the option check, naming the option.
+add_test(NAME cli.run.precision_bogus COMMAND ${_np} run fig3_6a --precision bogus)
+set_tests_properties(cli.run.precision_bogus PROPERTIES ENVIRONMENT "${_env}" WILL_FAIL TRUE)
+add_test(NAME cli.run.precision_bogus_message COMMAND ${_np} run fig3_6a --precision bogus)
+set_tests_properties(cli.run.precision_bogus_message PROPERTIES ENVIRONMENT "${_env}"
+  PASS_REGULAR_EXPRESSION "--precision: bogus not in \\{double,long,quad\\}")
+# Extended precision where the RHS is double only (F77 engine): an input error naming it.
+add_test(NAME cli.run.precision_f77 COMMAND ${_np} run fig3_6a --precision quad --engine f77)
+set_tests_properties(cli.run.precision_f77 PROPERTIES ENVIRONMENT "${_env}" WILL_FAIL TRUE)
+add_test(NAME cli.run.precision_f77_message COMMAND ${_np} run fig3_6a --precision quad --engine f77)
+set_tests_properties(cli.run.precision_f77_message PROPERTIES ENVIRONMENT "${_env}"
+  PASS_REGULAR_EXPRESSION "precision = quad: long and quad need engine = cxx")
+
 # A bad scene file: the message names the field, the value and the range; exit code 2.
 file(WRITE ${CMAKE_CURRENT_BINARY_DIR}/bad_mass.toml
   "[object]\nlength = 1e-7\nwidth = 5e-8\nmass = -1\n[push]\nforce = 1e-6\nxn = 0\nyn = 0\n[solver]\nt_end = 1e-9\n")

@@ -6,6 +6,8 @@
 #include <vector>
 
 #include "nanopush/bulirsch_stoer.hpp"
+#include "nanopush/rigid_body.hpp"
+#include "nanopush/scalar.hpp"
 #include "nanopush/scene.hpp"
 
 namespace nanopush {
@@ -33,6 +35,11 @@ struct RunSettings {
   bool allow_partial = false;
   double rtol = 0;                  ///< 0 = the scene's
   double atol = -1;                 ///< < 0 = the scene's (0 = automatic scaling)
+  /// Scalar of the integration: double | long (x87 80-bit long double) | quad (__float128);
+  /// "" = the scene's solver.precision. long and quad need engine cxx, method faithful or
+  /// modern, on a smooth scene (the right-hand side templated on the scalar); each costs
+  /// more wall time per RHS call (docs/scenes.md).
+  std::string precision = "double";
   /// Called at each output sample with the fraction done (for progress display).
   std::function<void(double)> progress;
 };
@@ -43,8 +50,13 @@ struct StickEventRecord {
 };
 
 struct Trajectory {
-  std::string engine_label;  ///< e.g. "cxx-faithful", "f77", "cxx-faithful-coulomb"
-  std::vector<TrajectoryRow> rows;
+  std::string engine_label;  ///< e.g. "cxx-faithful", "f77", "cxx-faithful-coulomb", "cxx-modern-quad"
+  std::string precision = "double";  ///< scalar of the integration: double | long | quad
+  std::vector<TrajectoryRow> rows;   ///< always double (extended-precision states rounded)
+  /// Extended-precision runs (precision long or quad): the state x, y, theta, vx, vy, omega
+  /// at each output in the scalar of the integration, widened exactly to __float128 (rows
+  /// holds the same values rounded to double). Empty for double runs.
+  std::vector<std::array<num::quad, kStateSize>> extended;
   BsResult stats;
   double rtol = 0;
   std::vector<double> atol;

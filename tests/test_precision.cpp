@@ -1,0 +1,198 @@
+// Precision as a user choice (issue 7): RunSettings::precision / solver.precision = double |
+// long | quad on the smooth-surface nanobar, against the exact pendulum evaluated in quad.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "nanopush/elliptic.hpp"
+#include "nanopush/error.hpp"
+#include "nanopush/simulate.hpp"
+
+using namespace nanopush;
+using Catch::Matchers::Contains;
+using num::quad;
+
+namespace {
+
+std::string preset(const std::string& name) {
+  return std::string(NANOPUSH_SOURCE_DIR) + "/drivers/scenes/thesis/" + name + ".toml";
+}
+
+/// Max |theta - theta_exact| over the outputs [rad], the exact pendulum in quad (theta* and
+/// the torque amplitude from the push point in quad). `rounded`: use the rows (double)
+/// even when the run kept its extended-precision states.
+double theta_error(const Scene& sc, const Trajectory& tr, bool rounded = false) {
+  const quad pbx = sc.push.pbx, pby = sc.push.pby;
+  const quad theta_eq = quad(sc.push.beta) - num::atan2(pby, pbx);
+  const Pendulum<quad> ex(theta_eq, quad(sc.initial[kTheta]), quad(sc.push.force) * num::sqrt(pbx * pbx + pby * pby),
+                          quad(sc.inertia));
+  quad e = 0;
+  for (std::size_t i = 0; i < tr.rows.size(); ++i) {
+    const quad th = rounded || tr.extended.empty() ? quad(tr.rows[i][3]) : tr.extended[i][kTheta];
+    e = std::max(e, num::abs(th - ex.theta(quad(tr.rows[i][0]))));
+  }
+  return static_cast<double>(e);
+}
+
+RunSettings settings(const char* precision, const char* method, double rtol) {
+  RunSettings rs;
+  rs.engine = "cxx";
+  rs.precision = precision;
+  rs.method = method;
+  rs.rtol = rtol;
+  return rs;
+}
+
+/// The rows are the extended states rounded to double, and the labels say the precision.
+void check_rows_are_rounded(const Trajectory& tr, const std::string& precision) {
+  CHECK(tr.precision == precision);
+  CHECK(tr.engine_label.ends_with("-" + precision));
+  REQUIRE(tr.extended.size() == tr.rows.size());
+  for (std::size_t i = 0; i < tr.rows.size(); ++i)
+    for (int c = 0; c < kStateSize; ++c)
+      REQUIRE(tr.rows[i][static_cast<std::size_t>(c) + 1] == static_cast<double>(tr.extended[i][static_cast<std::size_t>(c)]));
+}
+
+}  // namespace
+
+TEST_CASE("precision quad: fig3_6a modern at rtol 1e-24 reaches 1e-20 in theta", "[precision][numeric]") {
+  const Scene sc = load_scene(preset("fig3_6a"));
+  const Trajectory tr = run_scene(sc, settings("quad", "modern", 1e-24));
+  check_rows_are_rounded(tr, "quad");
+  CHECK(tr.engine_label == "cxx-modern-quad");
+  const double e = theta_error(sc, tr);
+  INFO("quad modern rtol 1e-24: |dtheta| " << e << ", naccpt " << tr.stats.naccpt << ", nfcn " << tr.stats.nfcn);
+  // Measured 4.3e-23 (83 accepted steps, 14 046 RHS). The issue asks for 1e-20; the bound
+  // for dense output is that of tests/test_smooth_bar.cpp, the local errors of naccpt steps
+  // adding up: 5 naccpt rtol = 4.2e-22, 10x above the measured value.
+  CHECK(e <= 1e-20);
+  CHECK(e <= 5 * static_cast<double>(tr.stats.naccpt) * 1e-24);
+  // Rounded to double, the rows carry the result to the last bit of theta: within half an
+  // ulp of the largest |theta| (2 theta* + 0.5 = 2.54 rad: 2.2e-16) plus the error above,
+  // where a double-precision run stops near 1e-14.
+  double thmax = 0;
+  for (const auto& r : tr.rows) thmax = std::max(thmax, std::fabs(r[3]));
+  const double half_ulp = (std::nextafter(thmax, 4.0) - thmax) / 2;
+  CHECK(theta_error(sc, tr, true) <= half_ulp + e);
+}
+
+TEST_CASE("precision long: rtol 1e-17 beats the floor of double", "[precision][numeric]") {
+  const Scene sc = load_scene(preset("fig3_6a"));
+  // The floor of double: the best theta error over rtol 1e-10 ... 1e-16, both methods
+  // (measured 1.4e-14, faithful at rtol 1e-10 and 1e-12; tighter tolerances only add rounding).
+  double floor_double = 1;
+  for (const char* method : {"faithful", "modern"})
+    for (double rtol : {1e-10, 1e-11, 1e-12, 1e-13, 1e-14, 1e-15, 1e-16}) {
+      const Trajectory tr = run_scene(sc, settings("double", method, rtol));
+      CHECK(tr.extended.empty());
+      CHECK(tr.precision == "double");
+      floor_double = std::min(floor_double, theta_error(sc, tr));
+    }
+  INFO("double floor " << floor_double);
+  CHECK(floor_double > 1e-15);  // it is a floor: double cannot resolve the last digits
+  for (const char* method : {"faithful", "modern"}) {
+    const Trajectory tr = run_scene(sc, settings("long", method, 1e-17));
+    check_rows_are_rounded(tr, "long");
+    const double e = theta_error(sc, tr), er = theta_error(sc, tr, true);
+    INFO("long " << method << " rtol 1e-17: |dtheta| " << e << " (rows in double " << er << "), nfcn "
+                 << tr.stats.nfcn);
+    // Measured: faithful 2.2e-17, modern 3.2e-16 (rows 3.9e-16), against 1.4e-14 for double:
+    // at least 10x below the floor of double, also after rounding to double.
+    CHECK(e <= floor_double / 10);
+    CHECK(er <= floor_double / 10);
+  }
+}
+
+TEST_CASE("precision double is the default, and extended precision takes the same steps at rtol 1e-12",
+          "[precision][numeric]") {
+  const Scene sc = load_scene(preset("fig3_6a"));
+  RunSettings def;  // default settings: double
+  CHECK(def.precision == "double");
+  const Trajectory a = run_scene(sc, def);
+  const Trajectory b = run_scene(sc, settings("double", "faithful", 0));
+  CHECK(a.engine_label == "cxx-faithful");
+  CHECK(a.precision == "double");
+  CHECK(a.extended.empty());
+  REQUIRE(a.rows.size() == b.rows.size());
+  for (std::size_t i = 0; i < a.rows.size(); ++i) CHECK(a.rows[i] == b.rows[i]);
+  // At the scene's rtol 1e-12 the error estimates lie far above the rounding of either
+  // scalar: the same steps (same counts), other digits.
+  const Trajectory q = run_scene(sc, settings("quad", "faithful", 0));
+  CHECK(q.engine_label == "cxx-faithful-quad");
+  CHECK(q.stats.nfcn == a.stats.nfcn);
+  CHECK(q.stats.naccpt == a.stats.naccpt);
+}
+
+TEST_CASE("precision other than double is refused where the RHS is double only", "[precision][unit]") {
+  const Scene smooth = load_scene(preset("fig3_6a"));
+  const Scene rough = load_scene(preset("fig3_27"));
+  RunSettings rs;
+  rs.precision = "quad";
+  rs.engine = "f77";
+  CHECK_THROWS_AS(run_scene(smooth, rs), InputError);
+  CHECK_THROWS_WITH(run_scene(smooth, rs), Contains("precision = quad") && Contains("engine = cxx") &&
+                                               Contains("F77"));
+  rs.engine = "cxx";
+  rs.precision = "long";
+  CHECK_THROWS_AS(run_scene(rough, rs), InputError);
+  CHECK_THROWS_WITH(run_scene(rough, rs), Contains("precision = long") && Contains("smooth scene"));
+  rs.law = "coulomb";
+  rs.method = "cvode";
+  CHECK_THROWS_WITH(run_scene(rough, rs), Contains("precision = long") && Contains("smooth scene"));
+  RunSettings bad;
+  bad.precision = "bogus";
+  CHECK_THROWS_AS(run_scene(smooth, bad), InputError);
+  CHECK_THROWS_WITH(run_scene(smooth, bad), Contains("precision = bogus") && Contains("must be double, long or quad"));
+  try {
+    (void)resolve_settings(smooth, bad);
+    FAIL("no InputError");
+  } catch (const InputError& e) {
+    CHECK(e.field() == "precision");
+  }
+  // double stays allowed everywhere.
+  RunSettings d;
+  d.precision = "double";
+  d.engine = "f77";
+  CHECK(resolve_settings(rough, d).precision == "double");
+}
+
+TEST_CASE("solver.precision in a scene file", "[precision][scene][unit]") {
+  const std::string base = R"(
+[object]
+length = 100e-9
+width = 55e-9
+height = 50e-9
+density = 2267.0
+[push]
+force = 5e-6
+xn = 27.5e-9
+yn = 45e-9
+[initial]
+theta = -0.5
+[solver]
+t_end = 1.6e-9
+samples = 5
+)";
+  CHECK(parse_scene(base, "s").solver.precision == "double");
+  const Scene sc = parse_scene(base + "precision = \"long\"\n", "s");
+  CHECK(sc.solver.precision == "long");
+  CHECK_THROWS_WITH(parse_scene(base + "precision = \"octuple\"\n", "s"),
+                    Contains("solver.precision = \"octuple\"") && Contains("double, long, quad"));
+  CHECK_THROWS_WITH(parse_scene(base + "precision = \"quad\"\nengine = \"f77\"\n", "s"),
+                    Contains("solver.precision = \"quad\"") && Contains("F77"));
+  CHECK_THROWS_WITH(parse_scene(base + "precision = \"quad\"\n[surface]\nkind = \"rough\"\nmu = 0.1\n", "s"),
+                    Contains("solver.precision = \"quad\"") && Contains("smooth surface"));
+  // "" takes the scene's precision; the settings' value overrides it.
+  RunSettings from_scene;
+  from_scene.precision = "";
+  const Trajectory tl = run_scene(sc, from_scene);
+  CHECK(tl.precision == "long");
+  CHECK(tl.engine_label == "cxx-faithful-long");
+  CHECK(run_scene(sc, RunSettings{}).precision == "double");
+  // A scene's extended precision with the F77 engine asked on the command line: the error
+  // names the scene's key.
+  from_scene.engine = "f77";
+  CHECK_THROWS_WITH(run_scene(sc, from_scene), Contains("solver.precision = long"));
+}
