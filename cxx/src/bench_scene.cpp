@@ -10,6 +10,8 @@
 #include "nanopush/rough_bar.hpp"
 #include "nanopush/stick_slip.hpp"
 
+#include <limits>
+
 #include <quadmath.h>
 #include <unistd.h>
 
@@ -108,8 +110,11 @@ Solve solve_f77_native(const Problem& p, const std::array<double, 6>& params, do
 /// comes from the F77 program built with -freal-8-real-16 instead).
 struct RoughBenchRhs {
   RoughBarThesisRhs rhs;
+  std::int64_t budget = 0;            ///< evaluations allowed per solve (0 = no limit)
+  mutable std::int64_t calls = 0;     ///< since the last reset (the benchmark is sequential)
   template <class S>
   int operator()(S t, const S* y, S* d) const {
+    if (budget > 0 && ++calls > budget) return 97;  // the solve fails: RHS budget spent
     double yd[kRoughStateSize], dd[kRoughStateSize];
     for (int i = 0; i < kRoughStateSize; ++i) yd[i] = static_cast<double>(y[i]);
     const int st = rhs(static_cast<double>(t), yd, dd);
@@ -295,7 +300,7 @@ Bench make_bench(const Scene& sc, const EngineConfig& cfg) {
                                      "event-locating C++ BS in double (no extended-precision coulomb engine): faithful "
                                      "at rtol 1e-14 vs modern at 1e-13");
     b.reference.kind = "double";
-    auto rhs = std::make_shared<const RoughBenchRhs>(RoughBenchRhs{RoughBarThesisRhs{m}});
+    auto rhs = std::make_shared<const RoughBenchRhs>(RoughBenchRhs{RoughBarThesisRhs{m}, cfg.rhs_budget});
     const RhsSamples smp = samples_from(p, b.reference);
     auto crhs = std::make_shared<const CoulombBenchRhs>(CoulombBenchRhs{mc});
     for (const bool cvode : {false, true}) {
@@ -312,6 +317,21 @@ Bench make_bench(const Scene& sc, const EngineConfig& cfg) {
     dcfg.precisions = {"double"};
     for (auto& e : generic_engines<kRoughStateSize>(p, rhs, smp, dcfg)) {
       e.note = "no event location (thesis-law ODE): " + e.note;
+      if (cfg.rhs_budget > 0) {
+        e.note += "; at most " + std::to_string(cfg.rhs_budget) + " RHS evaluations per solve";
+        // every solve and every RHS timing starts a fresh budget
+        e.solve = [inner = e.solve, rhs](double rtol) {
+          rhs->calls = 0;
+          return inner(rtol);
+        };
+        if (e.time_rhs)
+          e.time_rhs = [inner = e.time_rhs, rhs](std::int64_t count) {
+            rhs->calls = std::numeric_limits<std::int64_t>::min() / 2;  // timing is never cut short
+            const double t = inner(count);
+            rhs->calls = 0;
+            return t;
+          };
+      }
       b.engines.push_back(std::move(e));
     }
   } else if (sc.rough()) {

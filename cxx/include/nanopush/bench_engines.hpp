@@ -49,6 +49,9 @@ namespace nanopush::bench {
 struct EngineConfig {
   std::vector<std::string> precisions = {"double"};  ///< of the C++ BS: double, long, quad
   std::vector<std::string> only;                     ///< engine names to keep
+  /// Stick-slip scene: RHS evaluations allowed per solve to the engines without event
+  /// location (0 = only their step budgets); past it the RHS fails and so does the solve.
+  std::int64_t rhs_budget = 0;
   [[nodiscard]] bool wants(const std::string& name) const {
     return only.empty() || std::find(only.begin(), only.end(), name) != only.end();
   }
