@@ -313,6 +313,9 @@ TEST_CASE("bench: stick-slip RHS budget stops the engines without event location
   const Scene sc = load_scene(std::string(NANOPUSH_SOURCE_DIR) + "/drivers/scenes/bench/stick_mu015.toml");
   bench::EngineConfig cfg;
   cfg.only = {"cxx-events", "cxx-faithful", "odeint-bs"};
+#if defined(NANOPUSH_HAVE_SUNDIALS)
+  cfg.only.push_back("cvode-adams");  // its failure path (flag name freed: the ASan run checks)
+#endif
   cfg.rhs_budget = 20000;
   const bench::Bench b = bench::make_bench(sc, cfg);
   for (const auto& e : b.engines) {
@@ -333,7 +336,10 @@ TEST_CASE("bench: stick-slip RHS budget stops the engines without event location
     for (int rep = 0; rep < 2; ++rep) {
       const bench::Solve bad = e.solve(1e-6);
       CHECK(bad.status != 0);
-      CHECK(bad.nfcn <= 20001);
+      CHECK_FALSE(bad.message.empty());
+      // Stopped at the budget, not at the ~1e6 evaluations the chattering needs (CVODE's
+      // own counter reads up to 10 above the calls its RHS received).
+      CHECK(bad.nfcn <= 20000 + 10);
     }
     if (e.time_rhs) CHECK(e.time_rhs(50000) > 0.0);
     CHECK(e.solve(1e-3).nfcn == ok.nfcn);

@@ -21,6 +21,7 @@
 //                              benchmark only, header-only (bench_odeint.hpp)
 // Scene-specific engines (the F77 RHS through np_f77_bsint_smooth_bar) are added by the scene.
 #pragma once
+#include <cstdlib>
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -178,6 +179,13 @@ Solve solve_f77_callback(const Problem& p, const Rhs& rhs, double rtol, double* 
 #ifdef NANOPUSH_HAVE_SUNDIALS
 // ---------------------------------------------------------------- SUNDIALS
 namespace detail {
+/// SUNDIALS' *GetReturnFlagName returns a malloc'd string the caller must free.
+inline std::string flag_name(char* name) {
+  std::string out = name ? name : "unknown flag";
+  std::free(name);
+  return out;
+}
+
 template <class Rhs>
 int sun_rhs(realtype t, N_Vector y, N_Vector ydot, void* udata) {
   const int st = (*static_cast<const Rhs*>(udata))(double(t), N_VGetArrayPointer(y), N_VGetArrayPointer(ydot));
@@ -248,7 +256,7 @@ Solve solve_cvode(const Problem& p, const Rhs& rhs, double rtol, bool bdf, doubl
     }
     if (seconds) *seconds = detail::seconds_since(t0);
     s.status = flag < 0 ? -flag : 0;
-    if (flag < 0) s.message = std::string("CVODE: ") + CVodeGetReturnFlagName(flag);
+    if (flag < 0) s.message = "CVODE: " + detail::flag_name(CVodeGetReturnFlagName(flag));
     long nfe = 0, nfels = 0, nst = 0, netf = 0, nncf = 0;
     CVodeGetNumRhsEvals(o.mem, &nfe);
     if (bdf) CVodeGetNumLinRhsEvals(o.mem, &nfels);
@@ -293,7 +301,7 @@ Solve solve_arkode_erk8(const Problem& p, const Rhs& rhs, double rtol, double* s
     }
     if (seconds) *seconds = detail::seconds_since(t0);
     s.status = flag < 0 ? -flag : 0;
-    if (flag < 0) s.message = std::string("ARKODE: ") + ERKStepGetReturnFlagName(flag);
+    if (flag < 0) s.message = "ARKODE: " + detail::flag_name(ERKStepGetReturnFlagName(flag));
     long nfe = 0, nst = 0, netf = 0;
     ERKStepGetNumRhsEvals(o.mem, &nfe);
     ERKStepGetNumSteps(o.mem, &nst);
