@@ -76,6 +76,14 @@ void require_one_of(const std::string& field, const std::string& v, const std::v
 
 }  // namespace
 
+std::string extended_precision_obstacle(bool rough, const std::string& engine, const std::string& method) {
+  const std::string need = "long and quad need engine = cxx, method faithful or modern, on a smooth scene (smooth surface)";
+  if (rough) return need + " (the rough-surface friction is computed in double)";
+  if (engine != "cxx") return need + " (the F77 engine is REAL*8)";
+  if (method != "faithful" && method != "modern") return need + " (CVODE is double)";
+  return "";
+}
+
 std::vector<double> Scene::output_times() const {
   std::vector<double> t(static_cast<std::size_t>(solver.samples));
   const int n = solver.samples;
@@ -262,13 +270,8 @@ Scene parse_scene(std::string_view text, const std::string& source_name) {
     sc.solver.precision = opt_string(t, "solver", "precision").value_or("double");
     require_one_of("solver.precision", sc.solver.precision, {"double", "long", "quad"});
     if (sc.solver.precision != "double") {
-      // The same rule as run_scene: extended precision needs the RHS templated on the scalar.
-      const std::string v = "\"" + sc.solver.precision + "\"";
-      const std::string need = "long and quad need solver.engine = \"cxx\", solver.method = \"faithful\" or "
-                               "\"modern\", on a smooth surface";
-      if (sc.rough()) throw InputError("solver.precision", v, need + " (the rough-surface friction is computed in double)");
-      if (sc.solver.engine != "cxx") throw InputError("solver.precision", v, need + " (the F77 engine is REAL*8)");
-      if (sc.solver.method == "cvode") throw InputError("solver.precision", v, need + " (CVODE is double)");
+      const std::string why = extended_precision_obstacle(sc.rough(), sc.solver.engine, sc.solver.method);
+      if (!why.empty()) throw InputError("solver.precision", "\"" + sc.solver.precision + "\"", why);
     }
     if (auto h = opt_number(t, "solver", "h0")) {
       require_nonnegative("solver.h0", *h, "s");

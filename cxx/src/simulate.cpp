@@ -33,14 +33,8 @@ RunSettings resolve_settings(const Scene& scene, RunSettings s) {
   if (s.precision != "double" && s.precision != "long" && s.precision != "quad")
     throw InputError(pfield, s.precision, "must be double, long or quad");
   if (s.precision != "double") {
-    // Extended precision exists where the right-hand side is templated on the scalar: the
-    // smooth-surface bar (SmoothBarRhs) in the C++ Bulirsch-Stoer.
-    const std::string need = "long and quad need engine = cxx, method faithful or modern, on a smooth scene";
-    if (s.engine != "cxx") throw InputError(pfield, s.precision, need + " (the F77 engine is REAL*8)");
-    if (scene.rough())
-      throw InputError(pfield, s.precision, need + " (the rough-surface friction is computed in double)");
-    if (s.method != "faithful" && s.method != "modern")
-      throw InputError(pfield, s.precision, need + " (CVODE is double)");
+    const std::string why = extended_precision_obstacle(scene.rough(), s.engine, s.method);
+    if (!why.empty()) throw InputError(pfield, s.precision, why);
   }
   return s;
 }

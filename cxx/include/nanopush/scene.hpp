@@ -67,6 +67,11 @@ struct Scene {
 };
 
 /// Parse a scene; throws InputError naming the TOML key, the value and the allowed range.
+/// Why extended precision (long, quad) cannot run with this surface, engine and method, or
+/// "" when it can: the right-hand side must be templated on the scalar (the smooth bar in the
+/// C++ Bulirsch–Stoer). One rule for scene files and run settings.
+std::string extended_precision_obstacle(bool rough, const std::string& engine, const std::string& method);
+
 Scene parse_scene(std::string_view toml_text, const std::string& source_name = "<string>");
 Scene load_scene(const std::filesystem::path& path);
 
