@@ -125,11 +125,17 @@ class BulirschStoer {
     if constexpr (N == Dynamic) {
       const auto sz = static_cast<std::size_t>(n_ > 0 ? n_ : 1);
       for (Vec* v : {&y_, &f0_, &zm_, &z_, &fz_, &sc_, &atol_, &f1_}) v->assign(sz, Scalar(0));
-      for (auto& row : prev_) row.assign(sz, Scalar(0));
-      for (auto& row : cur_) row.assign(sz, Scalar(0));
+      for (auto& half : tab_)
+        for (auto& row : half) row.assign(sz, Scalar(0));
     }
     for (int j = 0; j < kKmaxLimit + 2; ++j) nj_[j] = opt_.dense ? 4 * j - 2 : 2 * j;
     for (int j = 1; j < kKmaxLimit + 2; ++j) facmin_[j] = std::pow(kSafe3, 1.0 / static_cast<double>(2 * j - 1));
+    for (int j = 2; j < kKmaxLimit + 2; ++j)
+      for (int l = 2; l <= j; ++l) {
+        const Scalar q = Scalar(seq(j)) / Scalar(seq(j - l + 1));
+        ratio2_[j][l] = q * q;
+        rinv_[j][l] = Scalar(1) / (ratio2_[j][l] - Scalar(1));
+      }
     if (opt_.dense && n_ > 0) {
       // Dense-output work space, allocated once: every right-hand side value of every
       // line (line j has 4j-1 of them), the midpoint values, the interpolation coefficients.
@@ -137,6 +143,7 @@ class BulirschStoer {
       fs_.assign(static_cast<std::size_t>(line_offset(kKmaxLimit + 1)) * nn, Scalar(0));
       ys_.assign(static_cast<std::size_t>(kKmaxLimit + 2) * nn, Scalar(0));
       dcoef_.assign(static_cast<std::size_t>(kMuLimit + 5) * nn, Scalar(0));
+      sd_.assign(static_cast<std::size_t>(2 * kSdRows) * nn, Scalar(0));
       yb_.assign(static_cast<std::size_t>(kBatch) * nn, Scalar(0));
       (void)dense_tables();  // built once per process, here rather than inside a step
     }
@@ -173,7 +180,7 @@ class BulirschStoer {
       atol_[i] = opt_.atol.size() == 1 ? opt_.atol[0] : opt_.atol[static_cast<std::size_t>(i)];
     std::array<Scalar, kKmaxLimit + 2> a{};  // work A_j, 1-based
     for (int j = 1; j <= kmax; ++j) a[j] = (j == 1 ? Scalar(seq(1) + 1) : a[j - 1] + Scalar(seq(j)));
-    std::array<Scalar, kKmaxLimit + 2> w{}, hh{};
+    std::array<Scalar, kKmaxLimit + 2> w{}, hh{}, errs{};
 
     const Scalar rtol = opt_.rtol;
     const std::size_t nout = tout.size();
@@ -240,7 +247,7 @@ class BulirschStoer {
         kc = 0;
         accept = false;
         for (int j = 1; j <= k + 1; ++j) {
-          if (const int st = midpoint(rhs, t, h, seq(j), cur_[1], res, dense ? fs_line(j) : nullptr,
+          if (const int st = midpoint(rhs, t, h, seq(j), cur()[1], res, dense ? fs_line(j) : nullptr,
                                       dense ? ys_line(j) : nullptr);
               st != 0) {
             fail_rhs(res, st, t);
@@ -249,34 +256,38 @@ class BulirschStoer {
           }
           extrapolate(j);
           if (j < 2) {
-            std::swap(prev_, cur_);
+            icur_ ^= 1;  // the new row becomes the previous one (no copy)
             continue;
           }
-          Scalar s = 0;
-          for (int i = 0; i < n; ++i) {
-            const Scalar sc = atol_[i] + rtol * std::max(num::abs(y_[i]), num::abs(cur_[j][i]));
-            const Scalar q = (cur_[j][i] - cur_[j - 1][i]) / sc;
-            s = s + q * q;
+          // Scaled differences first (the divisions are independent and vectorise), then
+          // the sum in component order (the F77 engine's order: no reassociation).
+          std::array<Scalar, (N > 0 ? N : 1)> qbuf;
+          Scalar* q = (N == Dynamic) ? &fz_[0] : qbuf.data();
+          {
+            const Vec& cj = cur()[j];
+            const Vec& cj1 = cur()[j - 1];
+            if constexpr (kPairs) {
+              const V2 rt = {rtol, rtol};
+              for (int i = 0; i < N; i += 2) {
+                const V2 ay = abs2(ld2(&y_[i])), ac = abs2(ld2(&cj[i]));
+                const V2 sc = ld2(&atol_[i]) + rt * ((ay < ac) ? ac : ay);  // std::max(ay, ac)
+                st2(&q[i], (ld2(&cj[i]) - ld2(&cj1[i])) / sc);
+              }
+            } else {
+              for (int i = 0; i < n; ++i) {
+                const Scalar sc = atol_[i] + rtol * std::max(num::abs(y_[i]), num::abs(cj[i]));
+                q[i] = (cj[i] - cj1[i]) / sc;
+              }
+            }
           }
+          Scalar s = 0;
+          for (int i = 0; i < n; ++i) s = s + q[i] * q[i];
           const Scalar err = num::sqrt(s / Scalar(n));
           if (!num::isfinite(err)) {
             nonfinite = true;
             break;
           }
-          // Step-size factor in double for every scalar: a few digits suffice, and pow in
-          // long double or __float128 costs as much as a cheap RHS. For Scalar = double these
-          // are exactly the F77 engine's operations.
-          const double errc = static_cast<double>(err);
-          const double expo = 1.0 / static_cast<double>(2 * j - 1);
-          const double facmin = facmin_[j];  // kSafe3^expo
-          double fac;
-          if (errc == 0)
-            fac = 1.0 / facmin;
-          else
-            fac = kSafe2 * std::pow(kSafe1 / errc, expo);
-          fac = std::max(facmin / kFac4, std::min(1.0 / facmin, fac));
-          hh[j] = h * static_cast<Scalar>(fac);
-          w[j] = a[j] / hh[j];
+          errs[j] = err;
           bool decided = false;
           if (j == k - 1) {
             if (err <= 1) {
@@ -298,7 +309,27 @@ class BulirschStoer {
             kc = j;
             break;
           }
-          std::swap(prev_, cur_);
+          icur_ ^= 1;  // the new row becomes the previous one (no copy)
+        }
+        if (!failed && !nonfinite) {
+          // The step-size proposal of each line. The order and step choices below read
+          // lines kc-2..kc only, so only their pow() is paid.
+          for (int j = std::max(2, kc - 2); j <= kc; ++j) {
+            // In double for every scalar: a few digits suffice, and pow in long double or
+            // __float128 costs as much as a cheap RHS. For Scalar = double these are
+            // exactly the F77 engine's operations.
+            const double errc = static_cast<double>(errs[j]);
+            const double expo = 1.0 / static_cast<double>(2 * j - 1);
+            const double facmin = facmin_[j];  // kSafe3^expo
+            double fac;
+            if (errc == 0)
+              fac = 1.0 / facmin;
+            else
+              fac = kSafe2 * std::pow(kSafe1 / errc, expo);
+            fac = std::max(facmin / kFac4, std::min(1.0 / facmin, fac));
+            hh[j] = h * static_cast<Scalar>(fac);
+            w[j] = a[j] / hh[j];
+          }
         }
         if (failed || !nonfinite) break;
         // Non-finite error estimate: quarter the step, keep k, retry from 3.
@@ -339,7 +370,7 @@ class BulirschStoer {
       // polynomial, and its error estimate: a step whose interpolant is poor is rejected.
       if (dense) {
         const Scalar tnew = clipped ? tend : t + h;
-        const int st = rhs(tnew, static_cast<const Scalar*>(&cur_[kc][0]), &f1_[0]);
+        const int st = rhs(tnew, static_cast<const Scalar*>(&cur()[kc][0]), &f1_[0]);
         ++res.nfcn;
         if (st != 0) {
           fail_rhs(res, st, tnew);
@@ -357,7 +388,7 @@ class BulirschStoer {
       // 7.
       if constexpr (!std::is_same_v<std::decay_t<StepHook>, NoStepHook>) {
         const Scalar tnew = clipped ? tend : t + h;
-        hook_action = hook(t, static_cast<const Scalar*>(&y_[0]), tnew, static_cast<const Scalar*>(&cur_[kc][0]));
+        hook_action = hook(t, static_cast<const Scalar*>(&y_[0]), tnew, static_cast<const Scalar*>(&cur()[kc][0]));
         if (hook_action == kHookStopBefore) {
           ++res.naccpt;
           res.stopped_by_hook = true;
@@ -368,7 +399,7 @@ class BulirschStoer {
       ++res.naccpt;
       const Scalar t_old = t, h_step = h;
       t = clipped ? tend : t + h;
-      for (int i = 0; i < n; ++i) y_[i] = cur_[kc][i];
+      for (int i = 0; i < n; ++i) y_[i] = cur()[kc][i];
       if (dense) {
         for (int i = 0; i < n; ++i) f0_[i] = f1_[i];
         have_f0 = true;
@@ -444,6 +475,7 @@ class BulirschStoer {
 
   static constexpr int kMuLimit = 2 * kKmaxLimit - 3;
   static constexpr int kBatch = 4;  // outputs interpolated together
+  static constexpr int kSdRows = kMuLimit + 1;  // S_k, D_k offsets 1..mu-1 (dense output)
   static constexpr int kL = kKmaxLimit + 2;  // line index bound (1-based lines)
   static constexpr std::size_t widx(int jb, int je, int j) {
     return (static_cast<std::size_t>(jb) * kL + static_cast<std::size_t>(je)) * kL + static_cast<std::size_t>(j);
@@ -504,34 +536,56 @@ class BulirschStoer {
       }
     }
     const Scalar* binom = &wext[static_cast<std::size_t>(kL * kL * kL)];
-    std::array<Scalar, kL> pw{};  // h (n_j/2)^p per line
-    for (int j = 1; j <= kc; ++j) pw[j] = h;
     const std::size_t nn = static_cast<std::size_t>(n_);
+    // h^κ y^(κ)(mid) ≈ h (n_j/2)^p δ^p f_j(mid), p = κ-1, δ^p f(mid) = Σ_q (-1)^q C(p,q)
+    // f(mid+p-2q) (central differences of spacing 2 h_j), extrapolated over the lines
+    // kb = ⌈κ/2⌉..kc that hold enough values. The coefficients are symmetric in the offset
+    // for even p and antisymmetric for odd p, so each line first forms S_k = f(mid+k) +
+    // f(mid-k) and D_k = f(mid+k) - f(mid-k) and every difference reads half the terms.
     for (int kap = 1; kap <= mu; ++kap) {
-      const int p = kap - 1;        // order of the central difference (spacing 2 h_j)
-      const int kb = (kap + 1) / 2;  // first line with enough values: mid - p >= 0
-      // h^κ y^(κ)(mid) ≈ h (n_j/2)^p δ^p f_j(mid), δ^p f(mid) = Σ_r (-1)^r C(p,r) f(mid+p-2r),
-      // extrapolated over lines kb..kc: one linear combination of stored f values.
-      Scalar* __restrict__ r = dcoef_row(4 + kap);
+      Scalar* r = dcoef_row(4 + kap);
       for (int i = 0; i < n; ++i) r[i] = 0;
-      for (int j = kb; j <= kc; ++j) {
-        const int half = seq(j) / 2;
-        const Scalar c = wext[widx(kb, kc, j)] * pw[j];
-        const Scalar* fl = fs_line(j);
-        for (int q = 0; q <= p; ++q) {
-          const Scalar cq = (q % 2 ? -c : c) * binom[p * kMuLimit + q];
-          const Scalar* __restrict__ src = fl + static_cast<std::size_t>(half + p - 2 * q) * nn;
-          for (int i = 0; i < n; ++i) r[i] = r[i] + cq * src[i];
+    }
+    Scalar* __restrict__ sum = &sd_[0];
+    Scalar* __restrict__ dif = &sd_[static_cast<std::size_t>(kSdRows) * nn];
+    for (int j = 1; j <= kc; ++j) {
+      const int half = seq(j) / 2;
+      const int kapmax = std::min(mu, 2 * j);  // line j enters the differences of order < 2j
+      const Scalar* fl = fs_line(j);
+      const Scalar* __restrict__ fmid = fl + static_cast<std::size_t>(half) * nn;
+      for (int k = 1; k < kapmax; ++k) {
+        const Scalar* fp = fmid + static_cast<std::size_t>(k) * nn;
+        const Scalar* fm = fmid - static_cast<std::size_t>(k) * nn;
+        for (int i = 0; i < n; ++i) {
+          sum[static_cast<std::size_t>(k) * nn + static_cast<std::size_t>(i)] = fp[i] + fm[i];
+          dif[static_cast<std::size_t>(k) * nn + static_cast<std::size_t>(i)] = fp[i] - fm[i];
         }
       }
-      for (int j = 1; j <= kc; ++j) pw[j] = pw[j] * Scalar(seq(j) / 2);
+      Scalar pwj = h;  // h (n_j/2)^p
+      for (int kap = 1; kap <= kapmax; ++kap) {
+        const int p = kap - 1;
+        const Scalar c = wext[widx((kap + 1) / 2, kc, j)] * pwj;
+        const Scalar* bn = binom + p * kMuLimit;
+        Scalar* __restrict__ r = dcoef_row(4 + kap);
+        if (p % 2 == 0) {
+          const Scalar cm = ((p / 2) % 2 ? -c : c) * bn[p / 2];
+          for (int i = 0; i < n; ++i) r[i] = r[i] + cm * fmid[i];
+        }
+        const Scalar* src = (p % 2 == 0) ? sum : dif;
+        for (int q = 0; 2 * q < p; ++q) {
+          const Scalar cq = (q % 2 ? -c : c) * bn[q];
+          const Scalar* __restrict__ v = src + static_cast<std::size_t>(p - 2 * q) * nn;
+          for (int i = 0; i < n; ++i) r[i] = r[i] + cq * v[i];
+        }
+        pwj = pwj * Scalar(half);
+      }
     }
     double errsum = 0;
     Scalar* r0 = dcoef_row(0);
     Scalar* r1 = dcoef_row(1);
     Scalar* r2 = dcoef_row(2);
     Scalar* r3 = dcoef_row(3);
-    const Scalar* y1 = &cur_[kc][0];
+    const Scalar* y1 = &cur()[kc][0];
     for (int i = 0; i < n; ++i) {
       const Scalar y0 = y_[i];
       const Scalar del = y1[i] - y0;
@@ -575,6 +629,33 @@ class BulirschStoer {
     const int n = (N == Dynamic) ? n_ : N;
     const std::size_t nn = static_cast<std::size_t>(n);
     const Scalar* d = &dcoef_[0];
+    if constexpr (N != Dynamic) {
+      // Fixed size: the kBatch x N Horner accumulators live in registers (a full batch is
+      // always evaluated; unused lanes compute at θ = 1/2 and are not stored).
+      Scalar acc[kBatch][N];
+      Scalar sv[kBatch];
+      for (int b = 0; b < kBatch; ++b) sv[b] = (b < m ? theta[b] : Scalar(0.5)) - Scalar(0.5);
+      const Scalar* a = d + static_cast<std::size_t>(4 + mu_) * nn;
+      for (int b = 0; b < kBatch; ++b)
+        for (int i = 0; i < N; ++i) acc[b][i] = a[i];
+      for (int kap = mu_ - 1; kap >= 0; --kap) {
+        a = d + static_cast<std::size_t>(4 + kap) * nn;
+        Scalar ak[N];
+        for (int i = 0; i < N; ++i) ak[i] = a[i];
+        for (int b = 0; b < kBatch; ++b)
+          for (int i = 0; i < N; ++i) acc[b][i] = ak[i] + acc[b][i] * sv[b];
+      }
+      for (int b = 0; b < m; ++b) {
+        const Scalar th = theta[b], th1 = Scalar(1) - th;
+        const Scalar w = (th * th1) * (th * th1);
+        Scalar* o = out + b * N;
+        for (int i = 0; i < N; ++i) {
+          const Scalar herm = d[i] + th * (d[nn + i] + th1 * (d[2 * nn + i] * th + d[3 * nn + i] * th1));
+          o[i] = herm + w * acc[b][i];
+        }
+      }
+      return;
+    }
     std::array<Scalar, kBatch> s{};
     for (int b = 0; b < m; ++b) s[b] = theta[b] - Scalar(0.5);
     // Horner in (θ - 1/2) over the a_κ/κ!: m·n independent chains.
@@ -601,6 +682,20 @@ class BulirschStoer {
   }
 
   static Scalar sq(Scalar x) { return x * x; }
+
+  // Pairs of doubles for the division-heavy loops (GCC vector extensions: SSE2 on x86-64,
+  // scalar code elsewhere). Each lane is one IEEE operation, so results equal the scalar
+  // loops bit for bit; only the throughput of the divider changes.
+  static constexpr bool kPairs = std::is_same_v<Scalar, double> && N != Dynamic && N % 2 == 0;
+  typedef double V2 __attribute__((vector_size(16)));
+  typedef double V2u __attribute__((vector_size(16), aligned(8), may_alias));
+  typedef long long L2 __attribute__((vector_size(16)));
+  static V2 ld2(const double* p) { return *reinterpret_cast<const V2u*>(p); }
+  static void st2(double* p, V2 v) { *reinterpret_cast<V2u*>(p) = v; }
+  static V2 abs2(V2 v) {
+    const L2 mask = {0x7fffffffffffffffLL, 0x7fffffffffffffffLL};
+    return reinterpret_cast<V2>(reinterpret_cast<L2>(v) & mask);
+  }
 
   const char* validate(Scalar t0, const Scalar* y, std::span<const Scalar> tout) const {
     if (n_ < 1) return "n must be >= 1";
@@ -643,61 +738,74 @@ class BulirschStoer {
   int midpoint(Rhs& rhs, Scalar t, Scalar hbig, int m, Vec& out, BsResult& res, Scalar* fsl, Scalar* ymid) {
     const int n = (N == Dynamic) ? n_ : N;  // a compile-time bound lets the loops unroll
     const Scalar hs = hbig / Scalar(m);
+    const Scalar h2 = Scalar(2) * hs;
+    // The two latest midpoint states; their roles swap by pointer (no copy per substep).
+    Scalar* __restrict__ zm = &zm_[0];
+    Scalar* __restrict__ z = &z_[0];
     for (int i = 0; i < n; ++i) {
-      zm_[i] = y_[i];
-      z_[i] = y_[i] + hs * f0_[i];
+      zm[i] = y_[i];
+      z[i] = y_[i] + hs * f0_[i];
     }
     if (fsl)
       for (int i = 0; i < n; ++i) fsl[i] = f0_[i];
     for (int s = 1; s <= m - 1; ++s) {
       if (ymid && 2 * s == m)
-        for (int i = 0; i < n; ++i) ymid[i] = z_[i];
-      Scalar* fz = fsl ? fsl + static_cast<std::size_t>(s) * static_cast<std::size_t>(n_) : &fz_[0];
-      const int st = rhs(t + Scalar(s) * hs, static_cast<const Scalar*>(&z_[0]), fz);
+        for (int i = 0; i < n; ++i) ymid[i] = z[i];
+      Scalar* __restrict__ fz = fsl ? fsl + static_cast<std::size_t>(s) * static_cast<std::size_t>(n_) : &fz_[0];
+      const int st = rhs(t + Scalar(s) * hs, static_cast<const Scalar*>(z), fz);
       ++res.nfcn;
       if (st != 0) return st;
-      for (int i = 0; i < n; ++i) {
-        const Scalar znew = zm_[i] + Scalar(2) * hs * fz[i];
-        zm_[i] = z_[i];
-        z_[i] = znew;
-      }
+      for (int i = 0; i < n; ++i) zm[i] = zm[i] + h2 * fz[i];  // z_{s+1} = z_{s-1} + 2 hs f(z_s)
+      std::swap(zm, z);
     }
-    Scalar* fz = fsl ? fsl + static_cast<std::size_t>(m) * static_cast<std::size_t>(n_) : &fz_[0];
-    const int st = rhs(t + hbig, static_cast<const Scalar*>(&z_[0]), fz);
+    Scalar* __restrict__ fz = fsl ? fsl + static_cast<std::size_t>(m) * static_cast<std::size_t>(n_) : &fz_[0];
+    const int st = rhs(t + hbig, static_cast<const Scalar*>(z), fz);
     ++res.nfcn;
     if (st != 0) return st;
-    for (int i = 0; i < n; ++i) out[i] = Scalar(0.5) * (z_[i] + zm_[i] + hs * fz[i]);
+    for (int i = 0; i < n; ++i) out[i] = Scalar(0.5) * (z[i] + zm[i] + hs * fz[i]);
     return 0;
   }
 
-  // Fill cur_[2..j] from cur_[1] (the new midpoint result) and prev_ (row j-1).
+  // Fill cur()[2..j] from cur()[1] (the new midpoint result) and prev() (row j-1).
   void extrapolate(int j) {
     const int n = (N == Dynamic) ? n_ : N;  // a compile-time bound lets the loops unroll
     const bool rational = opt_.extrapolation == Extrapolation::rational;
+    auto& cu = cur();
+    const auto& pr = prev();
     for (int l = 2; l <= j; ++l) {
-      const Scalar q = Scalar(seq(j)) / Scalar(seq(j - l + 1));
-      const Scalar r = q * q;
+      const Scalar r = ratio2_[j][l];
       if (!rational) {
-        // Aitken–Neville; one division per column, not per component
-        const Scalar inv = Scalar(1) / (r - Scalar(1));
-        for (int i = 0; i < n; ++i) cur_[l][i] = cur_[l - 1][i] + (cur_[l - 1][i] - prev_[l - 1][i]) * inv;
+        // Aitken–Neville; no division (the reciprocal is tabulated)
+        const Scalar inv = rinv_[j][l];
+        for (int i = 0; i < n; ++i) cu[l][i] = cu[l - 1][i] + (cu[l - 1][i] - pr[l - 1][i]) * inv;
+        continue;
+      }
+      // Stoer–Bulirsch rational step; where e or the denominator vanishes, the polynomial
+      // step d/(r-1). Written without branches (both quotients formed, one selected, the
+      // same operations as the branching form) so the components go through the vector
+      // divider together.
+      const Scalar rm1 = r - Scalar(1);
+      if constexpr (kPairs) {
+        // double, even N: two components per vector operation (IEEE per lane, so the
+        // same bits as the scalar loop below)
+        const V2 rv = {r, r}, one = {1.0, 1.0}, rm1v = {rm1, rm1}, zero = {0.0, 0.0};
+        for (int i = 0; i < N; i += 2) {
+          const V2 c1 = ld2(&cu[l - 1][i]);
+          const V2 d = c1 - ld2(&pr[l - 1][i]);
+          const V2 e = (l >= 3) ? c1 - ld2(&pr[l - 2][i]) : c1 - zero;
+          const V2 den = rv * (one - d / e) - one;
+          const V2 div = ((e != zero) & (den != zero)) ? den : rm1v;
+          st2(&cu[l][i], c1 + d / div);
+        }
         continue;
       }
       for (int i = 0; i < n; ++i) {
-        const Scalar d = cur_[l - 1][i] - prev_[l - 1][i];
-        Scalar val;
-        const Scalar back = (l >= 3) ? prev_[l - 2][i] : Scalar(0);
-        const Scalar e = cur_[l - 1][i] - back;
-        bool done = false;
-        if (e != 0) {
-          const Scalar den = r * (Scalar(1) - d / e) - Scalar(1);
-          if (den != 0) {
-            val = cur_[l - 1][i] + d / den;
-            done = true;
-          }
-        }
-        if (!done) val = cur_[l - 1][i] + d / (r - Scalar(1));
-        cur_[l][i] = val;
+        const Scalar d = cu[l - 1][i] - pr[l - 1][i];
+        const Scalar back = (l >= 3) ? pr[l - 2][i] : Scalar(0);
+        const Scalar e = cu[l - 1][i] - back;
+        const Scalar den = r * (Scalar(1) - d / e) - Scalar(1);  // inf/NaN when e == 0: not selected
+        const Scalar div = (e != 0 && den != 0) ? den : rm1;
+        cu[l][i] = cu[l - 1][i] + d / div;
       }
     }
   }
@@ -707,9 +815,16 @@ class BulirschStoer {
   Vec y_{}, f0_{}, zm_{}, z_{}, fz_{}, sc_{}, atol_{}, f1_{};
   std::array<int, kKmaxLimit + 2> nj_{};  // step numbers of the lines, 1-based
   std::array<double, kKmaxLimit + 2> facmin_{};  // smallest step-size factor per line
-  std::vector<Scalar> fs_, ys_, dcoef_, yb_;  // dense output (empty otherwise); yb_: kBatch outputs
+  // Extrapolation constants of line j, column l: (n_j / n_{j-l+1})^2 and 1/(that - 1).
+  std::array<std::array<Scalar, kKmaxLimit + 2>, kKmaxLimit + 2> ratio2_{}, rinv_{};
+  std::vector<Scalar> fs_, ys_, dcoef_, yb_, sd_;  // dense output (empty otherwise); yb_: kBatch outputs
   int mu_ = 0;                            // highest midpoint derivative in the current interpolant
-  std::array<Vec, kKmaxLimit + 2> prev_{}, cur_{};  // extrapolation rows, columns 1..kmax
+  // The extrapolation tableau's current and previous rows (columns 1..kmax): two rows
+  // whose roles swap by flipping icur_, so a new line copies nothing.
+  std::array<std::array<Vec, kKmaxLimit + 2>, 2> tab_{};
+  int icur_ = 0;
+  std::array<Vec, kKmaxLimit + 2>& cur() { return tab_[static_cast<std::size_t>(icur_)]; }
+  std::array<Vec, kKmaxLimit + 2>& prev() { return tab_[static_cast<std::size_t>(icur_ ^ 1)]; }
 };
 
 inline const char* to_string(BsStatus s) {
