@@ -179,7 +179,7 @@ Ratios measure_ratios(const std::vector<Row>& rows) {
           "their failures (step budget) are results here, not errors.\n";
   }
   for (const auto& r : rows)
-    if (r.status != 0) {
+    if (r.status != 0 && r.status != bench::kStatusBelowReference) {
       if (stick && r.engine != "cxx-events" && r.engine != "cvode-events") continue;
       out.failures.push_back(r.engine + " (" + r.precision + ") failed at rtol " + fmt(r.rtol) + " with status " +
                              std::to_string(r.status));
@@ -193,6 +193,7 @@ struct BenchOutcome {
   std::vector<Row> rows;
   bench::Reference reference;
   bench::Acceptance acceptance;       ///< of the reference used
+  int below_reference = 0;            ///< rows the reference cannot resolve (not plotted)
   bench::Acceptance extended_check;   ///< exact references: a quad C++ BS run vs the exact solution
   double extended_check_rtol = 0;
   Ratios ratios;
@@ -235,6 +236,7 @@ BenchOutcome run_bench(const Scene& scene, const BenchOptions& o, std::ostream* 
   BenchOutcome out;
   out.reference = b.reference;
   out.rows = bench::run_sweep(b.problem, b.engines, b.reference, s);
+  out.below_reference = bench::mark_below_reference(b.reference, out.rows);
   out.acceptance = bench::accept_reference(b.reference, out.rows);
   if (b.reference.kind == "exact") {
     // The acceptance rule of extended references, exercised on the smooth scene: an
@@ -304,6 +306,10 @@ std::string report_section(const Scene& scene, const BenchOptions& o, const Benc
      << num3(r.seconds) << " s.\n\n"
      << "Error: max over output times and components of |y_i - y_ref,i| / (scale_i + |y_ref,i|). Reference: " << r.reference.kind
      << " (" << r.reference.how << "); " << r.acceptance.explanation << ".\n";
+  if (r.below_reference > 0)
+    md << r.below_reference << " row(s) reached errors below 1e3 x the references' disagreement ("
+       << num3(1e3 * r.reference.disagreement) << "): the reference cannot resolve them, so they are in the CSV with status "
+       << bench::kStatusBelowReference << " and are neither plotted nor used in the ratios.\n";
   if (r.extended_check_rtol > 0)
     md << "Extended-precision check of the acceptance rule: C++ BS modern in __float128 at rtol "
        << num3(r.extended_check_rtol) << " against the exact solution: " << r.extended_check.explanation << ".\n";

@@ -159,6 +159,45 @@ TEST_CASE("bench: reference acceptance (two runs agree to 1e-3 of the smallest p
   CHECK_THROWS_AS(extended_reference(p, q, failed, "test"), SolverError);
 }
 
+TEST_CASE("bench: rows below the reference's resolution are kept but not plotted or judged", "[bench]") {
+  Reference ref;
+  ref.kind = "extended";
+  ref.disagreement = 1e-15;  // resolves errors >= 1e-12
+  Row a, b, c, d, e;
+  a.precision = b.precision = c.precision = d.precision = e.precision = "double";
+  a.error = 1e-9;
+  b.error = 2e-12;
+  c.error = 5e-13;  // below 1e3 x disagreement
+  d.error = 5e-13;
+  d.status = 3;  // a failure stays a failure
+  e.precision = "quad";
+  e.error = 1e-20;  // extended-precision rows are judged against exact references only
+  std::vector<Row> rows = {a, b, c, d, e};
+  CHECK_FALSE(accept_reference(ref, rows).accepted);  // 5e-13 is not resolvable
+  CHECK(mark_below_reference(ref, rows) == 1);
+  CHECK(rows[2].status == kStatusBelowReference);
+  CHECK(rows[2].error == 5e-13);  // the measured value stays in the CSV
+  CHECK(rows[0].status == 0);
+  CHECK(rows[1].status == 0);
+  CHECK(rows[3].status == 3);
+  CHECK(rows[4].status == 0);
+  CHECK(smallest_plotted_error(rows) == 2e-12);
+  CHECK(accept_reference(ref, rows).accepted);  // 1e-3 x 2e-12 = 2e-15 >= 1e-15
+  // An exact reference resolves every error.
+  Reference ex;
+  ex.kind = "exact";
+  std::vector<Row> rows2 = {c};
+  CHECK(mark_below_reference(ex, rows2) == 0);
+  CHECK(rows2[0].status == 0);
+  // A reference whose runs disagree badly resolves nothing: nothing is plotted, and the
+  // acceptance fails (the benchmark exits with a failure).
+  Reference bad = ref;
+  bad.disagreement = 1e-6;
+  std::vector<Row> rows3 = {a, b};
+  CHECK(mark_below_reference(bad, rows3) == 2);
+  CHECK_FALSE(accept_reference(bad, rows3).accepted);
+}
+
 TEST_CASE("bench: every engine wrapper reaches its tolerance on the smooth nanobar", "[bench]") {
   const Scene sc = smooth_scene("a");
   EngineConfig cfg;

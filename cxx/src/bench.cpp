@@ -79,6 +79,18 @@ Acceptance accept_reference(const Reference& ref, const std::vector<Row>& rows) 
   return acc;
 }
 
+int mark_below_reference(const Reference& ref, std::vector<Row>& rows) {
+  if (ref.kind == "exact") return 0;
+  const double floor = 1e3 * ref.disagreement;
+  int marked = 0;
+  for (auto& r : rows)
+    if (r.status == 0 && r.precision == "double" && std::isfinite(r.error) && r.error < floor) {
+      r.status = kStatusBelowReference;
+      ++marked;
+    }
+  return marked;
+}
+
 std::vector<double> tolerance_sweep(int kmin, int kmax, int kstep, double rtol_min) {
   if (kstep < 1) throw InputError("kstep", std::to_string(kstep), "must be >= 1");
   std::vector<double> v;

@@ -114,8 +114,19 @@ struct Row {
   double rhs_s = 0;                ///< median time of nfcn bare RHS calls [s]
   double overhead_ns_per_rhs = 0;  ///< (wall_s - rhs_s) / nfcn [ns]
   int repeats = 0;
-  int status = 0;
+  int status = 0;  ///< 0 = success; kStatusBelowReference; else the engine's failure code
 };
+
+/// Row status of a successful solve whose error the reference cannot resolve: below 1e3 x
+/// the disagreement of the two reference runs (the acceptance rule's factor). The row
+/// stays in the CSV with its error, but is not plotted, not used in the ratios, and not
+/// a failure.
+inline constexpr int kStatusBelowReference = -2;
+
+/// Mark the double-precision rows an extended reference cannot resolve (error < 1e3 x
+/// its disagreement) with kStatusBelowReference; returns how many. Exact references
+/// resolve everything (nothing marked).
+int mark_below_reference(const Reference& ref, std::vector<Row>& rows);
 
 /// CSV header of the benchmark (docs/performance.md documents every column).
 const std::vector<std::string>& csv_columns();
