@@ -318,7 +318,7 @@ C=======================================================================
       PARAMETER (SAFE1 = 0.65D0, SAFE2 = 0.94D0,
      &           BIG = 1.7976931348623157D308)
       DOUBLE PRECISION TAB(NMAX, KMAXX, KMAXX)
-      DOUBLE PRECISION S, SC, Q, ERR, FAC
+      DOUBLE PRECISION S, SC, Q, ERR, FAC, ERRS(KMAXX)
       INTEGER I, J
 C
       ACCEPT = .FALSE.
@@ -333,7 +333,7 @@ C        a. Modified midpoint rule with n_j substeps: T(j,1).
 C        b. Extrapolate row j.
          CALL BSXTRP(N, J, IEXTR, RSQ, TAB)
          IF (J .LT. 2) GOTO 100
-C        c. Error estimate, step proposal and work for column j.
+C        c. Error estimate for column j (its step proposal: e. below).
          S = 0D0
          DO 10 I = 1, N
             SC = ATOL(I) + RTOL*MAX(ABS(Y(I)), ABS(TAB(I, J, J)))
@@ -345,15 +345,7 @@ C        c. Error estimate, step proposal and work for column j.
             NONFIN = .TRUE.
             RETURN
          END IF
-C        expo = FCT(1,J), facmin/FAC4 = FCT(2,J), 1/facmin = FCT(3,J).
-         IF (ERR .EQ. 0D0) THEN
-            FAC = FCT(3, J)
-         ELSE
-            FAC = SAFE2*(SAFE1/ERR)**FCT(1, J)
-         END IF
-         FAC = MAX(FCT(2, J), MIN(FCT(3, J), FAC))
-         HH(J) = H*FAC
-         W(J) = A(J)/HH(J)
+         ERRS(J) = ERR
 C        d. Convergence monitor.
          IF (J .EQ. K - 1) THEN
             KC = J
@@ -377,6 +369,20 @@ C        d. Convergence monitor.
   100 CONTINUE
 C
   200 CONTINUE
+C     e. Step proposal and work of the columns the order and step-size
+C        choice read, KC-2..KC (the others would cost a power each and
+C        are never used).
+C        expo = FCT(1,J), facmin/FAC4 = FCT(2,J), 1/facmin = FCT(3,J).
+      DO 205 J = MAX(2, KC - 2), KC
+         IF (ERRS(J) .EQ. 0D0) THEN
+            FAC = FCT(3, J)
+         ELSE
+            FAC = SAFE2*(SAFE1/ERRS(J))**FCT(1, J)
+         END IF
+         FAC = MAX(FCT(2, J), MIN(FCT(3, J), FAC))
+         HH(J) = H*FAC
+         W(J) = A(J)/HH(J)
+  205 CONTINUE
       DO 210 I = 1, N
          YNEW(I) = TAB(I, KC, KC)
   210 CONTINUE
