@@ -214,9 +214,11 @@ C        3. Clip the step at the output time; underflow check.
             GOTO 900
          END IF
 C        4. Build the extrapolation table and decide.
+C        (Rows are grouped except on the retry after a non-finite
+C        error estimate: NNF > 0.)
          CALL BSTRY(FCN, N, T, YW, F0, H, K, IEXTR, RTOL, ATOL, NSEQ,
      &              A, FCT, RSQ, RPAR, IPAR, YNEW, HH, W, KC, ACCEPT,
-     &              NONFIN, NFCN, IE)
+     &              NONFIN, NNF .EQ. 0, NFCN, IE)
          IF (IE .NE. 0) THEN
             IERR = 4
             GOTO 900
@@ -305,7 +307,7 @@ C     evaluations made, IERR non-zero when FCN failed.
 C=======================================================================
       SUBROUTINE BSTRY(FCN, N, T, Y, F0, H, K, IEXTR, RTOL, ATOL,
      &                 NSEQ, A, FCT, RSQ, RPAR, IPAR, YNEW, HH, W, KC,
-     &                 ACCEPT, NONFIN, NFCN, IERR)
+     &                 ACCEPT, NONFIN, GROUP, NFCN, IERR)
       INTEGER NMAX, KMAXX
       PARAMETER (NMAX = 64, KMAXX = 12)
       EXTERNAL FCN
@@ -313,23 +315,35 @@ C=======================================================================
       DOUBLE PRECISION T, Y(N), F0(N), H, RTOL, ATOL(N), A(*),
      &                 FCT(3, KMAXX), RSQ(KMAXX, KMAXX), RPAR(*),
      &                 YNEW(N), HH(*), W(*)
-      LOGICAL ACCEPT, NONFIN
+      LOGICAL ACCEPT, NONFIN, GROUP
       DOUBLE PRECISION SAFE1, SAFE2, BIG
       PARAMETER (SAFE1 = 0.65D0, SAFE2 = 0.94D0,
      &           BIG = 1.7976931348623157D308)
       DOUBLE PRECISION TAB(NMAX, KMAXX, KMAXX)
       DOUBLE PRECISION S, SC, Q, ERR, FAC, ERRS(KMAXX)
-      INTEGER I, J
+      INTEGER I, J, JG
 C
       ACCEPT = .FALSE.
       NONFIN = .FALSE.
       IERR = 0
       KC = 0
+C     a. Rows 1..JG = max(2, k-1) are needed by every attempt (the
+C        first decision comes after row k-1, and none before row 2):
+C        their midpoint chains are computed together (BSMGRP).
+      JG = 0
+      IF (GROUP) JG = MAX(2, K - 1)
+      IF (JG .GT. 0) THEN
+         CALL BSMGRP(FCN, N, T, Y, F0, H, JG, NSEQ, TAB, RPAR, IPAR,
+     &               NFCN, IERR)
+         IF (IERR .NE. 0) RETURN
+      END IF
       DO 100 J = 1, K + 1
 C        a. Modified midpoint rule with n_j substeps: T(j,1).
-         CALL BSMMID(FCN, N, T, Y, F0, H, NSEQ(J), TAB(1, J, 1),
-     &               RPAR, IPAR, NFCN, IERR)
-         IF (IERR .NE. 0) RETURN
+         IF (J .GT. JG) THEN
+            CALL BSMMID(FCN, N, T, Y, F0, H, NSEQ(J), TAB(1, J, 1),
+     &                  RPAR, IPAR, NFCN, IERR)
+            IF (IERR .NE. 0) RETURN
+         END IF
 C        b. Extrapolate row j.
          CALL BSXTRP(N, J, IEXTR, RSQ, TAB)
          IF (J .LT. 2) GOTO 100
@@ -451,6 +465,71 @@ C     Now z(M) is in column IC, z(M-1) in column IO.
       IF (IERR .NE. 0) RETURN
       DO 40 L = 1, N
          TJ1(L) = 0.5D0*(Z(L, IC) + Z(L, IO) + HS*FZ(L))
+   40 CONTINUE
+      RETURN
+      END
+C
+C=======================================================================
+C     BSMGRP -- BSMMID for rows 1..JG of one attempt together: substep
+C     I of every row that has one (the longest row first), then
+C     substep I+1.  Each row does BSMMID's operations in BSMMID's
+C     order, so TAB(., j, 1) gets the same bits and NFCN the same sum;
+C     only the order of the FCN calls changes: the rows' dependency
+C     chains are independent, and interleaved the processor overlaps
+C     one row's FCN latency with another's (doc step 4a).
+C=======================================================================
+      SUBROUTINE BSMGRP(FCN, N, T, Y, F0, H, JG, NSEQ, TAB, RPAR, IPAR,
+     &                  NFCN, IERR)
+      INTEGER NMAX, KMAXX
+      PARAMETER (NMAX = 64, KMAXX = 12)
+      EXTERNAL FCN
+      INTEGER N, JG, NSEQ(*), IPAR(*), NFCN, IERR
+      DOUBLE PRECISION T, Y(N), F0(N), H, TAB(NMAX, KMAXX, KMAXX),
+     &                 RPAR(*)
+      DOUBLE PRECISION Z(NMAX, 2, KMAXX), FZ(NMAX), HS(KMAXX),
+     &                 H2(KMAXX)
+      INTEGER I, J, L, M, IC, IO
+C
+      IERR = 0
+      DO 10 J = 1, JG
+         HS(J) = H/DBLE(NSEQ(J))
+         H2(J) = 2D0*HS(J)
+         DO 5 L = 1, N
+            Z(L, 2, J) = Y(L) + HS(J)*F0(L)
+    5    CONTINUE
+   10 CONTINUE
+      DO 40 I = 1, NSEQ(JG)
+         DO 30 J = JG, 1, -1
+            M = NSEQ(J)
+C           Rows are ordered by length: once one is done, so are the
+C           rest.
+            IF (I .GT. M) GOTO 40
+            IC = MOD(I, 2) + 1
+            IO = 3 - IC
+            IF (I .LT. M) THEN
+               CALL FCN(N, T + DBLE(I)*HS(J), Z(1, IC, J), FZ, RPAR,
+     &                  IPAR, IERR)
+               NFCN = NFCN + 1
+               IF (IERR .NE. 0) RETURN
+               IF (I .EQ. 1) THEN
+                  DO 15 L = 1, N
+                     Z(L, 1, J) = Y(L) + H2(J)*FZ(L)
+   15             CONTINUE
+               ELSE
+                  DO 20 L = 1, N
+                     Z(L, IO, J) = Z(L, IO, J) + H2(J)*FZ(L)
+   20             CONTINUE
+               END IF
+            ELSE
+               CALL FCN(N, T + H, Z(1, IC, J), FZ, RPAR, IPAR, IERR)
+               NFCN = NFCN + 1
+               IF (IERR .NE. 0) RETURN
+               DO 25 L = 1, N
+                  TAB(L, J, 1) = 0.5D0*(Z(L, IC, J) + Z(L, IO, J)
+     &                                  + HS(J)*FZ(L))
+   25          CONTINUE
+            END IF
+   30    CONTINUE
    40 CONTINUE
       RETURN
       END

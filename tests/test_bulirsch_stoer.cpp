@@ -215,4 +215,16 @@ TEST_CASE("BS: failures come back as statuses", "[bs][unit]") {
     auto r = bs.integrate([](double t, const double*, double* d) { d[0] = t > 0.5 ? NAN : 1.0; return 0; }, 0.0, y, 1.0);
     CHECK(r.status != BsStatus::success);
   }
+  SECTION("non-finite RHS from the start: the F77 engine's counts") {
+    // As tests/fortran/test_bsint.f90 test_nonfinite: k = 7 at rtol 1e-10; the first attempt
+    // computes rows 1..6 together (42 RHS), each of the 9 retries rows 1, 2 (6 RHS).
+    BulirschStoer<double, 1> bs(BsOptions<double>::faithful(1e-10, {1e-10}));
+    double y[1] = {1};
+    auto r = bs.integrate([](double, const double*, double* d) { d[0] = NAN; return 0; }, 0.0, y, 1.0);
+    CHECK(r.status == BsStatus::not_finite);
+    CHECK(r.naccpt == 0);
+    CHECK(r.nrejct == 10);
+    CHECK(r.nfcn == 1 + 42 + 9 * 6);
+    CHECK(y[0] == 1.0);
+  }
 }

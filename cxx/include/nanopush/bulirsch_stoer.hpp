@@ -128,6 +128,9 @@ class BulirschStoer {
       for (auto& half : tab_)
         for (auto& row : half) row.assign(sz, Scalar(0));
     }
+    if constexpr (N == Dynamic)
+      for (auto& row : held_) row.assign(static_cast<std::size_t>(n_ > 0 ? n_ : 1), Scalar(0));
+    zg_.assign(static_cast<std::size_t>(3 * kL) * static_cast<std::size_t>(n_ > 0 ? n_ : 1), Scalar(0));
     for (int j = 0; j < kKmaxLimit + 2; ++j) nj_[j] = opt_.dense ? 4 * j - 2 : 2 * j;
     for (int j = 1; j < kKmaxLimit + 2; ++j) facmin_[j] = std::pow(kSafe3, 1.0 / static_cast<double>(2 * j - 1));
     for (int j = 2; j < kKmaxLimit + 2; ++j)
@@ -246,10 +249,23 @@ class BulirschStoer {
         bool nonfinite = false;
         kc = 0;
         accept = false;
-        for (int j = 1; j <= k + 1; ++j) {
-          if (const int st = midpoint(rhs, t, h, seq(j), cur()[1], res, dense ? fs_line(j) : nullptr,
-                                      dense ? ys_line(j) : nullptr);
-              st != 0) {
+        // Lines 1..max(2, k-1) are computed by every attempt (the first decision comes
+        // after line k-1, and none before line 2): their midpoint chains run interleaved, so
+        // the latency of one line's RHS overlaps the others'. Not on the retry after a
+        // non-finite error estimate (it would evaluate lines a sequential attempt skips).
+        const int jgroup = nonfinite_run == 0 ? std::max(2, k - 1) : 0;
+        if (jgroup > 0) {
+          if (const int st = midpoint_group(rhs, t, h, jgroup, res, dense); st != 0) {
+            fail_rhs(res, st, t);
+            failed = true;
+          }
+        }
+        for (int j = 1; !failed && j <= k + 1; ++j) {
+          if (j <= jgroup) {
+            cur()[1] = held_[j];
+          } else if (const int st = midpoint(rhs, t, h, seq(j), cur()[1], res, dense ? fs_line(j) : nullptr,
+                                             dense ? ys_line(j) : nullptr);
+                     st != 0) {
             fail_rhs(res, st, t);
             failed = true;
             break;
@@ -766,6 +782,53 @@ class BulirschStoer {
     return 0;
   }
 
+  // Lines 1..jg of one attempt, their midpoint chains interleaved substep by substep; the
+  // operations of each line are those of midpoint(), in the same order, so the results
+  // (held_[j]) are the same bits.
+  template <class Rhs>
+  int midpoint_group(Rhs& rhs, Scalar t, Scalar hbig, int jg, BsResult& res, bool dense) {
+    const int n = (N == Dynamic) ? n_ : N;
+    const std::size_t nn = static_cast<std::size_t>(n_);
+    std::array<Scalar, kKmaxLimit + 2> hs{}, h2{};
+    std::array<Scalar*, kKmaxLimit + 2> zm{}, z{};
+    for (int j = 1; j <= jg; ++j) {
+      hs[j] = hbig / Scalar(seq(j));
+      h2[j] = Scalar(2) * hs[j];
+      zm[j] = &zg_[static_cast<std::size_t>(2 * j) * nn];
+      z[j] = &zg_[static_cast<std::size_t>(2 * j + 1) * nn];
+      for (int i = 0; i < n; ++i) {
+        zm[j][i] = y_[i];
+        z[j][i] = y_[i] + hs[j] * f0_[i];
+      }
+      if (dense)
+        for (int i = 0; i < n; ++i) fs_line(j)[i] = f0_[i];
+    }
+    const int mmax = seq(jg);
+    for (int s = 1; s <= mmax; ++s) {
+      for (int j = jg; j >= 1; --j) {  // longest line first
+        const int m = seq(j);
+        if (s > m) break;  // the shorter lines are done
+        Scalar* fz = dense ? fs_line(j) + static_cast<std::size_t>(s) * nn
+                           : &zg_[static_cast<std::size_t>(2 * kL + j) * nn];
+        if (s < m) {
+          if (dense && 2 * s == m)
+            for (int i = 0; i < n; ++i) ys_line(j)[i] = z[j][i];
+          const int st = rhs(t + Scalar(s) * hs[j], static_cast<const Scalar*>(z[j]), fz);
+          ++res.nfcn;
+          if (st != 0) return st;
+          for (int i = 0; i < n; ++i) zm[j][i] = zm[j][i] + h2[j] * fz[i];
+          std::swap(zm[j], z[j]);
+        } else {
+          const int st = rhs(t + hbig, static_cast<const Scalar*>(z[j]), fz);
+          ++res.nfcn;
+          if (st != 0) return st;
+          for (int i = 0; i < n; ++i) held_[j][i] = Scalar(0.5) * (z[j][i] + zm[j][i] + hs[j] * fz[i]);
+        }
+      }
+    }
+    return 0;
+  }
+
   // Fill cur()[2..j] from cur()[1] (the new midpoint result) and prev() (row j-1).
   void extrapolate(int j) {
     const int n = (N == Dynamic) ? n_ : N;  // a compile-time bound lets the loops unroll
@@ -817,7 +880,11 @@ class BulirschStoer {
   std::array<double, kKmaxLimit + 2> facmin_{};  // smallest step-size factor per line
   // Extrapolation constants of line j, column l: (n_j / n_{j-l+1})^2 and 1/(that - 1).
   std::array<std::array<Scalar, kKmaxLimit + 2>, kKmaxLimit + 2> ratio2_{}, rinv_{};
-  std::vector<Scalar> fs_, ys_, dcoef_, yb_, sd_;  // dense output (empty otherwise); yb_: kBatch outputs
+  std::vector<Scalar> fs_, ys_, dcoef_, yb_, sd_;
+  // Interleaved lines (midpoint_group): zm, z of line j in rows 2j, 2j+1, its f in row
+  // 2 kL + j (non-dense); the line results in held_.
+  std::vector<Scalar> zg_;
+  std::array<Vec, kKmaxLimit + 2> held_{};  // dense output (empty otherwise); yb_: kBatch outputs
   int mu_ = 0;                            // highest midpoint derivative in the current interpolant
   // The extrapolation tableau's current and previous rows (columns 1..kmax): two rows
   // whose roles swap by flipping icur_, so a new line copies nothing.
