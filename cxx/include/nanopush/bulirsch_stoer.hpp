@@ -255,7 +255,9 @@ class BulirschStoer {
         // non-finite error estimate (it would evaluate lines a sequential attempt skips).
         const int jgroup = nonfinite_run == 0 ? std::max(2, k - 1) : 0;
         if (jgroup > 0) {
-          if (const int st = midpoint_group(rhs, t, h, jgroup, res, dense); st != 0) {
+          if (const int st = dense ? midpoint_group<true>(rhs, t, h, jgroup, res)
+                                   : midpoint_group<false>(rhs, t, h, jgroup, res);
+              st != 0) {
             fail_rhs(res, st, t);
             failed = true;
           }
@@ -752,81 +754,99 @@ class BulirschStoer {
   // substep m/2; both null otherwise.
   template <class Rhs>
   int midpoint(Rhs& rhs, Scalar t, Scalar hbig, int m, Vec& out, BsResult& res, Scalar* fsl, Scalar* ymid) {
-    const int n = (N == Dynamic) ? n_ : N;  // a compile-time bound lets the loops unroll
     const Scalar hs = hbig / Scalar(m);
     const Scalar h2 = Scalar(2) * hs;
     // The two latest midpoint states; their roles swap by pointer (no copy per substep).
-    Scalar* __restrict__ zm = &zm_[0];
-    Scalar* __restrict__ z = &z_[0];
-    for (int i = 0; i < n; ++i) {
-      zm[i] = y_[i];
-      z[i] = y_[i] + hs * f0_[i];
-    }
-    if (fsl)
-      for (int i = 0; i < n; ++i) fsl[i] = f0_[i];
+    Scalar* zm = &zm_[0];
+    Scalar* z = &z_[0];
+    midpoint_start(zm, z, hs, fsl);
     for (int s = 1; s <= m - 1; ++s) {
-      if (ymid && 2 * s == m)
-        for (int i = 0; i < n; ++i) ymid[i] = z[i];
-      Scalar* __restrict__ fz = fsl ? fsl + static_cast<std::size_t>(s) * static_cast<std::size_t>(n_) : &fz_[0];
+      if (ymid && 2 * s == m) copy_n(z, ymid);
+      Scalar* fz = fsl ? fsl + static_cast<std::size_t>(s) * static_cast<std::size_t>(n_) : &fz_[0];
       const int st = rhs(t + Scalar(s) * hs, static_cast<const Scalar*>(z), fz);
       ++res.nfcn;
       if (st != 0) return st;
-      for (int i = 0; i < n; ++i) zm[i] = zm[i] + h2 * fz[i];  // z_{s+1} = z_{s-1} + 2 hs f(z_s)
+      add_scaled(zm, h2, fz);  // z_{s+1} = z_{s-1} + 2 hs f(z_s)
       std::swap(zm, z);
     }
-    Scalar* __restrict__ fz = fsl ? fsl + static_cast<std::size_t>(m) * static_cast<std::size_t>(n_) : &fz_[0];
+    Scalar* fz = fsl ? fsl + static_cast<std::size_t>(m) * static_cast<std::size_t>(n_) : &fz_[0];
     const int st = rhs(t + hbig, static_cast<const Scalar*>(z), fz);
     ++res.nfcn;
     if (st != 0) return st;
-    for (int i = 0; i < n; ++i) out[i] = Scalar(0.5) * (z[i] + zm[i] + hs * fz[i]);
+    smoothing_step(z, zm, hs, fz, &out[0]);
     return 0;
   }
 
   // Lines 1..jg of one attempt, their midpoint chains interleaved substep by substep; the
   // operations of each line are those of midpoint(), in the same order, so the results
   // (held_[j]) are the same bits.
-  template <class Rhs>
-  int midpoint_group(Rhs& rhs, Scalar t, Scalar hbig, int jg, BsResult& res, bool dense) {
-    const int n = (N == Dynamic) ? n_ : N;
+  template <bool dense, class Rhs>
+  int midpoint_group(Rhs& rhs, Scalar t, Scalar hbig, int jg, BsResult& res) {
     const std::size_t nn = static_cast<std::size_t>(n_);
-    std::array<Scalar, kKmaxLimit + 2> hs{}, h2{};
-    std::array<Scalar*, kKmaxLimit + 2> zm{}, z{};
+    std::array<Scalar, kKmaxLimit + 2> hs, h2;  // only 1..jg are used
+    std::array<Scalar*, kKmaxLimit + 2> zm, z;
     for (int j = 1; j <= jg; ++j) {
       hs[j] = hbig / Scalar(seq(j));
       h2[j] = Scalar(2) * hs[j];
       zm[j] = &zg_[static_cast<std::size_t>(2 * j) * nn];
       z[j] = &zg_[static_cast<std::size_t>(2 * j + 1) * nn];
-      for (int i = 0; i < n; ++i) {
-        zm[j][i] = y_[i];
-        z[j][i] = y_[i] + hs[j] * f0_[i];
-      }
-      if (dense)
-        for (int i = 0; i < n; ++i) fs_line(j)[i] = f0_[i];
+      midpoint_start(zm[j], z[j], hs[j], dense ? fs_line(j) : nullptr);
     }
     const int mmax = seq(jg);
     for (int s = 1; s <= mmax; ++s) {
       for (int j = jg; j >= 1; --j) {  // longest line first
         const int m = seq(j);
         if (s > m) break;  // the shorter lines are done
-        Scalar* fz = dense ? fs_line(j) + static_cast<std::size_t>(s) * nn
-                           : &zg_[static_cast<std::size_t>(2 * kL + j) * nn];
+        Scalar* fz;
+        if constexpr (dense)
+          fz = fs_line(j) + static_cast<std::size_t>(s) * nn;
+        else
+          fz = &zg_[static_cast<std::size_t>(2 * kL + j) * nn];
         if (s < m) {
-          if (dense && 2 * s == m)
-            for (int i = 0; i < n; ++i) ys_line(j)[i] = z[j][i];
+          if constexpr (dense)
+            if (2 * s == m) copy_n(z[j], ys_line(j));
           const int st = rhs(t + Scalar(s) * hs[j], static_cast<const Scalar*>(z[j]), fz);
           ++res.nfcn;
           if (st != 0) return st;
-          for (int i = 0; i < n; ++i) zm[j][i] = zm[j][i] + h2[j] * fz[i];
+          add_scaled(zm[j], h2[j], fz);  // z_{s+1} = z_{s-1} + 2 hs f(z_s)
           std::swap(zm[j], z[j]);
         } else {
           const int st = rhs(t + hbig, static_cast<const Scalar*>(z[j]), fz);
           ++res.nfcn;
           if (st != 0) return st;
-          for (int i = 0; i < n; ++i) held_[j][i] = Scalar(0.5) * (z[j][i] + zm[j][i] + hs[j] * fz[i]);
+          smoothing_step(z[j], zm[j], hs[j], fz, &held_[j][0]);
         }
       }
     }
     return 0;
+  }
+
+  // The pieces of the modified midpoint rule, written once for midpoint() and
+  // midpoint_group() (restrict-qualified so the 6-component loops vectorise).
+  // zm = y, z = y + hs f0; the dense line's first f value is f0.
+  void midpoint_start(Scalar* __restrict__ zm, Scalar* __restrict__ z, Scalar hs, Scalar* __restrict__ fsl) const {
+    const int n = (N == Dynamic) ? n_ : N;
+    for (int i = 0; i < n; ++i) {
+      zm[i] = y_[i];
+      z[i] = y_[i] + hs * f0_[i];
+    }
+    if (fsl)
+      for (int i = 0; i < n; ++i) fsl[i] = f0_[i];
+  }
+  // zm = zm + h2 f
+  void add_scaled(Scalar* __restrict__ zm, Scalar h2, const Scalar* __restrict__ f) const {
+    const int n = (N == Dynamic) ? n_ : N;
+    for (int i = 0; i < n; ++i) zm[i] = zm[i] + h2 * f[i];
+  }
+  // out = 0.5 (z + zm + hs f), the operations in that order
+  void smoothing_step(const Scalar* __restrict__ z, const Scalar* __restrict__ zm, Scalar hs,
+                      const Scalar* __restrict__ f, Scalar* __restrict__ out) const {
+    const int n = (N == Dynamic) ? n_ : N;
+    for (int i = 0; i < n; ++i) out[i] = Scalar(0.5) * (z[i] + zm[i] + hs * f[i]);
+  }
+  void copy_n(const Scalar* __restrict__ from, Scalar* __restrict__ to) const {
+    const int n = (N == Dynamic) ? n_ : N;
+    for (int i = 0; i < n; ++i) to[i] = from[i];
   }
 
   // Fill cur()[2..j] from cur()[1] (the new midpoint result) and prev() (row j-1).
