@@ -764,14 +764,16 @@ class BulirschStoer {
       if (ymid && 2 * s == m) copy_n(z, ymid);
       Scalar* fz = fsl ? fsl + static_cast<std::size_t>(s) * static_cast<std::size_t>(n_) : &fz_[0];
       const int st = rhs(t + Scalar(s) * hs, static_cast<const Scalar*>(z), fz);
-      ++res.nfcn;
-      if (st != 0) return st;
+      if (st != 0) {
+        res.nfcn += s;
+        return st;
+      }
       add_scaled(zm, h2, fz);  // z_{s+1} = z_{s-1} + 2 hs f(z_s)
       std::swap(zm, z);
     }
     Scalar* fz = fsl ? fsl + static_cast<std::size_t>(m) * static_cast<std::size_t>(n_) : &fz_[0];
     const int st = rhs(t + hbig, static_cast<const Scalar*>(z), fz);
-    ++res.nfcn;
+    res.nfcn += m;  // one call per substep (counted here, not in the loop: a register, not memory)
     if (st != 0) return st;
     smoothing_step(z, zm, hs, fz, &out[0]);
     return 0;
@@ -793,6 +795,7 @@ class BulirschStoer {
       midpoint_start(zm[j], z[j], hs[j], dense ? fs_line(j) : nullptr);
     }
     const int mmax = seq(jg);
+    std::int64_t calls = 0;  // added to res.nfcn on return (a register across the calls)
     for (int s = 1; s <= mmax; ++s) {
       for (int j = jg; j >= 1; --j) {  // longest line first
         const int m = seq(j);
@@ -806,18 +809,25 @@ class BulirschStoer {
           if constexpr (dense)
             if (2 * s == m) copy_n(z[j], ys_line(j));
           const int st = rhs(t + Scalar(s) * hs[j], static_cast<const Scalar*>(z[j]), fz);
-          ++res.nfcn;
-          if (st != 0) return st;
+          ++calls;
+          if (st != 0) {
+            res.nfcn += calls;
+            return st;
+          }
           add_scaled(zm[j], h2[j], fz);  // z_{s+1} = z_{s-1} + 2 hs f(z_s)
           std::swap(zm[j], z[j]);
         } else {
           const int st = rhs(t + hbig, static_cast<const Scalar*>(z[j]), fz);
-          ++res.nfcn;
-          if (st != 0) return st;
+          ++calls;
+          if (st != 0) {
+            res.nfcn += calls;
+            return st;
+          }
           smoothing_step(z[j], zm[j], hs[j], fz, &held_[j][0]);
         }
       }
     }
+    res.nfcn += calls;
     return 0;
   }
 
