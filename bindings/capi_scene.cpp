@@ -83,6 +83,12 @@ nanopush_trajectory nanopush_run_scene(nanopush_error error, nanopush_scene scen
 
 nanopush_trajectory nanopush_run_scene_ex(nanopush_error error, nanopush_scene scene, const char* engine,
                                           const char* method, const char* law, double rtol, double atol) {
+  return nanopush_run_scene_precision(error, scene, engine, method, law, nullptr, rtol, atol);
+}
+
+nanopush_trajectory nanopush_run_scene_precision(nanopush_error error, nanopush_scene scene, const char* engine,
+                                                 const char* method, const char* law, const char* precision,
+                                                 double rtol, double atol) {
   nanopush_trajectory out = nullptr;
   guarded(error, [&] {
     require_handle(scene, "scene");
@@ -90,6 +96,7 @@ nanopush_trajectory nanopush_run_scene_ex(nanopush_error error, nanopush_scene s
     rs.engine = opt_string(engine);
     rs.method = opt_string(method);
     rs.law = opt_string(law);
+    rs.precision = opt_string(precision);  // "" = the scene's solver.precision
     nanopush::require_finite("rtol", rtol);
     nanopush::require_finite("atol", atol);
     rs.rtol = rtol;
@@ -156,6 +163,48 @@ int nanopush_trajectory_get_engine(nanopush_error error, nanopush_trajectory tra
     return NANOPUSH_OK;
   });
   return n;
+}
+
+int nanopush_trajectory_get_precision(nanopush_error error, nanopush_trajectory trajectory, char* buffer,
+                                      int size) {
+  int n = -1;
+  guarded(error, [&] {
+    require_handle(trajectory, "trajectory");
+    n = copy_string(trajectory->trajectory.precision, buffer, size);
+    return NANOPUSH_OK;
+  });
+  return n;
+}
+
+int nanopush_trajectory_get_state_extended(nanopush_error error, nanopush_trajectory trajectory, int capacity,
+                                           double* hi, double* lo) {
+  return guarded(error, [&] {
+    require_handle(trajectory, "trajectory");
+    const nanopush::Trajectory& tr = trajectory->trajectory;
+    const std::size_t rows = tr.rows.size();
+    if (capacity < 0 || static_cast<std::size_t>(capacity) < rows)
+      throw StatusError(NANOPUSH_BUFFER_TOO_SMALL, "capacity = " + std::to_string(capacity) +
+                                                       ": the trajectory has " + std::to_string(rows) +
+                                                       " rows (query nanopush_trajectory_get_size)");
+    if (rows == 0) return NANOPUSH_OK;
+    require_handle(hi, "hi");
+    require_handle(lo, "lo");
+    constexpr int ns = NANOPUSH_STATE_SIZE;
+    static_assert(ns == nanopush::kStateSize);
+    for (std::size_t k = 0; k < rows; ++k)
+      for (int i = 0; i < ns; ++i) {
+        const std::size_t at = static_cast<std::size_t>(ns) * k + static_cast<std::size_t>(i);
+        if (tr.extended.empty()) {  // a double run: the state itself, exactly
+          hi[at] = tr.rows[k][static_cast<std::size_t>(i) + 1];
+          lo[at] = 0;
+        } else {  // hi = the value rounded to double, lo = the remainder rounded to double
+          const nanopush::num::quad v = tr.extended[k][static_cast<std::size_t>(i)];
+          hi[at] = static_cast<double>(v);
+          lo[at] = static_cast<double>(v - static_cast<nanopush::num::quad>(hi[at]));
+        }
+      }
+    return NANOPUSH_OK;
+  });
 }
 
 }  // extern "C"

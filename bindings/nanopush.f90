@@ -17,6 +17,8 @@
 !> t, x, y, theta, vx, vy, omega, fx, fy, mf (s, m, m, rad, m/s, m/s, rad/s, N, N, N m).
 !>
 !> Rough-surface scenes: nanopush_run(..., law="thesis"|"coulomb") chooses the friction law.
+!> Extended precision (smooth scenes): nanopush_run(..., precision="long"|"quad", state_ext=q)
+!> integrates in long double or __float128 and returns the state in q(6, nrows), kind nanopush_qp.
 !>
 !> Closed forms (same numbers as the C++ library, bit for bit): nanopush_friction_wrench and
 !> nanopush_friction_from_velocity (friction resultant over a rectangle), the iCOR formulas
@@ -48,6 +50,9 @@ module nanopush
 
   !> Real kind of every nanopush quantity.
   integer, parameter, public :: dp = c_double
+  !> Quadruple precision (gfortran: real(16), __float128): the kind of the extended-precision
+  !> states of nanopush_run(..., precision="long"|"quad", state_ext=...).
+  integer, parameter, public :: nanopush_qp = selected_real_kind(30)
 
   !> Status codes (bindings/nanopush.h). 1..5 are the Bulirsch-Stoer codes (as the F77 IERR).
   integer, parameter, public :: NANOPUSH_OK = 0, NANOPUSH_BAD_INPUT = 1, &
@@ -58,6 +63,8 @@ module nanopush
                                 NANOPUSH_INTERNAL = 10
   !> Rows of a trajectory array and their meaning.
   integer, parameter, public :: NANOPUSH_TRAJECTORY_COLUMNS = 10
+  !> Components of the state (x, y, theta, vx, vy, omega), the rows of state_ext.
+  integer, parameter, public :: NANOPUSH_STATE_SIZE = 6
   integer, parameter, public :: NANOPUSH_T = 1, NANOPUSH_X = 2, NANOPUSH_Y = 3, &
                                 NANOPUSH_THETA = 4, NANOPUSH_VX = 5, NANOPUSH_VY = 6, &
                                 NANOPUSH_OMEGA = 7, NANOPUSH_FX = 8, NANOPUSH_FY = 9, NANOPUSH_MF = 10
@@ -176,6 +183,20 @@ module nanopush
       character(kind=c_char), intent(in) :: engine(*), method(*), law(*)
       real(c_double), value, intent(in) :: rtol, atol
     end function c_run_scene_ex
+    type(c_ptr) function c_run_scene_precision(error, scene, engine, method, law, precision, rtol, atol) &
+        bind(C, name="nanopush_run_scene_precision")
+      import :: c_ptr, c_char, c_double
+      type(c_ptr), value, intent(in) :: error, scene
+      character(kind=c_char), intent(in) :: engine(*), method(*), law(*), precision(*)
+      real(c_double), value, intent(in) :: rtol, atol
+    end function c_run_scene_precision
+    integer(c_int) function c_trajectory_get_state_extended(error, trajectory, capacity, hi, lo) &
+        bind(C, name="nanopush_trajectory_get_state_extended")
+      import :: c_int, c_ptr, c_double
+      type(c_ptr), value, intent(in) :: error, trajectory
+      integer(c_int), value, intent(in) :: capacity
+      real(c_double), intent(out) :: hi(*), lo(*)
+    end function c_trajectory_get_state_extended
     subroutine c_delete_trajectory(trajectory) bind(C, name="nanopush_delete_trajectory")
       import :: c_ptr
       type(c_ptr), intent(inout) :: trajectory
@@ -446,12 +467,19 @@ contains
   !>   law, engine cxx) (default: the scene's); law, for rough scenes, "thesis" or "coulomb"
   !>   (default: the scene's [surface] law);
   !>   rtol (default or 0: the scene's); atol (default or < 0: the scene's; 0 = automatic);
-  !>   counts(3) = (RHS evaluations, accepted steps, rejected steps).
-  !> On failure traj is allocated with zero columns.
-  subroutine nanopush_run(scene, traj, engine, method, rtol, atol, counts, stat, errmsg, law)
+  !>   counts(3) = (RHS evaluations, accepted steps, rejected steps);
+  !>   precision "double", "long" (x87 80-bit) or "quad" (__float128) (default: the scene's
+  !>   [solver] precision; long and quad need engine "cxx" and a smooth scene): traj holds the
+  !>   values rounded to double, and state_ext(6, nrows), if present, the state
+  !>   (x, y, theta, vx, vy, omega) at each output time in kind nanopush_qp, with the digits of
+  !>   the integration (to about 1e-32 relative for quad; exact for long and double).
+  !> On failure traj (and state_ext) are allocated with zero columns.
+  subroutine nanopush_run(scene, traj, engine, method, rtol, atol, counts, stat, errmsg, law, &
+                          precision, state_ext)
     type(nanopush_scene), intent(in) :: scene
     real(dp), allocatable, intent(out) :: traj(:, :)
-    character(len=*), intent(in), optional :: engine, method, law
+    character(len=*), intent(in), optional :: engine, method, law, precision
+    real(nanopush_qp), allocatable, intent(out), optional :: state_ext(:, :)
     real(dp), intent(in), optional :: rtol, atol
     integer(c_int64_t), intent(out), optional :: counts(3)
     integer, intent(out), optional :: stat
@@ -461,6 +489,7 @@ contains
     real(c_double) :: r, a
     integer(c_int) :: nrows, st
     integer(c_int64_t) :: cnt(3)
+    real(c_double), allocatable :: hi(:, :), lo(:, :)
     r = 0
     a = -1
     if (present(rtol)) r = rtol
@@ -468,16 +497,27 @@ contains
     cnt = 0
     nrows = 0
     err = c_new_error()
-    tr = c_run_scene_ex(err, scene%ptr, to_c(opt(engine)), to_c(opt(method)), to_c(opt(law)), r, a)
+    tr = c_run_scene_precision(err, scene%ptr, to_c(opt(engine)), to_c(opt(method)), to_c(opt(law)), &
+                               to_c(opt(precision)), r, a)
     if (c_associated(tr)) then
       st = c_trajectory_get_size(err, tr, nrows)
       if (st == 0) st = c_trajectory_get_counts(err, tr, cnt)
       if (st /= 0) nrows = 0
       allocate (traj(NANOPUSH_TRAJECTORY_COLUMNS, nrows))
       if (st == 0) st = c_trajectory_get_data(err, tr, nrows, traj)
+      if (present(state_ext) .and. st == 0) then
+        allocate (hi(NANOPUSH_STATE_SIZE, nrows), lo(NANOPUSH_STATE_SIZE, nrows))
+        st = c_trajectory_get_state_extended(err, tr, nrows, hi, lo)
+        if (st == 0) then
+          state_ext = real(hi, nanopush_qp) + real(lo, nanopush_qp)
+        end if
+      end if
       call c_delete_trajectory(tr)
     end if
     if (.not. allocated(traj)) allocate (traj(NANOPUSH_TRAJECTORY_COLUMNS, 0))
+    if (present(state_ext)) then
+      if (.not. allocated(state_ext)) allocate (state_ext(NANOPUSH_STATE_SIZE, 0))
+    end if
     if (present(counts)) counts = cnt
     call finish(err, "nanopush_run", msg, stat)
     if (present(errmsg)) errmsg = msg

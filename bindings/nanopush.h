@@ -30,7 +30,7 @@ extern "C" {
 #endif
 
 /* Version of this interface: major * 10000 + minor * 100 + patch. */
-#define NANOPUSH_API_VERSION 200
+#define NANOPUSH_API_VERSION 300
 int nanopush_get_api_version(void);
 
 /* ---- Status codes ---------------------------------------------------------------------- */
@@ -168,6 +168,32 @@ int nanopush_integrate(nanopush_error error, nanopush_integrator integrator, nan
  *   method may also be "cvode" (SUNDIALS cross-check: rough scenes, coulomb law, engine cxx). */
 nanopush_trajectory nanopush_run_scene_ex(nanopush_error error, nanopush_scene scene, const char* engine,
                                           const char* method, const char* law, double rtol, double atol);
+
+/* nanopush_run_scene_ex plus
+ *   precision: scalar of the integration: "double", "long" (x87 80-bit long double) or "quad"
+ *              (__float128, 113-bit); NULL or "" = the scene's [solver] precision (which the
+ *              other run functions use too). long and quad: engine "cxx", method "faithful" or
+ *              "modern", smooth scenes; otherwise NANOPUSH_BAD_INPUT naming the field. Each
+ *              costs more per RHS evaluation (docs/performance.md: ~15x long, ~120x quad).
+ * nanopush_trajectory_get_data then returns the values rounded to double; the extended
+ * digits come from nanopush_trajectory_get_state_extended. */
+nanopush_trajectory nanopush_run_scene_precision(nanopush_error error, nanopush_scene scene, const char* engine,
+                                                 const char* method, const char* law, const char* precision,
+                                                 double rtol, double atol);
+/* Precision the trajectory was integrated in ("double", "long", "quad") into buffer[size];
+ * full length or -1. */
+int nanopush_trajectory_get_precision(nanopush_error error, nanopush_trajectory trajectory, char* buffer,
+                                      int size);
+/* Number of state components: x [m], y [m], theta [rad], vx [m/s], vy [m/s], omega [rad/s]. */
+#define NANOPUSH_STATE_SIZE 6
+/* The state at each output time to the precision of the integration, as an unevaluated sum of
+ * two doubles: value = hi + lo, hi the value rounded to double (the trajectory's columns 1..6),
+ * lo the rest rounded to double (|lo| <= ulp(hi)/2). Column-major (NANOPUSH_STATE_SIZE, rows):
+ * element [i + 6*k] is component i at output time k (Fortran: hi(6, rows)). long double values
+ * are represented exactly; __float128 values to about 2^-106 relative (below any error the
+ * integration reaches); double runs give lo = 0. capacity as in nanopush_trajectory_get_data. */
+int nanopush_trajectory_get_state_extended(nanopush_error error, nanopush_trajectory trajectory, int capacity,
+                                           double* hi, double* lo);
 
 /* ---- Friction resultant over a rectangular contact (docs/friction.md, models.md B) ----- */
 /* Coulomb friction over a 2a x 2b rectangle with uniform pressure, rigid rotation about the iCOR.

@@ -118,6 +118,76 @@ int main(int argc, char** argv) {
   printf("rtol = 1: %s\n", msg);
   CHECK(strstr(msg, "rtol = 1: must be in [") != NULL);
   nanopush_clear_error(err);
+
+  /* Precision as a choice: quad through the C API, its extra digits as hi + lo. */
+  {
+    nanopush_trajectory tq = nanopush_run_scene_precision(err, scene, "cxx", "faithful", NULL, "quad", 0, -1);
+    CHECK(tq != NULL);
+    if (!tq) return 1;
+    char prec[8];
+    CHECK(nanopush_trajectory_get_precision(err, tq, prec, (int)sizeof prec) == 4 && strcmp(prec, "quad") == 0);
+    CHECK(nanopush_trajectory_get_precision(err, tc, prec, (int)sizeof prec) == 6 && strcmp(prec, "double") == 0);
+    int rq = 0;
+    CHECK(nanopush_trajectory_get_size(err, tq, &rq) == NANOPUSH_OK && rq == rows);
+    double* dq = malloc(sizeof(double) * NANOPUSH_TRAJECTORY_COLUMNS * (size_t)rq);
+    double* hi = malloc(sizeof(double) * NANOPUSH_STATE_SIZE * (size_t)rq);
+    double* lo = malloc(sizeof(double) * NANOPUSH_STATE_SIZE * (size_t)rq);
+    CHECK(nanopush_trajectory_get_state_extended(err, tq, rq - 1, hi, lo) == NANOPUSH_BUFFER_TOO_SMALL);
+    nanopush_clear_error(err);
+    CHECK(nanopush_trajectory_get_data(err, tq, rq, dq) == NANOPUSH_OK);
+    CHECK(nanopush_trajectory_get_state_extended(err, tq, rq, hi, lo) == NANOPUSH_OK);
+    int lo_nonzero = 0, hi_is_rounded = 1, lo_small = 1;
+    double dev_q = 0;
+    for (int k = 0; k < rq; ++k)
+      for (int i = 0; i < NANOPUSH_STATE_SIZE; ++i) {
+        const double h = hi[i + NANOPUSH_STATE_SIZE * k], l = lo[i + NANOPUSH_STATE_SIZE * k];
+        /* hi is the trajectory's column (the value rounded to double), lo below half an ulp */
+        if (h != dq[1 + i + NANOPUSH_TRAJECTORY_COLUMNS * k]) hi_is_rounded = 0;
+        if (!(fabs(l) <= 0.5 * (nextafter(fabs(h), INFINITY) - fabs(h)))) lo_small = 0;
+        if (l != 0) lo_nonzero = 1;
+        const double d = dc[1 + i + NANOPUSH_TRAJECTORY_COLUMNS * k];
+        dev_q = fmax(dev_q, fabs(h - d) / fmax(fabs(d), 1e-300));
+      }
+    printf("quad vs double run: max relative deviation %.3g\n", dev_q);
+    CHECK(hi_is_rounded && lo_small && lo_nonzero);
+    CHECK(dev_q <= 1e-7);  /* the same trajectory, each to its own tolerance */
+    /* a double run: hi = the state, lo = 0 */
+    CHECK(nanopush_trajectory_get_state_extended(err, tc, rows, hi, lo) == NANOPUSH_OK);
+    CHECK(hi[2 + NANOPUSH_STATE_SIZE * 5] == dc[3 + NANOPUSH_TRAJECTORY_COLUMNS * 5] && lo[2 + NANOPUSH_STATE_SIZE * 5] == 0);
+    free(dq);
+    free(hi);
+    free(lo);
+    nanopush_delete_trajectory(&tq);
+    /* Bad precision settings name the field, the value and what is allowed. */
+    CHECK(nanopush_run_scene_precision(err, scene, "cxx", NULL, NULL, "octuple", 0, -1) == NULL);
+    CHECK(nanopush_check_error(err) == NANOPUSH_BAD_INPUT);
+    nanopush_get_error(err, msg, (int)sizeof msg);
+    printf("precision = octuple: %s\n", msg);
+    CHECK(strstr(msg, "precision = octuple: must be double, long or quad") != NULL);
+    nanopush_clear_error(err);
+    CHECK(nanopush_run_scene_precision(err, scene, "f77", NULL, NULL, "quad", 0, -1) == NULL);
+    CHECK(nanopush_check_error(err) == NANOPUSH_BAD_INPUT);
+    nanopush_get_error(err, msg, (int)sizeof msg);
+    printf("f77 in quad: %s\n", msg);
+    CHECK(strstr(msg, "precision = quad") != NULL);
+    nanopush_clear_error(err);
+    /* The scene's [solver] precision is used by every run function when none is given. */
+    const char* toml =
+        "[scene]\nname = \"long_bar\"\n"
+        "[object]\nshape = \"bar\"\nlength = 100e-9\nwidth = 55e-9\nheight = 50e-9\ndensity = 2267.0\n"
+        "[push]\nforce = 5e-6\ndirection = 0.0\nxn = 27.5e-9\nyn = 45e-9\n"
+        "[initial]\ntheta = -0.5\n[surface]\nkind = \"smooth\"\n"
+        "[solver]\nt_end = 1e-10\nsamples = 11\nrtol = 1e-10\nprecision = \"long\"\n";
+    nanopush_scene ls = nanopush_parse_scene(err, toml, "long_bar");
+    CHECK(ls != NULL);
+    nanopush_trajectory tl = nanopush_run_scene(err, ls, NULL, NULL, 0, -1);
+    CHECK(tl != NULL);
+    if (tl) {
+      CHECK(nanopush_trajectory_get_precision(err, tl, prec, (int)sizeof prec) == 4 && strcmp(prec, "long") == 0);
+      nanopush_delete_trajectory(&tl);
+    }
+    nanopush_delete_scene(&ls);
+  }
   free(dc);
   free(df);
   nanopush_delete_trajectory(&tc);

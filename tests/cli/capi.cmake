@@ -82,3 +82,10 @@ foreach(_law thesis coulomb)
   set_tests_properties(capi.fortran_rough_${_law} PROPERTIES FIXTURES_REQUIRED capi_rough_${_law}
     PASS_REGULAR_EXPRESSION "identical to nanopush run")
 endforeach()
+
+# Extended precision from Fortran: nanopush_run(..., precision=, state_ext=) in kind nanopush_qp.
+add_executable(capi_test_precision ${_capi_dir}/test_fortran_precision.f90)
+target_link_libraries(capi_test_precision PRIVATE nanopush_fortran nanopush_warnings)
+set_target_properties(capi_test_precision PROPERTIES Fortran_MODULE_DIRECTORY ${NANOPUSH_MODDIR}/capi_test_precision)
+add_test(NAME capi.fortran_precision COMMAND capi_test_precision)
+set_tests_properties(capi.fortran_precision PROPERTIES PASS_REGULAR_EXPRESSION "test_fortran_precision: all checks hold")
