@@ -1,6 +1,7 @@
 #include "nanopush/bench.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <cmath>
 #include <limits>
 
@@ -123,45 +124,85 @@ std::vector<Row> run_sweep(const Problem& p, const std::vector<Engine>& engines,
   if (s.repeats < 1) throw InputError("repeats", std::to_string(s.repeats), "must be >= 1");
   if (s.repeats_extended < 0)
     throw InputError("repeats_extended", std::to_string(s.repeats_extended), "must be >= 0 (0 = repeats)");
-  std::vector<Row> rows;
+  // Each engine's tolerances and repeats.
+  struct Plan {
+    const Engine* e;
+    std::vector<double> rtols;
+    int repeats;
+  };
+  std::vector<Plan> plans;
   for (const auto& e : engines) {
     const bool extended = e.precision != "double";
     const int kmax = extended ? std::max(s.kmax, s.kmax_extended) : s.kmax;
-    const int repeats = extended && s.repeats_extended > 0 ? s.repeats_extended : s.repeats;
     const int kstep = extended && s.kstep_extended > 0 ? s.kstep_extended : s.kstep;
-    const std::vector<double> rtols = tolerance_sweep(s.kmin, kmax, kstep, e.rtol_min);
-    // One untimed solve per engine first: the first call of a process pays page faults,
-    // lazy symbol binding and cold caches (several ms), which is not the integrator's cost.
-    if (!rtols.empty()) {
-      const Solve w = e.solve(rtols.front());
-      if (e.time_rhs && w.nfcn > 0) (void)e.time_rhs(w.nfcn);
+    plans.push_back({&e, tolerance_sweep(s.kmin, kmax, kstep, e.rtol_min),
+                     extended && s.repeats_extended > 0 ? s.repeats_extended : s.repeats});
+  }
+  // One untimed solve per engine first: the first call of a process pays page faults,
+  // lazy symbol binding and cold caches (several ms), which is not the integrator's cost.
+  for (const auto& pl : plans)
+    if (!pl.rtols.empty()) {
+      const Solve w = pl.e->solve(pl.rtols.front());
+      if (pl.e->time_rhs && w.nfcn > 0) (void)pl.e->time_rhs(w.nfcn);
     }
-    for (const double rtol : rtols) {
-      Row r;
-      r.engine = e.name;
-      r.precision = e.precision;
-      r.rtol = rtol;
-      r.repeats = repeats;
-      if (repeats > 1) (void)e.solve(rtol);  // warm-up at this tolerance (caches, branch predictors)
-      const Solve first = e.solve(rtol);
-      std::vector<double> wall{first.seconds};
-      for (int i = 1; i < repeats; ++i) wall.push_back(e.solve(rtol).seconds);
-      r.status = first.status;
-      r.nfcn = first.nfcn;
-      r.naccpt = first.naccpt;
-      r.nrejct = first.nrejct;
-      r.error = first.status == 0 ? scaled_max_error(p, first.y, ref.y) : std::numeric_limits<double>::quiet_NaN();
-      r.wall_s = median(wall);
-      std::vector<double> rhs;
-      if (e.time_rhs && r.nfcn > 0)
-        for (int i = 0; i < repeats; ++i) rhs.push_back(e.time_rhs(r.nfcn));
-      r.rhs_s = median(rhs);
+  // Tolerance by tolerance, the engines' timed solves are interleaved (repeat i of every
+  // engine, then repeat i+1): a change of machine load during the sweep then reaches every
+  // engine compared at that tolerance alike, so their ratios stay fair on a busy machine.
+  std::vector<double> all;
+  for (const auto& pl : plans) all.insert(all.end(), pl.rtols.begin(), pl.rtols.end());
+  std::sort(all.begin(), all.end(), std::greater<>());
+  all.erase(std::unique(all.begin(), all.end()), all.end());
+  std::vector<std::vector<Row>> per_engine(plans.size());
+  for (const double rtol : all) {
+    struct Point {
+      std::size_t engine;
+      Row row;
+      Solve first;
+      std::vector<double> wall, rhs;
+    };
+    std::vector<Point> pts;
+    int most = 0;
+    for (std::size_t ie = 0; ie < plans.size(); ++ie)
+      if (std::find(plans[ie].rtols.begin(), plans[ie].rtols.end(), rtol) != plans[ie].rtols.end()) {
+        Point pt;
+        pt.engine = ie;
+        pt.row.engine = plans[ie].e->name;
+        pt.row.precision = plans[ie].e->precision;
+        pt.row.rtol = rtol;
+        pt.row.repeats = plans[ie].repeats;
+        if (plans[ie].repeats > 1) (void)plans[ie].e->solve(rtol);  // warm-up at this tolerance
+        pts.push_back(std::move(pt));
+        most = std::max(most, plans[ie].repeats);
+      }
+    for (int i = 0; i < most; ++i)
+      for (auto& pt : pts) {
+        if (i >= plans[pt.engine].repeats) continue;
+        Solve sv = plans[pt.engine].e->solve(rtol);
+        pt.wall.push_back(sv.seconds);
+        if (i == 0) pt.first = std::move(sv);
+      }
+    for (int i = 0; i < most; ++i)
+      for (auto& pt : pts)
+        if (i < plans[pt.engine].repeats && plans[pt.engine].e->time_rhs && pt.first.nfcn > 0)
+          pt.rhs.push_back(plans[pt.engine].e->time_rhs(pt.first.nfcn));
+    for (auto& pt : pts) {
+      Row& r = pt.row;
+      r.status = pt.first.status;
+      r.nfcn = pt.first.nfcn;
+      r.naccpt = pt.first.naccpt;
+      r.nrejct = pt.first.nrejct;
+      r.error = pt.first.status == 0 ? scaled_max_error(p, pt.first.y, ref.y) : std::numeric_limits<double>::quiet_NaN();
+      r.wall_s = median(pt.wall);
+      r.rhs_s = median(pt.rhs);
       r.overhead_ns_per_rhs = r.nfcn > 0 ? (r.wall_s - r.rhs_s) / static_cast<double>(r.nfcn) * 1e9
                                          : std::numeric_limits<double>::quiet_NaN();
-      rows.push_back(r);
       if (s.progress) s.progress(r);
+      per_engine[pt.engine].push_back(r);
     }
   }
+  // Rows grouped by engine, in the engines' order, each by decreasing rtol (the CSV layout).
+  std::vector<Row> rows;
+  for (auto& v : per_engine) rows.insert(rows.end(), v.begin(), v.end());
   return rows;
 }
 

@@ -139,7 +139,7 @@ struct SweepSettings {
   int kmax_extended = 56;   ///< last k for engines whose rtol_min is below 1e-14 (56: rtol 1e-28)
   int kstep = 1;
   int kstep_extended = 0;   ///< k step for long/quad engines (0 = kstep)
-  std::function<void(const Row&)> progress;  ///< called after each row
+  std::function<void(const Row&)> progress;  ///< called after each row (tolerance by tolerance: the engines are interleaved)
 };
 
 /// Run every engine over the sweep; errors against `ref`.
