@@ -14,7 +14,7 @@ module nanopush_f77_bsint
                                          c_f_procpointer
   implicit none
   private
-  public :: np_f77_bsint, np_f77_bsint_smooth_bar
+  public :: np_f77_bsint, np_f77_bsint_fcn, np_f77_bsint_smooth_bar
 
   !> Default INTEGER words holding one C address (c_intptr_t is a whole number of them on
   !> every platform gfortran supports: 64/32 or 32/32 bits).
@@ -30,6 +30,19 @@ module nanopush_f77_bsint
       real(c_double), intent(out) :: dydt(*)
       type(c_ptr), value, intent(in) :: udata
     end function c_rhs
+    !> A derivative routine in BSINT's own calling convention (every argument by reference),
+    !> written in C or C++: void fcn(const int* n, const double* t, const double* y,
+    !> double* dydt, const double* rpar, int* ipar, int* ierr).
+    subroutine c_fcn(n, t, y, dydt, rpar, ipar, ierr) bind(C)
+      import :: c_int, c_double
+      integer(c_int), intent(in) :: n
+      real(c_double), intent(in) :: t
+      real(c_double), intent(in) :: y(n)
+      real(c_double), intent(out) :: dydt(n)
+      real(c_double), intent(in) :: rpar(*)
+      integer(c_int), intent(inout) :: ipar(*)
+      integer(c_int), intent(inout) :: ierr
+    end subroutine c_fcn
   end interface
 
 
@@ -79,6 +92,32 @@ contains
     nstat = int(ist, c_int)
     np_f77_bsint = int(ierr, c_int)
   end function np_f77_bsint
+
+  !> As np_f77_bsint, with the derivative routine handed to BSINT itself (F77 calling
+  !> convention, bindings/f77_bsint.h np_f77_bsint_fcn): no trampoline and one call per RHS
+  !> evaluation instead of three. udata travels in ipar(1:nw), which fcn receives.
+  integer(c_int) function np_f77_bsint_fcn(n, t0, y, nout, tout, yout, rtol, atol, h0, hmax, kmax, &
+                                           iextr, maxstp, fcn, udata, nstat) &
+      bind(C, name="np_f77_bsint_fcn")
+    integer(c_int), value, intent(in) :: n, nout, kmax, iextr, maxstp
+    real(c_double), value, intent(in) :: t0, rtol, h0, hmax
+    real(c_double), intent(inout) :: y(*)
+    real(c_double), intent(in) :: tout(*), atol(*)
+    real(c_double), intent(inout) :: yout(*)
+    type(c_funptr), value, intent(in) :: fcn
+    type(c_ptr), value, intent(in) :: udata
+    integer(c_int), intent(out) :: nstat(3)
+    integer :: ipar(nw), ist(3), ierr
+    double precision :: rpar(1)
+    procedure(c_fcn), pointer :: f
+    rpar(1) = 0d0
+    ipar(1:nw) = transfer(udata, ipar(1:nw))
+    call c_f_procpointer(fcn, f)
+    call bsint(f, int(n), t0, y, int(nout), tout, yout, rtol, atol, h0, hmax, &
+               int(kmax), int(iextr), int(maxstp), rpar, ipar, ist, ierr)
+    nstat = int(ist, c_int)
+    np_f77_bsint_fcn = int(ierr, c_int)
+  end function np_f77_bsint_fcn
 
   !> Integrate the F77 smooth-nanobar RHS (n must be 6). params(6) = (m [kg], I [kg m^2],
   !> F [N], beta [rad], pbx [m], pby [m]). Other arguments as np_f77_bsint.

@@ -14,7 +14,7 @@
  *   2  more than maxstp attempted steps
  *   3  step size underflow
  *   4  the right-hand side returned a non-zero value (integration stopped at once)
- *   5  non-finite error estimate after 30 consecutive step reductions
+ *   5  non-finite error estimate after 10 consecutive step reductions
  * On failure y holds the state at the last output time reached (or y0 if none) and the
  * columns of yout not reached are left unchanged. nstat is set on every return.
  * The functions never stop the program. They are re-entrant: no global state. */
@@ -49,6 +49,20 @@ typedef int (*np_f77_bsint_rhs)(int n, double t, const double* y, double* dydt, 
 int np_f77_bsint(int n, double t0, double* y, int nout, const double* tout, double* yout,
                  double rtol, const double* atol, double h0, double hmax, int kmax, int iextr,
                  int maxstp, np_f77_bsint_rhs rhs, void* udata, int* nstat);
+
+/* The right-hand side in BSINT's own calling convention (every argument by reference, as a
+ * FORTRAN 77 EXTERNAL subroutine FCN(N, T, Y, DYDT, RPAR, IPAR, IERR)): dydt[*n] = f(*t, y);
+ * set *ierr non-zero to stop (status 4). ipar holds udata's bits: read it back with
+ * memcpy(&udata, ipar, sizeof udata). rpar is unused. */
+typedef void (*np_f77_bsint_fcn_t)(const int* n, const double* t, const double* y, double* dydt,
+                                   const double* rpar, int* ipar, int* ierr);
+
+/* As np_f77_bsint, with fcn handed to BSINT as its derivative routine: no trampoline, one call
+ * per RHS evaluation (np_f77_bsint makes three: BSINT -> Fortran trampoline -> rhs). Same
+ * steps, counts and results. */
+int np_f77_bsint_fcn(int n, double t0, double* y, int nout, const double* tout, double* yout,
+                     double rtol, const double* atol, double h0, double hmax, int kmax, int iextr,
+                     int maxstp, np_f77_bsint_fcn_t fcn, void* udata, int* nstat);
 
 /* As np_f77_bsint on the F77 smooth-surface nanobar RHS (fortran/smbar.f); n must be 6.
  *   y[6], yout[6*nout]: (x [m], y [m], theta [rad], vx [m/s], vy [m/s], omega [rad/s])

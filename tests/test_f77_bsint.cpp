@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <numbers>
 #include <stdexcept>
 #include <thread>
@@ -250,6 +251,70 @@ TEST_CASE("F77 BS: a failing C++ callback gives status 4, an exception too", "[f
   };
   r = integrate(throws, {1.0}, 0.0, {1.0}, 1e-10, {1e-12}, 2);
   CHECK(r.status == 4);
+}
+
+// The same callable as BSINT's own FCN (np_f77_bsint_fcn): udata's bits in ipar.
+template <class F>
+void forward_fcn(const int* n, const double* t, const double* y, double* dydt, const double*, int* ipar,
+                 int* ierr) noexcept {
+  void* udata;
+  std::memcpy(&udata, ipar, sizeof udata);
+  try {
+    *ierr = (*static_cast<F*>(udata))(*n, *t, y, dydt);
+  } catch (...) {
+    *ierr = -1;
+  }
+}
+
+TEST_CASE("F77 BS with the RHS as its FCN (np_f77_bsint_fcn) equals the C callback bit for bit",
+          "[f77][bsint][unit]") {
+  // harmonic oscillator with a parameter reached through udata; both extrapolations
+  for (int iextr : {1, 2}) {
+    struct Osc {
+      double w2;
+      int calls = 0;
+      int operator()(int, double, const double* y, double* dy) {
+        ++calls;
+        dy[0] = y[1];
+        dy[1] = -w2 * y[0];
+        return 0;
+      }
+    };
+    Osc a{4.0}, b{4.0};
+    const std::vector<double> tout = linspace(0.0, 10.0, 41);
+    const std::vector<double> atol{1e-11, 1e-11};
+    const Run ra = integrate(a, {1.0, 0.0}, 0.0, tout, 1e-11, atol, iextr);
+    Run rb;
+    rb.y = {1.0, 0.0};
+    rb.yout.assign(2 * tout.size(), -1.0);
+    rb.status = np_f77_bsint_fcn(2, 0.0, rb.y.data(), static_cast<int>(tout.size()), tout.data(), rb.yout.data(), 1e-11,
+                                 atol.data(), 0.0, 0.0, 8, iextr, 0, &forward_fcn<Osc>, &b, rb.nstat.data());
+    INFO("iextr = " << iextr);
+    REQUIRE(ra.status == 0);
+    REQUIRE(rb.status == 0);
+    CHECK(rb.nstat == ra.nstat);
+    CHECK(b.calls == a.calls);
+    CHECK(rb.nstat[0] == b.calls);
+    CHECK(rb.yout == ra.yout);
+    CHECK(std::abs(rb.at(0, 40) - std::cos(20.0)) < 1e-8);
+  }
+  // a failing FCN: status 4, outputs before it kept
+  int calls = 0;
+  auto fails = [&calls](int n, double t, const double* y, double* dy) {
+    ++calls;
+    for (int i = 0; i < n; ++i) dy[i] = y[i];
+    return t > 0.5 ? 3 : 0;
+  };
+  const std::vector<double> tout{0.25, 0.5, 1.0};
+  const std::vector<double> atol{1e-12};
+  std::vector<double> y{1.0}, yout(3, -1.0);
+  std::array<int, 3> nstat{};
+  const int st = np_f77_bsint_fcn(1, 0.0, y.data(), 3, tout.data(), yout.data(), 1e-10, atol.data(), 0.0, 0.0, 8, 1,
+                                  0, &forward_fcn<decltype(fails)>, &fails, nstat.data());
+  CHECK(st == 4);
+  CHECK(nstat[0] == calls);
+  CHECK(std::abs(yout[1] - std::exp(0.5)) < 1e-8);
+  CHECK(yout[2] == -1.0);
 }
 
 TEST_CASE("F77 BS: bad input and step budget through the bridge", "[f77][bsint][unit]") {

@@ -10,7 +10,7 @@
 // Engines (names as in the CSV):
 //   cxx-faithful, cxx-modern   the C++ Bulirsch-Stoer (BsOptions::faithful / ::modern), RHS inlined;
 //                              in double, long double or __float128 (precision column)
-//   f77-callback               fortran/bsint.f through np_f77_bsint with a C callback to the same C++ RHS
+//   f77-callback               fortran/bsint.f through np_f77_bsint_fcn: the same C++ RHS as its FCN
 //   cvode-adams, cvode-bdf     SUNDIALS CVODE: Adams-Moulton (orders 1-12) with the fixed-point
 //                              nonlinear solver; BDF (orders 1-5) with Newton and the dense direct
 //                              solver, difference-quotient Jacobian (its RHS calls are counted)
@@ -25,6 +25,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cstring>
 #include <memory>
 #include <span>
 #include <string>
@@ -154,6 +155,14 @@ template <class Rhs>
 int f77_callback(int /*n*/, double t, const double* y, double* dydt, void* udata) {
   return (*static_cast<const Rhs*>(udata))(t, y, dydt);
 }
+/// The RHS as BSINT's own derivative routine (np_f77_bsint_fcn): udata's bits in ipar.
+template <class Rhs>
+void f77_fcn(const int* /*n*/, const double* t, const double* y, double* dydt, const double* /*rpar*/, int* ipar,
+             int* ierr) {
+  void* udata;
+  std::memcpy(&udata, ipar, sizeof udata);
+  *ierr = (*static_cast<const Rhs*>(udata))(*t, y, dydt);
+}
 }  // namespace detail
 
 template <class Rhs>
@@ -162,13 +171,13 @@ Solve solve_f77_callback(const Problem& p, const Rhs& rhs, double rtol, double* 
   std::vector<double> y = p.y0, yout(p.nout() * static_cast<std::size_t>(p.n), 0.0);
   int nstat[3] = {0, 0, 0};
   const auto t0 = detail::Clock::now();
-  const int st = np_f77_bsint(p.n, p.t0, y.data(), static_cast<int>(p.nout()), p.tout.data(), yout.data(), rtol,
-                              atol.data(), 0.0, 0.0, 8, 1, 0, &detail::f77_callback<Rhs>,
-                              const_cast<void*>(static_cast<const void*>(&rhs)), nstat);
+  const int st = np_f77_bsint_fcn(p.n, p.t0, y.data(), static_cast<int>(p.nout()), p.tout.data(), yout.data(),
+                                  rtol, atol.data(), 0.0, 0.0, 8, 1, 0, &detail::f77_fcn<Rhs>,
+                                  const_cast<void*>(static_cast<const void*>(&rhs)), nstat);
   if (seconds) *seconds = detail::seconds_since(t0);
   Solve s;
   s.status = st;
-  if (st != 0) s.message = "np_f77_bsint returned status " + std::to_string(st);
+  if (st != 0) s.message = "np_f77_bsint_fcn returned status " + std::to_string(st);
   s.nfcn = nstat[0];
   s.naccpt = nstat[1];
   s.nrejct = nstat[2];

@@ -76,7 +76,7 @@ std::vector<Engine> generic_engines(const Problem& p, std::shared_ptr<const Rhs>
     e.time_rhs = timer;
     v.push_back(std::move(e));
   };
-  add("f77-callback", "fortran/bsint.f (rational, kmax 8) via np_f77_bsint, C callback to the C++ RHS",
+  add("f77-callback", "fortran/bsint.f (rational, kmax 8) via np_f77_bsint_fcn, the C++ RHS as its FCN",
       [p, rhs](double rtol) {
         double sec = 0;
         Solve s = solve_f77_callback(p, *rhs, rtol, &sec);
