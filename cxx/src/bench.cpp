@@ -145,59 +145,69 @@ std::vector<Row> run_sweep(const Problem& p, const std::vector<Engine>& engines,
       const Solve w = pl.e->solve(pl.rtols.front());
       if (pl.e->time_rhs && w.nfcn > 0) (void)pl.e->time_rhs(w.nfcn);
     }
-  // Tolerance by tolerance, the engines' timed solves are interleaved (repeat i of every
-  // engine, then repeat i+1): a change of machine load during the sweep then reaches every
-  // engine compared at that tolerance alike, so their ratios stay fair on a busy machine.
-  std::vector<double> all;
-  for (const auto& pl : plans) all.insert(all.end(), pl.rtols.begin(), pl.rtols.end());
-  std::sort(all.begin(), all.end(), std::greater<>());
-  all.erase(std::unique(all.begin(), all.end()), all.end());
+  // Tolerance by tolerance, the timed solves of the engines of one precision are
+  // interleaved (repeat i of every engine, then repeat i+1): a change of machine load during
+  // the sweep then reaches every engine compared at that tolerance alike, so their ratios
+  // stay fair on a busy machine. Precisions run one after the other (a __float128 solve
+  // between two double ones would leave them colder caches than their neighbours').
+  std::vector<std::string> precisions;
+  for (const auto& pl : plans)
+    if (std::find(precisions.begin(), precisions.end(), pl.e->precision) == precisions.end())
+      precisions.push_back(pl.e->precision);
   std::vector<std::vector<Row>> per_engine(plans.size());
-  for (const double rtol : all) {
-    struct Point {
-      std::size_t engine;
-      Row row;
-      Solve first;
-      std::vector<double> wall, rhs;
-    };
-    std::vector<Point> pts;
-    int most = 0;
-    for (std::size_t ie = 0; ie < plans.size(); ++ie)
-      if (std::find(plans[ie].rtols.begin(), plans[ie].rtols.end(), rtol) != plans[ie].rtols.end()) {
-        Point pt;
-        pt.engine = ie;
-        pt.row.engine = plans[ie].e->name;
-        pt.row.precision = plans[ie].e->precision;
-        pt.row.rtol = rtol;
-        pt.row.repeats = plans[ie].repeats;
-        if (plans[ie].repeats > 1) (void)plans[ie].e->solve(rtol);  // warm-up at this tolerance
-        pts.push_back(std::move(pt));
-        most = std::max(most, plans[ie].repeats);
-      }
-    for (int i = 0; i < most; ++i)
+  for (const std::string& prec : precisions) {
+    std::vector<double> all;
+    for (const auto& pl : plans)
+      if (pl.e->precision == prec) all.insert(all.end(), pl.rtols.begin(), pl.rtols.end());
+    std::sort(all.begin(), all.end(), std::greater<>());
+    all.erase(std::unique(all.begin(), all.end()), all.end());
+    for (const double rtol : all) {
+      struct Point {
+        std::size_t engine;
+        Row row;
+        Solve first;
+        std::vector<double> wall, rhs;
+      };
+      std::vector<Point> pts;
+      int most = 0;
+      for (std::size_t ie = 0; ie < plans.size(); ++ie)
+        if (plans[ie].e->precision == prec &&
+            std::find(plans[ie].rtols.begin(), plans[ie].rtols.end(), rtol) != plans[ie].rtols.end()) {
+          Point pt;
+          pt.engine = ie;
+          pt.row.engine = plans[ie].e->name;
+          pt.row.precision = plans[ie].e->precision;
+          pt.row.rtol = rtol;
+          pt.row.repeats = plans[ie].repeats;
+          if (plans[ie].repeats > 1) (void)plans[ie].e->solve(rtol);  // warm-up at this tolerance
+          pts.push_back(std::move(pt));
+          most = std::max(most, plans[ie].repeats);
+        }
+      for (int i = 0; i < most; ++i)
+        for (auto& pt : pts) {
+          if (i >= plans[pt.engine].repeats) continue;
+          Solve sv = plans[pt.engine].e->solve(rtol);
+          pt.wall.push_back(sv.seconds);
+          if (i == 0) pt.first = std::move(sv);
+        }
+      for (int i = 0; i < most; ++i)
+        for (auto& pt : pts)
+          if (i < plans[pt.engine].repeats && plans[pt.engine].e->time_rhs && pt.first.nfcn > 0)
+            pt.rhs.push_back(plans[pt.engine].e->time_rhs(pt.first.nfcn));
       for (auto& pt : pts) {
-        if (i >= plans[pt.engine].repeats) continue;
-        Solve sv = plans[pt.engine].e->solve(rtol);
-        pt.wall.push_back(sv.seconds);
-        if (i == 0) pt.first = std::move(sv);
+        Row& r = pt.row;
+        r.status = pt.first.status;
+        r.nfcn = pt.first.nfcn;
+        r.naccpt = pt.first.naccpt;
+        r.nrejct = pt.first.nrejct;
+        r.error = pt.first.status == 0 ? scaled_max_error(p, pt.first.y, ref.y) : std::numeric_limits<double>::quiet_NaN();
+        r.wall_s = median(pt.wall);
+        r.rhs_s = median(pt.rhs);
+        r.overhead_ns_per_rhs = r.nfcn > 0 ? (r.wall_s - r.rhs_s) / static_cast<double>(r.nfcn) * 1e9
+                                           : std::numeric_limits<double>::quiet_NaN();
+        if (s.progress) s.progress(r);
+        per_engine[pt.engine].push_back(r);
       }
-    for (int i = 0; i < most; ++i)
-      for (auto& pt : pts)
-        if (i < plans[pt.engine].repeats && plans[pt.engine].e->time_rhs && pt.first.nfcn > 0)
-          pt.rhs.push_back(plans[pt.engine].e->time_rhs(pt.first.nfcn));
-    for (auto& pt : pts) {
-      Row& r = pt.row;
-      r.status = pt.first.status;
-      r.nfcn = pt.first.nfcn;
-      r.naccpt = pt.first.naccpt;
-      r.nrejct = pt.first.nrejct;
-      r.error = pt.first.status == 0 ? scaled_max_error(p, pt.first.y, ref.y) : std::numeric_limits<double>::quiet_NaN();
-      r.wall_s = median(pt.wall);
-      r.rhs_s = median(pt.rhs);
-      r.overhead_ns_per_rhs = r.nfcn > 0 ? (r.wall_s - r.rhs_s) / static_cast<double>(r.nfcn) * 1e9
-                                         : std::numeric_limits<double>::quiet_NaN();
-      if (s.progress) s.progress(r);
-      per_engine[pt.engine].push_back(r);
     }
   }
   // Rows grouped by engine, in the engines' order, each by decreasing rtol (the CSV layout).
