@@ -57,5 +57,7 @@ program test_fortran_precision
     error stop "a bad precision should be a bad input naming the field"
   if (size(q, 2) /= 0) error stop "a failed run should give state_ext with zero columns"
   call nanopush_destroy(scene)
+  ! main-program allocatables are not freed at exit (LeakSanitizer would report them)
+  deallocate (td, tq, t2, q, q2, qd, toml, msg)
   print '(a)', "test_fortran_precision: all checks hold"
 end program test_fortran_precision
