@@ -131,14 +131,11 @@ class BulirschStoer {
     if constexpr (N == Dynamic)
       for (auto& row : held_) row.assign(static_cast<std::size_t>(n_ > 0 ? n_ : 1), Scalar(0));
     zg_.assign(static_cast<std::size_t>(3 * kL) * static_cast<std::size_t>(n_ > 0 ? n_ : 1), Scalar(0));
-    for (int j = 0; j < kKmaxLimit + 2; ++j) nj_[j] = opt_.dense ? 4 * j - 2 : 2 * j;
-    for (int j = 1; j < kKmaxLimit + 2; ++j) facmin_[j] = std::pow(kSafe3, 1.0 / static_cast<double>(2 * j - 1));
-    for (int j = 2; j < kKmaxLimit + 2; ++j)
-      for (int l = 2; l <= j; ++l) {
-        const Scalar q = Scalar(seq(j)) / Scalar(seq(j - l + 1));
-        ratio2_[j][l] = q * q;
-        rinv_[j][l] = Scalar(1) / (ratio2_[j][l] - Scalar(1));
-      }
+    const SequenceTables& st = sequence_tables(opt_.dense);  // built once per process
+    nj_ = st.nj;
+    facmin_ = &st.facmin;
+    ratio2_ = &st.ratio2;
+    rinv_ = &st.rinv;
     if (opt_.dense && n_ > 0) {
       // Dense-output work space, allocated once: every right-hand side value of every
       // line (line j has 4j-1 of them), the midpoint values, the interpolation coefficients.
@@ -338,7 +335,7 @@ class BulirschStoer {
             // exactly the F77 engine's operations.
             const double errc = static_cast<double>(errs[j]);
             const double expo = 1.0 / static_cast<double>(2 * j - 1);
-            const double facmin = facmin_[j];  // kSafe3^expo
+            const double facmin = (*facmin_)[j];  // kSafe3^expo
             double fac;
             if (errc == 0)
               fac = 1.0 / facmin;
@@ -866,10 +863,10 @@ class BulirschStoer {
     auto& cu = cur();
     const auto& pr = prev();
     for (int l = 2; l <= j; ++l) {
-      const Scalar r = ratio2_[j][l];
+      const Scalar r = (*ratio2_)[j][l];
       if (!rational) {
         // Aitken–Neville; no division (the reciprocal is tabulated)
-        const Scalar inv = rinv_[j][l];
+        const Scalar inv = (*rinv_)[j][l];
         for (int i = 0; i < n; ++i) cu[l][i] = cu[l - 1][i] + (cu[l - 1][i] - pr[l - 1][i]) * inv;
         continue;
       }
@@ -907,9 +904,35 @@ class BulirschStoer {
   int n_;
   Vec y_{}, f0_{}, zm_{}, z_{}, fz_{}, sc_{}, atol_{}, f1_{};
   std::array<int, kKmaxLimit + 2> nj_{};  // step numbers of the lines, 1-based
-  std::array<double, kKmaxLimit + 2> facmin_{};  // smallest step-size factor per line
-  // Extrapolation constants of line j, column l: (n_j / n_{j-l+1})^2 and 1/(that - 1).
-  std::array<std::array<Scalar, kKmaxLimit + 2>, kKmaxLimit + 2> ratio2_{}, rinv_{};
+  // Constants of the step-number sequence (2j or 4j-2), the same for every instance and so
+  // computed once per process (13 pow() calls and two tables cost more than a short solve):
+  // the step numbers, the smallest step-size factor per line kSafe3^(1/(2j-1)), and the
+  // extrapolation constants of line j, column l, (n_j / n_{j-l+1})^2 and 1/(that - 1).
+  using Table2 = std::array<std::array<Scalar, kKmaxLimit + 2>, kKmaxLimit + 2>;
+  struct SequenceTables {
+    std::array<int, kKmaxLimit + 2> nj{};
+    std::array<double, kKmaxLimit + 2> facmin{};
+    Table2 ratio2{}, rinv{};
+  };
+  static const SequenceTables& sequence_tables(bool dense) {
+    auto make = [](bool d) {
+      SequenceTables t;
+      for (int j = 0; j < kKmaxLimit + 2; ++j) t.nj[j] = d ? 4 * j - 2 : 2 * j;
+      for (int j = 1; j < kKmaxLimit + 2; ++j) t.facmin[j] = std::pow(kSafe3, 1.0 / static_cast<double>(2 * j - 1));
+      for (int j = 2; j < kKmaxLimit + 2; ++j)
+        for (int l = 2; l <= j; ++l) {
+          const Scalar q = Scalar(t.nj[j]) / Scalar(t.nj[j - l + 1]);
+          t.ratio2[j][l] = q * q;
+          t.rinv[j][l] = Scalar(1) / (t.ratio2[j][l] - Scalar(1));
+        }
+      return t;
+    };
+    static const SequenceTables even = make(false), dense_seq = make(true);
+    return dense ? dense_seq : even;
+  }
+  const std::array<double, kKmaxLimit + 2>* facmin_ = nullptr;
+  const Table2* ratio2_ = nullptr;
+  const Table2* rinv_ = nullptr;
   std::vector<Scalar> fs_, ys_, dcoef_, yb_, sd_;
   // Interleaved lines (midpoint_group): zm, z of line j in rows 2j, 2j+1, its f in row
   // 2 kL + j (non-dense); the line results in held_.
