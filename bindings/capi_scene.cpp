@@ -6,6 +6,26 @@
 
 using namespace nanopush::capi;
 
+namespace {
+// A trajectory's row count against the caller's buffer (rows it can hold).
+void require_capacity(int capacity, std::size_t rows) {
+  if (capacity < 0 || static_cast<std::size_t>(capacity) < rows)
+    throw StatusError(NANOPUSH_BUFFER_TOO_SMALL, "capacity = " + std::to_string(capacity) + ": the trajectory has " +
+                                                     std::to_string(rows) + " rows (query nanopush_trajectory_get_size)");
+}
+// A string of the trajectory into buffer[size]: its full length, or -1 on failure.
+int trajectory_string(nanopush_error error, nanopush_trajectory trajectory,
+                      std::string nanopush::Trajectory::*field, char* buffer, int size) {
+  int n = -1;
+  guarded(error, [&] {
+    require_handle(trajectory, "trajectory");
+    n = copy_string(trajectory->trajectory.*field, buffer, size);
+    return NANOPUSH_OK;
+  });
+  return n;
+}
+}  // namespace
+
 extern "C" {
 
 nanopush_scene nanopush_load_scene(nanopush_error error, const char* path) {
@@ -130,10 +150,7 @@ int nanopush_trajectory_get_data(nanopush_error error, nanopush_trajectory traje
   return guarded(error, [&] {
     require_handle(trajectory, "trajectory");
     const auto& rows = trajectory->trajectory.rows;
-    if (capacity < 0 || static_cast<std::size_t>(capacity) < rows.size())
-      throw StatusError(NANOPUSH_BUFFER_TOO_SMALL, "capacity = " + std::to_string(capacity) +
-                                                       ": the trajectory has " + std::to_string(rows.size()) +
-                                                       " rows (query nanopush_trajectory_get_size)");
+    require_capacity(capacity, rows.size());
     if (!rows.empty()) require_handle(data, "data");
     static_assert(std::tuple_size_v<nanopush::TrajectoryRow> == NANOPUSH_TRAJECTORY_COLUMNS);
     for (std::size_t i = 0; i < rows.size(); ++i)
@@ -156,24 +173,12 @@ int nanopush_trajectory_get_counts(nanopush_error error, nanopush_trajectory tra
 
 int nanopush_trajectory_get_engine(nanopush_error error, nanopush_trajectory trajectory, char* buffer,
                                    int size) {
-  int n = -1;
-  guarded(error, [&] {
-    require_handle(trajectory, "trajectory");
-    n = copy_string(trajectory->trajectory.engine_label, buffer, size);
-    return NANOPUSH_OK;
-  });
-  return n;
+  return trajectory_string(error, trajectory, &nanopush::Trajectory::engine_label, buffer, size);
 }
 
 int nanopush_trajectory_get_precision(nanopush_error error, nanopush_trajectory trajectory, char* buffer,
                                       int size) {
-  int n = -1;
-  guarded(error, [&] {
-    require_handle(trajectory, "trajectory");
-    n = copy_string(trajectory->trajectory.precision, buffer, size);
-    return NANOPUSH_OK;
-  });
-  return n;
+  return trajectory_string(error, trajectory, &nanopush::Trajectory::precision, buffer, size);
 }
 
 int nanopush_trajectory_get_state_extended(nanopush_error error, nanopush_trajectory trajectory, int capacity,
@@ -182,10 +187,7 @@ int nanopush_trajectory_get_state_extended(nanopush_error error, nanopush_trajec
     require_handle(trajectory, "trajectory");
     const nanopush::Trajectory& tr = trajectory->trajectory;
     const std::size_t rows = tr.rows.size();
-    if (capacity < 0 || static_cast<std::size_t>(capacity) < rows)
-      throw StatusError(NANOPUSH_BUFFER_TOO_SMALL, "capacity = " + std::to_string(capacity) +
-                                                       ": the trajectory has " + std::to_string(rows) +
-                                                       " rows (query nanopush_trajectory_get_size)");
+    require_capacity(capacity, rows);
     if (rows == 0) return NANOPUSH_OK;
     require_handle(hi, "hi");
     require_handle(lo, "lo");
