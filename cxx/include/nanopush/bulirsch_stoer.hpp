@@ -143,9 +143,9 @@ class BulirschStoer {
       fs_.assign(static_cast<std::size_t>(line_offset(kKmaxLimit + 1)) * nn, Scalar(0));
       ys_.assign(static_cast<std::size_t>(kKmaxLimit + 2) * nn, Scalar(0));
       dcoef_.assign(static_cast<std::size_t>(kMuLimit + 5) * nn, Scalar(0));
-      sd_.assign(static_cast<std::size_t>(2 * kSdRows) * nn, Scalar(0));
       yb_.assign(static_cast<std::size_t>(kBatch) * nn, Scalar(0));
       (void)dense_tables();  // built once per process, here rather than inside a step
+      (void)dense_terms();
     }
   }
 
@@ -490,7 +490,6 @@ class BulirschStoer {
 
   static constexpr int kMuLimit = 2 * kKmaxLimit - 3;
   static constexpr int kBatch = 4;  // outputs interpolated together
-  static constexpr int kSdRows = kMuLimit + 1;  // S_k, D_k offsets 1..mu-1 (dense output)
   static constexpr int kL = kKmaxLimit + 2;  // line index bound (1-based lines)
   static constexpr std::size_t widx(int jb, int je, int j) {
     return (static_cast<std::size_t>(jb) * kL + static_cast<std::size_t>(je)) * kL + static_cast<std::size_t>(j);
@@ -520,7 +519,53 @@ class BulirschStoer {
       return v;
     }();
     return t;
-  }  // highest midpoint derivative in the interpolant
+  }
+  // The multiply-adds of the midpoint derivatives (build_dense), per last line kc and
+  // order κ = 1..2kc-3: h^κ y^(κ)(mid) ≈ Σ ((±w_j (h (n_j/2)^(κ-1))) C(κ-1, q)) · (slot of
+  // fs_), the slots being f(mid), S_o (at mid+o) or D_o (at mid-o) of lines ⌈κ/2⌉..kc, w_j
+  // the extrapolation weight of line j over lines ⌈κ/2⌉..kc, q = (κ-1-o)/2, the sign
+  // (-1)^q. Terms of (kc, κ) at [start[kc][κ], start[kc][κ+1]), line by line, each line's
+  // f(mid) first and then o decreasing: the order of the sum, and the factors multiplied as
+  // written, so the rows are the same bits as a direct evaluation line by line.
+  struct DenseTerm {
+    int slot;   // row of fs_
+    int line;   // j
+    Scalar w;   // w_j
+    Scalar bn;  // C(κ-1, q)
+    bool neg;   // (-1)^q = -1
+  };
+  struct DenseTerms {
+    std::vector<DenseTerm> terms;
+    std::array<std::array<int, kMuLimit + 2>, kKmaxLimit + 1> start{};
+  };
+  static const DenseTerms& dense_terms() {
+    static const DenseTerms t = [] {
+      DenseTerms d;
+      const std::vector<Scalar>& wext = dense_tables();
+      const Scalar* binom = &wext[static_cast<std::size_t>(kL * kL * kL)];
+      for (int kc = 2; kc <= kKmaxLimit; ++kc) {
+        const int mu = 2 * kc - 3;
+        for (int kap = 1; kap <= mu + 1; ++kap) {
+          d.start[kc][kap] = static_cast<int>(d.terms.size());
+          if (kap > mu) break;
+          const int p = kap - 1;
+          for (int j = (kap + 1) / 2; j <= kc; ++j) {
+            const int half = 2 * j - 1;  // n_j / 2 for n_j = 4j - 2
+            const Scalar w = wext[widx((kap + 1) / 2, kc, j)];
+            const int mid = line_offset(j) + half;
+            const Scalar* bn = binom + p * kMuLimit;
+            if (p % 2 == 0) d.terms.push_back({mid, j, w, bn[p / 2], (p / 2) % 2 != 0});
+            for (int q = 0; 2 * q < p; ++q) {
+              const int o = p - 2 * q;
+              d.terms.push_back({p % 2 == 0 ? mid + o : mid - o, j, w, bn[q], q % 2 != 0});
+            }
+          }
+        }
+      }
+      return d;
+    }();
+    return t;
+  }
   int seq(int j) const { return nj_[j]; }
   // First right-hand-side slot of line j (1-based) in fs_: line i holds 4i-1 slots.
   static constexpr int line_offset(int j) { return (j - 1) * (2 * j - 1); }
@@ -550,57 +595,77 @@ class BulirschStoer {
         for (int i = 0; i < n; ++i) r[i] = r[i] + w * ym[i];
       }
     }
-    const Scalar* binom = &wext[static_cast<std::size_t>(kL * kL * kL)];
     const std::size_t nn = static_cast<std::size_t>(n_);
     // h^κ y^(κ)(mid) ≈ h (n_j/2)^p δ^p f_j(mid), p = κ-1, δ^p f(mid) = Σ_q (-1)^q C(p,q)
     // f(mid+p-2q) (central differences of spacing 2 h_j), extrapolated over the lines
     // kb = ⌈κ/2⌉..kc that hold enough values. The coefficients are symmetric in the offset
-    // for even p and antisymmetric for odd p, so each line first forms S_k = f(mid+k) +
-    // f(mid-k) and D_k = f(mid+k) - f(mid-k) and every difference reads half the terms.
-    for (int kap = 1; kap <= mu; ++kap) {
-      Scalar* r = dcoef_row(4 + kap);
-      for (int i = 0; i < n; ++i) r[i] = 0;
-    }
-    Scalar* __restrict__ sum = &sd_[0];
-    Scalar* __restrict__ dif = &sd_[static_cast<std::size_t>(kSdRows) * nn];
+    // for even p and antisymmetric for odd p, so each line's f values are first turned, in
+    // place, into S_o = f(mid+o) + f(mid-o) (stored at mid+o) and D_o = f(mid+o) - f(mid-o)
+    // (at mid-o), and every difference reads half the terms. The products of extrapolation
+    // weight, (n_j/2)^p and signed binomial are tabulated per (kc, κ) (dense_terms()), so
+    // a row is one list of multiply-adds, summed in registers, times h.
+    Scalar* __restrict__ fsb = &fs_[0];
     for (int j = 1; j <= kc; ++j) {
-      const int half = seq(j) / 2;
       const int kapmax = std::min(mu, 2 * j);  // line j enters the differences of order < 2j
-      const Scalar* fl = fs_line(j);
-      const Scalar* __restrict__ fmid = fl + static_cast<std::size_t>(half) * nn;
-      for (int k = 1; k < kapmax; ++k) {
-        const Scalar* fp = fmid + static_cast<std::size_t>(k) * nn;
-        const Scalar* fm = fmid - static_cast<std::size_t>(k) * nn;
-        for (int i = 0; i < n; ++i) {
-          sum[static_cast<std::size_t>(k) * nn + static_cast<std::size_t>(i)] = fp[i] + fm[i];
-          dif[static_cast<std::size_t>(k) * nn + static_cast<std::size_t>(i)] = fp[i] - fm[i];
+      Scalar* __restrict__ fmid = fsb + static_cast<std::size_t>(line_offset(j) + seq(j) / 2) * nn;
+      for (int o = 1; o < kapmax; ++o) {
+        Scalar* __restrict__ fp = fmid + static_cast<std::size_t>(o) * nn;
+        Scalar* __restrict__ fm = fmid - static_cast<std::size_t>(o) * nn;
+        if constexpr (kPairs) {
+          for (int i = 0; i < N; i += 2) {
+            const V2 a = ld2(&fp[i]), b = ld2(&fm[i]);
+            st2(&fp[i], a + b);
+            st2(&fm[i], a - b);
+          }
+        } else {
+          for (int i = 0; i < n; ++i) {
+            const Scalar a = fp[i], b = fm[i];
+            fp[i] = a + b;
+            fm[i] = a - b;
+          }
         }
       }
-      Scalar pwj = h;  // h (n_j/2)^p
-      for (int kap = 1; kap <= kapmax; ++kap) {
-        const int p = kap - 1;
-        const Scalar c = wext[widx((kap + 1) / 2, kc, j)] * pwj;
-        const Scalar* bn = binom + p * kMuLimit;
-        Scalar* __restrict__ r = dcoef_row(4 + kap);
-        if (p % 2 == 0) {
-          const Scalar cm = ((p / 2) % 2 ? -c : c) * bn[p / 2];
-          for (int i = 0; i < n; ++i) r[i] = r[i] + cm * fmid[i];
+    }
+    // h (n_j/2)^p, formed by successive products as the terms need them
+    std::array<std::array<Scalar, kMuLimit + 1>, kKmaxLimit + 1> pw;
+    for (int j = 1; j <= kc; ++j) {
+      const Scalar half = Scalar(seq(j) / 2);
+      pw[j][0] = h;
+      for (int p = 1; p < std::min(mu, 2 * j); ++p) pw[j][p] = pw[j][p - 1] * half;
+    }
+    const DenseTerms& dt = dense_terms();
+    for (int kap = 1; kap <= mu; ++kap) {
+      const int p = kap - 1;
+      const DenseTerm* tb = &dt.terms[static_cast<std::size_t>(dt.start[kc][kap])];
+      const DenseTerm* te = &dt.terms[static_cast<std::size_t>(dt.start[kc][kap + 1])];
+      Scalar* __restrict__ r = dcoef_row(4 + kap);
+      if constexpr (N != Dynamic) {
+        Scalar acc[N];
+        for (int i = 0; i < N; ++i) acc[i] = 0;
+        for (const DenseTerm* tm = tb; tm != te; ++tm) {
+          const Scalar c = tm->w * pw[tm->line][p];
+          const Scalar cq = (tm->neg ? -c : c) * tm->bn;
+          const Scalar* __restrict__ v = fsb + static_cast<std::size_t>(tm->slot) * N;
+          for (int i = 0; i < N; ++i) acc[i] = acc[i] + cq * v[i];
         }
-        const Scalar* src = (p % 2 == 0) ? sum : dif;
-        for (int q = 0; 2 * q < p; ++q) {
-          const Scalar cq = (q % 2 ? -c : c) * bn[q];
-          const Scalar* __restrict__ v = src + static_cast<std::size_t>(p - 2 * q) * nn;
+        for (int i = 0; i < N; ++i) r[i] = acc[i];
+      } else {
+        for (int i = 0; i < n; ++i) r[i] = 0;
+        for (const DenseTerm* tm = tb; tm != te; ++tm) {
+          const Scalar c = tm->w * pw[tm->line][p];
+          const Scalar cq = (tm->neg ? -c : c) * tm->bn;
+          const Scalar* __restrict__ v = fsb + static_cast<std::size_t>(tm->slot) * nn;
           for (int i = 0; i < n; ++i) r[i] = r[i] + cq * v[i];
         }
-        pwj = pwj * Scalar(half);
       }
     }
-    double errsum = 0;
     Scalar* r0 = dcoef_row(0);
     Scalar* r1 = dcoef_row(1);
     Scalar* r2 = dcoef_row(2);
     Scalar* r3 = dcoef_row(3);
     const Scalar* y1 = &cur()[kc][0];
+    // The Hermite cubic's θ-derivatives at θ = 1/2 are subtracted from d_0..d_3 (rows 4..7)
+    // before the a_κ are formed (a_κ = 16 (d_κ - H^(κ) + C(κ,2) a_{κ-2} - κ!/(κ-4)! a_{κ-4})).
     for (int i = 0; i < n; ++i) {
       const Scalar y0 = y_[i];
       const Scalar del = y1[i] - y0;
@@ -610,26 +675,53 @@ class BulirschStoer {
       r1[i] = del;
       r2[i] = al;
       r3[i] = be;
-      // θ-derivatives of the Hermite cubic at θ = 1/2
       const Scalar herm[4] = {Scalar(0.5) * (y0 + y1[i]) + Scalar(0.125) * (al + be), del + Scalar(0.25) * (al - be),
                               -(al + be), Scalar(6) * (be - al)};
-      for (int kap = 0; kap <= mu; ++kap) {
-        Scalar v = dcoef_row(4 + kap)[i];
-        if (kap <= 3) v = v - herm[kap];
-        if (kap >= 2) v = v + Scalar(kap * (kap - 1) / 2) * dcoef_row(2 + kap)[i];
-        if (kap >= 4) v = v - Scalar(kap * (kap - 1) * (kap - 2) * (kap - 3)) * dcoef_row(kap)[i];
-        dcoef_row(4 + kap)[i] = Scalar(16) * v;
+      for (int kap = 0; kap <= std::min(mu, 3); ++kap) dcoef_row(4 + kap)[i] = dcoef_row(4 + kap)[i] - herm[kap];
+    }
+    for (int kap = 0; kap <= mu; ++kap) {
+      Scalar* __restrict__ r = dcoef_row(4 + kap);
+      const Scalar c2 = Scalar(kap * (kap - 1) / 2);
+      const Scalar c4 = Scalar(kap * (kap - 1) * (kap - 2) * (kap - 3));
+      const Scalar* __restrict__ a2 = kap >= 2 ? dcoef_row(2 + kap) : r;
+      const Scalar* __restrict__ a4 = kap >= 4 ? dcoef_row(kap) : r;
+      if constexpr (kPairs) {
+        const V2 c2v = {c2, c2}, c4v = {c4, c4}, sixteen = {16.0, 16.0};
+        for (int i = 0; i < N; i += 2) {
+          V2 v = ld2(&r[i]);
+          if (kap >= 2) v = v + c2v * ld2(&a2[i]);
+          if (kap >= 4) v = v - c4v * ld2(&a4[i]);
+          st2(&r[i], sixteen * v);
+        }
+      } else {
+        for (int i = 0; i < n; ++i) {
+          Scalar v = r[i];
+          if (kap >= 2) v = v + c2 * a2[i];
+          if (kap >= 4) v = v - c4 * a4[i];
+          r[i] = Scalar(16) * v;
+        }
       }
-      const Scalar sc = atol_[i] + opt_.rtol * std::max(num::abs(y0), num::abs(y1[i]));
-      const double q = static_cast<double>(dcoef_row(4 + mu)[i] / sc);
-      errsum += q * q;
+    }
+    double errsum = 0;
+    {
+      const Scalar* am = dcoef_row(4 + mu);
+      for (int i = 0; i < n; ++i) {
+        const Scalar sc = atol_[i] + opt_.rtol * std::max(num::abs(y_[i]), num::abs(y1[i]));
+        const double q = static_cast<double>(am[i] / sc);
+        errsum += q * q;
+      }
     }
     // Store a_κ/κ! so that an evaluation needs no division.
     Scalar fact = 1;
     for (int kap = 2; kap <= mu; ++kap) {
       fact = fact * Scalar(kap);
       Scalar* r = dcoef_row(4 + kap);
-      for (int i = 0; i < n; ++i) r[i] = r[i] / fact;
+      if constexpr (kPairs) {
+        const V2 f = {fact, fact};
+        for (int i = 0; i < N; i += 2) st2(&r[i], ld2(&r[i]) / f);
+      } else {
+        for (int i = 0; i < n; ++i) r[i] = r[i] / fact;
+      }
     }
     // max over θ of θ²(1-θ)² |θ-1/2|^mu / mu!
     const double sx = 0.5 * std::sqrt(static_cast<double>(mu) / (mu + 4.0));
@@ -644,7 +736,39 @@ class BulirschStoer {
     const int n = (N == Dynamic) ? n_ : N;
     const std::size_t nn = static_cast<std::size_t>(n);
     const Scalar* d = &dcoef_[0];
-    if constexpr (N != Dynamic) {
+    if constexpr (kPairs) {
+      // double, even N: the same operations on pairs of components (IEEE per lane, so the
+      // same bits), the kBatch x N/2 accumulators in vector registers.
+      constexpr int P = N / 2;
+      V2 acc[kBatch][P];
+      V2 sv[kBatch];
+      for (int b = 0; b < kBatch; ++b) {
+        const double x = (b < m ? theta[b] : 0.5) - 0.5;
+        sv[b] = V2{x, x};
+      }
+      const double* a = d + static_cast<std::size_t>(4 + mu_) * nn;
+      for (int b = 0; b < kBatch; ++b)
+        for (int i = 0; i < P; ++i) acc[b][i] = ld2(&a[2 * i]);
+      for (int kap = mu_ - 1; kap >= 0; --kap) {
+        a = d + static_cast<std::size_t>(4 + kap) * nn;
+        V2 ak[P];
+        for (int i = 0; i < P; ++i) ak[i] = ld2(&a[2 * i]);
+        for (int b = 0; b < kBatch; ++b)
+          for (int i = 0; i < P; ++i) acc[b][i] = ak[i] + acc[b][i] * sv[b];
+      }
+      for (int b = 0; b < m; ++b) {
+        const double th = theta[b], th1 = 1.0 - th;
+        const double w = (th * th1) * (th * th1);
+        const V2 thv = {th, th}, th1v = {th1, th1}, wv = {w, w};
+        double* o = out + b * N;
+        for (int i = 0; i < P; ++i) {
+          const V2 herm = ld2(&d[2 * i]) + thv * (ld2(&d[nn + 2 * i]) + th1v * (ld2(&d[2 * nn + 2 * i]) * thv +
+                                                                                ld2(&d[3 * nn + 2 * i]) * th1v));
+          st2(&o[2 * i], herm + wv * acc[b][i]);
+        }
+      }
+      return;
+    } else if constexpr (N != Dynamic) {
       // Fixed size: the kBatch x N Horner accumulators live in registers (a full batch is
       // always evaluated; unused lanes compute at θ = 1/2 and are not stored).
       Scalar acc[kBatch][N];
@@ -933,7 +1057,7 @@ class BulirschStoer {
   const std::array<double, kKmaxLimit + 2>* facmin_ = nullptr;
   const Table2* ratio2_ = nullptr;
   const Table2* rinv_ = nullptr;
-  std::vector<Scalar> fs_, ys_, dcoef_, yb_, sd_;
+  std::vector<Scalar> fs_, ys_, dcoef_, yb_;
   // Interleaved lines (midpoint_group): zm, z of line j in rows 2j, 2j+1, its f in row
   // 2 kL + j (non-dense); the line results in held_.
   std::vector<Scalar> zg_;
