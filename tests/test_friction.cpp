@@ -491,3 +491,51 @@ TEST_CASE("friction: the plain corner sum loses digits on thin contacts; the sta
   CHECK(std::fabs(stable.iy - q.wrench.fx) <= 1e-14);
   CHECK(std::fabs(-stable.km - q.wrench.mf) <= 1e-14);
 }
+
+// The wrench as a function of the iCOR c is C^1 everywhere, but where c crosses an edge of
+// the contact its second derivatives have a logarithmic singularity (F = -grad of the
+// integral of |r - c| over the contact: the third derivatives of that integral are
+// log-singular on the boundary). An integrator stepping over such an instant loses order
+// there (docs/rough.md, "Where the friction is not smooth"). Measured with central
+// differences across the edge x' = a at c_y' = 0.3 b: the first difference converges, the
+// second grows by the same amount per decade of the spacing (a log), while at points 0.5 a
+// inside and outside the edge both converge.
+TEST_CASE("friction: C^1 but log-singular second derivative where the iCOR crosses an edge",
+          "[friction][numeric]") {
+  const double a = 27.5e-9, b = 50e-9;
+  // body velocity with omega = 1: iCOR c = (-vy, vx) = (a + s, 0.3 b)
+  const auto F = [&](double s) { return rectangle_friction_from_velocity(a, b, 1.0, 0.3 * b, -(a + s), 1.0); };
+  struct Diffs {
+    double d1[3], d2[3];
+  };
+  const auto diffs = [&](double s0, double d) {
+    const FrictionWrench p = F(s0 + d), z = F(s0), m = F(s0 - d);
+    const double sc[3] = {a, a, 1.0};  // fx, fy per unit s/a; mf [N m] per unit s/a is already x a
+    const double fp[3] = {p.fx, p.fy, p.mf}, fz[3] = {z.fx, z.fy, z.mf}, fm[3] = {m.fx, m.fy, m.mf};
+    Diffs r{};
+    for (int i = 0; i < 3; ++i) {
+      r.d1[i] = (fp[i] - fm[i]) / (2 * d) * sc[i];
+      r.d2[i] = (fp[i] - 2 * fz[i] + fm[i]) / (d * d) * sc[i] * a;
+    }
+    return r;
+  };
+  for (const double s0 : {0.0, -0.5 * a, 0.5 * a}) {
+    const Diffs h3 = diffs(s0, 1e-3 * a), h4 = diffs(s0, 1e-4 * a), h5 = diffs(s0, 1e-5 * a);
+    for (int i = 0; i < 3; ++i) {
+      INFO("s0/a " << s0 / a << " component " << i << ": d1 " << h3.d1[i] << " " << h4.d1[i] << ", d2 " << h3.d2[i]
+                   << " " << h4.d2[i] << " " << h5.d2[i]);
+      CHECK(std::fabs(h4.d1[i] - h3.d1[i]) <= 1e-5 * (std::fabs(h3.d1[i]) + 1e-3));  // C^1 everywhere
+      const double inc1 = h4.d2[i] - h3.d2[i], inc2 = h5.d2[i] - h4.d2[i];
+      if (s0 != 0.0 || i == 0) {
+        // away from the edge (and fx, which the edge crossing x' = a leaves smooth here):
+        // the second difference converges
+        CHECK(std::fabs(inc1) <= 1e-4);
+        CHECK(std::fabs(inc2) <= 1e-4);
+      } else {
+        // on the edge: the same increment per decade, ~ ln(10) times the log's coefficient
+        CHECK(std::fabs(inc1) >= 0.1);
+        CHECK(inc2 == Approx(inc1).epsilon(0.01));
+      }
+    }
+  }
+}

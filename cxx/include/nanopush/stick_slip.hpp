@@ -2,9 +2,10 @@
 // (models.md §C). docs/stick_slip.md gives the mechanics; in short:
 //
 //  * Sliding: the friction wrench depends only on the direction of the rigid velocity
-//    V = (vx, vy, omega) and is smooth in it while V != 0 (it is continuous through
-//    omega = 0 with v != 0: the iCOR passes through infinity, no switch there). The only
-//    discontinuity is V = 0. During a sliding phase the right-hand side is extended past
+//    V = (vx, vy, omega) and is continuous (C^1) in it while V != 0 (also through omega = 0
+//    with v != 0: the iCOR passes through infinity, no switch there); smooth except where
+//    the iCOR crosses an edge of the contact (log-singular second derivatives there,
+//    docs/rough.md). The only discontinuity is V = 0. During a sliding phase the right-hand side is extended past
 //    rest by computing friction from +V or -V, whichever lies on the side of the current
 //    sliding direction ("mode"), so the integrand stays smooth through the rest instant,
 //    and the event g = V·mode (a transversal zero) is located to full precision.
