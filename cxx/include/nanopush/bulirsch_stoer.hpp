@@ -634,6 +634,11 @@ class BulirschStoer {
       for (int p = 1; p < std::min(mu, 2 * j); ++p) pw[j][p] = pw[j][p - 1] * half;
     }
     const DenseTerms& dt = dense_terms();
+    // (±w_j (h (n_j/2)^p)) C(p,q), the factors multiplied in this order
+    const auto coef = [&pw](const DenseTerm& tm, int p) {
+      const Scalar c = tm.w * pw[tm.line][p];
+      return (tm.neg ? -c : c) * tm.bn;
+    };
     for (int kap = 1; kap <= mu; ++kap) {
       const int p = kap - 1;
       const DenseTerm* tb = &dt.terms[static_cast<std::size_t>(dt.start[kc][kap])];
@@ -643,8 +648,7 @@ class BulirschStoer {
         Scalar acc[N];
         for (int i = 0; i < N; ++i) acc[i] = 0;
         for (const DenseTerm* tm = tb; tm != te; ++tm) {
-          const Scalar c = tm->w * pw[tm->line][p];
-          const Scalar cq = (tm->neg ? -c : c) * tm->bn;
+          const Scalar cq = coef(*tm, p);
           const Scalar* __restrict__ v = fsb + static_cast<std::size_t>(tm->slot) * N;
           for (int i = 0; i < N; ++i) acc[i] = acc[i] + cq * v[i];
         }
@@ -652,8 +656,7 @@ class BulirschStoer {
       } else {
         for (int i = 0; i < n; ++i) r[i] = 0;
         for (const DenseTerm* tm = tb; tm != te; ++tm) {
-          const Scalar c = tm->w * pw[tm->line][p];
-          const Scalar cq = (tm->neg ? -c : c) * tm->bn;
+          const Scalar cq = coef(*tm, p);
           const Scalar* __restrict__ v = fsb + static_cast<std::size_t>(tm->slot) * nn;
           for (int i = 0; i < n; ++i) r[i] = r[i] + cq * v[i];
         }
