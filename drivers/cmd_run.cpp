@@ -169,7 +169,7 @@ RegisterCommand reg_run{{"run", "Integrate a scene and write its trajectory as C
                                           "long and quad need --engine cxx, --method faithful or modern, a smooth scene. "
                                           "Cost (fig3_6a, release build): at the same rtol long takes ~6x the wall time of "
                                           "double, quad ~40x; double stops near 1e-14 in theta, long reaches ~1e-17 (rtol "
-                                          "1e-17, ~7x), quad ~1e-23 (--method modern --rtol 1e-24, ~80-100x). The CSV holds "
+                                          "1e-17, ~7x), quad ~3e-24 (--method modern --rtol 1e-24, ~80-100x). The CSV holds "
                                           "the values rounded to double. Default: the scene's solver.precision (double)")
                                ->check(CLI::IsMember({"double", "long", "quad"}));
                            app.add_option("--out", o->out, "output CSV ('-' for standard output; default <scene>.<engine>.csv)");

@@ -1,5 +1,6 @@
 #include "nanopush/simulate.hpp"
 
+#include <cstdio>
 #include <type_traits>
 
 #include "f77_bsint.h"
@@ -11,6 +12,14 @@
 #include "nanopush/stick_slip.hpp"
 
 namespace nanopush {
+
+namespace {
+std::string fmt_short(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.3g", v);
+  return b;
+}
+}  // namespace
 
 RunSettings resolve_settings(const Scene& scene, RunSettings s) {
   if (s.engine.empty()) s.engine = scene.solver.engine;
@@ -35,6 +44,16 @@ RunSettings resolve_settings(const Scene& scene, RunSettings s) {
   if (s.precision != "double") {
     const std::string why = extended_precision_obstacle(scene.rough(), s.engine, s.method);
     if (!why.empty()) throw InputError(pfield, s.precision, why);
+  }
+  if (s.method == "modern" && s.engine == "cxx") {
+    const double eps = s.precision == "quad"   ? static_cast<double>(num::epsilon<num::quad>())
+                       : s.precision == "long" ? static_cast<double>(num::epsilon<long double>())
+                                               : num::epsilon<double>();
+    if (s.rtol < kDenseRtolEps * eps)
+      throw InputError("rtol", fmt(s.rtol),
+                       "must be >= " + fmt_short(kDenseRtolEps * eps) + " (" + fmt(kDenseRtolEps) + " eps of " + s.precision +
+                           ") with the modern method (dense output); use --precision long or quad, or "
+                           "--method faithful");
   }
   return s;
 }

@@ -23,6 +23,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <cstdio>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -34,6 +35,11 @@
 namespace nanopush {
 
 inline constexpr int Dynamic = -1;
+
+/// The smallest rtol > 0 dense output accepts, in units of the scalar's epsilon: below it the
+/// step's error estimate (the difference of two extrapolated values, each rounded) is mostly
+/// rounding, and the step size shrinks until it underflows (seen in double at rtol 1e-16).
+inline constexpr double kDenseRtolEps = 4.0;
 
 /// The default step hook: never stops (compiled away).
 struct NoStepHook {
@@ -79,6 +85,12 @@ struct BsOptions {
   /// controlled. Needs polynomial extrapolation. Off: every step ends on an output time,
   /// step numbers 2, 4, 6, ... (the F77 engine's scheme).
   bool dense = false;
+  /// Dense output: a step is accepted only if its interpolation error estimate, in units of
+  /// the tolerance, is <= dense_accept, and the next step aims at dense_accept / 10. ODEX
+  /// uses 10; the default 1 holds the interpolant to the steps' own tolerance (the estimate
+  /// reads 1.2-5.5 x low on the nanobar, so 10 let interpolants 30 x the tolerance through;
+  /// docs/bulirsch_stoer.md, "The interpolant's error control").
+  double dense_accept = 1.0;
 
   /// The thesis-era configuration; takes the F77 engine's steps exactly.
   static BsOptions faithful(Scalar rtol, std::vector<Scalar> atol) {
@@ -170,9 +182,9 @@ class BulirschStoer {
     BsResult res;
     res.t_reached = static_cast<double>(t0);
     const int n = (N == Dynamic) ? n_ : N;  // a compile-time bound lets the loops unroll
-    if (const char* why = validate(t0, y, tout)) {
+    if (std::string why = validate(t0, y, tout); !why.empty()) {
       res.status = BsStatus::bad_input;
-      res.message = why;
+      res.message = std::move(why);
       return res;
     }
     const int kmax = opt_.kmax;
@@ -206,6 +218,8 @@ class BulirschStoer {
     // Dense output: the last output time is the only one a step must end on.
     const bool dense = opt_.dense;
     Scalar hoptde = 0;  // step-size bound from the interpolation error (dense output), 0 = none
+    double errint_rej = 0;  // the estimate that rejected the last attempt at this t, and its order
+    int kc_rej = 0;
     while (iout < nout) {
       const Scalar tend = dense ? tout[nout - 1] : tout[iout];
       // 1.
@@ -238,7 +252,7 @@ class BulirschStoer {
         }
         if (h <= 0 || h < Scalar(1e-14) * std::max(num::abs(t), span_total)) {
           res.status = BsStatus::step_underflow;
-          res.message = "step size underflow at t = " + std::to_string(static_cast<double>(t));
+          res.message = "step size underflow at t = " + fmt_g(static_cast<double>(t));
           failed = true;
           break;
         }
@@ -352,7 +366,7 @@ class BulirschStoer {
         last_rejected = true;
         if (++nonfinite_run >= kMaxNonFinite) {
           res.status = BsStatus::not_finite;
-          res.message = "non-finite error estimate at t = " + std::to_string(static_cast<double>(t));
+          res.message = "non-finite error estimate at t = " + fmt_g(static_cast<double>(t));
           failed = true;
           break;
         }
@@ -392,13 +406,21 @@ class BulirschStoer {
           break;
         }
         const double errint = build_dense(kc, h);
-        hoptde = h / static_cast<Scalar>(std::max(std::pow(errint, 1.0 / (mu_ + 4)), 0.01));
-        if (errint > 10.0) {
+        // Near the precision's floor the estimate is rounding noise: a retry with a smaller
+        // step (same order) that does not at least halve it is accepted, and sets no bound.
+        const bool noise = kc == kc_rej && errint > 0.5 * errint_rej;
+        hoptde = noise ? Scalar(0)
+                       : h / static_cast<Scalar>(std::max(
+                                 std::pow(errint / (0.1 * opt_.dense_accept), 1.0 / (mu_ + 4)), 0.01));
+        if (errint > opt_.dense_accept && !noise) {
           ++res.nrejct;
           h = hoptde;
           last_rejected = true;
+          errint_rej = errint;
+          kc_rej = kc;
           continue;
         }
+        kc_rej = 0;
       }
       // 7.
       if constexpr (!std::is_same_v<std::decay_t<StepHook>, NoStepHook>) {
@@ -579,7 +601,7 @@ class BulirschStoer {
   // of them; then the polynomial P(θ) = H(θ) + θ²(1-θ)² Σ a_κ (θ-1/2)^κ/κ!, H the cubic
   // Hermite interpolant of y and h·f at both ends, the a_κ making P^(κ)(1/2) equal the
   // extrapolated h^κ y^(κ). Returns the interpolation error estimate (the size of the last
-  // term, weighted as the step's error; > 10 rejects the step).
+  // term, weighted as the step's error; > BsOptions::dense_accept rejects the step).
   double build_dense(int kc, Scalar h) {
     const int n = (N == Dynamic) ? n_ : N;
     const int mu = 2 * kc - 3;  // ODEX's default degree (mu + 4 for the polynomial)
@@ -839,7 +861,13 @@ class BulirschStoer {
     return reinterpret_cast<V2>(reinterpret_cast<L2>(v) & mask);
   }
 
-  const char* validate(Scalar t0, const Scalar* y, std::span<const Scalar> tout) const {
+  static std::string fmt_g(double v) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.6g", v);
+    return b;
+  }
+
+  std::string validate(Scalar t0, const Scalar* y, std::span<const Scalar> tout) const {
     if (n_ < 1) return "n must be >= 1";
     if constexpr (N != Dynamic)
       if (n_ != N) return "n does not match the compile-time dimension";
@@ -863,14 +891,23 @@ class BulirschStoer {
       if (!num::isfinite(y[i])) return "initial state must be finite";
     if (opt_.maxstp < 1) return "maxstp must be >= 1";
     if (opt_.h0 < 0 || opt_.hmax < 0) return "h0 and hmax must be >= 0";
-    return nullptr;
+    if (opt_.dense && !(opt_.dense_accept > 0 && opt_.dense_accept <= 1e6))
+      return "dense_accept = " + fmt_g(opt_.dense_accept) + " must be in (0, 1e6]";
+    if (opt_.dense && opt_.rtol > 0) {
+      const double floor = kDenseRtolEps * static_cast<double>(num::epsilon<Scalar>());
+      if (static_cast<double>(opt_.rtol) < floor)
+        return "rtol = " + fmt_g(static_cast<double>(opt_.rtol)) + " is below " + fmt_g(floor) + " (" +
+               fmt_g(kDenseRtolEps) + " eps of " + num::name<Scalar>() +
+               "): with dense output the step-size control would follow rounding; use a wider precision or the "
+               "faithful (clipped) method";
+    }
+    return {};
   }
 
   static void fail_rhs(BsResult& res, int st, Scalar t) {
     res.status = BsStatus::rhs_failed;
     res.rhs_status = st;
-    res.message = "right-hand side returned status " + std::to_string(st) + " at t = " +
-                  std::to_string(static_cast<double>(t));
+    res.message = "right-hand side returned status " + std::to_string(st) + " at t = " + fmt_g(static_cast<double>(t));
   }
 
   // Gragg's modified midpoint rule with m substeps over [t, t+H]; result into out.
