@@ -33,3 +33,12 @@ add_test(NAME cli.bench.extended_reference COMMAND ${_np} bench ${CMAKE_CURRENT_
          --quick --quiet --no-plot --engines cxx-modern --out ${CMAKE_CURRENT_BINARY_DIR}/bench-spin/bench.csv)
 set_tests_properties(cli.bench.extended_reference PROPERTIES
   PASS_REGULAR_EXPRESSION "Reference: extended \\(C\\+\\+ BS in __float128[^\n]*: accepted")
+
+# Where neither engine reaches any error level of 1e-6..1e-12 (stick-slip without event
+# location), the ratio table says so; it must not report ratios of 0 as "met".
+add_test(NAME cli.bench.ratios_not_measured COMMAND ${_np} bench stick_mu015 --quick --quiet --no-plot
+         --engines cxx-modern --engines odeint-bs --rhs-budget 20000
+         --out ${CMAKE_CURRENT_BINARY_DIR}/bench-stick/bench.csv)
+set_tests_properties(cli.bench.ratios_not_measured PROPERTIES ENVIRONMENT "${_env}"
+  PASS_REGULAR_EXPRESSION "No error level in 1e-6..1e-12 is reached by both engines: not measured here"
+  FAIL_REGULAR_EXPRESSION "ratio 0 \\(met\\)")
