@@ -204,7 +204,9 @@ TEST_CASE("dense output: interior outputs are as accurate as the step ends", "[b
     for (std::size_t i = 0; i < tsteps.size(); ++i) e_step = std::max(e_step, werr(tsteps[i], ysteps[i]));
     INFO("rtol " << rtol << " outputs " << e_out << " step ends " << e_step << " steps " << r.naccpt);
     CHECK(e_step > 0);
-    CHECK(e_out <= 10 * e_step);
+    // Measured 1.5, 1.3, 1.26 x (rtol 1e-6, 1e-9, 1e-12); up to 4 x with ODEX's acceptance
+    // (BsOptions::dense_accept = 10), under the bound of 10 this test had then.
+    CHECK(e_out <= 3 * e_step);
   }
 }
 
