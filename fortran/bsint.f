@@ -321,7 +321,7 @@ C=======================================================================
      &           BIG = 1.7976931348623157D308)
       DOUBLE PRECISION TAB(NMAX, KMAXX, KMAXX)
       DOUBLE PRECISION S, SC, Q, ERR, FAC, ERRS(KMAXX)
-      INTEGER I, J, JG
+      INTEGER I, J, JG, JLO
 C
       ACCEPT = .FALSE.
       NONFIN = .FALSE.
@@ -384,10 +384,13 @@ C        d. Convergence monitor.
 C
   200 CONTINUE
 C     e. Step proposal and work of the columns the order and step-size
-C        choice read, KC-2..KC (the others would cost a power each and
-C        are never used).
+C        choice read: KC-1..KC, and KC-2 only when KC = K+1 (BSKOPT);
+C        the others would cost a power each and are never used in this
+C        step.
 C        expo = FCT(1,J), facmin/FAC4 = FCT(2,J), 1/facmin = FCT(3,J).
-      DO 205 J = MAX(2, KC - 2), KC
+      JLO = MAX(2, KC - 1)
+      IF (KC .GT. K) JLO = MAX(2, KC - 2)
+      DO 205 J = JLO, KC
          IF (ERRS(J) .EQ. 0D0) THEN
             FAC = FCT(3, J)
          ELSE

@@ -342,8 +342,9 @@ class BulirschStoer {
         }
         if (!failed && !nonfinite) {
           // The step-size proposal of each line. The order and step choices below read
-          // lines kc-2..kc only, so only their pow() is paid.
-          for (int j = std::max(2, kc - 2); j <= kc; ++j) {
+          // lines kc-1..kc, and kc-2 only when the step went past its order (kc = k+1), so
+          // only their pow() is paid (the others are never read in this step).
+          for (int j = std::max(2, kc > k ? kc - 2 : kc - 1); j <= kc; ++j) {
             // In double for every scalar: a few digits suffice, and pow in long double or
             // __float128 costs as much as a cheap RHS. For Scalar = double these are
             // exactly the F77 engine's operations.
