@@ -103,6 +103,20 @@ Ratios measure_ratios(const std::vector<Row>& rows) {
       }
     }
   }
+  // 1b. The interpolant's acceptance (docs/bulirsch_stoer.md): ours against ODEX's, when both ran.
+  if (has_engine(rows, "cxx-modern") && has_engine(rows, "cxx-modern-odex")) {
+    md << "\n**cxx-modern (dense_accept 1) vs cxx-modern-odex (ODEX's 10)** (cheapest run of each with error <= "
+          "target; no target, the measurement behind docs/bulirsch_stoer.md):\n\n"
+       << "| error <= | RHS cxx-modern | RHS cxx-modern-odex | RHS ratio | wall cxx-modern [ms] | wall "
+          "cxx-modern-odex [ms] | wall ratio |\n|---|---|---|---|---|---|---|\n";
+    for (int e = 4; e <= 13; ++e) {
+      const double target = std::pow(10.0, -e);
+      const auto [nc, wc] = cheapest_at(rows, "cxx-modern", target);
+      const auto [no, wo] = cheapest_at(rows, "cxx-modern-odex", target);
+      md << "| 1e-" << e << " | " << num3(nc) << " | " << num3(no) << " | " << num3(nc / no) << " | " << num3(wc * 1e3)
+         << " | " << num3(wo * 1e3) << " | " << num3(wc / wo) << " |\n";
+    }
+  }
   // 2. F77 against the C++ faithful engine: identical counts, wall-time ratio in [0.8, 1.25].
   for (const std::string f77 : {"f77-callback", "f77-native"}) {
     if (!has_engine(rows, f77) || !has_engine(rows, "cxx-faithful")) continue;
@@ -424,7 +438,8 @@ RegisterCommand reg{
        app.add_option("--plot", o->plot, "work-precision PNG (default: the CSV's name with .png)");
        app.add_flag("--no-plot", o->no_plot, "write the CSV only");
        app.add_option("--engines", o->engines,
-                      "engines to run (default all): cxx-faithful, cxx-modern, f77-callback, f77-native, cvode-adams, "
+                      "engines to run (default all but cxx-modern-odex, which runs only when named): cxx-faithful, cxx-modern, "
+                      "cxx-modern-odex, f77-callback, f77-native, cvode-adams, "
                       "cvode-bdf, arkode-erk8, odeint-bs, odeint-bs-dense");
        app.add_option("--precision", o->precisions,
                       "scalar of the C++ BS, repeatable: double (53-bit), long (x87 64-bit), quad (__float128, "

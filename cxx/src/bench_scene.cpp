@@ -256,9 +256,9 @@ std::vector<std::string> engine_names(const Scene& sc) {
     for (const auto& n : generic_engine_names()) v.push_back(n);
     return v;
   }
-  if (sc.rough()) return generic_engine_names();
   std::vector<std::string> v = generic_engine_names();
   if (sc.model == "smooth") v.insert(v.begin() + 3, "f77-native");
+  v.push_back("cxx-modern-odex");  // run only when named
   return v;
 }
 

@@ -42,3 +42,11 @@ add_test(NAME cli.bench.ratios_not_measured COMMAND ${_np} bench stick_mu015 --q
 set_tests_properties(cli.bench.ratios_not_measured PROPERTIES ENVIRONMENT "${_env}"
   PASS_REGULAR_EXPRESSION "No error level in 1e-6..1e-12 is reached by both engines: not measured here"
   FAIL_REGULAR_EXPRESSION "ratio 0 \\(met\\)")
+
+# The interpolant's acceptance, ours against ODEX's: an engine run only when named, and the
+# report's comparison table (docs/bulirsch_stoer.md, "The interpolant's error control").
+add_test(NAME cli.bench.odex_comparison COMMAND ${_np} bench fig3_6a --quick --quiet --no-plot
+         --engines cxx-modern --engines cxx-modern-odex
+         --out ${CMAKE_CURRENT_BINARY_DIR}/bench-odex/bench.csv)
+set_tests_properties(cli.bench.odex_comparison PROPERTIES ENVIRONMENT "${_env}"
+  PASS_REGULAR_EXPRESSION "cxx-modern \\(dense_accept 1\\) vs cxx-modern-odex \\(ODEX's 10\\)")

@@ -10,6 +10,8 @@
 // Engines (names as in the CSV):
 //   cxx-faithful, cxx-modern   the C++ Bulirsch-Stoer (BsOptions::faithful / ::modern), RHS inlined;
 //                              in double, long double or __float128 (precision column)
+//   cxx-modern-odex            cxx-modern with ODEX's interpolation acceptance (dense_accept = 10);
+//                              run only when named in --engines (docs/bulirsch_stoer.md)
 //   f77-callback               fortran/bsint.f through np_f77_bsint_fcn: the same C++ RHS as its FCN
 //   cvode-adams, cvode-bdf     SUNDIALS CVODE: Adams-Moulton (orders 1-12) with the fixed-point
 //                              nonlinear solver; BDF (orders 1-5) with Newton and the dense direct
@@ -56,6 +58,10 @@ struct EngineConfig {
   std::int64_t rhs_budget = 0;
   [[nodiscard]] bool wants(const std::string& name) const {
     return only.empty() || std::find(only.begin(), only.end(), name) != only.end();
+  }
+  /// Engines run only when named (comparisons of a setting, not peers).
+  [[nodiscard]] bool wants_named(const std::string& name) const {
+    return std::find(only.begin(), only.end(), name) != only.end();
   }
   [[nodiscard]] bool wants_precision(const std::string& p) const {
     return std::find(precisions.begin(), precisions.end(), p) != precisions.end();
@@ -124,8 +130,10 @@ inline RhsSamples samples_from(const Problem& p, const Reference& ref) {
 
 // ---------------------------------------------------------------- C++ Bulirsch-Stoer
 /// One solve with the C++ engine in scalar S; `seconds` gets the timed region.
+/// dense_accept: BsOptions::dense_accept of the modern configuration (1 = ours, 10 = ODEX's).
 template <class S, int N, class Rhs>
-Solve solve_cxx_bs(const Problem& p, const Rhs& rhs, double rtol, bool modern, double* seconds) {
+Solve solve_cxx_bs(const Problem& p, const Rhs& rhs, double rtol, bool modern, double* seconds,
+                   double dense_accept = 1.0) {
   const int n = p.n;
   const std::size_t nu = static_cast<std::size_t>(n);
   std::vector<S> atol(nu);
@@ -135,6 +143,7 @@ Solve solve_cxx_bs(const Problem& p, const Rhs& rhs, double rtol, bool modern, d
   std::vector<S> yout(p.nout() * nu, S(0));
   const auto t0 = detail::Clock::now();
   auto opt = modern ? BsOptions<S>::modern(S(rtol), std::move(atol)) : BsOptions<S>::faithful(S(rtol), std::move(atol));
+  opt.dense_accept = dense_accept;
   BulirschStoer<S, N> bs(std::move(opt), n);
   const BsResult r = bs.integrate(rhs, S(p.t0), y.data(), std::span<const S>(tout),
                                   [&](std::size_t k, S, const S* yy) { std::copy(yy, yy + n, &yout[k * nu]); });
