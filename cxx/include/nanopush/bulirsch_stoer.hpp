@@ -408,8 +408,9 @@ class BulirschStoer {
         }
         const double errint = build_dense(kc, h);
         // Near the precision's floor the estimate is rounding noise: a retry with a smaller
-        // step (same order) that does not at least halve it is accepted, and sets no bound.
-        const bool noise = kc == kc_rej && errint > 0.5 * errint_rej;
+        // step (same order) that is still above the threshold and did not at least halve it
+        // is accepted, and sets no bound.
+        const bool noise = kc == kc_rej && errint > opt_.dense_accept && errint > 0.5 * errint_rej;
         hoptde = noise ? Scalar(0)
                        : h / static_cast<Scalar>(std::max(
                                  std::pow(errint / (0.1 * opt_.dense_accept), 1.0 / (mu_ + 4)), 0.01));
