@@ -14,7 +14,7 @@ namespace nanopush::bench {
 
 /// Tightest meaningful rtol of the C++ BS in each precision (tens to hundreds of ulps of
 /// the state). Double goes one half-decade further (1e-14) than the other engines (1e-13,
-/// Engine::rtol_min): the dense-output engine's global error is 10-100 x rtol, and the
+/// Engine::rtol_min): the dense-output engine's global error is 4-60 x rtol, and the
 /// sweep must reach an achieved error of 1e-12 (issue 7's range).
 template <class S>
 constexpr double rtol_floor() {
