@@ -46,12 +46,12 @@ RunSettings resolve_settings(const Scene& scene, RunSettings s) {
     if (!why.empty()) throw InputError(pfield, s.precision, why);
   }
   if (s.method == "modern" && s.engine == "cxx") {
-    const double eps = s.precision == "quad"   ? static_cast<double>(num::epsilon<num::quad>())
-                       : s.precision == "long" ? static_cast<double>(num::epsilon<long double>())
-                                               : num::epsilon<double>();
-    if (s.rtol < kDenseRtolEps * eps)
+    const double floor = s.precision == "quad"   ? dense_rtol_min<num::quad>()
+                         : s.precision == "long" ? dense_rtol_min<long double>()
+                                                 : dense_rtol_min<double>();
+    if (s.rtol < floor)
       throw InputError("rtol", fmt(s.rtol),
-                       "must be >= " + fmt_short(kDenseRtolEps * eps) + " (" + fmt(kDenseRtolEps) + " eps of " + s.precision +
+                       "must be >= " + fmt_short(floor) + " (" + fmt(kDenseRtolEps) + " eps of " + s.precision +
                            ") with the modern method (dense output); use --precision long or quad, or "
                            "--method faithful");
   }

@@ -40,6 +40,10 @@ inline constexpr int Dynamic = -1;
 /// step's error estimate (the difference of two extrapolated values, each rounded) is mostly
 /// rounding, and the step size shrinks until it underflows (seen in double at rtol 1e-16).
 inline constexpr double kDenseRtolEps = 4.0;
+template <typename S>
+double dense_rtol_min() {
+  return kDenseRtolEps * static_cast<double>(num::epsilon<S>());
+}
 
 /// The default step hook: never stops (compiled away).
 struct NoStepHook {
@@ -811,15 +815,8 @@ class BulirschStoer {
         for (int b = 0; b < kBatch; ++b)
           for (int i = 0; i < N; ++i) acc[b][i] = ak[i] + acc[b][i] * sv[b];
       }
-      for (int b = 0; b < m; ++b) {
-        const Scalar th = theta[b], th1 = Scalar(1) - th;
-        const Scalar w = (th * th1) * (th * th1);
-        Scalar* o = out + b * N;
-        for (int i = 0; i < N; ++i) {
-          const Scalar herm = d[i] + th * (d[nn + i] + th1 * (d[2 * nn + i] * th + d[3 * nn + i] * th1));
-          o[i] = herm + w * acc[b][i];
-        }
-      }
+      for (int b = 0; b < m; ++b)
+        for (int i = 0; i < N; ++i) out[b * N + i] = dense_finish(d, nn, i, theta[b], acc[b][i]);
       return;
     }
     std::array<Scalar, kBatch> s{};
@@ -836,15 +833,17 @@ class BulirschStoer {
         for (int i = 0; i < n; ++i) o[i] = a[i] + o[i] * sb;
       }
     }
-    for (int b = 0; b < m; ++b) {
-      const Scalar th = theta[b], th1 = Scalar(1) - th;
-      const Scalar w = (th * th1) * (th * th1);
-      Scalar* o = out + b * n;
-      for (int i = 0; i < n; ++i) {
-        const Scalar herm = d[i] + th * (d[nn + i] + th1 * (d[2 * nn + i] * th + d[3 * nn + i] * th1));
-        o[i] = herm + w * o[i];
-      }
-    }
+    for (int b = 0; b < m; ++b)
+      for (int i = 0; i < n; ++i) out[b * n + i] = dense_finish(d, nn, i, theta[b], out[b * n + i]);
+  }
+
+  // H(θ) + θ²(1-θ)² acc for component i (rows 0..3 of d: y0, Δ, α, β), the operations in
+  // this order (the pair version in dense_eval does the same per lane).
+  static Scalar dense_finish(const Scalar* d, std::size_t nn, int i, Scalar th, Scalar acc) {
+    const Scalar th1 = Scalar(1) - th;
+    const Scalar w = (th * th1) * (th * th1);
+    const Scalar herm = d[i] + th * (d[nn + i] + th1 * (d[2 * nn + i] * th + d[3 * nn + i] * th1));
+    return herm + w * acc;
   }
 
   static Scalar sq(Scalar x) { return x * x; }
@@ -896,7 +895,7 @@ class BulirschStoer {
     if (opt_.dense && !(opt_.dense_accept > 0 && opt_.dense_accept <= 1e6))
       return "dense_accept = " + fmt_g(opt_.dense_accept) + " must be in (0, 1e6]";
     if (opt_.dense && opt_.rtol > 0) {
-      const double floor = kDenseRtolEps * static_cast<double>(num::epsilon<Scalar>());
+      const double floor = dense_rtol_min<Scalar>();
       if (static_cast<double>(opt_.rtol) < floor)
         return "rtol = " + fmt_g(static_cast<double>(opt_.rtol)) + " is below " + fmt_g(floor) + " (" +
                fmt_g(kDenseRtolEps) + " eps of " + num::name<Scalar>() +
