@@ -247,6 +247,7 @@ class BulirschStoer {
       bool clipped = false;
       int kc = 0;
       bool accept = false, failed = false;
+      double errint = 0;  // dense output: the interpolation error estimate of an accepted attempt
       for (;;) {
         hwant = h;
         clipped = false;
@@ -344,6 +345,22 @@ class BulirschStoer {
           }
           icur_ ^= 1;  // the new row becomes the previous one (no copy)
         }
+        // 6a (first half). Dense output, accepted attempt: f at the step's end (the next
+        // step's f0) and the interpolation polynomial with its error estimate. Neither needs
+        // the step-size proposals below, so they come first: the proposals' pow() chain then
+        // overlaps this work, where after it the chain held back the next step (the same
+        // operations and RHS calls in either order; measured 2-4 % less wall, fig3_6a).
+        if (!failed && !nonfinite && accept && dense) {
+          const Scalar tnew = clipped ? tend : t + h;
+          const int st = rhs(tnew, static_cast<const Scalar*>(&cur()[kc][0]), &f1_[0]);
+          ++res.nfcn;
+          if (st != 0) {
+            fail_rhs(res, st, tnew);
+            failed = true;
+            break;
+          }
+          errint = build_dense(kc, h);
+        }
         if (!failed && !nonfinite) {
           // The step-size proposal of each line. The order and step choices below read
           // lines kc-1..kc, and kc-2 only when the step went past its order (kc = k+1), so
@@ -400,17 +417,9 @@ class BulirschStoer {
         last_rejected = true;
         continue;
       }
-      // 6a. Dense output: f at the step's end (the next step's f0), the interpolation
-      // polynomial, and its error estimate: a step whose interpolant is poor is rejected.
+      // 6a (second half). Dense output: a step whose interpolant is poor is rejected
+      // (errint from the first half, above).
       if (dense) {
-        const Scalar tnew = clipped ? tend : t + h;
-        const int st = rhs(tnew, static_cast<const Scalar*>(&cur()[kc][0]), &f1_[0]);
-        ++res.nfcn;
-        if (st != 0) {
-          fail_rhs(res, st, tnew);
-          break;
-        }
-        const double errint = build_dense(kc, h);
         // Near the precision's floor the estimate is rounding noise: a retry with a smaller
         // step (same order) that is still above the threshold and did not at least halve it
         // is accepted, and sets no bound.
