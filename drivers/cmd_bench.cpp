@@ -60,6 +60,15 @@ std::string num3(double v) {
   return s.str();
 }
 
+/// A ratio judged against a bound: three decimals, so that the printed value never rounds
+/// across the bound it is compared with (1.2549 is "1.255 (NOT met)", not "1.25 (NOT met)").
+std::string ratio3(double v) {
+  if (!std::isfinite(v)) return "n/a";
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(3) << v;
+  return s.str();
+}
+
 struct Ratios {
   std::string markdown;
   std::vector<std::string> failures;  ///< correctness checks only (never timings)
@@ -96,8 +105,8 @@ Ratios measure_ratios(const std::vector<Row>& rows) {
         md << "\nNo error level in 1e-6..1e-12 is reached by both engines: not measured here.\n";
       } else {
         const bool rhs_met = worst_rhs <= 1.0 && missed == 0, wall_met = worst_wall <= 0.8 && missed == 0;
-        md << "\nWorst over 1e-6..1e-12: RHS ratio " << num3(worst_rhs) << (rhs_met ? " (met)" : " (NOT met)")
-           << ", wall ratio " << num3(worst_wall) << (wall_met ? " (met)" : " (NOT met)") << ".";
+        md << "\nWorst over 1e-6..1e-12: RHS ratio " << ratio3(worst_rhs) << (rhs_met ? " (met)" : " (NOT met)")
+           << ", wall ratio " << ratio3(worst_wall) << (wall_met ? " (met)" : " (NOT met)") << ".";
         if (missed > 0) md << " " << cxx << " does not reach " << missed << " level(s) that " << peer << " reaches.";
         md << "\n";
       }
@@ -138,11 +147,11 @@ Ratios measure_ratios(const std::vector<Row>& rows) {
         lo = std::min(lo, r);
         hi = std::max(hi, r);
         md << "| " << num3(a.rtol) << " | " << a.nfcn << " / " << c.nfcn << (same ? "" : " **differ**") << " | "
-           << a.naccpt << " / " << c.naccpt << " | " << a.nrejct << " / " << c.nrejct << " | " << num3(r) << " |\n";
+           << a.naccpt << " / " << c.naccpt << " | " << a.nrejct << " / " << c.nrejct << " | " << ratio3(r) << " |\n";
       }
     }
-    md << "\nCounts " << (mismatches ? "DIFFER" : "identical at every rtol") << "; wall ratio from " << num3(lo)
-       << " to " << num3(hi) << (lo >= 0.8 && hi <= 1.25 ? " (met)" : " (NOT met)") << ".\n";
+    md << "\nCounts " << (mismatches ? "DIFFER" : "identical at every rtol") << "; wall ratio from " << ratio3(lo)
+       << " to " << ratio3(hi) << (lo >= 0.8 && hi <= 1.25 ? " (met)" : " (NOT met)") << ".\n";
   }
   // 3. Integrator overhead per RHS evaluation.
   md << "\n**Integrator overhead** (wall time minus the time of as many bare RHS calls, per RHS call; target <= 10 ns "

@@ -10,6 +10,13 @@ add_test(NAME cli.bench.quick COMMAND ${_np} bench fig3_6a --quick --quiet --no-
          --out ${CMAKE_CURRENT_BINARY_DIR}/bench-quick/bench.csv)
 set_tests_properties(cli.bench.quick PROPERTIES ENVIRONMENT "${_env}"
   PASS_REGULAR_EXPRESSION "Counts identical at every rtol")
+# A ratio judged against a bound prints three decimals, so its rounding cannot cross the
+# bound (a ratio of 1.2549 used to print as "1.25 (NOT met)").
+add_test(NAME cli.bench.ratio_digits COMMAND ${_np} bench fig3_6a --quick --quiet --no-plot
+         --engines cxx-faithful --engines f77-native
+         --out ${CMAKE_CURRENT_BINARY_DIR}/bench-digits/bench.csv)
+set_tests_properties(cli.bench.ratio_digits PROPERTIES ENVIRONMENT "${_env}"
+  PASS_REGULAR_EXPRESSION "wall ratio from [0-9]+[.][0-9][0-9][0-9] to [0-9]+[.][0-9][0-9][0-9] [(]")
 
 add_test(NAME cli.bench.bad_engine COMMAND ${_np} bench fig3_6a --engines no-such-engine)
 set_tests_properties(cli.bench.bad_engine PROPERTIES ENVIRONMENT "${_env}"
