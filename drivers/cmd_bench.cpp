@@ -83,8 +83,15 @@ Ratios measure_ratios(const std::vector<Row>& rows) {
     if (!has_engine(rows, peer)) continue;
     for (const std::string cxx : {"cxx-faithful", "cxx-modern"}) {
       if (!has_engine(rows, cxx)) continue;
-      md << "\n**" << cxx << " vs " << peer
-         << "** (cheapest run of each with error <= target; target wall <= 0.8, RHS <= 1.0):\n\n"
+      // The targets are for the C++ BS at its best (modern) against Odeint's
+      // bulirsch_stoer. Faithful is bound to the F77 engine's clipped steps by design, and
+      // Odeint's dense-output stepper is a further peer: both are shown without a verdict.
+      const bool judged = cxx == "cxx-modern" && peer == "odeint-bs";
+      md << "\n**" << cxx << " vs " << peer << "** (cheapest run of each with error <= target; "
+         << (judged                   ? "target wall <= 0.8, RHS <= 1.0):\n\n"
+             : cxx == "cxx-faithful" ? "no target: faithful takes the F77 engine's steps, clipped at every output; "
+                                       "the targets are cxx-modern's):\n\n"
+                                     : "no target: the targets are against odeint-bs, Odeint's bulirsch_stoer):\n\n")
          << "| error <= | RHS " << cxx << " | RHS " << peer << " | RHS ratio | wall " << cxx << " [ms] | wall " << peer
          << " [ms] | wall ratio |\n|---|---|---|---|---|---|---|\n";
       double worst_rhs = 0, worst_wall = 0;
@@ -105,8 +112,9 @@ Ratios measure_ratios(const std::vector<Row>& rows) {
         md << "\nNo error level in 1e-6..1e-12 is reached by both engines: not measured here.\n";
       } else {
         const bool rhs_met = worst_rhs <= 1.0 && missed == 0, wall_met = worst_wall <= 0.8 && missed == 0;
-        md << "\nWorst over 1e-6..1e-12: RHS ratio " << ratio3(worst_rhs) << (rhs_met ? " (met)" : " (NOT met)")
-           << ", wall ratio " << ratio3(worst_wall) << (wall_met ? " (met)" : " (NOT met)") << ".";
+        const auto verdict = [judged](bool met) { return judged ? (met ? " (met)" : " (NOT met)") : ""; };
+        md << "\nWorst over 1e-6..1e-12: RHS ratio " << ratio3(worst_rhs) << verdict(rhs_met) << ", wall ratio "
+           << ratio3(worst_wall) << verdict(wall_met) << ".";
         if (missed > 0) md << " " << cxx << " does not reach " << missed << " level(s) that " << peer << " reaches.";
         md << "\n";
       }

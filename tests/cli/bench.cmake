@@ -31,6 +31,15 @@ add_test(NAME cli.bench.bad_repeats COMMAND ${_np} bench fig3_6a --repeats 0)
 set_tests_properties(cli.bench.bad_repeats PROPERTIES ENVIRONMENT "${_env}"
   PASS_REGULAR_EXPRESSION "--repeats = 0: must be in")
 
+# The issue's targets are cxx-modern's against odeint-bs: the faithful engine (the F77
+# engine's clipped steps) is compared with the peer without a met / NOT met verdict.
+add_test(NAME cli.bench.faithful_no_verdict COMMAND ${_np} bench fig3_6a --quick --quiet --no-plot
+         --engines cxx-faithful --engines odeint-bs
+         --out ${CMAKE_CURRENT_BINARY_DIR}/bench-faithful/bench.csv)
+set_tests_properties(cli.bench.faithful_no_verdict PROPERTIES ENVIRONMENT "${_env}"
+  PASS_REGULAR_EXPRESSION "cxx-faithful vs odeint-bs[*][*] [(][^)]*no target"
+  FAIL_REGULAR_EXPRESSION "met[)]")
+
 # A smooth scene with an initial rotation rate has no closed form in the harness: the
 # reference comes from two __float128 runs and must pass the acceptance rule.
 file(READ ${NANOPUSH_SCENES}/thesis/fig3_6a.toml _fig3_6a)
