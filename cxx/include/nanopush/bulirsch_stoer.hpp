@@ -566,10 +566,7 @@ class BulirschStoer {
   // written, so the rows are the same bits as a direct evaluation line by line.
   struct DenseTerm {
     int slot;   // row of fs_
-    int line;   // j
-    Scalar w;   // w_j
-    Scalar bn;  // C(κ-1, q)
-    bool neg;   // (-1)^q = -1
+    Scalar c;   // ±w_j (n_j/2)^p C(p, q): the term's coefficient without the factor h
   };
   struct DenseTerms {
     std::vector<DenseTerm> terms;
@@ -591,10 +588,13 @@ class BulirschStoer {
             const Scalar w = wext[widx((kap + 1) / 2, kc, j)];
             const int mid = line_offset(j) + half;
             const Scalar* bn = binom + p * kMuLimit;
-            if (p % 2 == 0) d.terms.push_back({mid, j, w, bn[p / 2], (p / 2) % 2 != 0});
+            Scalar wp = w;  // w_j (n_j/2)^p
+            for (int i = 0; i < p; ++i) wp = wp * Scalar(half);
+            const auto c = [wp](Scalar b, bool neg) { return (neg ? -wp : wp) * b; };
+            if (p % 2 == 0) d.terms.push_back({mid, c(bn[p / 2], (p / 2) % 2 != 0)});
             for (int q = 0; 2 * q < p; ++q) {
               const int o = p - 2 * q;
-              d.terms.push_back({p % 2 == 0 ? mid + o : mid - o, j, w, bn[q], q % 2 != 0});
+              d.terms.push_back({p % 2 == 0 ? mid + o : mid - o, c(bn[q], q % 2 != 0)});
             }
           }
         }
@@ -663,21 +663,8 @@ class BulirschStoer {
         }
       }
     }
-    // h (n_j/2)^p, formed by successive products as the terms need them
-    std::array<std::array<Scalar, kMuLimit + 1>, kKmaxLimit + 1> pw;
-    for (int j = 1; j <= kc; ++j) {
-      const Scalar half = Scalar(seq(j) / 2);
-      pw[j][0] = h;
-      for (int p = 1; p < std::min(mu, 2 * j); ++p) pw[j][p] = pw[j][p - 1] * half;
-    }
     const DenseTerms& dt = dense_terms();
-    // (±w_j (h (n_j/2)^p)) C(p,q), the factors multiplied in this order
-    const auto coef = [&pw](const DenseTerm& tm, int p) {
-      const Scalar c = tm.w * pw[tm.line][p];
-      return (tm.neg ? -c : c) * tm.bn;
-    };
     for (int kap = 1; kap <= mu; ++kap) {
-      const int p = kap - 1;
       const DenseTerm* tb = &dt.terms[static_cast<std::size_t>(dt.start[kc][kap])];
       const DenseTerm* te = &dt.terms[static_cast<std::size_t>(dt.start[kc][kap + 1])];
       Scalar* __restrict__ r = dcoef_row(4 + kap);
@@ -685,18 +672,19 @@ class BulirschStoer {
         Scalar acc[N];
         for (int i = 0; i < N; ++i) acc[i] = 0;
         for (const DenseTerm* tm = tb; tm != te; ++tm) {
-          const Scalar cq = coef(*tm, p);
+          const Scalar cq = tm->c;
           const Scalar* __restrict__ v = fsb + static_cast<std::size_t>(tm->slot) * N;
           for (int i = 0; i < N; ++i) acc[i] = acc[i] + cq * v[i];
         }
-        for (int i = 0; i < N; ++i) r[i] = acc[i];
+        for (int i = 0; i < N; ++i) r[i] = h * acc[i];
       } else {
         for (int i = 0; i < n; ++i) r[i] = 0;
         for (const DenseTerm* tm = tb; tm != te; ++tm) {
-          const Scalar cq = coef(*tm, p);
+          const Scalar cq = tm->c;
           const Scalar* __restrict__ v = fsb + static_cast<std::size_t>(tm->slot) * nn;
           for (int i = 0; i < n; ++i) r[i] = r[i] + cq * v[i];
         }
+        for (int i = 0; i < n; ++i) r[i] = h * r[i];
       }
     }
     Scalar* r0 = dcoef_row(0);
