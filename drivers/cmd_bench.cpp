@@ -69,6 +69,10 @@ std::string ratio3(double v) {
   return s.str();
 }
 
+/// Bare-RHS time spread (max / min over a sweep) beyond which the report says that the
+/// host's load changed during the run.
+constexpr double kHostSpread = 1.2;
+
 struct Ratios {
   std::string markdown;
   std::vector<std::string> failures;  ///< correctness checks only (never timings)
@@ -78,6 +82,28 @@ struct Ratios {
 Ratios measure_ratios(const std::vector<Row>& rows) {
   Ratios out;
   std::ostringstream md;
+  // 0. The host's speed during the sweep: the bare RHS time of the C++ BS rows (the same RHS
+  //    at every tolerance). On a shared machine it moves with the neighbours' load, and a
+  //    change in the middle of a sweep skews the timing ratios of the tolerances it spans.
+  {
+    double lo = std::numeric_limits<double>::infinity(), hi = 0;
+    for (const auto& r : rows)
+      if ((r.engine == "cxx-faithful" || r.engine == "cxx-modern") && r.precision == "double" && r.status == 0 &&
+          r.nfcn > 0 && r.rhs_s > 0) {
+        const double ns = r.rhs_s / static_cast<double>(r.nfcn) * 1e9;
+        lo = std::min(lo, ns);
+        hi = std::max(hi, ns);
+      }
+    if (hi > 0)
+      md << "\n**Host speed during the sweep**: one bare RHS call took " << num3(lo) << " to " << num3(hi)
+         << " ns over the C++ BS rows (double), "
+         << (hi <= kHostSpread * lo
+                 ? "stable within " + std::to_string(static_cast<int>(std::lround((kHostSpread - 1) * 100))) + " %.\n"
+                 : "a spread of " + ratio3(hi / lo) +
+                       " x: the machine's load changed during the run (or, with few repeats, single timings were "
+                       "disturbed), and the timing ratios below at the tolerances concerned may be skewed (counts "
+                       "and errors are not).\n");
+  }
   // 1. C++ BS against Boost.Odeint bulirsch_stoer, at equal achieved error.
   for (const std::string peer : {"odeint-bs", "odeint-bs-dense"}) {
     if (!has_engine(rows, peer)) continue;

@@ -31,6 +31,12 @@ add_test(NAME cli.bench.bad_repeats COMMAND ${_np} bench fig3_6a --repeats 0)
 set_tests_properties(cli.bench.bad_repeats PROPERTIES ENVIRONMENT "${_env}"
   PASS_REGULAR_EXPRESSION "--repeats = 0: must be in")
 
+# The report states how steady the host was: the bare RHS time over the sweep.
+add_test(NAME cli.bench.host_speed COMMAND ${_np} bench fig3_6a --quick --quiet --no-plot --engines cxx-faithful
+         --out ${CMAKE_CURRENT_BINARY_DIR}/bench-host/bench.csv)
+set_tests_properties(cli.bench.host_speed PROPERTIES ENVIRONMENT "${_env}"
+  PASS_REGULAR_EXPRESSION "Host speed during the sweep[*][*]: one bare RHS call took [0-9.e+-]+ to [0-9.e+-]+ ns")
+
 # The issue's targets are cxx-modern's against odeint-bs: the faithful engine (the F77
 # engine's clipped steps) is compared with the peer without a met / NOT met verdict.
 add_test(NAME cli.bench.faithful_no_verdict COMMAND ${_np} bench fig3_6a --quick --quiet --no-plot
