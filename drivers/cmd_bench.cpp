@@ -72,6 +72,7 @@ std::string ratio3(double v) {
 /// Bare-RHS time spread (max / min over a sweep) beyond which the report says that the
 /// host's load changed during the run.
 constexpr double kHostSpread = 1.2;
+constexpr std::int64_t kHostMinCalls = 2000;
 
 struct Ratios {
   std::string markdown;
@@ -85,18 +86,21 @@ Ratios measure_ratios(const std::vector<Row>& rows) {
   // 0. The host's speed during the sweep: the bare RHS time of the C++ BS rows (the same RHS
   //    at every tolerance). On a shared machine it moves with the neighbours' load, and a
   //    change in the middle of a sweep skews the timing ratios of the tolerances it spans.
+  //    Only rows of at least kHostMinCalls calls: a row's timing cycles through the sample
+  //    states nfcn times, and a rough RHS costs more at some states than at others, so a
+  //    short row measures a different mix.
   {
     double lo = std::numeric_limits<double>::infinity(), hi = 0;
     for (const auto& r : rows)
       if ((r.engine == "cxx-faithful" || r.engine == "cxx-modern") && r.precision == "double" && r.status == 0 &&
-          r.nfcn > 0 && r.rhs_s > 0) {
+          r.nfcn >= kHostMinCalls && r.rhs_s > 0) {
         const double ns = r.rhs_s / static_cast<double>(r.nfcn) * 1e9;
         lo = std::min(lo, ns);
         hi = std::max(hi, ns);
       }
     if (hi > 0)
       md << "\n**Host speed during the sweep**: one bare RHS call took " << num3(lo) << " to " << num3(hi)
-         << " ns over the C++ BS rows (double), "
+         << " ns over the C++ BS rows (double, rows of >= " << kHostMinCalls << " calls), "
          << (hi <= kHostSpread * lo
                  ? "stable within " + std::to_string(static_cast<int>(std::lround((kHostSpread - 1) * 100))) + " %.\n"
                  : "a spread of " + ratio3(hi / lo) +
