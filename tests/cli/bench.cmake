@@ -65,6 +65,15 @@ set_tests_properties(cli.bench.ratios_not_measured PROPERTIES ENVIRONMENT "${_en
   PASS_REGULAR_EXPRESSION "No error level in 1e-6..1e-12 is reached by both engines: not measured here"
   FAIL_REGULAR_EXPRESSION "ratio 0 \\(met\\)")
 
+# The event-location table: a level that only cxx-events reaches is met without a ratio, and
+# one that neither side reaches is not measured (it used to read "0 (met)").
+add_test(NAME cli.bench.events_table COMMAND ${_np} bench stick_mu015 --quick --quiet --no-plot
+         --engines cxx-events --engines odeint-bs --rhs-budget 20000
+         --out ${CMAKE_CURRENT_BINARY_DIR}/bench-events/bench.csv)
+set_tests_properties(cli.bench.events_table PROPERTIES ENVIRONMENT "${_env}"
+  PASS_REGULAR_EXPRESSION "[|] 1e-8 [|][^|]*[|][^|]*[|] n/a: only cxx-events reaches it [(]met[)]"
+  FAIL_REGULAR_EXPRESSION "[|] 0 [(]met[)]")
+
 # The interpolant's acceptance, ours against ODEX's: an engine run only when named, and the
 # report's comparison table (docs/bulirsch_stoer.md, "The interpolant's error control").
 add_test(NAME cli.bench.odex_comparison COMMAND ${_np} bench fig3_6a --quick --quiet --no-plot
