@@ -99,7 +99,8 @@ TEST_CASE("bench: extended precision reaches 1e-25 against the exact smooth solu
   CHECK(scaled_max_error(p, q.y, exact) <= 1e-25);
   // long double cannot: its floor is its epsilon (1.1e-19) times the accumulated rounding.
   // The floor is the best error over the tolerances near it (as for double in
-  // test_precision.cpp): measured 5.7e-16, 5.0e-17 and 1.05e-16 at rtol 1e-16, 1e-17, 1e-18.
+  // test_precision.cpp): measured 1.9e-16, 7.7e-17 and 8.1e-17 at rtol 1e-16, 1e-17, 1e-18
+  // (5.7e-16, 5.0e-17, 1.05e-16 before the dense coefficients were tabulated: rounding).
   // Past 1e-17 (~100 eps) a tighter rtol only adds steps (137 against 79) and their rounding.
   const SmoothBarRhs rhs{sc.mass, sc.inertia, sc.push};
   double el = 1;
