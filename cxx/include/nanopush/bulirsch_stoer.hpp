@@ -558,12 +558,14 @@ class BulirschStoer {
     return t;
   }
   // The multiply-adds of the midpoint derivatives (build_dense), per last line kc and
-  // order κ = 1..2kc-3: h^κ y^(κ)(mid) ≈ Σ ((±w_j (h (n_j/2)^(κ-1))) C(κ-1, q)) · (slot of
-  // fs_), the slots being f(mid), S_o (at mid+o) or D_o (at mid-o) of lines ⌈κ/2⌉..kc, w_j
-  // the extrapolation weight of line j over lines ⌈κ/2⌉..kc, q = (κ-1-o)/2, the sign
-  // (-1)^q. Terms of (kc, κ) at [start[kc][κ], start[kc][κ+1]), line by line, each line's
-  // f(mid) first and then o decreasing: the order of the sum, and the factors multiplied as
-  // written, so the rows are the same bits as a direct evaluation line by line.
+  // order κ = 1..2kc-3: h^κ y^(κ)(mid) ≈ h · Σ c · (slot of fs_), c = (±w_j (n_j/2)^(κ-1))
+  // C(κ-1, q) (the factors multiplied in this order, (n_j/2)^p by successive products), the
+  // slots being f(mid), S_o (at mid+o) or D_o (at mid-o) of lines ⌈κ/2⌉..kc, w_j the
+  // extrapolation weight of line j over lines ⌈κ/2⌉..kc, q = (κ-1-o)/2, the sign (-1)^q.
+  // Terms of (kc, κ) at [start[kc][κ], start[kc][κ+1]), line by line, each line's f(mid)
+  // first and then o decreasing: the order of the sum, the same in the fixed-size and the
+  // dynamic path (so both give the same bits). c does not depend on the step, so a step pays
+  // one multiply-add per term and component and one product by h per row.
   struct DenseTerm {
     int slot;   // row of fs_
     Scalar c;   // ±w_j (n_j/2)^p C(p, q): the term's coefficient without the factor h
