@@ -194,23 +194,26 @@ Ratios measure_ratios(const std::vector<Row>& rows) {
   // 3. Integrator overhead per RHS evaluation.
   md << "\n**Integrator overhead** (wall time minus the time of as many bare RHS calls, per RHS call; target <= 10 ns "
         "for the C++ BS):\n\n| engine | precision | ns per RHS (min / median / max over the sweep) | RHS cost [ns] "
-        "(median) |\n|---|---|---|---|\n";
+        "(median) | wall-time spread of the repeats (median over the sweep) |\n|---|---|---|---|---|\n";
   std::vector<std::pair<std::string, std::string>> seen;
   for (const auto& r : rows)
     if (std::find(seen.begin(), seen.end(), std::make_pair(r.engine, r.precision)) == seen.end())
       seen.emplace_back(r.engine, r.precision);
   for (const auto& [eng, prec] : seen) {
-    std::vector<double> ov, rc;
+    std::vector<double> ov, rc, sp;
     for (const auto& r : rows)
       if (r.engine == eng && r.precision == prec && r.status == 0 && r.nfcn > 0) {
         ov.push_back(r.overhead_ns_per_rhs);
         rc.push_back(r.rhs_s / static_cast<double>(r.nfcn) * 1e9);
+        if (std::isfinite(r.wall_spread)) sp.push_back(r.wall_spread);
       }
     if (ov.empty()) continue;
     std::sort(ov.begin(), ov.end());
     std::sort(rc.begin(), rc.end());
+    std::sort(sp.begin(), sp.end());
     md << "| " << eng << " | " << prec << " | " << num3(ov.front()) << " / " << num3(ov[ov.size() / 2]) << " / "
-       << num3(ov.back()) << " | " << num3(rc[rc.size() / 2]) << " |\n";
+       << num3(ov.back()) << " | " << num3(rc[rc.size() / 2]) << " | "
+       << (sp.empty() ? std::string("n/a (< 4 repeats)") : num3(100 * sp[sp.size() / 2]) + " %") << " |\n";
   }
   // 4. Extended precision.
   md << "\n**Precision** (smallest error reached; target 1e-25 in extended precision):\n\n"

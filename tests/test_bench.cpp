@@ -272,6 +272,23 @@ TEST_CASE("bench: F77 (callback and native) and C++ faithful take identical step
   }
 }
 
+TEST_CASE("bench: the wall-time spread of the repeats", "[bench]") {
+  const Scene sc = smooth_scene("a");
+  EngineConfig cfg;
+  cfg.only = {"cxx-faithful"};
+  const Bench b = make_bench(sc, cfg);
+  SweepSettings s;
+  s.kmin = 12;
+  s.kmax = 12;
+  s.repeats = 5;
+  const auto rows = run_sweep(b.problem, b.engines, b.reference, s);
+  REQUIRE(rows.size() == 1);
+  // (Q3 - Q1) / median of 5 timings: defined and non-negative (its size is a property of
+  // the machine's load, not checked here: no timed tests).
+  CHECK(std::isfinite(rows[0].wall_spread));
+  CHECK(rows[0].wall_spread >= 0);
+}
+
 TEST_CASE("bench: sweep rows and the CSV carry the documented columns", "[bench]") {
   const Scene sc = smooth_scene("a");
   EngineConfig cfg;
@@ -293,6 +310,7 @@ TEST_CASE("bench: sweep rows and the CSV carry the documented columns", "[bench]
     CHECK(r.rhs_s > 0);
     CHECK(std::isfinite(r.overhead_ns_per_rhs));
     CHECK(r.error <= 10 * r.rtol);
+    CHECK(std::isnan(r.wall_spread));  // one repeat: no spread
   }
   CHECK(rows[4].precision == "quad");
   CHECK(rows[6].rtol == Approx(1e-18));
@@ -302,11 +320,12 @@ TEST_CASE("bench: sweep rows and the CSV carry the documented columns", "[bench]
   std::ifstream in(path);
   std::string header, line;
   std::getline(in, header);
-  CHECK(header == "engine,precision,rtol,error,nfcn,naccpt,nrejct,wall_s,rhs_s,overhead_ns_per_rhs,repeats,status");
+  CHECK(header == "engine,precision,rtol,error,nfcn,naccpt,nrejct,wall_s,rhs_s,overhead_ns_per_rhs,repeats,status,"
+                 "wall_spread");
   int n = 0;
   while (std::getline(in, line)) {
     ++n;
-    CHECK(std::count(line.begin(), line.end(), ',') == 11);
+    CHECK(std::count(line.begin(), line.end(), ',') == 12);
   }
   CHECK(n == 10);
   std::filesystem::remove(path);

@@ -106,7 +106,7 @@ std::vector<double> tolerance_sweep(int kmin, int kmax, int kstep, double rtol_m
 const std::vector<std::string>& csv_columns() {
   static const std::vector<std::string> c = {"engine", "precision", "rtol",   "error",  "nfcn",
                                              "naccpt", "nrejct",    "wall_s", "rhs_s",  "overhead_ns_per_rhs",
-                                             "repeats", "status"};
+                                             "repeats", "status", "wall_spread"};
   return c;
 }
 
@@ -116,6 +116,19 @@ double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   const std::size_t m = v.size() / 2;
   return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
+}
+/// (Q3 - Q1) / median, quartiles by linear interpolation; NaN below 4 values.
+double relative_iqr(std::vector<double> v) {
+  if (v.size() < 4) return std::numeric_limits<double>::quiet_NaN();
+  std::sort(v.begin(), v.end());
+  const auto q = [&v](double f) {
+    const double x = f * static_cast<double>(v.size() - 1);
+    const auto i = static_cast<std::size_t>(x);
+    const double r = x - static_cast<double>(i);
+    return i + 1 < v.size() ? v[i] + r * (v[i + 1] - v[i]) : v[i];
+  };
+  const double med = median(v);
+  return med > 0 ? (q(0.75) - q(0.25)) / med : std::numeric_limits<double>::quiet_NaN();
 }
 }  // namespace
 
@@ -202,6 +215,7 @@ std::vector<Row> run_sweep(const Problem& p, const std::vector<Engine>& engines,
         r.nrejct = pt.first.nrejct;
         r.error = pt.first.status == 0 ? scaled_max_error(p, pt.first.y, ref.y) : std::numeric_limits<double>::quiet_NaN();
         r.wall_s = median(pt.wall);
+        r.wall_spread = relative_iqr(pt.wall);
         r.rhs_s = median(pt.rhs);
         r.overhead_ns_per_rhs = r.nfcn > 0 ? (r.wall_s - r.rhs_s) / static_cast<double>(r.nfcn) * 1e9
                                            : std::numeric_limits<double>::quiet_NaN();
@@ -225,7 +239,8 @@ void write_csv(const std::vector<Row>& rows, const std::filesystem::path& path) 
   for (const auto& r : rows) {
     o << r.engine << "," << r.precision << "," << csv_number(r.rtol) << "," << csv_number(r.error) << "," << r.nfcn
       << "," << r.naccpt << "," << r.nrejct << "," << csv_number(r.wall_s) << "," << csv_number(r.rhs_s) << ","
-      << csv_number(r.overhead_ns_per_rhs) << "," << r.repeats << "," << r.status << "\n";
+      << csv_number(r.overhead_ns_per_rhs) << "," << r.repeats << "," << r.status << "," << csv_number(r.wall_spread)
+      << "\n";
   }
   f.commit();
 }

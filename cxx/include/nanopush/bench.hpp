@@ -19,6 +19,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -114,6 +115,9 @@ struct Row {
   double rhs_s = 0;                ///< median time of nfcn bare RHS calls [s]
   double overhead_ns_per_rhs = 0;  ///< (wall_s - rhs_s) / nfcn [ns]
   int repeats = 0;
+  /// (upper quartile - lower quartile) / median of the repeats' wall times: how far a single
+  /// timing of this row can be trusted (NaN with fewer than 4 repeats)
+  double wall_spread = std::numeric_limits<double>::quiet_NaN();
   int status = 0;  ///< 0 = success; kStatusBelowReference; else the engine's failure code
 };
 
