@@ -387,7 +387,9 @@ std::string report_section(const Scene& scene, const BenchOptions& o, const Benc
      << (o.repeats_extended > 0 && o.repeats_extended != o.repeats
              ? ", " + std::to_string(o.repeats_extended) + " in long/quad precision"
              : std::string())
-     << ", after an untimed warm-up. Machine: " << machine() << ". Whole sweep: "
+     << (o.repeats > 1 ? ", after an untimed warm-up solve per engine and per point"
+                       : ", after one untimed warm-up solve per engine")
+     << ". Machine: " << machine() << ". Whole sweep: "
      << num3(r.seconds) << " s.\n\n"
      << "Error: max over output times and components of |y_i - y_ref,i| / (scale_i + |y_ref,i|). Reference: " << r.reference.kind
      << " (" << r.reference.how << "); " << r.acceptance.explanation << ".\n";
@@ -398,8 +400,12 @@ std::string report_section(const Scene& scene, const BenchOptions& o, const Benc
   if (r.extended_check_rtol > 0)
     md << "Extended-precision check of the acceptance rule: C++ BS modern in __float128 at rtol "
        << num3(r.extended_check_rtol) << " against the exact solution: " << r.extended_check.explanation << ".\n";
-  md << "\n![work-precision](" << png_rel << ")\n";
-  if (r.has_precision_plot) {
+  if (png_rel.empty()) {
+    md << "\nPlots: not written (--no-plot).\n";
+  } else {
+    md << "\n![work-precision](" << png_rel << ")\n";
+  }
+  if (!png_rel.empty() && r.has_precision_plot) {
     std::string p2 = png_rel.substr(0, png_rel.size() - 4) + "_precision.png";
     md << "\n![precision](" << p2 << ")\n";
   }
@@ -435,7 +441,7 @@ int bench_cmd(BenchOptions o) {
   std::string png_rel = png.filename().string();
   if (!o.no_plot) plot_all(r.rows, csv, png, scene.name);
   std::cout << "# nanopush bench " << scene.name << "\n\n"
-            << report_section(scene, o, r, o.no_plot ? "(no plot)" : png_rel, csv.string());
+            << report_section(scene, o, r, o.no_plot ? std::string() : png_rel, csv.string());
   std::cerr << "bench: " << r.rows.size() << " rows in " << csv.string() << (o.no_plot ? "" : ", plot " + png.string())
             << " (" << num3(r.seconds) << " s)\n";
   if (!r.ratios.failures.empty()) {

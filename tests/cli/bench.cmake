@@ -36,6 +36,12 @@ add_test(NAME cli.bench.host_speed COMMAND ${_np} bench fig3_6a --quick --quiet 
          --out ${CMAKE_CURRENT_BINARY_DIR}/bench-host/bench.csv)
 set_tests_properties(cli.bench.host_speed PROPERTIES ENVIRONMENT "${_env}"
   PASS_REGULAR_EXPRESSION "Host speed during the sweep[*][*]: one bare RHS call took [0-9.e+-]+ to [0-9.e+-]+ ns")
+# --no-plot: the report says so instead of linking images that were not written.
+add_test(NAME cli.bench.no_plot_report COMMAND ${_np} bench fig3_6a --quick --quiet --no-plot --engines cxx-faithful
+         --precision double --precision quad --out ${CMAKE_CURRENT_BINARY_DIR}/bench-noplot/bench.csv)
+set_tests_properties(cli.bench.no_plot_report PROPERTIES ENVIRONMENT "${_env}"
+  PASS_REGULAR_EXPRESSION "Plots: not written [(]--no-plot[)]"
+  FAIL_REGULAR_EXPRESSION "!\\[")
 
 # The issue's targets are cxx-modern's against odeint-bs: the faithful engine (the F77
 # engine's clipped steps) is compared with the peer without a met / NOT met verdict.
