@@ -168,6 +168,13 @@ StickSlipResult integrate_coulomb(const RoughBarModel& model, const BsOptions<do
   }
 
   BulirschStoer<double, kRoughStateSize> bs(options);
+  // The event location's sub-integrations need the state at their end time only, so they
+  // run without dense output: there is nothing to interpolate, and near the velocity's zero
+  // (where the friction turns with V/|V| on the time scale |V|/|A|) the interpolant's error
+  // control of the modern method held them at steps of 1e-6 of their span until the step
+  // budget ran out (stick_mu015, rtol 1e-12). Steps clipped at the end time as in faithful.
+  BsOptions<double> sub_options = options;
+  sub_options.dense = false;
   auto rhs = [&](double, const double* yy, double* d) {
     coulomb_rhs(model, yy, mode, d);
     return 0;
@@ -298,7 +305,7 @@ StickSlipResult integrate_coulomb(const RoughBarModel& model, const BsOptions<do
     auto g_at = [&](double tt, std::array<double, kRoughStateSize>& yt) {
       yt = ystart;
       if (tt > t0) {
-        BulirschStoer<double, kRoughStateSize> sub(options);
+        BulirschStoer<double, kRoughStateSize> sub(sub_options);
         BsResult rr = sub.integrate(rhs, t0, yt.data(), tt);
         accumulate(rr);
         out.root_fcn += rr.nfcn;
