@@ -193,8 +193,10 @@ Ratios measure_ratios(const std::vector<Row>& rows) {
   }
   // 3. Integrator overhead per RHS evaluation.
   md << "\n**Integrator overhead** (wall time minus the time of as many bare RHS calls, per RHS call; target <= 10 ns "
-        "for the C++ BS):\n\n| engine | precision | ns per RHS (min / median / max over the sweep) | RHS cost [ns] "
-        "(median) | wall-time spread of the repeats (median over the sweep) |\n|---|---|---|---|---|\n";
+        "for the C++ BS; the last column: the tolerances at which it holds, i.e. the loosest rtol from which every "
+        "tighter row of the sweep is within it):\n\n| engine | precision | ns per RHS (min / median / max over the "
+        "sweep) | RHS cost [ns] (median) | wall-time spread of the repeats (median over the sweep) | <= 10 ns at "
+        "|\n|---|---|---|---|---|---|\n";
   std::vector<std::pair<std::string, std::string>> seen;
   for (const auto& r : rows)
     if (std::find(seen.begin(), seen.end(), std::make_pair(r.engine, r.precision)) == seen.end())
@@ -213,7 +215,14 @@ Ratios measure_ratios(const std::vector<Row>& rows) {
     std::sort(sp.begin(), sp.end());
     md << "| " << eng << " | " << prec << " | " << num3(ov.front()) << " / " << num3(ov[ov.size() / 2]) << " / "
        << num3(ov.back()) << " | " << num3(rc[rc.size() / 2]) << " | "
-       << (sp.empty() ? std::string("n/a (< 4 repeats)") : num3(100 * sp[sp.size() / 2]) + " %") << " |\n";
+       << (sp.empty() ? std::string("n/a (< 4 repeats)") : num3(100 * sp[sp.size() / 2]) + " %") << " | ";
+    const auto from = bench::overhead_within_from(rows, eng, prec, 10.0);
+    double loosest = 0;
+    for (const auto& r : rows)
+      if (r.engine == eng && r.precision == prec && r.status == 0 && r.nfcn > 0) loosest = std::max(loosest, r.rtol);
+    md << (!from ? std::string("no rtol of the sweep") : *from >= loosest ? std::string("every rtol of the sweep")
+                                                                          : "rtol <= " + num3(*from))
+       << " |\n";
   }
   // 4. Extended precision.
   md << "\n**Precision** (smallest error reached; target 1e-25 in extended precision):\n\n"

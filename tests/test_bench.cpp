@@ -289,6 +289,44 @@ TEST_CASE("bench: the wall-time spread of the repeats", "[bench]") {
   CHECK(rows[0].wall_spread >= 0);
 }
 
+TEST_CASE("bench: loosest rtol from which the overhead stays within a bound", "[bench]") {
+  // Synthetic rows (no timing is measured): the answer is the loosest rtol R such that every
+  // successful row of the engine at rtol <= R is within the bound.
+  auto row = [](const std::string& eng, double rtol, double ov, int status = 0) {
+    Row r;
+    r.engine = eng;
+    r.precision = "double";
+    r.rtol = rtol;
+    r.nfcn = 1000;
+    r.overhead_ns_per_rhs = ov;
+    r.status = status;
+    return r;
+  };
+  std::vector<Row> rows = {row("a", 1e-3, 17), row("a", 1e-6, 12), row("a", 1e-9, 9.5), row("a", 1e-12, 9.9),
+                           row("a", 1e-13, 8), row("b", 1e-3, 9), row("b", 1e-6, 11), row("b", 1e-9, 9),
+                           row("c", 1e-3, 12), row("c", 1e-6, 11), row("d", 1e-3, 5), row("d", 1e-6, 6)};
+  // Rows of another precision, failed rows and rows without RHS calls do not count.
+  rows.push_back(row("a", 1e-6, 3, 1));
+  Row q = row("a", 1e-6, 3);
+  q.precision = "quad";
+  rows.push_back(q);
+  const auto ra = overhead_within_from(rows, "a", "double", 10.0);
+  REQUIRE(ra.has_value());
+  CHECK(*ra == 1e-9);
+  // A tighter row above the bound cuts the range off at the row below it.
+  const auto rb = overhead_within_from(rows, "b", "double", 10.0);
+  REQUIRE(rb.has_value());
+  CHECK(*rb == 1e-9);
+  CHECK_FALSE(overhead_within_from(rows, "c", "double", 10.0).has_value());  // nowhere
+  CHECK(overhead_within_from(rows, "d", "double", 10.0).value() == 1e-3);    // everywhere
+  CHECK_FALSE(overhead_within_from(rows, "none", "double", 10.0).has_value());
+  // The bound itself counts as within: the 9.9 ns row at 1e-12 does not cut the range
+  // (with a strict comparison the answer would be 1e-13); a bound below it does.
+  CHECK(overhead_within_from(rows, "a", "double", 9.9).value() == 1e-9);
+  CHECK(overhead_within_from(rows, "a", "double", 9.8).value() == 1e-13);
+  CHECK_THROWS_AS(overhead_within_from(rows, "a", "double", std::nan("")), InputError);
+}
+
 TEST_CASE("bench: sweep rows and the CSV carry the documented columns", "[bench]") {
   const Scene sc = smooth_scene("a");
   EngineConfig cfg;

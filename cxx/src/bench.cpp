@@ -92,6 +92,23 @@ int mark_below_reference(const Reference& ref, std::vector<Row>& rows) {
   return marked;
 }
 
+std::optional<double> overhead_within_from(const std::vector<Row>& rows, const std::string& engine,
+                                           const std::string& precision, double bound_ns) {
+  if (!std::isfinite(bound_ns)) throw InputError("overhead bound", fmt(bound_ns), "must be a finite number of ns");
+  // The engine's successful rows from the tightest tolerance up; the same rows as the
+  // report's overhead table (status 0, at least one RHS call).
+  std::vector<const Row*> v;
+  for (const auto& r : rows)
+    if (r.engine == engine && r.precision == precision && r.status == 0 && r.nfcn > 0) v.push_back(&r);
+  std::sort(v.begin(), v.end(), [](const Row* a, const Row* b) { return a->rtol < b->rtol; });
+  std::optional<double> from;
+  for (const Row* r : v) {
+    if (!(r->overhead_ns_per_rhs <= bound_ns)) break;
+    from = r->rtol;
+  }
+  return from;
+}
+
 std::vector<double> tolerance_sweep(int kmin, int kmax, int kstep, double rtol_min) {
   if (kstep < 1) throw InputError("kstep", std::to_string(kstep), "must be >= 1");
   std::vector<double> v;

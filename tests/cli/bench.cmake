@@ -36,6 +36,12 @@ add_test(NAME cli.bench.host_speed COMMAND ${_np} bench fig3_6a --quick --quiet 
          --out ${CMAKE_CURRENT_BINARY_DIR}/bench-host/bench.csv)
 set_tests_properties(cli.bench.host_speed PROPERTIES ENVIRONMENT "${_env}"
   PASS_REGULAR_EXPRESSION "Host speed during the sweep[*][*]: one bare RHS call took [0-9.e+-]+ to [0-9.e+-]+ ns")
+# The overhead table says from which rtol on the 10 ns target holds (which rtol depends on the
+# host: only the column's form is checked, never a timing).
+add_test(NAME cli.bench.overhead_from COMMAND ${_np} bench fig3_6a --quick --quiet --no-plot --engines cxx-faithful
+         --out ${CMAKE_CURRENT_BINARY_DIR}/bench-overhead/bench.csv)
+set_tests_properties(cli.bench.overhead_from PROPERTIES ENVIRONMENT "${_env}"
+  PASS_REGULAR_EXPRESSION "[|] cxx-faithful [|] double [|][^\n]*[|] (rtol <= [0-9.e+-]+|every rtol of the sweep|no rtol of the sweep) [|]")
 # --no-plot: the report says so instead of linking images that were not written.
 add_test(NAME cli.bench.no_plot_report COMMAND ${_np} bench fig3_6a --quick --quiet --no-plot --engines cxx-faithful
          --precision double --precision quad --out ${CMAKE_CURRENT_BINARY_DIR}/bench-noplot/bench.csv)

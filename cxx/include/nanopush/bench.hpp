@@ -20,6 +20,7 @@
 #include <filesystem>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -131,6 +132,13 @@ inline constexpr int kStatusBelowReference = -2;
 /// its disagreement) with kStatusBelowReference; returns how many. Exact references
 /// resolve everything (nothing marked).
 int mark_below_reference(const Reference& ref, std::vector<Row>& rows);
+
+/// The loosest rtol R from which an engine's integrator overhead stays within `bound_ns`
+/// [ns per RHS]: every successful row of (engine, precision) with rtol <= R has
+/// overhead_ns_per_rhs <= bound_ns. Empty when the tightest such row is already above the
+/// bound, or there is no such row. Throws InputError for a bound that is not finite.
+std::optional<double> overhead_within_from(const std::vector<Row>& rows, const std::string& engine,
+                                           const std::string& precision, double bound_ns);
 
 /// CSV header of the benchmark (docs/performance.md documents every column).
 const std::vector<std::string>& csv_columns();
