@@ -325,6 +325,17 @@ TEST_CASE("bench: loosest rtol from which the overhead stays within a bound", "[
   CHECK(overhead_within_from(rows, "a", "double", 9.9).value() == 1e-9);
   CHECK(overhead_within_from(rows, "a", "double", 9.8).value() == 1e-13);
   CHECK_THROWS_AS(overhead_within_from(rows, "a", "double", std::nan("")), InputError);
+  // The same rule on another column: the replay measurement of the integrator alone.
+  std::vector<Row> own = rows;
+  for (auto& r : own) {
+    r.own_ns_per_rhs = r.overhead_ns_per_rhs;
+    r.overhead_ns_per_rhs = 100;
+  }
+  CHECK(overhead_within_from(own, "a", "double", 10.0, &Row::own_ns_per_rhs).value() == 1e-9);
+  CHECK_FALSE(overhead_within_from(own, "a", "double", 10.0).has_value());
+  // Rows without the column (NaN: no replay) end the range like a row above the bound.
+  own[4].own_ns_per_rhs = std::nan("");  // a at 1e-13
+  CHECK_FALSE(overhead_within_from(own, "a", "double", 10.0, &Row::own_ns_per_rhs).has_value());
 }
 
 TEST_CASE("bench: sweep rows and the CSV carry the documented columns", "[bench]") {
@@ -349,6 +360,7 @@ TEST_CASE("bench: sweep rows and the CSV carry the documented columns", "[bench]
     CHECK(std::isfinite(r.overhead_ns_per_rhs));
     CHECK(r.error <= 10 * r.rtol);
     CHECK(std::isnan(r.wall_spread));  // one repeat: no spread
+    CHECK(std::isnan(r.own_ns_per_rhs));  // replay not asked for
   }
   CHECK(rows[4].precision == "quad");
   CHECK(rows[6].rtol == Approx(1e-18));
@@ -359,17 +371,109 @@ TEST_CASE("bench: sweep rows and the CSV carry the documented columns", "[bench]
   std::string header, line;
   std::getline(in, header);
   CHECK(header == "engine,precision,rtol,error,nfcn,naccpt,nrejct,wall_s,rhs_s,overhead_ns_per_rhs,repeats,status,"
-                 "wall_spread");
+                 "wall_spread,own_ns_per_rhs");
   int n = 0;
   while (std::getline(in, line)) {
     ++n;
-    CHECK(std::count(line.begin(), line.end(), ',') == 12);
+    CHECK(std::count(line.begin(), line.end(), ',') == 13);
   }
   CHECK(n == 10);
   std::filesystem::remove(path);
   // Bad settings are refused with the field named.
   s.repeats = 0;
   CHECK_THROWS_WITH(run_sweep(b.problem, b.engines, b.reference, s), Catch::Contains("repeats"));
+}
+
+TEST_CASE("bench: a replayed RHS reproduces every double engine's solve bit for bit", "[bench][replay]") {
+  // The replay diagnostic times the integrator alone: one solve records its RHS values, the
+  // timed solves get them handed back in order. It is valid only if the replayed solve is
+  // the recorded one exactly (same counts, same outputs bit for bit); replay() checks that
+  // and returns no timer otherwise. No timing is judged here, only that one is produced.
+  const Scene sc = smooth_scene("a");
+  EngineConfig cfg;
+  cfg.precisions = {"double", "quad"};
+  const Bench b = make_bench(sc, cfg);
+  std::set<std::string> replayed;
+  for (const auto& e : b.engines) {
+    INFO(e.label());
+    if (e.precision != "double" || e.name == "f77-native") {
+      CHECK_FALSE(e.replay);  // extended scalars and the F77 RHS called from F77: no replay
+      continue;
+    }
+    REQUIRE(e.replay);
+    for (const double rtol : {1e-4, 1e-10}) {
+      INFO("rtol " << rtol);
+      const Solve first = e.solve(rtol);
+      REQUIRE(first.status == 0);
+      const auto timer = e.replay(rtol, first);
+      REQUIRE(timer);
+      CHECK(std::isfinite(timer()));
+      CHECK(std::isfinite(timer()));  // a timer can be run again (the tape is rewound)
+      // A `first` the replay does not reproduce gives no timer: one RHS call more...
+      Solve other = first;
+      other.nfcn += 1;
+      CHECK_FALSE(e.replay(rtol, other));
+      // ...or one output differing in its last bit.
+      other = first;
+      other.y[7] = static_cast<quad>(std::nextafter(static_cast<double>(other.y[7]), 1e300));
+      CHECK_FALSE(e.replay(rtol, other));
+    }
+    replayed.insert(e.name);
+  }
+  for (const char* name : {"cxx-faithful", "cxx-modern", "f77-callback", "odeint-bs", "odeint-bs-dense"})
+    CHECK(replayed.count(name) == 1);
+#ifdef NANOPUSH_HAVE_SUNDIALS
+  for (const char* name : {"cvode-adams", "cvode-bdf", "arkode-erk8"}) CHECK(replayed.count(name) == 1);
+#endif
+}
+
+TEST_CASE("bench: the replay tape hands back values and statuses in order, and fails past its end", "[bench][replay]") {
+  detail::RhsTape tape;
+  tape.n = 2;
+  const auto rhs = [](double t, const double* y, double* d) {
+    d[0] = y[1] + t;
+    d[1] = -y[0];
+    return t > 2.5 ? 7 : 0;
+  };
+  const detail::RecordingRhs<2, decltype(rhs)> rec{&rhs, &tape};
+  double y[2] = {1, 2}, d[2];
+  for (const double t : {1.0, 2.0, 3.0}) CHECK(rec(t, y, d) == (t > 2.5 ? 7 : 0));
+  REQUIRE(tape.values.size() == 6);
+  REQUIRE(tape.status.size() == 3);
+  const auto play = tape.player<2>();
+  double z[2] = {0, 0}, e[2];
+  CHECK(play(99.0, z, e) == 0);  // the arguments are ignored: the recorded values come back
+  CHECK(e[0] == 3.0);
+  CHECK(e[1] == -1.0);
+  CHECK(play(0.0, z, e) == 0);
+  CHECK(e[0] == 4.0);
+  CHECK(play(0.0, z, e) == 7);  // the recorded status too
+  CHECK(e[0] == 5.0);
+  CHECK(play(0.0, z, e) == detail::kReplayExhausted);  // one call more than recorded: the solve fails
+  CHECK(play(0.0, z, e) == detail::kReplayExhausted);
+}
+
+TEST_CASE("bench: a sweep with replay fills own_ns_per_rhs for the replayable engines only", "[bench][replay]") {
+  const Scene sc = smooth_scene("a");
+  EngineConfig cfg;
+  cfg.only = {"cxx-faithful", "f77-native"};
+  const Bench b = make_bench(sc, cfg);
+  SweepSettings s;
+  s.repeats = 3;
+  s.kmin = 8;
+  s.kmax = 20;
+  s.kstep = 6;  // rtol 1e-4, 1e-7, 1e-10
+  s.replay = true;
+  const auto rows = run_sweep(b.problem, b.engines, b.reference, s);
+  REQUIRE(rows.size() == 6);
+  for (const auto& r : rows) {
+    INFO(r.engine << " " << r.rtol);
+    CHECK(r.status == 0);
+    if (r.engine == "cxx-faithful")
+      CHECK(std::isfinite(r.own_ns_per_rhs));
+    else
+      CHECK(std::isnan(r.own_ns_per_rhs));
+  }
 }
 
 TEST_CASE("bench: rough scene against the extended-precision F77 program (-freal-8-real-16)", "[bench][rough]") {

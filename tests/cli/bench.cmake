@@ -42,6 +42,18 @@ add_test(NAME cli.bench.overhead_from COMMAND ${_np} bench fig3_6a --quick --qui
          --out ${CMAKE_CURRENT_BINARY_DIR}/bench-overhead/bench.csv)
 set_tests_properties(cli.bench.overhead_from PROPERTIES ENVIRONMENT "${_env}"
   PASS_REGULAR_EXPRESSION "[|] cxx-faithful [|] double [|][^\n]*[|] (rtol <= [0-9.e+-]+|every rtol of the sweep|no rtol of the sweep) [|]")
+# --replay: the overhead table gains the integrator alone (RHS values replayed); engines that
+# cannot replay (f77-native: the F77 RHS called from F77) say so. Form only, no timing.
+add_test(NAME cli.bench.replay COMMAND ${_np} bench fig3_6a --quick --quiet --no-plot --replay
+         --engines cxx-faithful --engines f77-native --out ${CMAKE_CURRENT_BINARY_DIR}/bench-replay/bench.csv)
+set_tests_properties(cli.bench.replay PROPERTIES ENVIRONMENT "${_env}"
+  PASS_REGULAR_EXPRESSION "[|] cxx-faithful [|] double [|][^\n]*[|] [0-9.e+-]+ / [0-9.e+-]+ / [0-9.e+-]+ [|] (rtol <= [0-9.e+-]+|every rtol of the sweep|no rtol of the sweep) [|]\n[|] f77-native [|] double [|][^\n]*[|] n/a [(]no replay[)] [|] n/a [|]")
+# Without --replay the table keeps its six columns.
+add_test(NAME cli.bench.no_replay COMMAND ${_np} bench fig3_6a --quick --quiet --no-plot --engines cxx-faithful
+         --out ${CMAKE_CURRENT_BINARY_DIR}/bench-noreplay/bench.csv)
+set_tests_properties(cli.bench.no_replay PROPERTIES ENVIRONMENT "${_env}"
+  PASS_REGULAR_EXPRESSION "sweep[)] [|] <= 10 ns at [|]\n[|]---[|]---[|]---[|]---[|]---[|]---[|]\n"
+  FAIL_REGULAR_EXPRESSION "alone")
 # --no-plot: the report says so instead of linking images that were not written.
 add_test(NAME cli.bench.no_plot_report COMMAND ${_np} bench fig3_6a --quick --quiet --no-plot --engines cxx-faithful
          --precision double --precision quad --out ${CMAKE_CURRENT_BINARY_DIR}/bench-noplot/bench.csv)

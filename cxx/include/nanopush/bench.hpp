@@ -63,6 +63,13 @@ struct Engine {
   /// Wall time [s] of `count` calls of this engine's RHS alone (same scalar, same function),
   /// evaluated at states along the reference trajectory.
   std::function<double(std::int64_t count)> time_rhs;
+  /// Diagnostic of the integrator's own time (SweepSettings::replay). replay(rtol, first)
+  /// records the RHS values of one solve at rtol and returns a timer: one solve whose RHS
+  /// hands the recorded values back in order without evaluating anything (so the integrator
+  /// takes the same steps bit for bit), minus the time of copying as many values [s].
+  /// Empty (no replay) for extended scalars and RHS the engine calls outside C++; the
+  /// returned timer is empty when the replayed solve does not reproduce `first` exactly.
+  std::function<std::function<double()>(double rtol, const Solve& first)> replay;
   [[nodiscard]] std::string label() const { return precision == "double" ? name : name + " (" + precision + ")"; }
 };
 
@@ -120,6 +127,10 @@ struct Row {
   /// timing of this row can be trusted (NaN with fewer than 4 repeats)
   double wall_spread = std::numeric_limits<double>::quiet_NaN();
   int status = 0;  ///< 0 = success; kStatusBelowReference; else the engine's failure code
+  /// The integrator alone: median over the repeats of (solve with the RHS values replayed -
+  /// copying them) / nfcn [ns] (Engine::replay). NaN when the sweep ran without replay or
+  /// the engine has none.
+  double own_ns_per_rhs = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// Row status of a successful solve whose error the reference cannot resolve: below 1e3 x
@@ -135,10 +146,12 @@ int mark_below_reference(const Reference& ref, std::vector<Row>& rows);
 
 /// The loosest rtol R from which an engine's integrator overhead stays within `bound_ns`
 /// [ns per RHS]: every successful row of (engine, precision) with rtol <= R has
-/// overhead_ns_per_rhs <= bound_ns. Empty when the tightest such row is already above the
-/// bound, or there is no such row. Throws InputError for a bound that is not finite.
+/// `field` <= bound_ns (overhead_ns_per_rhs, or own_ns_per_rhs for the replay measurement;
+/// a NaN counts as above). Empty when the tightest such row is already above the bound,
+/// or there is no such row. Throws InputError for a bound that is not finite.
 std::optional<double> overhead_within_from(const std::vector<Row>& rows, const std::string& engine,
-                                           const std::string& precision, double bound_ns);
+                                           const std::string& precision, double bound_ns,
+                                           double Row::*field = &Row::overhead_ns_per_rhs);
 
 /// CSV header of the benchmark (docs/performance.md documents every column).
 const std::vector<std::string>& csv_columns();
@@ -151,6 +164,9 @@ struct SweepSettings {
   int kmax_extended = 56;   ///< last k for engines whose rtol_min is below 1e-14 (56: rtol 1e-28)
   int kstep = 1;
   int kstep_extended = 0;   ///< k step for long/quad engines (0 = kstep)
+  /// Also time every engine that has one with its RHS values replayed (Engine::replay,
+  /// Row::own_ns_per_rhs): `repeats` more solves per point.
+  bool replay = false;
   std::function<void(const Row&)> progress;  ///< called after each row (tolerance by tolerance: the engines are interleaved)
 };
 

@@ -28,6 +28,7 @@
 #include <array>
 #include <chrono>
 #include <cstring>
+#include <functional>
 #include <memory>
 #include <span>
 #include <string>
@@ -108,6 +109,68 @@ double time_rhs_calls(const Rhs& rhs, int n, const std::vector<double>& times, c
   return seconds_since(t0);
 }
 
+// ---------------------------------------------------------------- RHS replay (Engine::replay)
+/// Status a replayed RHS returns past the end of its tape: the solve fails (and so differs
+/// from the recorded one).
+inline constexpr int kReplayExhausted = 98;
+
+/// The RHS values and statuses of one solve, in call order.
+struct RhsTape {
+  int n = 0;
+  std::vector<double> values;  ///< n per call
+  std::vector<int> status;     ///< one per call
+  /// An RHS (double) that hands the recorded values and statuses back in order and ignores
+  /// its arguments. Its state is the read position: every player starts at the beginning.
+  template <int N>
+  struct Player {
+    mutable const double* v;
+    mutable const int* s;
+    const int* end;
+    int operator()(double, const double*, double* d) const {
+      if (s == end) return kReplayExhausted;
+      std::memcpy(d, v, N * sizeof(double));
+      v += N;
+      return *s++;
+    }
+  };
+  template <int N>
+  [[nodiscard]] Player<N> player() const {
+    return {values.data(), status.data(), status.data() + status.size()};
+  }
+  /// Wall time [s] of one player handing back the whole tape, with no integrator around it.
+  template <int N>
+  [[nodiscard]] double copy_seconds() const {
+    const Player<N> p = player<N>();
+    double d[N];
+    int acc = 0;
+    const auto t0 = Clock::now();
+    for (std::size_t c = 0; c < status.size(); ++c) {
+      acc += p(0.0, nullptr, d);
+      clobber(d);
+    }
+    clobber(&acc);
+    return seconds_since(t0);
+  }
+};
+
+/// The RHS, recording what it returns on a tape.
+template <int N, class Rhs>
+struct RecordingRhs {
+  const Rhs* rhs;
+  RhsTape* tape;
+  int operator()(double t, const double* y, double* d) const {
+    const int st = (*rhs)(t, y, d);
+    tape->values.insert(tape->values.end(), d, d + N);
+    tape->status.push_back(st);
+    return st;
+  }
+};
+
+/// The same solve: status, counts and every output bit for bit.
+inline bool same_solve(const Solve& a, const Solve& b) {
+  return a.status == b.status && a.nfcn == b.nfcn && a.naccpt == b.naccpt && a.nrejct == b.nrejct && a.y == b.y;
+}
+
 template <class S>
 void store(Solve& s, const std::vector<S>& yout) {
   s.y.assign(yout.size(), quad(0));
@@ -126,6 +189,29 @@ inline RhsSamples samples_from(const Problem& p, const Reference& ref) {
   s.y.resize(ref.y.size());
   for (std::size_t i = 0; i < ref.y.size(); ++i) s.y[i] = static_cast<double>(ref.y[i]);
   return s;
+}
+
+/// Engine::replay of a double engine. `solve_with(r, rtol)` runs the engine with any RHS r
+/// of the contract (here: the recording one, then the player) and returns its Solve with
+/// `seconds` set. The timer it returns is valid only for the solve it was recorded from,
+/// which the replayed solve must reproduce bit for bit (else no timer).
+template <int N, class Rhs, class SolveWith>
+std::function<std::function<double()>(double, const Solve&)> replay_of(std::shared_ptr<const Rhs> rhs,
+                                                                      SolveWith solve_with) {
+  return [rhs, solve_with](double rtol, const Solve& first) -> std::function<double()> {
+    auto tape = std::make_shared<detail::RhsTape>();
+    tape->n = N;
+    if (first.nfcn > 0) {
+      tape->values.reserve(static_cast<std::size_t>(first.nfcn) * N);
+      tape->status.reserve(static_cast<std::size_t>(first.nfcn));
+    }
+    if (!detail::same_solve(solve_with(detail::RecordingRhs<N, Rhs>{rhs.get(), tape.get()}, rtol), first)) return {};
+    if (!detail::same_solve(solve_with(tape->template player<N>(), rtol), first)) return {};
+    return [tape, solve_with, rtol]() {
+      const Solve s = solve_with(tape->template player<N>(), rtol);
+      return s.seconds - tape->template copy_seconds<N>();
+    };
+  };
 }
 
 // ---------------------------------------------------------------- C++ Bulirsch-Stoer

@@ -55,6 +55,13 @@ void add_cxx_bs(std::vector<Engine>& v, const Problem& p, const std::shared_ptr<
       return s;
     };
     e.time_rhs = rhs_timer<S>(rhs, p.n, smp);
+    if constexpr (std::is_same_v<S, double>)
+      e.replay = replay_of<N>(rhs, [p, modern, dense_accept](const auto& r, double rtol) {
+        double sec = 0;
+        Solve s = solve_cxx_bs<double, N>(p, r, rtol, modern, &sec, dense_accept);
+        s.seconds = sec;
+        return s;
+      });
     v.push_back(std::move(e));
   }
 }
@@ -70,19 +77,22 @@ std::vector<Engine> generic_engines(const Problem& p, std::shared_ptr<const Rhs>
   detail::add_cxx_bs<long double, N>(v, p, rhs, smp, cfg);
   detail::add_cxx_bs<quad, N>(v, p, rhs, smp, cfg);
   auto timer = rhs_timer<double>(rhs, p.n, smp);
-  auto add = [&](const std::string& name, const std::string& note, std::function<Solve(double)> f) {
+  // Each engine from one generic solve_with(r, rtol) (any RHS r of the contract, Solve with
+  // its seconds): the solve with the scene's RHS, and its replay (Engine::replay).
+  auto add = [&](const std::string& name, const std::string& note, auto solve_with) {
     if (!cfg.wants(name)) return;
     Engine e;
     e.name = name;
     e.note = note;
-    e.solve = std::move(f);
+    e.solve = [rhs, solve_with](double rtol) { return solve_with(*rhs, rtol); };
     e.time_rhs = timer;
+    e.replay = replay_of<N>(rhs, solve_with);
     v.push_back(std::move(e));
   };
   add("f77-callback", "fortran/bsint.f (rational, kmax 8) via np_f77_bsint_fcn, the C++ RHS as its FCN",
-      [p, rhs](double rtol) {
+      [p](const auto& r, double rtol) {
         double sec = 0;
-        Solve s = solve_f77_callback(p, *rhs, rtol, &sec);
+        Solve s = solve_f77_callback(p, r, rtol, &sec);
         s.seconds = sec;
         return s;
       });
@@ -91,17 +101,17 @@ std::vector<Engine> generic_engines(const Problem& p, std::shared_ptr<const Rhs>
     add(bdf ? "cvode-bdf" : "cvode-adams",
         bdf ? "CVODE BDF 1-5, Newton + dense LU, DQ Jacobian; outputs interpolated"
             : "CVODE Adams 1-12, fixed-point iteration; outputs interpolated",
-        [p, rhs, bdf](double rtol) {
+        [p, bdf](const auto& r, double rtol) {
           double sec = 0;
-          Solve s = solve_cvode(p, *rhs, rtol, bdf, &sec);
+          Solve s = solve_cvode(p, r, rtol, bdf, &sec);
           s.seconds = sec;
           return s;
         });
   }
   add("arkode-erk8", "ARKODE ERKStep, ARKODE_FEHLBERG_13_7_8 (order 8); outputs interpolated",
-      [p, rhs](double rtol) {
+      [p](const auto& r, double rtol) {
         double sec = 0;
-        Solve s = solve_arkode_erk8(p, *rhs, rtol, &sec);
+        Solve s = solve_arkode_erk8(p, r, rtol, &sec);
         s.seconds = sec;
         return s;
       });
@@ -111,9 +121,9 @@ std::vector<Engine> generic_engines(const Problem& p, std::shared_ptr<const Rhs>
     add(dense ? "odeint-bs-dense" : "odeint-bs",
         dense ? "Boost.Odeint bulirsch_stoer_dense_out + integrate_times; outputs interpolated"
               : "Boost.Odeint bulirsch_stoer, stepped as integrate_times (steps clipped at output times)",
-        [p, rhs, dense](double rtol) {
+        [p, dense](const auto& r, double rtol) {
           double sec = 0;
-          Solve s = solve_odeint_bs<N>(p, *rhs, rtol, dense, &sec);
+          Solve s = solve_odeint_bs<N>(p, r, rtol, dense, &sec);
           s.seconds = sec;
           return s;
         });
