@@ -407,6 +407,13 @@ std::vector<std::filesystem::path> plot_all(const std::vector<Row>& rows, const 
     bench::plot_work_precision(prec, csv, p2, "C++ Bulirsch-Stoer in double, long double and __float128, scene " + scene);
     out.push_back(p2);
   }
+  if (!dbl.empty()) {
+    std::filesystem::path p3 = png;
+    p3.replace_extension();
+    p3 += "_overhead.png";
+    bench::plot_overhead(dbl, csv, p3, "Integrator overhead per RHS evaluation (double), scene " + scene);
+    out.push_back(p3);
+  }
   return out;
 }
 
@@ -443,6 +450,9 @@ std::string report_section(const Scene& scene, const BenchOptions& o, const Benc
     std::string p2 = png_rel.substr(0, png_rel.size() - 4) + "_precision.png";
     md << "\n![precision](" << p2 << ")\n";
   }
+  if (!png_rel.empty() && std::any_of(r.rows.begin(), r.rows.end(), [](const Row& x) { return x.precision == "double"; }))
+    md << "\n![integrator overhead per RHS evaluation against rtol](" << png_rel.substr(0, png_rel.size() - 4)
+       << "_overhead.png)\n";
   md << "\nData: `" << csv_rel << "`. Engines:\n\n";
   for (const auto& n : r.engine_notes) md << "- " << n << "\n";
   md << r.ratios.markdown << "\n";

@@ -476,6 +476,51 @@ TEST_CASE("bench: a sweep with replay fills own_ns_per_rhs for the replayable en
   }
 }
 
+TEST_CASE("bench: the overhead plot, with and without the replay panel", "[bench][replay]") {
+  // Synthetic rows: the figure's layout only (gnuplot writes it; no timing is measured).
+  auto row = [](const std::string& eng, const std::string& prec, double rtol, double ov, double own) {
+    Row r;
+    r.engine = eng;
+    r.precision = prec;
+    r.rtol = rtol;
+    r.nfcn = 100;
+    r.overhead_ns_per_rhs = ov;
+    r.own_ns_per_rhs = own;
+    return r;
+  };
+  const double nan = std::nan("");
+  const auto dir = std::filesystem::temp_directory_path() / "nanopush_test_overhead_plot";
+  std::filesystem::create_directories(dir);
+  const auto script = [](const std::filesystem::path& png) {
+    std::ifstream in(std::filesystem::path(png).replace_extension(".gp"));
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+  };
+  std::vector<Row> rows = {row("a", "double", 1e-3, 20, 18), row("a", "double", 1e-6, 12, 11),
+                           row("b", "double", 1e-3, -3, nan), row("b", "double", 1e-6, 5, nan),
+                           row("a", "quad", 1e-3, 700, nan)};
+  write_csv(rows, dir / "r.csv");
+  plot_overhead(rows, dir / "r.csv", dir / "with.png", "t");
+  CHECK(std::filesystem::file_size(dir / "with.png") > 0);
+  const std::string with = script(dir / "with.png");
+  CHECK(with.find("replayed") != std::string::npos);   // the second panel
+  CHECK(with.find("target 10 ns") != std::string::npos);
+  CHECK(with.find("$14") != std::string::npos);        // own_ns_per_rhs, CSV column 14
+  CHECK(with.find("set yrange [1:1000]") != std::string::npos);  // decades around 5..20 ns and the target, + 1
+  // Without replay rows: one panel, the subtraction measure only.
+  for (auto& r : rows) r.own_ns_per_rhs = nan;
+  write_csv(rows, dir / "r.csv");
+  plot_overhead(rows, dir / "r.csv", dir / "without.png", "t", 25.0);
+  const std::string without = script(dir / "without.png");
+  CHECK(without.find("replayed") == std::string::npos);
+  CHECK(without.find("target 25 ns") != std::string::npos);
+  // No double rows: refused, naming what is missing.
+  CHECK_THROWS_WITH(plot_overhead({rows.back()}, dir / "r.csv", dir / "none.png", "t"), Catch::Contains("double"));
+  CHECK_FALSE(std::filesystem::exists(dir / "none.png"));
+  std::filesystem::remove_all(dir);
+}
+
 TEST_CASE("bench: rough scene against the extended-precision F77 program (-freal-8-real-16)", "[bench][rough]") {
   const Scene sc = load_scene(std::string(NANOPUSH_SOURCE_DIR) + "/drivers/scenes/thesis/fig3_17.toml");
   bench::EngineConfig cfg;

@@ -1,6 +1,7 @@
 #include "nanopush/bench.hpp"
 
 #include <algorithm>
+#include <sstream>
 #include <functional>
 #include <cmath>
 #include <limits>
@@ -324,6 +325,69 @@ void plot_work_precision(const std::vector<Row>& rows, const std::filesystem::pa
     ++i;
   }
   fig.panels = {work, wall};
+  plot::render(fig, png);
+}
+
+void plot_overhead(const std::vector<Row>& rows, const std::filesystem::path& csv, const std::filesystem::path& png,
+                   const std::string& title, double target_ns) {
+  std::vector<std::string> engines;
+  bool alone = false;
+  for (const auto& r : rows)
+    if (r.precision == "double") {
+      if (std::find(engines.begin(), engines.end(), r.engine) == engines.end()) engines.push_back(r.engine);
+      alone = alone || std::isfinite(r.own_ns_per_rhs);
+    }
+  if (engines.empty()) throw InputError("overhead plot", "(rows)", "needs rows in double precision");
+  // One y range for both panels (so that they compare at a glance), in whole decades: from
+  // below the smaller of the target and the smallest value to a decade above the largest
+  // (room for the key).
+  double lo = target_ns, hi = target_ns;
+  for (const auto& r : rows)
+    if (r.precision == "double" && r.status == 0)
+      for (const double v : {r.overhead_ns_per_rhs, r.own_ns_per_rhs})
+        if (std::isfinite(v) && v > 0) {
+          lo = std::min(lo, v);
+          hi = std::max(hi, v);
+        }
+  const double ylo = std::pow(10.0, std::floor(std::log10(lo) - 1e-9)), yhi = std::pow(10.0, std::ceil(std::log10(hi)) + 1);
+  plot::Figure fig;
+  fig.title = gp_text(title);
+  fig.cols = alone ? 2 : 1;
+  fig.width = alone ? 1500 : 900;
+  fig.height = 650;
+  plot::Panel sub, own;
+  sub.title = "wall time minus as many bare RHS calls, per RHS call";
+  own.title = "the integrator alone: RHS values of the same solve replayed (--replay)";
+  for (auto* p : {&sub, &own}) {
+    p->xlabel = "rtol";
+    p->ylabel = "integrator overhead [ns per RHS evaluation]";
+    p->logx = p->logy = true;
+    // rtol decreases to the right, as the work-precision plots' error does to the left.
+    std::ostringstream ex;
+    ex << "set key top right font ',8'\nset format x '10^{%L}'\nset xrange [*:*] reverse\nset yrange [" << ylo
+       << ":" << yhi << "]\n"
+       << "set arrow from graph 0, first " << target_ns << " to graph 1, first " << target_ns
+       << " nohead dt 2 lw 1.5 lc rgb 'black'\nset label 'target " << target_ns << " ns' at graph 0.02, first "
+       << target_ns * 1.15 << " font ',9'";
+    p->extra = ex.str();
+  }
+  static const char* colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b", "#e377c2",
+                                  "#7f7f7f", "#bcbd22", "#17becf", "#000000", "#aec7e8", "#ffbb78", "#98df8a"};
+  std::size_t i = 0;
+  for (const auto& eng : engines) {
+    // Successful double rows; a non-positive value (a disturbed timing, or an RHS timed
+    // through another path, f77-native) has no place on a log axis.
+    const std::string filt = "(strcol(1) eq '" + eng + "' && strcol(2) eq 'double' && $12 == 0 && ";
+    const std::string style = std::string("linespoints lw 1.5 pt 7 ps 0.6 lc rgb '") + colours[i % 14] + "'";
+    sub.series.push_back({csv, "3", filt + "$10 > 0 ? $10 : 1/0)", gp_text(eng), style});
+    const bool has_own = std::any_of(rows.begin(), rows.end(), [&eng](const Row& r) {
+      return r.engine == eng && r.precision == "double" && std::isfinite(r.own_ns_per_rhs);
+    });
+    if (alone && has_own) own.series.push_back({csv, "3", filt + "$14 > 0 ? $14 : 1/0)", gp_text(eng), style});
+    ++i;
+  }
+  fig.panels = {sub};
+  if (alone) fig.panels.push_back(own);
   plot::render(fig, png);
 }
 

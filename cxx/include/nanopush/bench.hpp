@@ -182,4 +182,11 @@ void write_csv(const std::vector<Row>& rows, const std::filesystem::path& path);
 void plot_work_precision(const std::vector<Row>& rows, const std::filesystem::path& csv,
                          const std::filesystem::path& png, const std::string& title);
 
+/// Integrator overhead against rtol, log-log, one line per double-precision engine, with
+/// the target as a dashed line: the subtraction measure (overhead_ns_per_rhs) and, when
+/// any row has it, the replay measure (own_ns_per_rhs) beside it. Writes `png` and its
+/// gnuplot script; `csv` is the file write_csv() wrote the rows to.
+void plot_overhead(const std::vector<Row>& rows, const std::filesystem::path& csv, const std::filesystem::path& png,
+                   const std::string& title, double target_ns = 10.0);
+
 }  // namespace nanopush::bench
