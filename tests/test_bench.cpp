@@ -508,6 +508,7 @@ TEST_CASE("bench: the overhead plot, with and without the replay panel", "[bench
   CHECK(with.find("target 10 ns") != std::string::npos);
   CHECK(with.find("$14") != std::string::npos);        // own_ns_per_rhs, CSV column 14
   CHECK(with.find("set yrange [1:1000]") != std::string::npos);  // decades around 5..20 ns and the target, + 1
+  CHECK(with.find("set xrange [0.002:5e-07]") != std::string::npos);  // the double rows' rtol, decreasing
   // Without replay rows: one panel, the subtraction measure only.
   for (auto& r : rows) r.own_ns_per_rhs = nan;
   write_csv(rows, dir / "r.csv");

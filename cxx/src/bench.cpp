@@ -342,6 +342,13 @@ void plot_overhead(const std::vector<Row>& rows, const std::filesystem::path& cs
   // below the smaller of the target and the smallest value to a decade above the largest
   // (room for the key).
   double lo = target_ns, hi = target_ns;
+  // The double rows' rtol span (the CSV also holds long/quad rows down to 1e-28).
+  double rlo = std::numeric_limits<double>::infinity(), rhi = 0;
+  for (const auto& r : rows)
+    if (r.precision == "double" && r.rtol > 0) {
+      rlo = std::min(rlo, r.rtol);
+      rhi = std::max(rhi, r.rtol);
+    }
   for (const auto& r : rows)
     if (r.precision == "double" && r.status == 0)
       for (const double v : {r.overhead_ns_per_rhs, r.own_ns_per_rhs})
@@ -364,8 +371,8 @@ void plot_overhead(const std::vector<Row>& rows, const std::filesystem::path& cs
     p->logx = p->logy = true;
     // rtol decreases to the right, as the work-precision plots' error does to the left.
     std::ostringstream ex;
-    ex << "set key top right font ',8'\nset format x '10^{%L}'\nset xrange [*:*] reverse\nset yrange [" << ylo
-       << ":" << yhi << "]\n"
+    ex << "set key top right font ',8'\nset format x '10^{%L}'\nset xrange [" << rhi * 2 << ":" << rlo / 2
+       << "]\nset yrange [" << ylo << ":" << yhi << "]\n"
        << "set arrow from graph 0, first " << target_ns << " to graph 1, first " << target_ns
        << " nohead dt 2 lw 1.5 lc rgb 'black'\nset label 'target " << target_ns << " ns' at graph 0.02, first "
        << target_ns * 1.15 << " font ',9'";
