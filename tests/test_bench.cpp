@@ -429,7 +429,6 @@ TEST_CASE("bench: a replayed RHS reproduces every double engine's solve bit for 
 
 TEST_CASE("bench: the replay tape hands back values and statuses in order, and fails past its end", "[bench][replay]") {
   detail::RhsTape tape;
-  tape.n = 2;
   const auto rhs = [](double t, const double* y, double* d) {
     d[0] = y[1] + t;
     d[1] = -y[0];

@@ -1,8 +1,9 @@
 #include "nanopush/bench.hpp"
 
 #include <algorithm>
-#include <sstream>
+#include <array>
 #include <functional>
+#include <sstream>
 #include <cmath>
 #include <limits>
 
@@ -277,6 +278,10 @@ void write_csv(const std::vector<Row>& rows, const std::filesystem::path& path) 
 }
 
 namespace {
+/// One distinct colour per line of the benchmark figures (gnuplot's default cycle repeats after 8).
+constexpr std::array<const char*, 14> kColours = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd",
+                                                  "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22", "#17becf",
+                                                  "#000000", "#aec7e8", "#ffbb78", "#98df8a"};
 /// gnuplot enhanced text: a literal underscore.
 std::string gp_text(const std::string& s) {
   std::string r;
@@ -309,9 +314,7 @@ void plot_work_precision(const std::vector<Row>& rows, const std::filesystem::pa
     p->logx = p->logy = true;
     p->extra = "set key bottom left font ',8'\nset format y '10^{%L}'\nset format x '10^{%L}'";
   }
-  // One distinct colour and point type per line (gnuplot's default cycle repeats after 8).
-  static const char* colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b", "#e377c2",
-                                  "#7f7f7f", "#bcbd22", "#17becf", "#000000", "#aec7e8", "#ffbb78", "#98df8a"};
+  // One distinct point type per line, beside its colour.
   static const char* points[] = {"5", "7", "9", "11", "13", "4", "6", "8", "10", "12", "2", "3", "1", "14"};
   std::size_t i = 0;
   for (const auto& [eng, prec] : lines) {
@@ -319,7 +322,7 @@ void plot_work_precision(const std::vector<Row>& rows, const std::filesystem::pa
     const std::string y = filt + "$4 : 1/0)";
     const std::string label = prec == "double" ? eng : eng + " (" + prec + ")";
     const std::string style = std::string("linespoints lw 1.5 pt ") + points[i % 14] + " ps 0.8 lc rgb '" +
-                              colours[i % 14] + "'" + (prec == "double" ? "" : " dt 2");
+                              kColours[i % kColours.size()] + "'" + (prec == "double" ? "" : " dt 2");
     work.series.push_back({csv, "5", y, label, style});
     wall.series.push_back({csv, "($8*1e3)", y, label, style});
     ++i;
@@ -341,21 +344,22 @@ void plot_overhead(const std::vector<Row>& rows, const std::filesystem::path& cs
   // One y range for both panels (so that they compare at a glance), in whole decades: from
   // below the smaller of the target and the smallest value to a decade above the largest
   // (room for the key).
+  // The x range: the double rows' rtol span (the CSV also holds long/quad rows down to 1e-28).
   double lo = target_ns, hi = target_ns;
-  // The double rows' rtol span (the CSV also holds long/quad rows down to 1e-28).
   double rlo = std::numeric_limits<double>::infinity(), rhi = 0;
-  for (const auto& r : rows)
-    if (r.precision == "double" && r.rtol > 0) {
+  for (const auto& r : rows) {
+    if (r.precision != "double") continue;
+    if (r.rtol > 0) {
       rlo = std::min(rlo, r.rtol);
       rhi = std::max(rhi, r.rtol);
     }
-  for (const auto& r : rows)
-    if (r.precision == "double" && r.status == 0)
+    if (r.status == 0)
       for (const double v : {r.overhead_ns_per_rhs, r.own_ns_per_rhs})
         if (std::isfinite(v) && v > 0) {
           lo = std::min(lo, v);
           hi = std::max(hi, v);
         }
+  }
   const double ylo = std::pow(10.0, std::floor(std::log10(lo) - 1e-9)), yhi = std::pow(10.0, std::ceil(std::log10(hi)) + 1);
   plot::Figure fig;
   fig.title = gp_text(title);
@@ -378,14 +382,12 @@ void plot_overhead(const std::vector<Row>& rows, const std::filesystem::path& cs
        << target_ns * 1.15 << " font ',9'";
     p->extra = ex.str();
   }
-  static const char* colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b", "#e377c2",
-                                  "#7f7f7f", "#bcbd22", "#17becf", "#000000", "#aec7e8", "#ffbb78", "#98df8a"};
   std::size_t i = 0;
   for (const auto& eng : engines) {
     // Successful double rows; a non-positive value (a disturbed timing, or an RHS timed
     // through another path, f77-native) has no place on a log axis.
     const std::string filt = "(strcol(1) eq '" + eng + "' && strcol(2) eq 'double' && $12 == 0 && ";
-    const std::string style = std::string("linespoints lw 1.5 pt 7 ps 0.6 lc rgb '") + colours[i % 14] + "'";
+    const std::string style = std::string("linespoints lw 1.5 pt 7 ps 0.6 lc rgb '") + kColours[i % kColours.size()] + "'";
     sub.series.push_back({csv, "3", filt + "$10 > 0 ? $10 : 1/0)", gp_text(eng), style});
     const bool has_own = std::any_of(rows.begin(), rows.end(), [&eng](const Row& r) {
       return r.engine == eng && r.precision == "double" && std::isfinite(r.own_ns_per_rhs);

@@ -116,7 +116,6 @@ inline constexpr int kReplayExhausted = 98;
 
 /// The RHS values and statuses of one solve, in call order.
 struct RhsTape {
-  int n = 0;
   std::vector<double> values;  ///< n per call
   std::vector<int> status;     ///< one per call
   /// An RHS (double) that hands the recorded values and statuses back in order and ignores
@@ -200,7 +199,6 @@ std::function<std::function<double()>(double, const Solve&)> replay_of(std::shar
                                                                       SolveWith solve_with) {
   return [rhs, solve_with](double rtol, const Solve& first) -> std::function<double()> {
     auto tape = std::make_shared<detail::RhsTape>();
-    tape->n = N;
     if (first.nfcn > 0) {
       tape->values.reserve(static_cast<std::size_t>(first.nfcn) * N);
       tape->status.reserve(static_cast<std::size_t>(first.nfcn));
