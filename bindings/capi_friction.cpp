@@ -1,7 +1,7 @@
 // C API: friction resultant over a rectangular contact (bindings/nanopush.h) through the checked
-// entry points of cxx/include/nanopush/friction.hpp (bad input -> InputError -> status + message).
+// entry points of cxx/include/nanopush/models/friction.hpp (bad input -> InputError -> status + message).
 #include "capi_internal.hpp"
-#include "nanopush/friction.hpp"
+#include "nanopush/models/friction.hpp"
 
 using namespace nanopush::capi;
 

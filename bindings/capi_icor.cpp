@@ -1,10 +1,10 @@
-// C API: the iCOR toolkit (bindings/nanopush.h) over cxx/include/nanopush/icor.hpp. Every formula
+// C API: the iCOR toolkit (bindings/nanopush.h) over cxx/include/nanopush/models/icor.hpp. Every formula
 // is one line: evaluate (InputError on bad input -> status + message), then store the result.
 #include <limits>
 #include <string>
 
 #include "capi_internal.hpp"
-#include "nanopush/icor.hpp"
+#include "nanopush/models/icor.hpp"
 
 using namespace nanopush::capi;
 namespace icor = nanopush::icor;

@@ -5,7 +5,7 @@
 #include <span>
 
 #include "capi_internal.hpp"
-#include "nanopush/bulirsch_stoer.hpp"
+#include "nanopush/numerics/bulirsch_stoer.hpp"
 
 using namespace nanopush::capi;
 

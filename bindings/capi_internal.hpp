@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "nanopush.h"
-#include "nanopush/error.hpp"
-#include "nanopush/scene.hpp"
-#include "nanopush/simulate.hpp"
+#include "nanopush/numerics/error.hpp"
+#include "nanopush/scenes/scene.hpp"
+#include "nanopush/engines/engines.hpp"
 
 struct nanopush_error_s {
   int status = NANOPUSH_OK;

@@ -122,7 +122,7 @@ nanopush_trajectory nanopush_run_scene_precision(nanopush_error error, nanopush_
     rs.rtol = rtol;
     rs.atol = atol;
     auto t = std::make_unique<nanopush_trajectory_s>();
-    t->trajectory = nanopush::run_scene(scene->scene, rs);
+    t->trajectory = nanopush::run_engine(scene->scene, rs);
     out = t.release();
     return NANOPUSH_OK;
   });

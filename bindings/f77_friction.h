@@ -1,6 +1,6 @@
 /* nanopush: C view of the FORTRAN 77 rectangle friction wrench (fortran/rectfr.f, bridged by
  * bindings/f77_friction.f90). Same conventions and algorithm as nanopush::rectangle_friction_*
- * (cxx/include/nanopush/friction.hpp): body axes at the centre of mass, x' across the width,
+ * (cxx/include/nanopush/models/friction.hpp): body axes at the centre of mass, x' across the width,
  * y' along the length, iCOR at -R (cos alpha, sin alpha). SI units. Functions return 0 on
  * success and a positive status otherwise (wrench set to zero); they never stop the program.
  * Status: 1 a, 2 b not finite > 0; 3 aspect ratio min/max < 1e-12; 4 muN not finite >= 0;

@@ -5,8 +5,8 @@
 #include <string>
 
 #include "f77_icor.h"
-#include "nanopush/error.hpp"
-#include "nanopush/icor.hpp"
+#include "nanopush/numerics/error.hpp"
+#include "nanopush/models/icor.hpp"
 
 namespace nanopush::f77 {
 

@@ -10,18 +10,17 @@ include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
 # Installed include directories (the build-tree ones are BUILD_INTERFACE in each CMakeLists.txt).
-target_include_directories(nanopush_core PUBLIC $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
 target_include_directories(nanopush_bridge PUBLIC
   $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}/nanopush>
   $<INSTALL_INTERFACE:${NANOPUSH_INSTALL_MODDIR}>)
-set_target_properties(nanopush_core PROPERTIES EXPORT_NAME core)
 set_target_properties(nanopush_bridge PROPERTIES EXPORT_NAME bridge)
 set_target_properties(nanopush_f77 PROPERTIES EXPORT_NAME f77)
 # Linked PRIVATE by the static libraries, so it is exported as $<LINK_ONLY:...>: it gives
 # consumers nothing (no flags), but CMake needs it in the export set.
 set_target_properties(nanopush_warnings PROPERTIES EXPORT_NAME internal_warnings)
 
-install(TARGETS nanopush_core nanopush_bridge nanopush_f77 nanopush_capi nanopush_fortran nanopush_warnings
+install(TARGETS nanopush_numerics nanopush_models nanopush_scenes nanopush_core
+                nanopush_engines nanopush_outputs nanopush_bridge nanopush_f77 nanopush_capi nanopush_fortran nanopush_warnings
         EXPORT nanopushTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}

@@ -12,10 +12,10 @@
 #include <sstream>
 #include <thread>
 
-#include "nanopush/bench_scene.hpp"
-#include "nanopush/error.hpp"
-#include "nanopush/io.hpp"
-#include "nanopush/plot.hpp"
+#include "bench/bench_scene.hpp"
+#include "nanopush/numerics/error.hpp"
+#include "nanopush/outputs/io.hpp"
+#include "nanopush/outputs/plot.hpp"
 #include "registry.hpp"
 
 namespace nanopush::cli {

@@ -8,12 +8,12 @@
 #include <sstream>
 
 #include "f77_rolling.h"
-#include "nanopush/environment.hpp"
-#include "nanopush/error.hpp"
-#include "nanopush/io.hpp"
-#include "nanopush/plot.hpp"
-#include "nanopush/rolling.hpp"
-#include "nanopush/surface_forces.hpp"
+#include "nanopush/scenes/environment_toml.hpp"
+#include "nanopush/numerics/error.hpp"
+#include "nanopush/outputs/io.hpp"
+#include "nanopush/outputs/plot.hpp"
+#include "nanopush/models/rolling.hpp"
+#include "nanopush/models/surface_forces.hpp"
 #include "registry.hpp"
 
 namespace nanopush::cli {

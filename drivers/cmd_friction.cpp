@@ -14,11 +14,11 @@
 #include <vector>
 
 #include "f77_friction.h"
-#include "nanopush/error.hpp"
-#include "nanopush/friction.hpp"
-#include "nanopush/friction_cubature.hpp"
-#include "nanopush/io.hpp"
-#include "nanopush/plot.hpp"
+#include "nanopush/numerics/error.hpp"
+#include "nanopush/models/friction.hpp"
+#include "nanopush/models/friction_cubature.hpp"
+#include "nanopush/outputs/io.hpp"
+#include "nanopush/outputs/plot.hpp"
 #include "registry.hpp"
 
 namespace nanopush::cli {

@@ -9,10 +9,10 @@
 #include <iostream>
 #include <sstream>
 
-#include "nanopush/deck.hpp"
-#include "nanopush/error.hpp"
-#include "nanopush/io.hpp"
-#include "nanopush/simulate.hpp"
+#include "nanopush/scenes/deck.hpp"
+#include "nanopush/numerics/error.hpp"
+#include "nanopush/outputs/io.hpp"
+#include "nanopush/engines/engines.hpp"
 #include "registry.hpp"
 
 namespace nanopush::cli {
@@ -92,7 +92,7 @@ int legacy_cmd(const LegacyOptions& o) {
   rs.engine = "f77";
   rs.law = "thesis";
   rs.allow_partial = true;
-  const Trajectory tr = run_scene(sc, rs);
+  const Trajectory tr = run_engine(sc, rs);
   const std::size_t n = std::min(rows.size(), tr.rows.size());
   double dev = 0;
   for (std::size_t i = 0; i < n; ++i)

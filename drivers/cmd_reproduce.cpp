@@ -4,8 +4,8 @@
 #include <chrono>
 #include <iostream>
 
-#include "nanopush/error.hpp"
-#include "nanopush/io.hpp"
+#include "nanopush/numerics/error.hpp"
+#include "nanopush/outputs/io.hpp"
 #include "registry.hpp"
 
 namespace nanopush::cli {

@@ -6,10 +6,10 @@
 #include <iomanip>
 #include <sstream>
 
-#include "nanopush/error.hpp"
-#include "nanopush/io.hpp"
-#include "nanopush/plot.hpp"
-#include "nanopush/simulate.hpp"
+#include "nanopush/numerics/error.hpp"
+#include "nanopush/outputs/io.hpp"
+#include "nanopush/outputs/plot.hpp"
+#include "nanopush/engines/engines.hpp"
 #include "registry.hpp"
 
 namespace nanopush::cli {
@@ -122,8 +122,8 @@ void reproduce_rough(ReproduceContext& ctx) {
     // rtol = 1e-10 it is off by up to 1e-4 rad where BS is within 1e-9. The cross-check is
     // of the event logic, so CVODE runs 100 times tighter.
     co_v.rtol = sc.solver.rtol / 100;
-    const Trajectory tc = run_scene(sc, th_c), tf = run_scene(sc, th_f);
-    const Trajectory cc = run_scene(sc, co_c), cv = run_scene(sc, co_v);
+    const Trajectory tc = run_engine(sc, th_c), tf = run_engine(sc, th_f);
+    const Trajectory cc = run_engine(sc, co_c), cv = run_engine(sc, co_v);
     for (auto& [tr, tag] : {std::pair{&tc, "thesis_cxx"}, std::pair{&tf, "thesis_f77"}, std::pair{&cc, "coulomb_cxx"},
                             std::pair{&cv, "coulomb_cvode"}}) {
       const fs::path p = dir / (base + "_" + tag + ".csv");

@@ -6,8 +6,9 @@
 #include <iostream>
 #include <unistd.h>
 
-#include "nanopush/error.hpp"
-#include "nanopush/simulate.hpp"
+#include "nanopush/outputs/trajectory_csv.hpp"
+#include "nanopush/numerics/error.hpp"
+#include "nanopush/engines/engines.hpp"
 #include "registry.hpp"
 
 namespace nanopush::cli {
@@ -67,7 +68,7 @@ int run_cmd(const RunOptions& o) {
   rs.allow_partial = o.keep_partial;
   rs.progress = progress_printer(sc.name);
   const auto t0 = std::chrono::steady_clock::now();
-  const Trajectory tr = run_scene(sc, rs);
+  const Trajectory tr = run_engine(sc, rs);
   const double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::string out = o.out.empty() ? sc.name + "." + tr.engine_label + ".csv" : o.out;
   if (!tr.complete) {
@@ -118,7 +119,7 @@ int compare_cmd(const CompareOptions& o) {
               << " law; the engines are compared under the thesis law, the one both implement\n";
   a.rtol = b.rtol = o.rtol;
   a.atol = b.atol = o.atol;
-  const Trajectory ta = run_scene(sc, a), tb = run_scene(sc, b);
+  const Trajectory ta = run_engine(sc, a), tb = run_engine(sc, b);
   const double rtol = resolve_settings(sc, a).rtol;
   // Tolerance on the deviation, relative to each column's largest magnitude: the two
   // engines take the same steps in the faithful configuration, so they should agree far

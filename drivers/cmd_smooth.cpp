@@ -4,11 +4,12 @@
 #include <iomanip>
 #include <sstream>
 
-#include "nanopush/elliptic.hpp"
-#include "nanopush/error.hpp"
-#include "nanopush/io.hpp"
-#include "nanopush/plot.hpp"
-#include "nanopush/simulate.hpp"
+#include "nanopush/outputs/trajectory_csv.hpp"
+#include "nanopush/numerics/elliptic.hpp"
+#include "nanopush/numerics/error.hpp"
+#include "nanopush/outputs/io.hpp"
+#include "nanopush/outputs/plot.hpp"
+#include "nanopush/engines/engines.hpp"
 #include "registry.hpp"
 
 namespace nanopush::cli {
@@ -45,8 +46,8 @@ void reproduce_fig3_6(ReproduceContext& ctx) {
     cx.engine = "cxx";
     cx.method = "faithful";
     fo.engine = "f77";
-    const Trajectory tc = run_scene(sc, cx);
-    const Trajectory tf = run_scene(sc, fo);
+    const Trajectory tc = run_engine(sc, cx);
+    const Trajectory tf = run_engine(sc, fo);
     write_trajectory_csv(tc, dir / (sc.name + "_cxx.csv"));
     write_trajectory_csv(tf, dir / (sc.name + "_f77.csv"));
     ctx.produced(dir / (sc.name + "_cxx.csv"));

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <iostream>
 
-#include "nanopush/error.hpp"
+#include "nanopush/numerics/error.hpp"
 #include "registry.hpp"
 
 int main(int argc, char** argv) {

@@ -2,7 +2,7 @@
 
 #include <cstdlib>
 
-#include "nanopush/error.hpp"
+#include "nanopush/numerics/error.hpp"
 
 namespace nanopush::cli {
 

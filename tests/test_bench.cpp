@@ -10,10 +10,10 @@
 #include <set>
 #include <sstream>
 
-#include "nanopush/bench_scene.hpp"
-#include "nanopush/bench_suite.hpp"
-#include "nanopush/error.hpp"
-#include "nanopush/rigid_body.hpp"
+#include "bench/bench_scene.hpp"
+#include "bench/bench_suite.hpp"
+#include "nanopush/numerics/error.hpp"
+#include "nanopush/models/rigid_body.hpp"
 
 using namespace nanopush;
 using namespace nanopush::bench;

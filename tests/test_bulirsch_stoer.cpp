@@ -7,7 +7,7 @@
 #include <new>
 #include <vector>
 
-#include "nanopush/bulirsch_stoer.hpp"
+#include "nanopush/numerics/bulirsch_stoer.hpp"
 
 using namespace nanopush;
 

@@ -10,8 +10,8 @@
 #include <map>
 #include <vector>
 
-#include "nanopush/bulirsch_stoer.hpp"
-#include "nanopush/scalar.hpp"
+#include "nanopush/numerics/bulirsch_stoer.hpp"
+#include "nanopush/numerics/scalar.hpp"
 
 using namespace nanopush;
 

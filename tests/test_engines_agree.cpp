@@ -6,10 +6,10 @@
 #include <vector>
 
 #include "f77_bsint.h"
-#include "nanopush/bulirsch_stoer.hpp"
-#include "nanopush/elliptic.hpp"
-#include "nanopush/rigid_body.hpp"
-#include "nanopush/simulate.hpp"
+#include "nanopush/numerics/bulirsch_stoer.hpp"
+#include "nanopush/numerics/elliptic.hpp"
+#include "nanopush/models/rigid_body.hpp"
+#include "nanopush/engines/engines.hpp"
 
 using namespace nanopush;
 
@@ -106,7 +106,7 @@ TEST_CASE("Every Fig 3.6 preset: identical counts and theta to 1e-12, C++ faithf
     a.engine = "cxx";
     a.method = "faithful";
     b.engine = "f77";
-    const Trajectory ta = run_scene(sc, a), tb = run_scene(sc, b);
+    const Trajectory ta = run_engine(sc, a), tb = run_engine(sc, b);
     INFO("fig3_6" << c);
     CHECK(ta.stats.nfcn == tb.stats.nfcn);
     CHECK(ta.stats.naccpt == tb.stats.naccpt);
@@ -123,7 +123,7 @@ TEST_CASE("Fig 3.6, F77 engine: exact pendulum at rtol 1e-12", "[smooth][numeric
     const Scene sc = load_scene(std::string(NANOPUSH_SOURCE_DIR) + "/drivers/scenes/thesis/fig3_6" + c + ".toml");
     RunSettings b;
     b.engine = "f77";
-    const Trajectory tb = run_scene(sc, b);
+    const Trajectory tb = run_engine(sc, b);
     const Pendulum<double> ex(sc.push.theta_equilibrium(), sc.initial[kTheta], sc.push.force * sc.push.lever(),
                               sc.inertia);
     const double acc = sc.push.force / sc.mass;

@@ -7,8 +7,8 @@
 #include <limits>
 #include <string>
 
-#include "nanopush/error.hpp"
-#include "nanopush/surface_forces.hpp"
+#include "nanopush/numerics/error.hpp"
+#include "nanopush/models/surface_forces.hpp"
 
 using namespace nanopush;
 using namespace nanopush::forces;

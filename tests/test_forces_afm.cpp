@@ -4,8 +4,8 @@
 #include <cmath>
 #include <limits>
 
-#include "nanopush/afm_probe.hpp"
-#include "nanopush/error.hpp"
+#include "nanopush/models/afm_probe.hpp"
+#include "nanopush/numerics/error.hpp"
 
 using namespace nanopush;
 using namespace nanopush::afm;

@@ -6,9 +6,9 @@
 #include <limits>
 
 #include "f77_rolling.h"
-#include "nanopush/error.hpp"
-#include "nanopush/rolling.hpp"
-#include "nanopush/surface_forces.hpp"
+#include "nanopush/numerics/error.hpp"
+#include "nanopush/models/rolling.hpp"
+#include "nanopush/models/surface_forces.hpp"
 
 using namespace nanopush;
 

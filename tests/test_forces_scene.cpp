@@ -6,9 +6,9 @@
 #include <limits>
 #include <string>
 
-#include "nanopush/environment.hpp"
-#include "nanopush/error.hpp"
-#include "nanopush/surface_forces.hpp"
+#include "nanopush/scenes/environment_toml.hpp"
+#include "nanopush/numerics/error.hpp"
+#include "nanopush/models/surface_forces.hpp"
 
 using namespace nanopush;
 namespace nf = nanopush::forces;

@@ -8,10 +8,10 @@
 #include <random>
 #include <vector>
 
-#include "nanopush/cubature.hpp"
-#include "nanopush/error.hpp"
-#include "nanopush/friction.hpp"
-#include "nanopush/friction_cubature.hpp"
+#include "nanopush/numerics/cubature.hpp"
+#include "nanopush/numerics/error.hpp"
+#include "nanopush/models/friction.hpp"
+#include "nanopush/models/friction_cubature.hpp"
 
 using namespace nanopush;
 

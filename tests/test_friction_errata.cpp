@@ -5,8 +5,8 @@
 #include <cmath>
 #include <random>
 
-#include "nanopush/friction.hpp"
-#include "nanopush/friction_cubature.hpp"
+#include "nanopush/models/friction.hpp"
+#include "nanopush/models/friction_cubature.hpp"
 
 using namespace nanopush;
 

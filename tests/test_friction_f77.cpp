@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "f77_friction.h"
-#include "nanopush/friction.hpp"
+#include "nanopush/models/friction.hpp"
 
 using namespace nanopush;
 

@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "f77_icor.hpp"
-#include "nanopush/error.hpp"
-#include "nanopush/icor.hpp"
-#include "nanopush/roots.hpp"
+#include "nanopush/numerics/error.hpp"
+#include "nanopush/models/icor.hpp"
+#include "nanopush/numerics/roots.hpp"
 
 using namespace nanopush;
 using icor::CubicMethod;

@@ -5,10 +5,10 @@
 #include <cmath>
 #include <vector>
 
-#include "nanopush/error.hpp"
-#include "nanopush/friction_cubature.hpp"
-#include "nanopush/icor.hpp"
-#include "nanopush/icor_dynamic.hpp"
+#include "nanopush/numerics/error.hpp"
+#include "nanopush/models/friction_cubature.hpp"
+#include "nanopush/models/icor.hpp"
+#include "nanopush/models/icor_dynamic.hpp"
 
 using namespace nanopush;
 

@@ -6,11 +6,11 @@
 #include <cmath>
 #include <string>
 
-#include "nanopush/bulirsch_stoer.hpp"
-#include "nanopush/elliptic.hpp"
-#include "nanopush/error.hpp"
-#include "nanopush/rigid_body.hpp"
-#include "nanopush/simulate.hpp"
+#include "nanopush/numerics/bulirsch_stoer.hpp"
+#include "nanopush/numerics/elliptic.hpp"
+#include "nanopush/numerics/error.hpp"
+#include "nanopush/models/rigid_body.hpp"
+#include "nanopush/engines/engines.hpp"
 
 using namespace nanopush;
 using Catch::Matchers::Contains;
@@ -61,7 +61,7 @@ void check_rows_are_rounded(const Trajectory& tr, const std::string& precision) 
 
 TEST_CASE("precision quad: fig3_6a modern at rtol 1e-24 reaches 1e-20 in theta", "[precision][numeric]") {
   const Scene sc = load_scene(preset("fig3_6a"));
-  const Trajectory tr = run_scene(sc, settings("quad", "modern", 1e-24));
+  const Trajectory tr = run_engine(sc, settings("quad", "modern", 1e-24));
   check_rows_are_rounded(tr, "quad");
   CHECK(tr.engine_label == "cxx-modern-quad");
   const double e = theta_error(sc, tr);
@@ -90,7 +90,7 @@ TEST_CASE("precision long: rtol 1e-17 beats the floor of double", "[precision][n
   for (const char* method : {"faithful", "modern"})
     for (double rtol : {1e-10, 1e-11, 1e-12, 1e-13, 1e-14, 1e-15, 1e-16}) {
       if (std::string(method) == "modern" && rtol < 1e-15) continue;
-      const Trajectory tr = run_scene(sc, settings("double", method, rtol));
+      const Trajectory tr = run_engine(sc, settings("double", method, rtol));
       CHECK(tr.extended.empty());
       CHECK(tr.precision == "double");
       floor_double = std::min(floor_double, theta_error(sc, tr));
@@ -98,7 +98,7 @@ TEST_CASE("precision long: rtol 1e-17 beats the floor of double", "[precision][n
   INFO("double floor " << floor_double);
   CHECK(floor_double > 1e-15);  // it is a floor: double cannot resolve the last digits
   for (const char* method : {"faithful", "modern"}) {
-    const Trajectory tr = run_scene(sc, settings("long", method, 1e-17));
+    const Trajectory tr = run_engine(sc, settings("long", method, 1e-17));
     check_rows_are_rounded(tr, "long");
     const double e = theta_error(sc, tr), er = theta_error(sc, tr, true);
     INFO("long " << method << " rtol 1e-17: |dtheta| " << e << " (rows in double " << er << "), nfcn "
@@ -115,14 +115,14 @@ TEST_CASE("precision: the modern method refuses rtol below 4 eps of its precisio
           "[precision][input]") {
   const Scene sc = load_scene(preset("fig3_6a"));
   // double: 4 eps = 8.88e-16; the same rtol is fine in long double, and for the faithful method
-  CHECK_THROWS_AS(run_scene(sc, settings("double", "modern", 1e-16)), InputError);
-  CHECK_THROWS_WITH(run_scene(sc, settings("double", "modern", 1e-16)),
+  CHECK_THROWS_AS(run_engine(sc, settings("double", "modern", 1e-16)), InputError);
+  CHECK_THROWS_WITH(run_engine(sc, settings("double", "modern", 1e-16)),
                     Contains("rtol = 1e-16") && Contains("8.88e-16") && Contains("4 eps of double"));
-  CHECK_THROWS_WITH(run_scene(sc, settings("long", "modern", 1e-19)),
+  CHECK_THROWS_WITH(run_engine(sc, settings("long", "modern", 1e-19)),
                     Contains("rtol = 1e-19") && Contains("4 eps of long"));
-  CHECK_NOTHROW(run_scene(sc, settings("double", "modern", 1e-15)));
-  CHECK_NOTHROW(run_scene(sc, settings("long", "modern", 1e-16)));
-  CHECK_NOTHROW(run_scene(sc, settings("double", "faithful", 1e-16)));
+  CHECK_NOTHROW(run_engine(sc, settings("double", "modern", 1e-15)));
+  CHECK_NOTHROW(run_engine(sc, settings("long", "modern", 1e-16)));
+  CHECK_NOTHROW(run_engine(sc, settings("double", "faithful", 1e-16)));
   // the engine itself says the same when called directly (status bad_input, no steps taken)
   const std::vector<double> tout = {0.0, 1e-9};
   std::vector<double> y(sc.initial.begin(), sc.initial.end());
@@ -139,8 +139,8 @@ TEST_CASE("precision double is the default, and extended precision takes the sam
   const Scene sc = load_scene(preset("fig3_6a"));
   RunSettings def;  // default settings: double
   CHECK(def.precision == "double");
-  const Trajectory a = run_scene(sc, def);
-  const Trajectory b = run_scene(sc, settings("double", "faithful", 0));
+  const Trajectory a = run_engine(sc, def);
+  const Trajectory b = run_engine(sc, settings("double", "faithful", 0));
   CHECK(a.engine_label == "cxx-faithful");
   CHECK(a.precision == "double");
   CHECK(a.extended.empty());
@@ -148,7 +148,7 @@ TEST_CASE("precision double is the default, and extended precision takes the sam
   for (std::size_t i = 0; i < a.rows.size(); ++i) CHECK(a.rows[i] == b.rows[i]);
   // At the scene's rtol 1e-12 the error estimates lie far above the rounding of either
   // scalar: the same steps (same counts), other digits.
-  const Trajectory q = run_scene(sc, settings("quad", "faithful", 0));
+  const Trajectory q = run_engine(sc, settings("quad", "faithful", 0));
   CHECK(q.engine_label == "cxx-faithful-quad");
   CHECK(q.stats.nfcn == a.stats.nfcn);
   CHECK(q.stats.naccpt == a.stats.naccpt);
@@ -160,20 +160,20 @@ TEST_CASE("precision other than double is refused where the RHS is double only",
   RunSettings rs;
   rs.precision = "quad";
   rs.engine = "f77";
-  CHECK_THROWS_AS(run_scene(smooth, rs), InputError);
-  CHECK_THROWS_WITH(run_scene(smooth, rs), Contains("precision = quad") && Contains("engine = cxx") &&
+  CHECK_THROWS_AS(run_engine(smooth, rs), InputError);
+  CHECK_THROWS_WITH(run_engine(smooth, rs), Contains("precision = quad") && Contains("engine = cxx") &&
                                                Contains("F77"));
   rs.engine = "cxx";
   rs.precision = "long";
-  CHECK_THROWS_AS(run_scene(rough, rs), InputError);
-  CHECK_THROWS_WITH(run_scene(rough, rs), Contains("precision = long") && Contains("smooth scene"));
+  CHECK_THROWS_AS(run_engine(rough, rs), InputError);
+  CHECK_THROWS_WITH(run_engine(rough, rs), Contains("precision = long") && Contains("smooth scene"));
   rs.law = "coulomb";
   rs.method = "cvode";
-  CHECK_THROWS_WITH(run_scene(rough, rs), Contains("precision = long") && Contains("smooth scene"));
+  CHECK_THROWS_WITH(run_engine(rough, rs), Contains("precision = long") && Contains("smooth scene"));
   RunSettings bad;
   bad.precision = "bogus";
-  CHECK_THROWS_AS(run_scene(smooth, bad), InputError);
-  CHECK_THROWS_WITH(run_scene(smooth, bad), Contains("precision = bogus") && Contains("must be double, long or quad"));
+  CHECK_THROWS_AS(run_engine(smooth, bad), InputError);
+  CHECK_THROWS_WITH(run_engine(smooth, bad), Contains("precision = bogus") && Contains("must be double, long or quad"));
   try {
     (void)resolve_settings(smooth, bad);
     FAIL("no InputError");
@@ -216,12 +216,12 @@ samples = 5
   // "" takes the scene's precision; the settings' value overrides it.
   RunSettings from_scene;
   from_scene.precision = "";
-  const Trajectory tl = run_scene(sc, from_scene);
+  const Trajectory tl = run_engine(sc, from_scene);
   CHECK(tl.precision == "long");
   CHECK(tl.engine_label == "cxx-faithful-long");
-  CHECK(run_scene(sc, RunSettings{}).precision == "double");
+  CHECK(run_engine(sc, RunSettings{}).precision == "double");
   // A scene's extended precision with the F77 engine asked on the command line: the error
   // names the scene's key.
   from_scene.engine = "f77";
-  CHECK_THROWS_WITH(run_scene(sc, from_scene), Contains("solver.precision = long"));
+  CHECK_THROWS_WITH(run_engine(sc, from_scene), Contains("solver.precision = long"));
 }

@@ -4,11 +4,11 @@
 #include <cmath>
 #include <string>
 
-#include "nanopush/elliptic.hpp"
-#include "nanopush/environment.hpp"
-#include "nanopush/error.hpp"
-#include "nanopush/simulate.hpp"
-#include "nanopush/stick_slip.hpp"
+#include "nanopush/numerics/elliptic.hpp"
+#include "nanopush/models/environment.hpp"
+#include "nanopush/numerics/error.hpp"
+#include "nanopush/engines/engines.hpp"
+#include "nanopush/models/stick_slip.hpp"
 
 using namespace nanopush;
 using Catch::Matchers::Contains;
@@ -64,7 +64,7 @@ TEST_CASE("mu = 0 reproduces the smooth-surface solution", "[rough][numeric]") {
   rs.rtol = 1e-12;
   for (const char* law : {"thesis", "coulomb"}) {
     rs.law = law;
-    const Trajectory tr = run_scene(sc, rs);
+    const Trajectory tr = run_engine(sc, rs);
     const Pendulum<double> ex(sc.push.theta_equilibrium(), 0.0, sc.push.force * sc.push.lever(), sc.inertia);
     double e = 0;
     for (const auto& r : tr.rows) {
@@ -80,7 +80,7 @@ TEST_CASE("mu = 0 reproduces the smooth-surface solution", "[rough][numeric]") {
 TEST_CASE("Energy balance and dissipation on every thesis-law run that does not chatter", "[rough][numeric]") {
   for (int fig = 12; fig <= 24; ++fig) {  // mu = 0 ... 0.12 < F/N = 0.1249
     const Scene sc = preset(fig);
-    const Trajectory tr = run_scene(sc);
+    const Trajectory tr = run_engine(sc);
     const Balance b = balance(sc, tr);
     INFO("fig3_" << fig << " energy " << b.energy_rel << " power " << b.power_max << " |f|/muN " << b.f_over_muN
                  << " nfcn " << tr.stats.nfcn);
@@ -93,12 +93,12 @@ TEST_CASE("Energy balance and dissipation on every thesis-law run that does not 
 TEST_CASE("Coulomb law: energy balance, dissipation, no chattering, exact rest", "[rough][numeric][coulomb]") {
   RunSettings rs;
   rs.law = "coulomb";
-  const Trajectory ref = run_scene(preset(17), rs);  // mu = 0.05
+  const Trajectory ref = run_engine(preset(17), rs);  // mu = 0.05
   const long n_ref = static_cast<long>(ref.stats.nfcn);
   for (double mu : {0.05, 0.10, 0.13, 0.15, 0.20, 0.5, 1.0}) {
     Scene sc = preset(12);
     sc.surface.mu = mu;
-    const Trajectory tr = run_scene(sc, rs);
+    const Trajectory tr = run_engine(sc, rs);
     const Balance b = balance(sc, tr);
     INFO("mu " << mu << " nfcn " << tr.stats.nfcn << " (mu 0.05: " << n_ref << ") events " << tr.events.size()
                << " energy " << b.energy_rel << " power " << b.power_max);
@@ -130,7 +130,7 @@ TEST_CASE("Coulomb law: the CVODE cross-check agrees to 1e-8", "[rough][coulomb]
     a.rtol = 1e-10;
     b.rtol = 1e-12;
     b.method = "cvode";
-    const Trajectory ta = run_scene(sc, a), tb = run_scene(sc, b);
+    const Trajectory ta = run_engine(sc, a), tb = run_engine(sc, b);
     REQUIRE(ta.rows.size() == tb.rows.size());
     // theta in rad; x relative to its largest value over the run (x reaches 100 L here).
     double dth = 0, dx = 0, xmax = 0;
@@ -228,7 +228,7 @@ TEST_CASE("Thesis law: C++ faithful and F77 agree to 1e-9 in theta wherever it d
     RunSettings a, b;
     a.engine = "cxx";
     b.engine = "f77";
-    const Trajectory ta = run_scene(sc, a), tb = run_scene(sc, b);
+    const Trajectory ta = run_engine(sc, a), tb = run_engine(sc, b);
     REQUIRE(ta.rows.size() == tb.rows.size());
     double d = 0;
     for (std::size_t i = 0; i < ta.rows.size(); ++i) d = std::max(d, std::fabs(ta.rows[i][3] - tb.rows[i][3]));
@@ -240,7 +240,7 @@ TEST_CASE("Thesis law: C++ faithful and F77 agree to 1e-9 in theta wherever it d
   RunSettings a, b;
   a.allow_partial = b.allow_partial = true;
   b.engine = "f77";
-  const Trajectory ta = run_scene(preset(27), a), tb = run_scene(preset(27), b);
+  const Trajectory ta = run_engine(preset(27), a), tb = run_engine(preset(27), b);
   CHECK_FALSE(ta.complete);
   CHECK_FALSE(tb.complete);
   CHECK(ta.rows.size() == tb.rows.size());
@@ -263,7 +263,7 @@ TEST_CASE("A rough scene with [environment] and [body] takes its normal load fro
   CHECK(sc.normal_load() == rep.sliding_load);
   CHECK_THAT(sc.load_report, Contains("capillary") && Contains("van_der_waals") && Contains("gravity"));
   RunSettings rs;
-  const Trajectory tr = run_scene(sc, rs);
+  const Trajectory tr = run_engine(sc, rs);
   CHECK(tr.complete);
   const std::string base = R"(
 [object]

@@ -3,8 +3,8 @@
 
 #include <string>
 
-#include "nanopush/error.hpp"
-#include "nanopush/scene.hpp"
+#include "nanopush/numerics/error.hpp"
+#include "nanopush/scenes/scene.hpp"
 
 using namespace nanopush;
 using Catch::Matchers::Contains;

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <string>
 
-#include "nanopush/elliptic.hpp"
-#include "nanopush/simulate.hpp"
+#include "nanopush/numerics/elliptic.hpp"
+#include "nanopush/scenes/simulate.hpp"
 
 using namespace nanopush;
 

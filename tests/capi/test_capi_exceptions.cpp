@@ -8,7 +8,7 @@
 #include <string>
 
 #include "nanopush.h"
-#include "nanopush/error.hpp"
+#include "nanopush/numerics/error.hpp"
 
 namespace {
 

@@ -15,9 +15,9 @@
 #include <vector>
 
 #include "nanopush.h"
-#include "nanopush/friction.hpp"
-#include "nanopush/icor.hpp"
-#include "nanopush/io.hpp"
+#include "nanopush/models/friction.hpp"
+#include "nanopush/models/icor.hpp"
+#include "nanopush/outputs/io.hpp"
 
 namespace {
 

@@ -55,7 +55,7 @@ add_test(NAME capi.exceptions_caught COMMAND capi_test_exceptions)
 # message (capi.friction_icor_c); C and Fortran give the numbers of `nanopush icor formulas`,
 # `nanopush icor roots` and `nanopush friction` (capi.friction_icor_cli).
 add_executable(capi_test_friction_icor ${_capi_dir}/test_capi_friction_icor.cpp)
-target_link_libraries(capi_test_friction_icor PRIVATE nanopush_capi nanopush_warnings)
+target_link_libraries(capi_test_friction_icor PRIVATE nanopush_capi nanopush_outputs nanopush_warnings)
 add_test(NAME capi.friction_icor_c COMMAND capi_test_friction_icor)
 add_executable(capi_test_friction_icor_fortran ${_capi_dir}/test_fortran_friction_icor.f90)
 target_link_libraries(capi_test_friction_icor_fortran PRIVATE nanopush_fortran nanopush_warnings)

@@ -12,9 +12,9 @@
 #include <string>
 
 #include <nanopush.h>
-#include <nanopush/error.hpp>
-#include <nanopush/friction.hpp>
-#include <nanopush/simulate.hpp>
+#include <nanopush/numerics/error.hpp>
+#include <nanopush/models/friction.hpp>
+#include <nanopush/engines/engines.hpp>
 
 namespace {
 int friction(int sense) {
@@ -54,7 +54,7 @@ int main(int argc, char** argv) {
     const nanopush::Scene scene = nanopush::load_scene(argv[1]);
     nanopush::RunSettings settings;
     settings.engine = argc > 2 ? argv[2] : "";
-    const nanopush::Trajectory tr = nanopush::run_scene(scene, settings);
+    const nanopush::Trajectory tr = nanopush::run_engine(scene, settings);
     std::cout << "t,x,y,theta,vx,vy,omega,fx,fy,mf\n" << std::setprecision(17);
     for (const auto& r : tr.rows) {
       for (std::size_t i = 0; i < r.size(); ++i) std::cout << (i ? "," : "") << r[i];

@@ -1,0 +1,78 @@
+// The F77 engine (BSINT through the bind(C) bridge) and the choice between engines.
+#include "nanopush/engines/engines.hpp"
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "f77_bsint.h"
+#include "f77_rough.h"
+#include "nanopush/models/rigid_body.hpp"
+#include "nanopush/models/rough_bar.hpp"
+
+namespace nanopush {
+
+Trajectory run_f77(const Scene& sc, const RunSettings& s) {
+  Trajectory tr;
+  tr.engine_label = sc.rough() ? "f77-thesis" : "f77";
+  const int n = sc.rough() ? kRoughStateSize : kStateSize;
+  tr.rtol = s.rtol;
+  tr.atol = sc.atol_vector(s.rtol, s.atol, n);
+  const auto tout = sc.output_times();
+  std::vector<double> yout(tout.size() * static_cast<std::size_t>(n));
+  std::vector<double> y(static_cast<std::size_t>(n), 0.0);
+  std::copy(sc.initial.begin(), sc.initial.end(), y.begin());
+  int nstat[3] = {0, 0, 0};
+  int st;
+  const int maxstp = static_cast<int>(std::min<long>(sc.solver.max_steps, 2000000000L));
+  if (sc.rough()) {
+    const double params[12] = {sc.mass,       sc.inertia,    sc.push.force, sc.push.beta,
+                               sc.push.pbx,   sc.push.pby,   sc.geometry.a, sc.geometry.b,
+                               sc.surface.mu * sc.normal_load(), 0.0, 0.0, 0.0};
+    st = np_f77_bsint_rough_bar(n, 0.0, y.data(), static_cast<int>(tout.size()), tout.data(), yout.data(), s.rtol,
+                                tr.atol.data(), sc.solver.h0, sc.solver.hmax, 8, 1, maxstp, params, nstat);
+  } else {
+    const double params[6] = {sc.mass, sc.inertia, sc.push.force, sc.push.beta, sc.push.pbx, sc.push.pby};
+    st = np_f77_bsint_smooth_bar(n, 0.0, y.data(), static_cast<int>(tout.size()), tout.data(), yout.data(), s.rtol,
+                                 tr.atol.data(), sc.solver.h0, sc.solver.hmax, 8, 1, maxstp, params, nstat);
+  }
+  tr.stats.status = static_cast<BsStatus>(st);
+  tr.stats.nfcn = nstat[0];
+  tr.stats.naccpt = nstat[1];
+  tr.stats.nrejct = nstat[2];
+  const RoughBarModel model = rough_model(sc);
+  // Outputs reached: on failure BSINT leaves later columns untouched; y holds the state at the
+  // last output reached, so count the columns by comparing times reached.
+  std::size_t reached = tout.size();
+  if (st != 0) {
+    tr.stats.message = std::string("F77 BSINT returned status ") + std::to_string(st) + " (" +
+                       to_string(static_cast<BsStatus>(st)) + ")";
+    reached = 0;
+    for (std::size_t i = 0; i < tout.size(); ++i) {
+      bool same = true;
+      for (int c = 0; c < n; ++c) same = same && yout[i * static_cast<std::size_t>(n) + static_cast<std::size_t>(c)] == y[static_cast<std::size_t>(c)];
+      if (same) reached = i + 1;
+    }
+  }
+  for (std::size_t i = 0; i < reached; ++i) {
+    const double* yy = &yout[i * static_cast<std::size_t>(n)];
+    if (sc.rough()) {
+      tr.rows.push_back(make_row(tout[i], yy, model.friction(yy[kTheta], yy[kVx], yy[kVy], yy[kOmega])));
+      tr.work_push.push_back(yy[kWorkPush]);
+      tr.work_fric.push_back(yy[kWorkFric]);
+    } else {
+      tr.rows.push_back(make_row(tout[i], yy));
+    }
+  }
+  if (!tr.rows.empty()) tr.stats.t_reached = tr.rows.back()[0];
+  if (s.progress) s.progress(1.0);
+  return tr;
+}
+
+Trajectory run_engine(const Scene& scene, const RunSettings& settings) {
+  const RunSettings s = resolve_settings(scene, settings);
+  if (s.engine != "f77") return run_scene(scene, s);
+  return finish_run(scene, s, run_f77(scene, s));
+}
+
+}  // namespace nanopush

@@ -1,0 +1,17 @@
+// The engines layer: a scene run by either engine, the C++ solver or the FORTRAN 77
+// reproduction, side by side. The only C++ of the library that knows the F77 code.
+#pragma once
+#include "nanopush/scenes/scene.hpp"
+#include "nanopush/scenes/simulate.hpp"
+
+namespace nanopush {
+
+/// Integrate the scene with the engine `settings.engine` names (cxx | f77; "" = the scene's
+/// solver.engine). Same contract as run_scene: SolverError on failure (unless allow_partial),
+/// InputError for bad settings.
+Trajectory run_engine(const Scene& scene, const RunSettings& settings = {});
+
+/// The F77 engine alone (BSINT with the F77 right-hand sides); `resolved` from resolve_settings.
+Trajectory run_f77(const Scene& scene, const RunSettings& resolved);
+
+}  // namespace nanopush

@@ -1,0 +1,93 @@
+// Rough-surface sliding of the nanobar (models.md §C; thesis eqs 3.51–3.56 with errata 1–3):
+// the smooth-surface equations plus the Coulomb friction resultant over the contact
+// rectangle (friction.hpp), evaluated at the iCOR implied by the rigid velocity and rotated
+// to world axes.
+//
+// State (8 components): x, y, theta, vx, vy, omega (world axes, SI) and two work
+// accumulators: W_push = ∫ (F·v + tau omega) dt and W_fric = ∫ (f·v + mf omega) dt [J], so
+// that the energy balance  ΔKE = W_push + W_fric  is checked on every run.
+#pragma once
+#include <array>
+#include <cmath>
+
+#include "nanopush/models/friction.hpp"
+#include "nanopush/models/rigid_body.hpp"
+
+namespace nanopush {
+
+inline constexpr int kWorkPush = 6, kWorkFric = 7, kRoughStateSize = 8;
+
+/// Friction wrench in world axes (fx, fy) [N] and mf [N m].
+struct WorldWrench {
+  double fx = 0, fy = 0, mf = 0;
+};
+
+struct RoughBarModel {
+  double mass = 0, inertia = 0;
+  BarGeometry geometry;  ///< contact half-width a and half-length b
+  double muN = 0;        ///< mu (m g + F_vdw) [N]
+  Push push;
+  /// World velocity direction (vx, vy, omega) whose friction acts when the body is exactly at
+  /// rest; all zero (the thesis law) gives no friction at rest, where eq 3.40 has no direction.
+  std::array<double, 3> rest_direction{0.0, 0.0, 0.0};
+
+  /// Friction from the world velocity (vx, vy) and omega at orientation theta: body-axis
+  /// velocity v' = R(-theta) v, friction wrench at the implied iCOR, rotated back
+  /// (erratum 3: fy = fx' sin theta + fy' cos theta).
+  [[nodiscard]] WorldWrench friction(double theta, double vx, double vy, double omega) const noexcept {
+    if (muN == 0.0) return {};
+    return friction_cs(std::cos(theta), std::sin(theta), vx, vy, omega);
+  }
+  /// The same from c = cos(theta), s = sin(theta) (computed once per RHS evaluation).
+  [[nodiscard]] WorldWrench friction_cs(double c, double s, double vx, double vy, double omega) const noexcept {
+    if (muN == 0.0) return {};
+    const double vbx = c * vx + s * vy, vby = -s * vx + c * vy;
+    const FrictionWrench fb = rectangle_friction_from_velocity(geometry.a, geometry.b, muN, vbx, vby, omega);
+    return {c * fb.fx - s * fb.fy, s * fb.fx + c * fb.fy, fb.mf};
+  }
+
+  /// Applied push wrench in world axes at orientation theta.
+  [[nodiscard]] WorldWrench applied(double theta) const noexcept {
+    return applied_cs(std::cos(theta), std::sin(theta));
+  }
+  [[nodiscard]] WorldWrench applied_cs(double c, double s) const noexcept {
+    return {push.force * std::cos(push.beta), push.force * std::sin(push.beta), push.torque_cs(c, s)};
+  }
+
+  /// Right-hand side with a given friction wrench (shared by every friction law).
+  static void rhs_with(const RoughBarModel& m, const double* y, const WorldWrench& ap, const WorldWrench& fr,
+                       double* d) noexcept {
+    d[kX] = y[kVx];
+    d[kY] = y[kVy];
+    d[kTheta] = y[kOmega];
+    d[kVx] = (ap.fx + fr.fx) / m.mass;
+    d[kVy] = (ap.fy + fr.fy) / m.mass;
+    d[kOmega] = (ap.mf + fr.mf) / m.inertia;
+    d[kWorkPush] = ap.fx * y[kVx] + ap.fy * y[kVy] + ap.mf * y[kOmega];
+    d[kWorkFric] = fr.fx * y[kVx] + fr.fy * y[kVy] + fr.mf * y[kOmega];
+  }
+
+  [[nodiscard]] double kinetic_energy(const double* y) const noexcept {
+    return 0.5 * mass * (y[kVx] * y[kVx] + y[kVy] * y[kVy]) + 0.5 * inertia * y[kOmega] * y[kOmega];
+  }
+};
+
+/// The `thesis` friction law: friction at the iCOR implied by the velocity with the sense of
+/// rotation sign(theta-dot) (eq 3.40), integrated as one smooth ODE. Where the velocity
+/// passes through zero the friction direction flips discontinuously: the integrator
+/// chatters there (that is the point of keeping this law: the original runs).
+struct RoughBarThesisRhs {
+  RoughBarModel model;
+  int operator()(double, const double* y, double* d) const noexcept {
+    const double c = std::cos(y[kTheta]), s = std::sin(y[kTheta]);
+    const WorldWrench ap = model.applied_cs(c, s);
+    const bool at_rest = y[kVx] == 0.0 && y[kVy] == 0.0 && y[kOmega] == 0.0;
+    const WorldWrench fr =
+        at_rest ? model.friction_cs(c, s, model.rest_direction[0], model.rest_direction[1], model.rest_direction[2])
+                : model.friction_cs(c, s, y[kVx], y[kVy], y[kOmega]);
+    RoughBarModel::rhs_with(model, y, ap, fr, d);
+    return 0;
+  }
+};
+
+}  // namespace nanopush

@@ -1,0 +1,98 @@
+// Checked entry points and the thesis' printed forms for the friction wrench (friction.hpp).
+#include "nanopush/models/friction.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "nanopush/numerics/error.hpp"
+
+namespace nanopush {
+
+namespace {
+
+void check_rectangle(double a, double b) {
+  require_positive("a", a, "m, half-width along body x'");
+  require_positive("b", b, "m, half-length along body y'");
+  const double lo = a < b ? a : b, hi = a < b ? b : a;
+  if (!(lo / hi >= kFrictionMinAspect))
+    throw InputError("b/a", fmt(b / a),
+                     "aspect ratio must be in [" + fmt(kFrictionMinAspect) + ", " + fmt(1.0 / kFrictionMinAspect) + "]");
+}
+
+void check_muN(double muN) { require_nonnegative("muN", muN, "N, friction coefficient times normal load"); }
+
+}  // namespace
+
+FrictionWrench rectangle_friction_wrench_checked(double a, double b, double muN, double R, double alpha,
+                                                 int sense) {
+  check_rectangle(a, b);
+  check_muN(muN);
+  require_nonnegative("R", R, "m, distance from the iCOR to the centre of mass");
+  require_finite("alpha", alpha, "rad");
+  if (sense != 1 && sense != -1)
+    throw InputError("sense", std::to_string(sense), "must be +1 (counter-clockwise) or -1 (clockwise)");
+  return rectangle_friction_wrench(a, b, muN, R, alpha, sense);
+}
+
+FrictionWrench rectangle_friction_translation_checked(double muN, double vx, double vy) {
+  check_muN(muN);
+  require_finite("vx", vx, "m/s");
+  require_finite("vy", vy, "m/s");
+  return rectangle_friction_translation(muN, vx, vy);
+}
+
+FrictionWrench rectangle_friction_from_velocity_checked(double a, double b, double muN, double vx, double vy,
+                                                        double omega) {
+  check_rectangle(a, b);
+  check_muN(muN);
+  require_finite("vx", vx, "m/s");
+  require_finite("vy", vy, "m/s");
+  require_finite("omega", omega, "rad/s");
+  return rectangle_friction_from_velocity(a, b, muN, vx, vy, omega);
+}
+
+int rectangle_friction_form(double a, double b, double R) {
+  const double L = a > b ? a : b;
+  const double rho = R / L;
+  if (!(rho < kFrictionAsymptotic)) return 5;
+  if (rho < kFrictionFarField) return 0;
+  if (rho < kFrictionGl8From) return 1;
+  if (rho < kFrictionGl6From) return 2;
+  return rho < kFrictionGl4From ? 3 : 4;
+}
+
+namespace {
+
+/// The thesis' closed forms (3.45)-(3.48) with muN = 1. corrected = false: literally as printed
+/// (sign(theta-dot) = +1). corrected = true: fy' with the sign of (3.43), C4 with cubes as in
+/// (B.37), and mf multiplied by sign(theta-dot) = sense (docs/errata.md).
+FrictionWrench thesis_form(double a, double b, double R, double alpha, bool corrected, int sense) {
+  const double h1 = R * std::sin(alpha) - b, h2 = R * std::cos(alpha) + a;
+  const double h3 = R * std::sin(alpha) + b, h4 = R * std::cos(alpha) - a;
+  const auto sq = [](double u, double v) { return std::sqrt(u * u + v * v); };
+  const double s12 = sq(h1, h2), s23 = sq(h2, h3), s34 = sq(h3, h4), s14 = sq(h1, h4);
+  const double b45 = h2 * (s23 - s12) + h4 * (s14 - s34) - h1 * h1 * std::log((s14 - h4) / (s12 - h2)) +
+                     h3 * h3 * std::log((s34 - h4) / (s23 - h2));
+  const double b46 = h1 * (s14 - s12) + h3 * (s23 - s34) + h2 * h2 * std::log((s23 + h3) / (s12 + h1)) -
+                     h4 * h4 * std::log((s34 + h3) / (s14 + h1));
+  const double c1 = b46, c2 = b45;
+  const double c3 = -h1 * h2 * s12 + h2 * h3 * s23 - h3 * h4 * s34 + h1 * h4 * s14;
+  const auto p = [corrected](double h) { return corrected ? h * h * h : h * h; };
+  const double c4 = p(h1) * std::log((s12 - h2) / (s14 - h4)) + p(h2) * std::log((s23 + h3) / (s12 + h1)) +
+                    p(h3) * std::log((s34 - h4) / (s23 - h2)) + p(h4) * std::log((s14 + h1) / (s34 + h3));
+  const double ab = a * b, sg = corrected ? (sense < 0 ? -1.0 : 1.0) : 1.0;
+  const double mf = (R * std::cos(alpha) * c1 / 2.0 + R * std::sin(alpha) * c2 / 2.0 - c3 / 3.0 - c4 / 6.0) / (4.0 * ab);
+  return {sg * b45 / (8.0 * ab), (corrected ? -sg : 1.0) * b46 / (8.0 * ab), sg * mf};
+}
+
+}  // namespace
+
+FrictionWrench thesis_printed_friction(double a, double b, double R, double alpha) {
+  return thesis_form(a, b, R, alpha, false, 1);
+}
+
+FrictionWrench thesis_corrected_friction(double a, double b, double R, double alpha, int sense) {
+  return thesis_form(a, b, R, alpha, true, sense);
+}
+
+}  // namespace nanopush

@@ -1,0 +1,362 @@
+#include "nanopush/models/stick_slip.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "nanopush/numerics/error.hpp"
+
+namespace nanopush {
+namespace {
+
+double length_scale(const RoughBarModel& m) { return std::max(m.geometry.a, m.geometry.b); }
+
+/// h(ξ) = w·ξ − D̃(ξ) in the mass-scaled velocity space u = M^{1/2} V, for unit ξ, and its
+/// gradient w + F̃(ξ) (F̃ = M^{-1/2} × friction wrench of the direction M^{-1/2} ξ).
+struct PowerMargin {
+  const RoughBarModel& m;
+  double theta;
+  std::array<double, 3> w;  // M^{-1/2} W_applied
+  double sm, si;            // sqrt(m), sqrt(I)
+  mutable std::int64_t calls = 0;
+  double eval(const std::array<double, 3>& xi, std::array<double, 3>* grad) const {
+    ++calls;
+    const WorldWrench f = m.friction(theta, xi[0] / sm, xi[1] / sm, xi[2] / si);
+    const std::array<double, 3> ft = {f.fx / sm, f.fy / sm, f.mf / si};
+    if (grad) *grad = {w[0] + ft[0], w[1] + ft[1], w[2] + ft[2]};
+    return (w[0] + ft[0]) * xi[0] + (w[1] + ft[1]) * xi[1] + (w[2] + ft[2]) * xi[2];
+  }
+};
+
+std::array<double, 3> normalised(std::array<double, 3> v) {
+  const double n = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  return {v[0] / n, v[1] / n, v[2] / n};
+}
+
+}  // namespace
+
+RestAnalysis analyse_rest(const RoughBarModel& model, double theta) {
+  RestAnalysis r;
+  const WorldWrench ap = model.applied(theta);
+  const double sm = std::sqrt(model.mass), si = std::sqrt(model.inertia);
+  PowerMargin pm{model, theta, {ap.fx / sm, ap.fy / sm, ap.mf / si}, sm, si};
+  const double wn = std::sqrt(pm.w[0] * pm.w[0] + pm.w[1] * pm.w[1] + pm.w[2] * pm.w[2]);
+  if (wn == 0.0) return r;  // nothing pushes: stuck
+  if (model.muN == 0.0) {   // frictionless: A = M^{-1} W
+    r.stuck = false;
+    r.margin = wn;
+    r.accel = {ap.fx / model.mass, ap.fy / model.mass, ap.mf / model.inertia};
+    return r;
+  }
+  // 1. Global search over a Fibonacci sphere (the positive superlevel sets of h on the
+  //    sphere are geodesically convex, so a local maximum with h > 0 is global).
+  std::array<double, 3> best = normalised(pm.w);
+  double hbest = pm.eval(best, nullptr);
+  const int n = 600;
+  const double golden = M_PI * (3.0 - std::sqrt(5.0));
+  for (int i = 0; i < n; ++i) {
+    const double z = 1.0 - (2.0 * i + 1.0) / n;
+    const double rr = std::sqrt(1.0 - z * z);
+    const std::array<double, 3> xi = {rr * std::cos(golden * i), rr * std::sin(golden * i), z};
+    const double h = pm.eval(xi, nullptr);
+    if (h > hbest) {
+      hbest = h;
+      best = xi;
+    }
+  }
+  // 2. Projected gradient ascent on the sphere with backtracking.
+  double step = 0.5;
+  for (int it = 0; it < 500 && step > 1e-14; ++it) {
+    std::array<double, 3> g;
+    const double h = pm.eval(best, &g);
+    const double gr = g[0] * best[0] + g[1] * best[1] + g[2] * best[2];
+    std::array<double, 3> tg = {g[0] - gr * best[0], g[1] - gr * best[1], g[2] - gr * best[2]};
+    const double tn = std::sqrt(tg[0] * tg[0] + tg[1] * tg[1] + tg[2] * tg[2]);
+    if (tn <= 1e-13 * wn) break;
+    bool improved = false;
+    while (step > 1e-14) {
+      const auto cand = normalised({best[0] + step * tg[0] / tn, best[1] + step * tg[1] / tn, best[2] + step * tg[2] / tn});
+      const double hc = pm.eval(cand, nullptr);
+      if (hc > h) {
+        best = cand;
+        hbest = hc;
+        improved = true;
+        step = std::min(1.0, step * 2.0);
+        break;
+      }
+      step *= 0.5;
+    }
+    if (!improved) break;
+  }
+  r.margin = hbest;
+  r.evaluations = pm.calls;
+  // On the limit surface within rounding counts as inside (friction can hold it).
+  if (hbest <= 1e-12 * wn) {
+    r.stuck = true;
+    return r;
+  }
+  r.stuck = false;
+  // Optimal scaled acceleration u* = h(ξ*) ξ*; A = M^{-1/2} u*.
+  r.accel = {hbest * best[0] / sm, hbest * best[1] / sm, hbest * best[2] / si};
+  return r;
+}
+
+static WorldWrench coulomb_friction_cs(const RoughBarModel& model, double c, double s, const double* y,
+                                const std::array<double, 3>& mode) {
+  const double L = length_scale(model);
+  const double vx = y[kVx], vy = y[kVy], om = y[kOmega];
+  if (vx == 0.0 && vy == 0.0 && om == 0.0) return model.friction_cs(c, s, mode[0], mode[1], mode[2] / L);
+  const double g = vx * mode[0] + vy * mode[1] + om * L * mode[2];
+  if (g >= 0.0) return model.friction_cs(c, s, vx, vy, om);
+  return model.friction_cs(c, s, -vx, -vy, -om);
+}
+
+WorldWrench coulomb_friction(const RoughBarModel& model, const double* y, const std::array<double, 3>& mode) {
+  return coulomb_friction_cs(model, std::cos(y[kTheta]), std::sin(y[kTheta]), y, mode);
+}
+
+void coulomb_rhs(const RoughBarModel& model, const double* y, const std::array<double, 3>& mode, double* d) {
+  const double c = std::cos(y[kTheta]), s = std::sin(y[kTheta]);
+  RoughBarModel::rhs_with(model, y, model.applied_cs(c, s), coulomb_friction_cs(model, c, s, y, mode), d);
+}
+
+namespace {
+
+std::array<double, 3> mode_of(const RoughBarModel& m, double vx, double vy, double om) {
+  const double L = length_scale(m);
+  return normalised({vx, vy, om * L});
+}
+
+double speed_scaled(const RoughBarModel& m, const double* y) {
+  const double L = length_scale(m);
+  return std::sqrt(y[kVx] * y[kVx] + y[kVy] * y[kVy] + y[kOmega] * L * y[kOmega] * L);
+}
+
+}  // namespace
+
+StickSlipResult integrate_coulomb(const RoughBarModel& model, const BsOptions<double>& options, const double* y0,
+                                  const std::vector<double>& tout, const StickSlipObserver& observer) {
+  StickSlipResult out;
+  const double L = length_scale(model);
+  std::array<double, kRoughStateSize> y{};
+  std::copy(y0, y0 + kRoughStateSize, y.begin());
+  double t = 0.0;
+  std::size_t iout = 0;
+  std::array<double, 3> mode{1, 0, 0};
+  bool stuck = false;
+
+  auto static_friction = [&](double theta) {
+    const WorldWrench ap = model.applied(theta);
+    return WorldWrench{-ap.fx, -ap.fy, -ap.mf};
+  };
+  // Enter a rest state at time t: stick, or choose the sliding direction.
+  auto at_rest = [&]() {
+    y[kVx] = y[kVy] = y[kOmega] = 0.0;
+    const RestAnalysis ra = analyse_rest(model, y[kTheta]);
+    out.stats.nfcn += ra.evaluations;
+    if (ra.stuck) {
+      stuck = true;
+    } else {
+      mode = mode_of(model, ra.accel[0], ra.accel[1], ra.accel[2]);
+    }
+    return ra.stuck;
+  };
+  if (y[kVx] == 0.0 && y[kVy] == 0.0 && y[kOmega] == 0.0) {
+    const bool s = at_rest();
+    out.events.push_back({t, s});
+  } else {
+    mode = mode_of(model, y[kVx], y[kVy], y[kOmega]);
+  }
+
+  BulirschStoer<double, kRoughStateSize> bs(options);
+  // The event location's sub-integrations need the state at their end time only, so they
+  // run without dense output: there is nothing to interpolate, and near the velocity's zero
+  // (where the friction turns with V/|V| on the time scale |V|/|A|) the interpolant's error
+  // control of the modern method held them at steps of 1e-6 of their span until the step
+  // budget ran out (stick_mu015, rtol 1e-12). Steps clipped at the end time as in faithful.
+  BsOptions<double> sub_options = options;
+  sub_options.dense = false;
+  auto rhs = [&](double, const double* yy, double* d) {
+    coulomb_rhs(model, yy, mode, d);
+    return 0;
+  };
+  auto accumulate = [&](const BsResult& r) {
+    out.stats.nfcn += r.nfcn;
+    out.stats.naccpt += r.naccpt;
+    out.stats.nrejct += r.nrejct;
+  };
+  // Velocity tolerances: the absolute tolerances of vx, vy, omega (or rtol times the peak).
+  std::array<double, 3> vtol{};
+  for (int i = 0; i < 3; ++i) {
+    const std::size_t k = static_cast<std::size_t>(kVx + i);
+    vtol[static_cast<std::size_t>(i)] = options.atol.size() == 1 ? options.atol[0] : options.atol[k];
+  }
+  std::array<double, 3> ptol{};  // position and angle tolerances
+  for (int i = 0; i < 3; ++i) {
+    const std::size_t k = static_cast<std::size_t>(kX + i);
+    ptol[static_cast<std::size_t>(i)] = options.atol.size() == 1 ? options.atol[0] : options.atol[k];
+  }
+  // Terminal phase of a slide. Near rest the components of V across its direction relax at
+  // the rate mu N/(m |V|), which grows without bound: the problem turns stiff and an explicit
+  // integrator's steps shrink with |V|. The slide is over, to the requested accuracy, once
+  // the motion still to come is below the tolerances: every velocity component within its
+  // absolute tolerance, or (decelerating) the distance and angle still to travel,
+  // v^2/(2|a|) and omega^2/(2|alpha|), within the position and angle tolerances.
+  auto terminal = [&](const double* yy) {
+    double d[kRoughStateSize];
+    coulomb_rhs(model, yy, mode, d);
+    ++out.stats.nfcn;  // an RHS evaluation like any other: counted
+    // Only a slide that is running down can end: the kinetic energy must be falling. (A
+    // slide that has just started from rest has |V| below the tolerances too, but it speeds up.)
+    const double dke = model.mass * (yy[kVx] * d[kVx] + yy[kVy] * d[kVy]) + model.inertia * yy[kOmega] * d[kOmega];
+    if (!(dke < 0.0)) return false;
+    if (std::fabs(yy[kVx]) <= vtol[0] && std::fabs(yy[kVy]) <= vtol[1] && std::fabs(yy[kOmega]) <= vtol[2]) return true;
+    const double v2 = yy[kVx] * yy[kVx] + yy[kVy] * yy[kVy];
+    const double vdotA = yy[kVx] * d[kVx] + yy[kVy] * d[kVy];
+    const double acc = std::hypot(d[kVx], d[kVy]);
+    const bool lin_done = v2 == 0.0 || (vdotA < 0.0 && v2 <= 2.0 * acc * std::min(ptol[0], ptol[1]));
+    const bool rot_done = yy[kOmega] == 0.0 || (yy[kOmega] * d[kOmega] < 0.0 &&
+                                               yy[kOmega] * yy[kOmega] <= 2.0 * std::fabs(d[kOmega]) * ptol[2]);
+    return lin_done && rot_done;
+  };
+  constexpr int kMaxEvents = 10000;
+  // A slide that starts from rest speeds up (the power margin is positive). If it is found
+  // at rest again before a single step of it could be committed, the start direction is
+  // not resolvable at this tolerance: the push lies within rounding of the limit surface
+  // (e.g. just above the minimum force), where the direction of a slide from rest is
+  // ill-conditioned. Say so at once instead of cycling through rest events.
+  long steps_in_slide = 1;
+  auto check_progress = [&] {
+    if (steps_in_slide == 0)
+      throw SolverError("coulomb law: the slide that started from rest at t = " + fmt(t) +
+                        " s stopped again within its first step; the push is too close to the limit surface for "
+                        "the start direction to be resolved (near the minimum force; the CVODE path copes)");
+  };
+  int n_events = 0;
+  // Speed below which a sign change of g is taken as "came to rest" (not a rotation of V by
+  // more than 90 degrees within one step, which the error control makes implausible anyway).
+  double peak_speed = speed_scaled(model, y.data());
+
+  while (iout < tout.size()) {
+    if (stuck) {
+      const WorldWrench sf = static_friction(y[kTheta]);
+      for (; iout < tout.size(); ++iout) observer(tout[iout], y.data(), sf);
+      break;
+    }
+    // Outputs at the current time.
+    while (iout < tout.size() && tout[iout] <= t) {
+      observer(tout[iout], y.data(), coulomb_friction(model, y.data(), mode));
+      ++iout;
+    }
+    if (iout >= tout.size()) break;
+    std::span<const double> rest(tout.data() + iout, tout.size() - iout);
+    std::size_t emitted = 0;
+    // After each accepted step: (1) g = V·mode < 0 means the velocity passed through zero
+    // inside the step: stop before it and locate the instant; (2) a velocity below the
+    // absolute tolerances of vx, vy and omega is rest at the requested accuracy: stop after
+    // it (near rest the velocity direction can keep turning on a time scale |V|/|A|, and
+    // without this the steps would shrink geometrically without ever reaching the zero);
+    // (3) otherwise the mode follows the velocity.
+    bool snapped = false;
+    const auto hook_and_track = [&](double, const double*, double, const double* yn) {
+      const double g = yn[kVx] * mode[0] + yn[kVy] * mode[1] + yn[kOmega] * L * mode[2];
+      if (g < 0.0) return static_cast<int>(kHookStopBefore);
+      ++steps_in_slide;
+      if (terminal(yn)) {
+        snapped = true;
+        return static_cast<int>(kHookStopAfter);
+      }
+      const double sp = std::sqrt(yn[kVx] * yn[kVx] + yn[kVy] * yn[kVy] + yn[kOmega] * L * yn[kOmega] * L);
+      peak_speed = std::max(peak_speed, sp);
+      if (sp > 0.0) mode = {yn[kVx] / sp, yn[kVy] / sp, yn[kOmega] * L / sp};
+      return static_cast<int>(kHookContinue);
+    };
+    BsResult r = bs.integrate(
+        rhs, t, y.data(), rest,
+        [&](std::size_t, double tt, const double* yy) {
+          observer(tt, yy, coulomb_friction(model, yy, mode));
+          ++emitted;
+        },
+        hook_and_track);
+    accumulate(r);
+    if (!r.ok()) {
+      out.stats.status = r.status;
+      out.stats.message = r.message;
+      throw SolverError("coulomb law: " + r.message);
+    }
+    iout += emitted;
+    t = r.t_reached;
+    if (!r.stopped_by_hook) break;  // all outputs done
+    if (snapped) {
+      // Rest within the tolerance at t: the state emitted at outputs up to t stands. The
+      // kinetic energy left is dissipated by friction in the remaining motion: book it there
+      // (the push's work over that motion is below F times the position tolerance).
+      y[kWorkFric] -= model.kinetic_energy(y.data());
+      if (++n_events > kMaxEvents) throw SolverError("coulomb law: more than " + std::to_string(kMaxEvents) + " rest events");
+      check_progress();
+      const bool s = at_rest();
+      steps_in_slide = 0;
+      out.events.push_back({t, s});
+      continue;
+    }
+    // An event lies in (t, t1]: the velocity passed through zero. Locate g(t*) = 0 by the
+    // Illinois variant of regula falsi, integrating from the step start each time.
+    const double t0 = t, t1 = r.t_event_end;
+    const std::array<double, kRoughStateSize> ystart = y;
+    auto g_at = [&](double tt, std::array<double, kRoughStateSize>& yt) {
+      yt = ystart;
+      if (tt > t0) {
+        BulirschStoer<double, kRoughStateSize> sub(sub_options);
+        BsResult rr = sub.integrate(rhs, t0, yt.data(), tt);
+        accumulate(rr);
+        out.root_fcn += rr.nfcn;
+        if (!rr.ok()) throw SolverError("coulomb law, event location: " + rr.message);
+      }
+      return yt[kVx] * mode[0] + yt[kVy] * mode[1] + yt[kOmega] * L * mode[2];
+    };
+    std::array<double, kRoughStateSize> ya{}, yb{}, yc{};
+    double a = t0, b = t1;
+    double ga = g_at(a, ya), gb = g_at(b, yb);
+    int side = 0;
+    for (int it = 0; it < 100 && (b - a) > 4 * 2.2e-16 * std::max(std::fabs(b), 1e-300); ++it) {
+      double c = (a * gb - b * ga) / (gb - ga);
+      if (!(c > a && c < b)) c = 0.5 * (a + b);
+      const double gc = g_at(c, yc);
+      if (gc == 0.0) {
+        a = b = c;
+        ya = yb = yc;
+        break;
+      }
+      if ((gc > 0.0) == (ga > 0.0)) {
+        a = c;
+        ga = gc;
+        ya = yc;
+        if (side == -1) gb *= 0.5;
+        side = -1;
+      } else {
+        b = c;
+        gb = gc;
+        yb = yc;
+        if (side == 1) ga *= 0.5;
+        side = 1;
+      }
+    }
+    // The rest instant: the end of the bracket on the g >= 0 side, velocity set to zero.
+    t = a;
+    y = ya;
+    const double sp = speed_scaled(model, y.data());
+    if (sp > 1e-6 * std::max(peak_speed, 1e-300)) {
+      // Not a rest: the velocity turned by more than 90 degrees within a step. Follow it.
+      mode = mode_of(model, y[kVx], y[kVy], y[kOmega]);
+      continue;
+    }
+    if (++n_events > kMaxEvents) throw SolverError("coulomb law: more than " + std::to_string(kMaxEvents) + " rest events");
+    check_progress();
+    const bool s = at_rest();
+    steps_in_slide = 0;
+    out.events.push_back({t, s});
+  }
+  out.stuck_at_end = stuck;
+  return out;
+}
+
+}  // namespace nanopush

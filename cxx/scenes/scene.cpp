@@ -1,0 +1,341 @@
+#include "nanopush/scenes/scene.hpp"
+
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "nanopush/scenes/environment_toml.hpp"
+#include "nanopush/numerics/error.hpp"
+
+namespace nanopush {
+namespace {
+
+/// A TOML value as the user wrote it, for error messages.
+std::string node_text(const toml::node& n) {
+  std::ostringstream s;
+  if (auto v = n.as_string()) return "\"" + v->get() + "\"";
+  if (auto v = n.as_floating_point()) return fmt(v->get());
+  if (auto v = n.as_integer()) return std::to_string(v->get());
+  if (auto v = n.as_boolean()) return v->get() ? "true" : "false";
+  if (n.is_array()) return "(an array)";
+  if (n.is_table()) return "(a table)";
+  return "(a date/time)";
+}
+
+std::string join(const std::vector<std::string>& v) {
+  std::string s;
+  for (const auto& x : v) s += (s.empty() ? "" : ", ") + x;
+  return s;
+}
+
+/// Reject keys the schema does not know (catches typos such as "lenght").
+void check_keys(const toml::table& t, const std::string& where, const std::vector<std::string>& allowed) {
+  for (auto&& [k, v] : t) {
+    const std::string key(k.str());
+    if (std::find(allowed.begin(), allowed.end(), key) == allowed.end())
+      throw InputError(where.empty() ? key : where + "." + key, "(present)",
+                       "unknown key; allowed here: " + join(allowed));
+  }
+}
+
+const toml::table& require_table(const toml::table& root, const std::string& name) {
+  const toml::node* n = root.get(name);
+  if (!n) throw InputError(name, "(missing)", "the scene needs a [" + name + "] table");
+  if (!n->is_table()) throw InputError(name, "(not a table)", "must be a [" + name + "] table");
+  return *n->as_table();
+}
+
+std::optional<double> opt_number(const toml::table& t, const std::string& where, const std::string& key) {
+  const toml::node* n = t.get(key);
+  if (!n) return std::nullopt;
+  if (auto v = n->value<double>(); v && (n->is_floating_point() || n->is_integer())) return *v;
+    throw InputError(where + "." + key, node_text(*n), "must be a number");
+}
+
+double number(const toml::table& t, const std::string& where, const std::string& key) {
+  auto v = opt_number(t, where, key);
+  if (!v) throw InputError(where + "." + key, "(missing)", "required number");
+  return *v;
+}
+
+std::optional<std::string> opt_string(const toml::table& t, const std::string& where, const std::string& key) {
+  const toml::node* n = t.get(key);
+  if (!n) return std::nullopt;
+  if (auto v = n->value<std::string>(); v && n->is_string()) return *v;
+    throw InputError(where + "." + key, node_text(*n), "must be a string");
+}
+
+void require_one_of(const std::string& field, const std::string& v, const std::vector<std::string>& allowed) {
+  if (std::find(allowed.begin(), allowed.end(), v) == allowed.end())
+    throw InputError(field, "\"" + v + "\"", "must be one of: " + join(allowed));
+}
+
+}  // namespace
+
+std::string extended_precision_obstacle(bool rough, const std::string& engine, const std::string& method) {
+  const std::string need = "long and quad need engine = cxx, method faithful or modern, on a smooth scene (smooth surface)";
+  if (rough) return need + " (the rough-surface friction is computed in double)";
+  if (engine != "cxx") return need + " (the F77 engine is REAL*8)";
+  if (method != "faithful" && method != "modern") return need + " (CVODE is double)";
+  return "";
+}
+
+std::vector<double> Scene::output_times() const {
+  std::vector<double> t(static_cast<std::size_t>(solver.samples));
+  const int n = solver.samples;
+  for (int i = 0; i < n; ++i) t[static_cast<std::size_t>(i)] = solver.t_end * i / (n - 1);
+  t.back() = solver.t_end;
+  return t;
+}
+
+std::array<double, 8> Scene::state_scales() const {
+  const double len = std::max(length, width);
+  // Rotational time scale: the small-oscillation period of the push torque.
+  const double torque = push.force * std::max(push.lever(), 1e-3 * len);
+  const double w = std::sqrt(torque / inertia);
+  return {len, len, 1.0, len * w, len * w, w, push.force * len, push.force * len};
+}
+
+std::vector<double> Scene::atol_vector(double rtol, double atol, int n) const {
+  std::vector<double> v(static_cast<std::size_t>(n));
+  const auto sc = state_scales();
+  for (std::size_t i = 0; i < v.size(); ++i) v[i] = atol > 0 ? atol : rtol * sc[i];
+  return v;
+}
+
+Scene parse_scene(std::string_view text, const std::string& source_name) {
+  toml::table root;
+  try {
+    root = toml::parse(text, source_name);
+  } catch (const toml::parse_error& e) {
+    std::ostringstream s;
+    s << source_name << ":" << e.source().begin.line << ":" << e.source().begin.column << ": TOML syntax: "
+      << e.description();
+    throw InputError(s.str());
+  }
+  check_keys(root, "", {"scene", "object", "push", "initial", "surface", "solver", "environment", "body"});
+  Scene sc;
+  sc.source = source_name;
+
+  // [scene]
+  if (root.get("scene")) {
+    const auto& t = require_table(root, "scene");
+    check_keys(t, "scene", {"name", "description"});
+    sc.name = opt_string(t, "scene", "name").value_or("");
+    sc.description = opt_string(t, "scene", "description").value_or("");
+  }
+  if (sc.name.empty()) sc.name = std::filesystem::path(source_name).stem().string();
+
+  // [object]
+  {
+    const auto& t = require_table(root, "object");
+    check_keys(t, "object", {"shape", "length", "width", "height", "density", "mass", "inertia"});
+    sc.shape = opt_string(t, "object", "shape").value_or("bar");
+    require_one_of("object.shape", sc.shape, {"bar"});
+    sc.length = number(t, "object", "length");
+    sc.width = number(t, "object", "width");
+    require_positive("object.length", sc.length, "m");
+    require_positive("object.width", sc.width, "m");
+    sc.geometry = {sc.width / 2, sc.length / 2};
+    const auto mass = opt_number(t, "object", "mass");
+    const auto density = opt_number(t, "object", "density");
+    const auto height = opt_number(t, "object", "height");
+    if (height) {
+      require_positive("object.height", *height, "m");
+      sc.height = *height;
+    }
+    if (mass) {
+      require_positive("object.mass", *mass, "kg");
+      if (density) throw InputError("object.density", fmt(*density), "give either object.mass or object.density, not both");
+      sc.mass = *mass;
+    } else {
+      if (!density) throw InputError("object.mass", "(missing)", "give object.mass [kg], or object.density [kg/m^3] with object.height");
+      require_positive("object.density", *density, "kg/m^3");
+      if (!height) throw InputError("object.height", "(missing)", "needed with object.density to compute the mass (m)");
+      sc.density = *density;
+      sc.mass = sc.density * sc.length * sc.width * sc.height;
+    }
+    if (auto in = opt_number(t, "object", "inertia")) {
+      require_positive("object.inertia", *in, "kg m^2");
+      sc.inertia = *in;
+    } else {
+      sc.inertia = sc.mass * (sc.length * sc.length + sc.width * sc.width) / 12.0;
+    }
+  }
+
+  // [push]
+  {
+    const auto& t = require_table(root, "push");
+    check_keys(t, "push", {"force", "direction", "xn", "yn", "point"});
+    const double F = number(t, "push", "force");
+    require_positive("push.force", F, "N");
+    const double beta = opt_number(t, "push", "direction").value_or(0.0);
+    require_finite("push.direction", beta, "rad");
+    const auto xn = opt_number(t, "push", "xn");
+    const auto yn = opt_number(t, "push", "yn");
+    const toml::node* pt = t.get("point");
+    if (pt && (xn || yn)) throw InputError("push.point", "(present)", "give either push.point = [x', y'] or the thesis push.xn/push.yn, not both");
+    if (pt) {
+      const toml::array* arr = pt->as_array();
+      if (!arr || arr->size() != 2 || !arr->get(0)->value<double>() || !arr->get(1)->value<double>()) {
+                throw InputError("push.point", node_text(*pt), "must be [x', y'], two numbers in body axes (m)");
+      }
+      sc.push = {F, beta, *arr->get(0)->value<double>(), *arr->get(1)->value<double>()};
+    } else {
+      if (!xn || !yn) throw InputError(xn ? "push.yn" : "push.xn", "(missing)", "give both push.xn and push.yn (thesis coordinates, m), or push.point");
+      sc.push = Push::from_thesis(F, beta, *xn, *yn);
+    }
+    require_finite("push.point[0]", sc.push.pbx, "m");
+    require_finite("push.point[1]", sc.push.pby, "m");
+    const double tol = 1e-9 * std::max(sc.geometry.a, sc.geometry.b);
+    if (std::fabs(sc.push.pbx) > sc.geometry.a + tol)
+      throw InputError(pt ? "push.point[0]" : "push.xn", fmt(pt ? sc.push.pbx : *xn),
+                       "the push point must lie on the body: |x'| <= width/2 = " + fmt(sc.geometry.a) + " m");
+    if (std::fabs(sc.push.pby) > sc.geometry.b + tol)
+      throw InputError(pt ? "push.point[1]" : "push.yn", fmt(pt ? sc.push.pby : *yn),
+                       "the push point must lie on the body: |y'| <= length/2 = " + fmt(sc.geometry.b) + " m");
+  }
+
+  // [initial]
+  if (root.get("initial")) {
+    const auto& t = require_table(root, "initial");
+    const std::vector<std::string> keys = {"x", "y", "theta", "vx", "vy", "omega"};
+    const std::vector<std::string> units = {"m", "m", "rad", "m/s", "m/s", "rad/s"};
+    check_keys(t, "initial", keys);
+    for (std::size_t i = 0; i < keys.size(); ++i) {
+      sc.initial[i] = opt_number(t, "initial", keys[i]).value_or(0.0);
+      require_finite("initial." + keys[i], sc.initial[i], units[i]);
+    }
+  }
+
+  // [surface]
+  if (root.get("surface")) {
+    const auto& t = require_table(root, "surface");
+    check_keys(t, "surface", {"kind", "mu", "f_vdw", "g", "normal_load", "law"});
+    sc.model = opt_string(t, "surface", "kind").value_or("smooth");
+    require_one_of("surface.kind", sc.model, {"smooth", "rough"});
+    sc.surface.kind = sc.model;
+    if (sc.model == "smooth") {
+      for (const char* k : {"mu", "f_vdw", "g", "normal_load", "law"})
+        if (t.get(k)) throw InputError(std::string("surface.") + k, "(present)", "only meaningful with surface.kind = \"rough\"");
+    } else {
+      sc.surface.mu = number(t, "surface", "mu");
+      require_range("surface.mu", sc.surface.mu, 0.0, 10.0);
+      sc.surface.f_vdw = opt_number(t, "surface", "f_vdw").value_or(0.0);
+      require_nonnegative("surface.f_vdw", sc.surface.f_vdw, "N");
+      sc.surface.g = opt_number(t, "surface", "g").value_or(9.81);
+      require_nonnegative("surface.g", sc.surface.g, "m/s^2");
+      if (auto nl = opt_number(t, "surface", "normal_load")) {
+        require_positive("surface.normal_load", *nl, "N");
+        sc.surface.normal_load = *nl;
+      }
+      sc.surface.law = opt_string(t, "surface", "law").value_or("thesis");
+      require_one_of("surface.law", sc.surface.law, {"thesis", "coulomb"});
+    }
+  }
+
+  // [solver]
+  {
+    const auto& t = require_table(root, "solver");
+    check_keys(t, "solver", {"t_end", "samples", "rtol", "atol", "engine", "method", "precision", "h0", "hmax",
+                         "max_steps"});
+    if (auto ms = opt_number(t, "solver", "max_steps")) {
+      if (!(*ms >= 1 && *ms <= 1e9) || std::floor(*ms) != *ms)
+        throw InputError("solver.max_steps", fmt(*ms), "must be an integer in [1, 1000000000]");
+      sc.solver.max_steps = static_cast<long>(*ms);
+    }
+    sc.solver.t_end = number(t, "solver", "t_end");
+    require_positive("solver.t_end", sc.solver.t_end, "s");
+    if (auto s = opt_number(t, "solver", "samples")) {
+      if (!(*s >= 2 && *s <= 1e7) || std::floor(*s) != *s)
+        throw InputError("solver.samples", fmt(*s), "must be an integer in [2, 10000000]");
+      sc.solver.samples = static_cast<int>(*s);
+    }
+    if (auto r = opt_number(t, "solver", "rtol")) {
+      require_range("solver.rtol", *r, 1e-30, 0.1);
+      sc.solver.rtol = *r;
+    }
+    if (auto a = opt_number(t, "solver", "atol")) {
+      require_nonnegative("solver.atol", *a);
+      sc.solver.atol = *a;
+    }
+    sc.solver.engine = opt_string(t, "solver", "engine").value_or("cxx");
+    require_one_of("solver.engine", sc.solver.engine, {"cxx", "f77"});
+    sc.solver.method = opt_string(t, "solver", "method").value_or("faithful");
+    require_one_of("solver.method", sc.solver.method, {"faithful", "modern", "cvode"});
+    sc.solver.precision = opt_string(t, "solver", "precision").value_or("double");
+    require_one_of("solver.precision", sc.solver.precision, {"double", "long", "quad"});
+    if (sc.solver.precision != "double") {
+      const std::string why = extended_precision_obstacle(sc.rough(), sc.solver.engine, sc.solver.method);
+      if (!why.empty()) throw InputError("solver.precision", "\"" + sc.solver.precision + "\"", why);
+    }
+    if (auto h = opt_number(t, "solver", "h0")) {
+      require_nonnegative("solver.h0", *h, "s");
+      sc.solver.h0 = *h;
+    }
+    if (auto h = opt_number(t, "solver", "hmax")) {
+      require_nonnegative("solver.hmax", *h, "s");
+      sc.solver.hmax = *h;
+    }
+  }
+  // [environment] and [body]: the normal load is assembled from the models the scene needs.
+  if (root.get("environment") || root.get("body")) {
+    if (!root.get("environment")) throw InputError("environment", "(missing)", "a [body] table needs an [environment] table");
+    if (!root.get("body"))
+      throw InputError("body", "(missing)", "an [environment] table needs a [body] table naming the material");
+    if (!sc.rough())
+      throw InputError("surface.kind", "\"" + sc.model + "\"", "[environment] sets the normal load of friction: use \"rough\"");
+    const auto& st = require_table(root, "surface");
+    for (const char* k : {"f_vdw", "normal_load", "g"})
+      if (st.get(k))
+        throw InputError(std::string("surface.") + k, "(present)",
+                         "the normal load comes from [environment] and [body]; remove this key");
+    const Environment env = parse_environment(require_table(root, "environment"));
+    const Body body = parse_body(require_table(root, "body"));
+    if (body.shape != Shape::bar) throw InputError("body.shape", std::string(shape_name(body.shape)), "the sliding model is a bar: must be \"bar\"");
+    auto same = [&](const char* key, double a, double b) {
+      if (std::fabs(a - b) > 1e-12 * std::max(std::fabs(a), std::fabs(b)))
+        throw InputError(std::string("body.") + key, fmt(a), "must equal object." + std::string(key) + " = " + fmt(b));
+    };
+    same("length", body.length, sc.length);
+    same("width", body.width, sc.width);
+    LoadOptions lo;
+    lo.rtol = sc.solver.rtol;
+    const LoadReport rep = assemble_normal_load(env, body, lo);
+    sc.surface.g = env.gravity;
+    // Sliding friction carries the load without the contact-adhesion term (eq 3.20 form).
+    sc.surface.normal_load = rep.sliding_load;
+    sc.load_report = rep.to_text() + "friction uses N = " + fmt(rep.sliding_load) + " N (the load without contact adhesion)\n";
+  } else if (sc.rough()) {
+    const double g = sc.mass * sc.surface.g, N = sc.normal_load();
+    std::ostringstream r;
+    r.precision(6);
+    if (sc.surface.normal_load > 0) {
+      r << "normal load N = " << N << " N (given as surface.normal_load)\n";
+    } else {
+      r << "normal load N = m g + F_vdw = " << N << " N\n"
+        << "  gravity  m g   = " << g << " N (" << (N > 0 ? g / N : 0) << " of N)\n"
+        << "  adhesion F_vdw = " << sc.surface.f_vdw << " N (" << (N > 0 ? sc.surface.f_vdw / N : 0)
+        << " of N, given)\n";
+    }
+    r << "friction limit mu N = " << sc.surface.mu * N << " N\n";
+    sc.load_report = r.str();
+  }
+  return sc;
+}
+
+Scene load_scene(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError("SCENE", path.string(), "cannot open the scene file");
+  std::ostringstream s;
+  s << in.rdbuf();
+  Scene sc = parse_scene(s.str(), path.string());
+  sc.source = path;
+  return sc;
+}
+
+}  // namespace nanopush

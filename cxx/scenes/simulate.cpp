@@ -1,0 +1,198 @@
+#include "nanopush/scenes/simulate.hpp"
+
+#include <cstdio>
+#include <type_traits>
+
+#include "nanopush/numerics/error.hpp"
+#include "nanopush/models/rigid_body.hpp"
+#include "nanopush/models/rough_bar.hpp"
+#include "nanopush/models/stick_slip.hpp"
+
+namespace nanopush {
+
+namespace {
+std::string fmt_short(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.3g", v);
+  return b;
+}
+}  // namespace
+
+RunSettings resolve_settings(const Scene& scene, RunSettings s) {
+  if (s.engine.empty()) s.engine = scene.solver.engine;
+  if (s.engine != "cxx" && s.engine != "f77") throw InputError("engine", s.engine, "must be cxx or f77");
+  if (s.method.empty()) s.method = scene.solver.method;
+  if (s.method != "faithful" && s.method != "modern" && s.method != "cvode")
+    throw InputError("method", s.method, "must be faithful, modern or cvode");
+  if (s.law.empty()) s.law = scene.surface.law;
+  if (s.law != "thesis" && s.law != "coulomb") throw InputError("law", s.law, "must be thesis or coulomb");
+  if (s.rtol == 0) s.rtol = scene.solver.rtol;
+  require_range("rtol", s.rtol, 1e-30, 0.1);
+  if (s.atol < 0) s.atol = scene.solver.atol;
+  if (s.method == "cvode" && !(scene.rough() && s.law == "coulomb" && s.engine == "cxx"))
+    throw InputError("method", "cvode", "the CVODE cross-check exists for rough scenes under the coulomb law only");
+  if (s.engine == "f77" && scene.rough() && s.law == "coulomb")
+    throw InputError("engine", "f77", "the F77 engine implements the thesis friction law only (use --engine cxx)");
+  // Precision: the field named is the one the value came from (the settings or the scene).
+  const std::string pfield = s.precision.empty() ? "solver.precision" : "precision";
+  if (s.precision.empty()) s.precision = scene.solver.precision;
+  if (s.precision != "double" && s.precision != "long" && s.precision != "quad")
+    throw InputError(pfield, s.precision, "must be double, long or quad");
+  if (s.precision != "double") {
+    const std::string why = extended_precision_obstacle(scene.rough(), s.engine, s.method);
+    if (!why.empty()) throw InputError(pfield, s.precision, why);
+  }
+  if (s.method == "modern" && s.engine == "cxx") {
+    const double floor = s.precision == "quad"   ? dense_rtol_min<num::quad>()
+                         : s.precision == "long" ? dense_rtol_min<long double>()
+                                                 : dense_rtol_min<double>();
+    if (s.rtol < floor)
+      throw InputError("rtol", fmt(s.rtol),
+                       "must be >= " + fmt_short(floor) + " (" + fmt(kDenseRtolEps) + " eps of " + s.precision +
+                           ") with the modern method (dense output); use --precision long or quad, or "
+                           "--method faithful");
+  }
+  return s;
+}
+
+TrajectoryRow make_row(double t, const double* y, const WorldWrench& f) {
+  return {t, y[kX], y[kY], y[kTheta], y[kVx], y[kVy], y[kOmega], f.fx, f.fy, f.mf};
+}
+
+RoughBarModel rough_model(const Scene& sc) {
+  RoughBarModel m;
+  m.mass = sc.mass;
+  m.inertia = sc.inertia;
+  m.geometry = sc.geometry;
+  m.muN = sc.surface.mu * sc.normal_load();
+  m.push = sc.push;
+  return m;
+}
+
+namespace {
+
+template <class S = double>
+BsOptions<S> options_for(const Scene& sc, const RunSettings& s, const std::vector<S>& atol) {
+  auto opt = s.method == "modern" ? BsOptions<S>::modern(S(s.rtol), atol) : BsOptions<S>::faithful(S(s.rtol), atol);
+  opt.h0 = S(sc.solver.h0);
+  opt.hmax = S(sc.solver.hmax);
+  opt.maxstp = sc.solver.max_steps;
+  return opt;
+}
+
+/// The smooth bar in the C++ engine, integrated in scalar S (double, long double or
+/// __float128): initial state, output times, rtol and atol converted to S; the rows are the
+/// states rounded back to double. In double this is the plain double run.
+template <class S>
+Trajectory run_cxx_smooth(const Scene& sc, const RunSettings& s) {
+  constexpr bool extended = !std::is_same_v<S, double>;
+  Trajectory tr;
+  tr.engine_label = "cxx-" + s.method;
+  tr.precision = num::name<S>();
+  if constexpr (extended) tr.engine_label += "-" + tr.precision;
+  tr.rtol = s.rtol;
+  tr.atol = sc.atol_vector(s.rtol, s.atol);
+  const std::vector<S> atol(tr.atol.begin(), tr.atol.end());
+  BulirschStoer<S, kStateSize> bs(options_for<S>(sc, s, atol));
+  const SmoothBarRhs rhs{sc.mass, sc.inertia, sc.push};
+  const auto tout_d = sc.output_times();
+  const std::vector<S> tout(tout_d.begin(), tout_d.end());
+  std::array<S, kStateSize> y;
+  std::copy(sc.initial.begin(), sc.initial.end(), y.begin());
+  tr.rows.reserve(tout.size());
+  if constexpr (extended) tr.extended.reserve(tout.size());
+  const double n = static_cast<double>(tout.size());
+  tr.stats = bs.integrate(rhs, S(0), y.data(), std::span<const S>(tout), [&](std::size_t i, S t, const S* yy) {
+    if constexpr (extended) {
+      double yd[kStateSize];
+      std::array<num::quad, kStateSize> yq;
+      for (int c = 0; c < kStateSize; ++c) {
+        yd[c] = static_cast<double>(yy[c]);
+        yq[static_cast<std::size_t>(c)] = static_cast<num::quad>(yy[c]);
+      }
+      tr.rows.push_back(make_row(static_cast<double>(t), yd));
+      tr.extended.push_back(yq);
+    } else {
+      tr.rows.push_back(make_row(t, yy));
+    }
+    if (s.progress) s.progress(static_cast<double>(i + 1) / n);
+  });
+  return tr;
+}
+
+std::array<double, kRoughStateSize> rough_initial(const Scene& sc) {
+  std::array<double, kRoughStateSize> y{};
+  std::copy(sc.initial.begin(), sc.initial.end(), y.begin());
+  return y;
+}
+
+Trajectory run_cxx_rough(const Scene& sc, const RunSettings& s) {
+  Trajectory tr;
+  tr.engine_label = "cxx-" + s.method + "-" + s.law;
+  tr.rtol = s.rtol;
+  tr.atol = sc.atol_vector(s.rtol, s.atol, kRoughStateSize);
+  const RoughBarModel model = rough_model(sc);
+  const auto tout = sc.output_times();
+  auto y = rough_initial(sc);
+  const double n = static_cast<double>(tout.size());
+  auto record = [&](double t, const double* yy, const WorldWrench& f) {
+    tr.rows.push_back(make_row(t, yy, f));
+    tr.work_push.push_back(yy[kWorkPush]);
+    tr.work_fric.push_back(yy[kWorkFric]);
+    if (s.progress) s.progress(static_cast<double>(tr.rows.size()) / n);
+  };
+  if (s.law == "thesis") {
+    BulirschStoer<double, kRoughStateSize> bs(options_for(sc, s, tr.atol));
+    const RoughBarThesisRhs rhs{model};
+    tr.stats = bs.integrate(rhs, 0.0, y.data(), std::span<const double>(tout), [&](std::size_t, double t, const double* yy) {
+      record(t, yy, model.friction(yy[kTheta], yy[kVx], yy[kVy], yy[kOmega]));
+    });
+    return tr;
+  }
+  StickSlipResult r;
+  try {
+    if (s.method == "cvode")
+      r = integrate_coulomb_cvode(model, s.rtol, tr.atol, y.data(), tout, record);
+    else
+      r = integrate_coulomb(model, options_for(sc, s, tr.atol), y.data(), tout, record);
+  } catch (const SolverError& e) {
+    tr.stats.status = BsStatus::not_finite;
+    tr.stats.message = e.what();
+    return tr;
+  }
+  tr.stats = r.stats;
+  for (const auto& e : r.events) tr.events.push_back({e.t, e.stuck});
+  return tr;
+}
+
+}  // namespace
+
+Trajectory run_scene(const Scene& scene, const RunSettings& settings) {
+  const RunSettings s = resolve_settings(scene, settings);
+  if (s.engine == "f77")
+    throw InputError("engine", "f77",
+                     "run_scene is the C++ engine; the F77 engine runs through nanopush::engines "
+                     "(nanopush/engines/engines.hpp: run_engine)");
+  Trajectory tr;
+  if (scene.rough())
+    tr = run_cxx_rough(scene, s);
+  else if (s.precision == "long")
+    tr = run_cxx_smooth<long double>(scene, s);
+  else if (s.precision == "quad")
+    tr = run_cxx_smooth<num::quad>(scene, s);
+  else
+    tr = run_cxx_smooth<double>(scene, s);
+  return finish_run(scene, s, std::move(tr));
+}
+
+Trajectory finish_run(const Scene& scene, const RunSettings& s, Trajectory tr) {
+  if (!tr.stats.ok()) {
+    tr.complete = false;
+    if (!s.allow_partial)
+      throw SolverError(scene.name + " (" + tr.engine_label + "): " + to_string(tr.stats.status) +
+                        (tr.stats.message.empty() ? "" : ": " + tr.stats.message));
+  }
+  return tr;
+}
+
+}  // namespace nanopush

@@ -1,0 +1,137 @@
+// Pieces the nanopush icor subcommands and the iCOR reproduce steps share: rod options,
+// the four solvers of the cubic, CSV tables with empty cells, sweeps, figure rendering.
+#pragma once
+#include <cmath>
+#include <filesystem>
+#include <functional>
+#include <iostream>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "f77_icor.hpp"
+#include "nanopush/models/icor.hpp"
+#include "nanopush/numerics/error.hpp"
+#include "nanopush/outputs/io.hpp"
+#include "nanopush/outputs/plot.hpp"
+#include "registry.hpp"
+
+namespace nanopush::cli::icor_cli {
+
+using icor::CubicMethod;
+using icor::CubicSolution;
+
+inline void add_rod_options(CLI::App& app, icor::Rod& rod) {
+  app.add_option("--length", rod.length, "rod length L [m]")->capture_default_str();
+  app.add_option("--radius", rod.radius, "rod radius [m]")->capture_default_str();
+  app.add_option("--density", rod.density, "rod density [kg/m^3] (graphite 2267)")->capture_default_str();
+  app.add_option("--hamaker", rod.hamaker,
+                 "Hamaker constant H [J]; the thesis prints none for graphite, the default is an assumed "
+                 "literature-order value (only absolute forces depend on it)")
+      ->capture_default_str();
+  app.add_option("--z0", rod.z0, "rod-plane separation z0 [m] (thesis: 0.2 nm)")->capture_default_str();
+  app.add_option("--gravity", rod.gravity, "g [m/s^2]")->capture_default_str();
+}
+
+/// The four solvers of the cubic: {column name, solve(yn)}.
+struct NamedSolver {
+  std::string name;
+  std::function<CubicSolution(double)> solve;
+};
+inline std::vector<NamedSolver> all_solvers(double L, double k2) {
+  return {
+      {"brent_cxx", [=](double yn) { return icor::solve_constrained_cubic(yn, L, k2, CubicMethod::Brent); }},
+      {"eigen_cxx", [=](double yn) { return icor::solve_constrained_cubic(yn, L, k2, CubicMethod::Eigen); }},
+      {"brent_f77", [=](double yn) { return f77::icor_cubic(yn, L, k2, f77::IcorCubicMethod::Brent); }},
+      {"lapack_f77", [=](double yn) { return f77::icor_cubic(yn, L, k2, f77::IcorCubicMethod::Lapack); }},
+  };
+}
+
+inline std::string cell(const std::optional<double>& v) { return v ? csv_number(*v) : std::string(); }
+
+/// A CSV whose cells may be empty (a branch that does not exist): written atomically.
+class Table {
+ public:
+  Table(const std::filesystem::path& path, std::vector<std::string> header) : path_(path), header_(std::move(header)) {}
+  void row(std::vector<std::string> cells) { rows_.push_back(std::move(cells)); }
+  std::string text() const {
+    std::ostringstream o;
+    for (std::size_t i = 0; i < header_.size(); ++i) o << (i ? "," : "") << header_[i];
+    o << "\n";
+    for (const auto& r : rows_) {
+      for (std::size_t i = 0; i < r.size(); ++i) o << (i ? "," : "") << r[i];
+      o << "\n";
+    }
+    return o.str();
+  }
+  /// Write to the file (atomically), or to stdout when the path is empty or "-".
+  void write() const {
+    if (path_.empty() || path_ == "-") std::cout << text();
+    else write_file_atomic(path_, text());
+  }
+
+ private:
+  std::filesystem::path path_;
+  std::vector<std::string> header_;
+  std::vector<std::vector<std::string>> rows_;
+};
+
+inline std::vector<double> sweep(double lo, double hi, int n, bool log) {
+  if (n < 1) throw InputError("--n", std::to_string(n), "must be >= 1");
+  if (log && !(lo > 0.0)) throw InputError("--yn-min", fmt(lo), "must be > 0 with --log");
+  std::vector<double> v;
+  for (int i = 0; i < n; ++i) {
+    const double t = n == 1 ? 0.0 : static_cast<double>(i) / (n - 1);
+    v.push_back(log ? lo * std::pow(hi / lo, t) : lo + (hi - lo) * t);
+  }
+  if (n > 1) v.back() = hi;
+  return v;
+}
+
+// ---- reproduce steps -------------------------------------------------------------------
+
+inline void check(ReproduceContext& ctx, bool ok, const std::string& what) {
+  if (!ok) ctx.failures.push_back(what);
+}
+
+/// Draw a one-panel figure. (plot::render emits "set key best", which Debian's gnuplot
+/// rejects; until the shared plot.cpp is fixed we write the script body ourselves and use
+/// plot::render_script, which keeps the same atomic-output guarantees.)
+inline std::string gp_quote(const std::string& s) {
+  std::string r = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\') r += '\\';
+    r += c;
+  }
+  return r + "\"";
+}
+
+inline void render_if_possible(ReproduceContext& ctx, const plot::Figure& fig, const std::filesystem::path& png) {
+  if (!plot::available()) {
+    ctx.report << "\n(gnuplot not found: " << png.filename().string() << " not drawn)\n";
+    return;
+  }
+  std::ostringstream b;
+  for (const auto& p : fig.panels) {
+    b << "set grid\nset key outside right top box\n";
+    if (p.logy) b << "set format y \"10^{%L}\"\n";
+    b << "set title " << gp_quote(p.title.empty() ? fig.title : p.title) << "\n";
+    b << "set xlabel " << gp_quote(p.xlabel) << "\nset ylabel " << gp_quote(p.ylabel) << "\n";
+    if (p.logx) b << "set logscale x\n";
+    if (p.logy) b << "set logscale y\n";
+    if (!p.extra.empty()) b << p.extra << "\n";
+    b << "plot ";
+    for (std::size_t i = 0; i < p.series.size(); ++i) {
+      const auto& s = p.series[i];
+      b << (i ? ", \\\n     " : "") << gp_quote(s.csv.string()) << " every ::1 using " << s.x << ":" << s.y
+        << " with " << s.style << " title " << gp_quote(s.title);
+    }
+    b << "\n";
+  }
+  plot::render_script(b.str(), png, fig.width, fig.height);
+  ctx.produced(png);
+  ctx.produced(std::filesystem::path(png).replace_extension(".gp"));
+}
+
+}  // namespace nanopush::cli::icor_cli
