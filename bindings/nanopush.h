@@ -195,7 +195,7 @@ int nanopush_trajectory_get_precision(nanopush_error error, nanopush_trajectory 
 int nanopush_trajectory_get_state_extended(nanopush_error error, nanopush_trajectory trajectory, int capacity,
                                            double* hi, double* lo);
 
-/* ---- Friction resultant over a rectangular contact (docs/friction.md, models.md B) ----- */
+/* ---- Friction resultant over a rectangular contact (docs/friction.md, docs/models.md B) ----- */
 /* Coulomb friction over a 2a x 2b rectangle with uniform pressure, rigid rotation about the iCOR.
  *   a [m]      half-width (along body x'), > 0; b [m] half-length (along body y'), > 0;
  *              min(a,b)/max(a,b) not below the library's aspect limit (the message names it)
@@ -214,7 +214,7 @@ int nanopush_friction_wrench(nanopush_error error, double a, double b, double mu
 int nanopush_friction_from_velocity(nanopush_error error, double a, double b, double muN, double vx, double vy,
                                     double omega, double* wrench);
 
-/* ---- iCOR of a pushed nanorod (docs/icor.md, models.md D; thesis chapters 4-5) ---------- */
+/* ---- iCOR of a pushed nanorod (docs/icor.md, docs/models.md D; thesis chapters 4-5) ---------- */
 /* One pattern for every formula: int nanopush_icor_<name>(error, inputs..., double* result).
  * A rod of length L [m] (> 0, half-length b = L/2) is pushed perpendicular to its axis at
  * yn [m] (>= 0) from its centre of mass; R [m] is the distance from the centre of mass to the

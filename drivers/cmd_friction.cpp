@@ -1,4 +1,4 @@
-// nanopush friction: the friction wrench of a rectangular contact at any iCOR (models.md §B),
+// nanopush friction: the friction wrench of a rectangular contact at any iCOR (docs/models.md §B),
 // row by row from standard input; a microbenchmark (--bench); and the reproduce steps for the
 // thesis' Figs 3.9-3.11.
 #include <algorithm>
@@ -25,7 +25,7 @@ namespace nanopush::cli {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-// The thesis nanobar (models.md §A): width 55 nm, length 100 nm -> a = 27.5 nm, b = 50 nm.
+// The thesis nanobar (docs/models.md §A): width 55 nm, length 100 nm -> a = 27.5 nm, b = 50 nm.
 constexpr double kBarA = 27.5e-9, kBarB = 50e-9;
 
 struct Options {
@@ -338,7 +338,7 @@ void fig3_9(ReproduceContext& ctx) {
     ctx.produced(png);
   }
   auto& r = ctx.report;
-  r << "\n## Fig 3.9: normalised friction force and moment vs R (models.md §B)\n\n"
+  r << "\n## Fig 3.9: normalised friction force and moment vs R (docs/models.md §B)\n\n"
     << "Bar 100 x 55 nm (a = 27.5 nm, b = 50 nm), uniform pressure, R/max(a,b) from 1e-3 to 1e3 (log), "
     << "alpha = 0, pi/6, pi/4, pi/3, pi/2. The thesis prints the curves only (alpha = 0), no values; "
     << "we check its qualitative statements and the exact oracles.\n\n"
@@ -426,7 +426,7 @@ void fig3_10_11(ReproduceContext& ctx) {
   }
   const double mfn0 = mean_distance_rect(a, b) / L;
   auto& r = ctx.report;
-  r << "\n## Figs 3.10-3.11: normalised force and moment over iCOR positions (models.md §B)\n\n"
+  r << "\n## Figs 3.10-3.11: normalised force and moment over iCOR positions (docs/models.md §B)\n\n"
     << "iCOR on a " << n << " x " << n << " grid over x' in [-4a, 4a], y' in [-2b, 2b] (the contact is the white "
     << "rectangle). The thesis shows 3-D surfaces without values; its statements: the force is smallest with the "
     << "iCOR at the centre of pressure and grows towards the edges and beyond; the moment is largest at the centre "

@@ -1,4 +1,4 @@
-// nanopush icor: the instantaneous centre of rotation (thesis chapters 4-5, models.md D).
+// nanopush icor: the instantaneous centre of rotation (thesis chapters 4-5, docs/models.md D).
 //   nanopush icor formulas     every principle over a sweep of yn (CSV)
 //   nanopush icor roots        the constrained cubic (5.4) from all four solvers (CSV)
 //   nanopush icor estimate-mu  friction coefficient from a push force and yn (Fig 4.4)

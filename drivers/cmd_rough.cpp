@@ -211,7 +211,7 @@ void reproduce_rough(ReproduceContext& ctx) {
   summary.commit();
   ctx.produced(dir / "summary.csv");
 
-  ctx.report << "## Figs 3.12–3.32: nanobar on a rough surface (models.md §C)\n\n"
+  ctx.report << "## Figs 3.12–3.32: nanobar on a rough surface (docs/models.md §C)\n\n"
              << "Nanobar of Fig 3.6 at theta0 = 0, F = 5e-6 N, F_vdw = 0.400252e-4 N, N = m g + F_vdw, mu = 0 ... 0.20,\n"
              << "rtol = 1e-10. Two friction laws: `thesis` (eq 3.40 sign law, one smooth ODE; C++ faithful and F77\n"
              << "engines) and `coulomb` (rest events located, stick while the push lies inside the limit surface;\n"
@@ -227,7 +227,7 @@ void reproduce_rough(ReproduceContext& ctx) {
                << "The coulomb law locates the instant the bar comes to rest, finds the applied wrench inside the\n"
                << "limit surface and holds the bar stuck: no chattering, a few thousand RHS evaluations.\n\n";
   if (!axes.str().empty())
-    ctx.report << "**Against the thesis' figure axes** (models.md §C): mu = 0.06 (Fig 3.18): theta in [-1, 2.5], mf in\n"
+    ctx.report << "**Against the thesis' figure axes** (docs/models.md §C): mu = 0.06 (Fig 3.18): theta in [-1, 2.5], mf in\n"
                << "[-7e-14, 2e-14] N m, fx in [-3e-6, 3e-6] N, |f| in [1.2e-6, 3e-6] N; mu = 0.17 (Fig 3.29): mf in\n"
                << "[-2e-13, 1.5e-13], fx in [-8e-6, 6e-6], |f| in [3.5e-6, 7.5e-6]. Ours:\n\n"
                << "| mu | law | theta [rad] | mf [N m] | fx [N] | abs f [N] |\n|---|---|---|---|---|---|\n"

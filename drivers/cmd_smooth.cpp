@@ -105,7 +105,7 @@ void reproduce_fig3_6(ReproduceContext& ctx) {
   plot::render(errfig, dir / "fig3_6_error.png");
   ctx.produced(dir / "fig3_6_error.png");
 
-  ctx.report << "## Fig 3.6: nanobar on a smooth surface (models.md §A)\n\n"
+  ctx.report << "## Fig 3.6: nanobar on a smooth surface (docs/models.md §A)\n\n"
              << "Eight cases, push F = 5e-6 N along +X at the thesis point (xn, yn) = (27.5, 45) nm, i.e. body point\n"
              << "(27.5, -45) nm; m = 0.623425e-18 kg; rtol = 1e-12 with tolerances scaled per state component.\n"
              << "The exact solution is a pendulum about theta* = pi/2 - atan(xn/yn) = "

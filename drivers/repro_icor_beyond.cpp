@@ -142,7 +142,7 @@ void step_fig5_3(ReproduceContext& ctx) {
 
   std::ostringstream r;
   r << "\n## Fig 5.3: quasi-static, dynamic and impulsive iCOR\n\n"
-    << "Dynamic: the rough-surface model (models.md C) for the nanorod, mu = 0.1, under the coulomb law\n"
+    << "Dynamic: the rough-surface model (docs/models.md C) for the nanorod, mu = 0.1, under the coulomb law\n"
     << "(event-located stick-slip), pushed from rest along +X, perpendicular to the rod, at yn from the CM; the\n"
     << "iCOR is read off the velocities at t = 1e-10 s (thesis section 5.5). Contact: a strip 2a x L with\n"
     << "a = " << std::setprecision(4) << a * 1e9 << " nm (Hertz line contact of graphite under W/L; the thesis gives no width),\n"
@@ -235,7 +235,7 @@ void step_icor_rectangle(ReproduceContext& ctx) {
   render_if_possible(ctx, fig, ctx.out / "icor_rectangle.png");
   std::ostringstream r;
   r << "\n## Beyond the thesis: the quasi-static iCOR of a finite rectangle\n\n"
-    << "Closed-form Coulomb friction over a 2a x 2b rectangle with uniform pressure (models.md B), push along body x'\n"
+    << "Closed-form Coulomb friction over a 2a x 2b rectangle with uniform pressure (docs/models.md B), push along body x'\n"
     << "at (0, yn): R, alpha and F_min solve the force and moment balance (quasi_static_icor, both senses). The iCOR\n"
     << "stays on the rod axis (alpha = pi/2) and moves away from the CM as the contact widens; F_min grows.\n"
     << "Tests: within 1e-6 of eq 4.13 at a/b = 1e-4, and within 1e-9 of an independent cubature + bisection solve\n"

@@ -1,4 +1,4 @@
-// Reproduce steps of thesis chapters 4-5 (models.md D): Table 5.1 from every solver, the
+// Reproduce steps of thesis chapters 4-5 (docs/models.md D): Table 5.1 from every solver, the
 // section 5.6.1.1 error analysis, Figs 4.2-4.5 and 5.2, each beside the printed values.
 #include <cmath>
 #include <iomanip>
@@ -38,7 +38,7 @@ void step_table5_1(ReproduceContext& ctx) {
   ctx.report << "\n## Table 5.1: iCOR from the constrained cubic (5.4), nanorod L = 590 nm\n\n"
              << "Signed roots of 2 yn R^3 - 3 k^2 R^2 + k^2 (b^2 - 2 k^2) = 0 (k^2 = I/m = L^2/12) from four solvers:\n"
              << "Brent and Eigen companion eigenvalues in C++, Brent and LAPACK DGEEV companion eigenvalues in\n"
-             << "FORTRAN 77. The thesis prints |R| of the negative root (models.md: the far side of the CM); `deviation` is\n"
+             << "FORTRAN 77. The thesis prints |R| of the negative root (docs/models.md: the far side of the CM); `deviation` is\n"
              << "(|R_negative| - printed)/printed; `match` says |R_negative| rounded to the printed number of\n"
              << "significant digits equals the printed value for all four solvers. The positive branch (the other\n"
              << "branch) exists for yn < b/sqrt(3) = 170.3 nm; where the thesis prints +- (yn <= 2 nm)\n"
@@ -310,7 +310,7 @@ void step_fig5_2(ReproduceContext& ctx) {
              << "Plotted with R > 0 on the far side of the CM from the push (the sign of chapter 4): the Table 5.1\n"
              << "branch of (5.4) is |R_negative|, its other branch -R_positive. At yn = 0 the two branches meet the\n"
              << "axis at +-b/3 = +-" << std::setprecision(5) << b / 3.0 * 1e9 << " nm (the bifurcation squares).\n"
-             << "(Side of the CM as models.md section D reads the cubic's signs; see docs/errata.md, iCOR item 5.)\n"
+             << "(Side of the CM as docs/models.md section D reads the cubic's signs; see docs/errata.md, iCOR item 5.)\n"
              << "Fig 5.3 (dynamic iCOR) is the step fig5_3.\n";
 }
 

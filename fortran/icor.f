@@ -1,6 +1,6 @@
 C=======================================================================
 C     ICOR -- instantaneous centre of rotation of a pushed nanorod
-C     (models.md section D; thesis chapters 4 and 5).
+C     (docs/models.md section D; thesis chapters 4 and 5).
 C
 C     Geometry: rod of length RL = 2B along its axis, push perpendicular
 C     to the rod at distance YN >= 0 from the centre of mass (CM).

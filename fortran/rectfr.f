@@ -1,8 +1,8 @@
 C=======================================================================
 C     RECTFR -- Coulomb friction wrench of a 2A x 2B rectangular contact
-C     with uniform pressure (models.md section B; thesis eqs 3.27-3.50
+C     with uniform pressure (docs/models.md section B; thesis eqs 3.27-3.50
 C     and Appendix B, with the corrections of docs/errata.md).
-C     Same algorithm as cxx/include/nanopush/friction.hpp:
+C     Same algorithm as cxx/include/nanopush/models/friction.hpp:
 C       RHO = R/MAX(A,B) below 3: exact corner closed form (asinh form);
 C       3 <= RHO < 1D9: point-symmetrised N x N Gauss-Legendre form
 C                       of the far-field series (no cancellation),

@@ -1,6 +1,6 @@
 C=======================================================================
 C     RGBAR -- right-hand side of the nanobar sliding on a rough
-C     surface (models.md section C; thesis eqs 3.51-3.56 with errata
+C     surface (docs/models.md section C; thesis eqs 3.51-3.56 with errata
 C     1-3): the smooth-surface equations plus the Coulomb friction
 C     resultant over the 2A x 2B contact (RECTFV, fortran/rectfr.f)
 C     at the iCOR implied by the rigid velocity, rotated to world axes.
@@ -22,7 +22,7 @@ C                      acts when the body is exactly at rest; all zero
 C                      (the thesis law) gives no friction at rest
 C                      (eq 3.40 has no direction there).
 C     IERR: 0, or the status of RECTFV for bad friction input.
-C     The arithmetic follows cxx/include/nanopush/rough_bar.hpp
+C     The arithmetic follows cxx/include/nanopush/models/rough_bar.hpp
 C     operation for operation.
 C=======================================================================
       SUBROUTINE RGBAR(N, T, Y, DYDT, RPAR, IPAR, IERR)

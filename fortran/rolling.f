@@ -1,8 +1,8 @@
 C=======================================================================
-C     ROLLING -- rolling of nanotubes (models.md section E; thesis
+C     ROLLING -- rolling of nanotubes (docs/models.md section E; thesis
 C     section 3.2-3.3, eqs 3.16, 3.19-3.21 and section 3.3.1), the
-C     FORTRAN 77 counterpart of cxx/src/rolling.cpp and of the rod and
-C     line-contact parts of cxx/src/surface_forces.cpp.
+C     FORTRAN 77 counterpart of cxx/models/rolling.cpp and of the rod and
+C     line-contact parts of cxx/models/surface_forces.cpp.
 C
 C     SI units. IERR = 0 success, 1 invalid argument, 2 load below the
 C     pull-off load, 3 no convergence. No routine stops the program.

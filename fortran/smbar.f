@@ -1,6 +1,6 @@
 C=======================================================================
 C     SMBAR -- right-hand side of the smooth-surface nanobar
-C     (models.md section A; thesis eqs 3.22-3.26 with erratum 1).
+C     (docs/models.md section A; thesis eqs 3.22-3.26 with erratum 1).
 C
 C     State Y = (X, Y, THETA, VX, VY, OMEGA), SI units, world axes.
 C     RPAR(1) = M      mass [kg]

@@ -54,7 +54,7 @@ std::vector<double> linspace(double a, double b, int n) {
   return v;
 }
 
-// ---- Exact pendulum (models.md section A) -------------------------------------------------
+// ---- Exact pendulum (docs/models.md section A) -------------------------------------------------
 
 // Jacobi sn(u | m), 0 <= m < 1, and K(m), by the AGM / descending Landen transformation
 // (Abramowitz & Stegun 16.4): a0 = 1, b0 = sqrt(1 - m), c0 = sqrt(m); iterate to c_N ~ 0;
@@ -97,7 +97,7 @@ double ellip_f(double phi, double m) {
   return s * h / 3.0;
 }
 
-// Thesis nanobar (models.md section A), push point (xn, -yn) in body axes, F along +X.
+// Thesis nanobar (docs/models.md section A), push point (xn, -yn) in body axes, F along +X.
 struct Bar {
   double m = 0.623425e-18;
   double I = 0.623425e-18 * (100e-9 * 100e-9 + 55e-9 * 55e-9) / 12.0;

@@ -1,4 +1,4 @@
-// Surface and adhesion forces (models.md F): independent closed-form oracles of issue 6,
+// Surface and adhesion forces (docs/models.md F): independent closed-form oracles of issue 6,
 // internal consistency of the contact models, Table 3.1 against the printed digits, and
 // input validation.
 #include <catch2/catch.hpp>
@@ -210,7 +210,7 @@ TEST_CASE("Table 3.1: corrected values to the printed digits; old values where r
       CHECK(c.old_exact);
     }
   }
-  // The models.md example: water 18.0 (old) and 19.1690 (corrected).
+  // The docs/models.md example: water 18.0 (old) and 19.1690 (corrected).
   CHECK(to_printed_digits(surface_energy_from_hamaker(3.7e-20), 1e-3, 18.0, 0));
   CHECK(to_printed_digits(surface_energy_corrected(3.7e-20), 1e-3, 19.1690, 4));
   // eq 3.8: 24 pi (0.4 nm / 2.5)^2 rounds to the printed 1.9302e-18.

@@ -1,4 +1,4 @@
-// Rolling of nanotubes (models.md E): Fig 3.3 exact points, rolling-vs-sliding decision,
+// Rolling of nanotubes (docs/models.md E): Fig 3.3 exact points, rolling-vs-sliding decision,
 // and the C++ formulas against their FORTRAN 77 versions (fortran/rolling.f via the bridge).
 #include <catch2/catch.hpp>
 

@@ -161,7 +161,7 @@ TEST_CASE("Dropping a negligible term changes N and the trajectory by less than 
   LoadOptions drop;  // rtol 1e-10, drop_fraction 0.1
   const LoadReport all = assemble_normal_load(e, b, keep);
   const LoadReport red = assemble_normal_load(e, b, drop);
-  // Gravity is ~9e-13 of N here (models.md: "gravity is ~1e-13 of F_vdw"): dropped.
+  // Gravity is ~9e-13 of N here (docs/models.md: "gravity is ~1e-13 of F_vdw"): dropped.
   CHECK(all.term("gravity").status == TermStatus::evaluated);
   REQUIRE(red.term("gravity").status == TermStatus::dropped);
   CHECK(std::abs(red.term("gravity").value) < red.drop_threshold);

@@ -1,4 +1,4 @@
-// Friction over a rectangular contact (issue 3, models.md §B): closed form vs adaptive
+// Friction over a rectangular contact (issue 3, docs/models.md §B): closed form vs adaptive
 // cubature, far-field join, oracles, dissipation, robustness, bad input.
 #include <catch2/catch.hpp>
 
@@ -433,7 +433,7 @@ TEST_CASE("friction: velocity interface matches the definition f = -mu p v/|v| i
   };
   for (const V& c : {V{1e-3, 0.0, 3e4}, V{-2e-3, 5e-4, -1e5}, V{0.0, 1e-3, 2e4}, V{3e-3, -1e-3, 1e3},
                      V{1e-4, 1e-4, -5e5}, V{0.0, 0.0, 7.0}}) {
-    const double cx = -c.vy / c.om, cy = c.vx / c.om;  // zero-velocity point (models.md §0)
+    const double cx = -c.vy / c.om, cy = c.vx / c.om;  // zero-velocity point (docs/models.md §0)
     auto g = [&](double x, double y, double* out) {
       const double ux = c.vx - c.om * y, uy = c.vy + c.om * x;
       const double s = std::hypot(ux, uy);

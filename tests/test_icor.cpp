@@ -42,7 +42,7 @@ double rel(double a, double b) { return std::fabs(a - b) / std::max(std::fabs(a)
 
 }  // namespace
 
-TEST_CASE("nanorod parameters follow models.md section D", "[icor][unit]") {
+TEST_CASE("nanorod parameters follow docs/models.md section D", "[icor][unit]") {
   const auto rod = icor::nanorod();
   CHECK(rod.length == 590e-9);
   CHECK(rod.half_length() == 295e-9);

@@ -1,4 +1,4 @@
-// Rough-surface sliding (models.md §C): invariants, the mu = 0 limit, the two friction laws.
+// Rough-surface sliding (docs/models.md §C): invariants, the mu = 0 limit, the two friction laws.
 #include <catch2/catch.hpp>
 
 #include <cmath>

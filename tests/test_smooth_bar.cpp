@@ -1,4 +1,4 @@
-// The smooth-surface nanobar (models.md §A, thesis Fig 3.6) against its exact solution.
+// The smooth-surface nanobar (docs/models.md §A, thesis Fig 3.6) against its exact solution.
 #include <catch2/catch.hpp>
 
 #include <cmath>

@@ -1,4 +1,4 @@
-// iCOR principles of thesis chapters 4-5 (see icor.hpp; models.md section D).
+// iCOR principles of thesis chapters 4-5 (see icor.hpp; docs/models.md section D).
 #include "nanopush/models/icor.hpp"
 
 #include <algorithm>

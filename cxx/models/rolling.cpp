@@ -1,4 +1,4 @@
-// Rolling of nanotubes: models.md section E (thesis eqs 3.10-3.21, section 3.3.1).
+// Rolling of nanotubes: docs/models.md section E (thesis eqs 3.10-3.21, section 3.3.1).
 #include "nanopush/models/rolling.hpp"
 
 #include <cmath>

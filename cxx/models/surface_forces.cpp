@@ -1,4 +1,4 @@
-// Surface and adhesion forces (models.md section F). See surface_forces.hpp for the
+// Surface and adhesion forces (docs/models.md section F). See surface_forces.hpp for the
 // conventions (gamma vs W = 2 gamma, attractive magnitudes, SI).
 #include "nanopush/models/surface_forces.hpp"
 

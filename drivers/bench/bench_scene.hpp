@@ -1,7 +1,7 @@
 // The benchmark of one scene (issue 7): problem, reference and engines from a Scene.
 //
 // Adding a surface model (rough scenes, issue 4) means one more branch in make_bench()
-// (cxx/src/bench_scene.cpp): build its RHS (templated on the scalar, as SmoothBarRhs),
+// (drivers/bench/bench_scene.cpp): build its RHS (templated on the scalar, as SmoothBarRhs),
 // take the extended-precision reference (run_extended_reference<6>) and the generic
 // engines (generic_engines<6>); optionally scene-specific engines (an F77 RHS, an
 // event-locating integrator). The harness, CSV and plots need no change.
@@ -20,7 +20,7 @@ namespace nanopush::bench {
 Problem problem_from_scene(const Scene& sc);
 
 /// True when the scene has a closed-form solution the harness knows (smooth surface, no
-/// initial rotation rate: the pendulum of models.md §A).
+/// initial rotation rate: the pendulum of docs/models.md §A).
 bool has_exact_solution(const Scene& sc);
 
 /// The exact trajectory of a smooth-surface scene at the output times, in __float128:

@@ -36,7 +36,7 @@ std::string message(nanopush_error err) {
   return buf;
 }
 
-constexpr double kBarA = 27.5e-9, kBarB = 50e-9;  // the thesis nanobar (models.md A)
+constexpr double kBarA = 27.5e-9, kBarB = 50e-9;  // the thesis nanobar (docs/models.md A)
 constexpr double kPi = 3.14159265358979323846;
 
 void friction_matches_library() {

@@ -1,5 +1,5 @@
 // Scene environment and bodies, and the assembly of the normal load from only the force
-// models a scene needs (issue 6; models.md section F "model only what a scene requires").
+// models a scene needs (issue 6; docs/models.md section F "model only what a scene requires").
 // Their scene-file tables are read by nanopush/scenes/environment_toml.hpp (docs/forces.md).
 //
 // Conventions (surface_forces.hpp): SI, gamma per surface, W = 2 gamma for like materials,

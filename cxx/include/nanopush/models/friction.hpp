@@ -1,7 +1,7 @@
-// Coulomb friction over a rectangular contact with uniform pressure (models.md §B; thesis
+// Coulomb friction over a rectangular contact with uniform pressure (docs/models.md §B; thesis
 // eqs 3.27-3.50 and Appendix B, after Cheung's rigid-body sliding model).
 //
-// Geometry (models.md §0). Body axes at the centre of mass (CM): x' across the width
+// Geometry (docs/models.md §0). Body axes at the centre of mass (CM): x' across the width
 // (half-width a), y' along the length (half-length b). The instantaneous centre of rotation
 // (iCOR) sits at c = -R (cos alpha, sin alpha), so seen from the iCOR the CM is at
 // (Xc, Yc) = R (cos alpha, sin alpha) and the contact spans X in [Xc - a, Xc + a],
@@ -294,7 +294,7 @@ inline FrictionWrench rectangle_friction_translation(double muN, double vx, doub
 }
 
 /// Friction wrench from the body-axis rigid velocity: CM velocity (vx, vy) [m/s] and angular
-/// rate omega [rad/s]. The iCOR is c = (-vy, vx)/omega (models.md §0); as omega -> 0 the
+/// rate omega [rad/s]. The iCOR is c = (-vy, vx)/omega (docs/models.md §0); as omega -> 0 the
 /// result joins rectangle_friction_translation smoothly (the moment vanishes like omega);
 /// zero wrench at rest. Sense = sign(omega).
 inline FrictionWrench rectangle_friction_from_velocity(double a, double b, double muN, double vx, double vy,

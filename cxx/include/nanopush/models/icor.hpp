@@ -1,5 +1,5 @@
 // The instantaneous centre of rotation (iCOR) of a pushed nanorod: every principle of
-// thesis chapters 4-5 (models.md section D), the constrained cubic (5.4) solved by Brent
+// thesis chapters 4-5 (docs/models.md section D), the constrained cubic (5.4) solved by Brent
 // and by companion-matrix eigenvalues, and the inverse maps that estimate the friction
 // coefficient from what an experimenter measures.
 //
@@ -8,7 +8,7 @@
 // Sign convention of chapter 4 (eqs 4.2-4.13): R > 0 is the distance from the CM to the
 // iCOR on the far side of the CM from the push point (the moment arm of F about the iCOR
 // is R + yn). The cubic (5.4) is reported with the signs of its own roots: its negative
-// root is the one Table 5.1 tabulates (|R| printed; models.md D reads it as the far side,
+// root is the one Table 5.1 tabulates (|R| printed; docs/models.md D reads it as the far side,
 // see docs/errata.md on the sign); its smallest positive root is the other branch
 // (erratum 9).
 //
@@ -30,11 +30,11 @@ namespace nanopush::icor {
 /// F/(mu W) are independent of it. Override with --hamaker on the command line.
 inline constexpr double kGraphiteHamakerAssumed = 4.7e-19;
 
-/// A thin rod on a plane (models.md section D). SI units.
+/// A thin rod on a plane (docs/models.md section D). SI units.
 struct Rod {
   double length = 590e-9;    ///< L [m]
   double radius = 13.5e-9;   ///< [m]
-  double density = 2267.0;   ///< graphite [kg/m^3] (models.md erratum 8)
+  double density = 2267.0;   ///< graphite [kg/m^3] (docs/models.md erratum 8)
   double hamaker = kGraphiteHamakerAssumed;  ///< H [J]
   double z0 = 0.2e-9;        ///< rod-plane separation [m] (thesis section 4.2.3)
   double gravity = 9.81;     ///< g [m/s^2] (thesis value)
@@ -140,7 +140,7 @@ BrentRoots real_roots_brent(const std::vector<double>& c_ascending);
 
 // ---- Extension points: the dynamic iCOR (item 3) and finite contacts (item 4) --------
 
-/// The iCOR read off a rigid-body velocity state (models.md section 0): relative to the CM
+/// The iCOR read off a rigid-body velocity state (docs/models.md section 0): relative to the CM
 /// it sits at c = (-v_y, v_x)/omega, R = |c|. omega = 0 is pure translation: R = +inf and
 /// c = (0, 0) with `translation` set. Any frame works (c comes back in the frame of v).
 struct VelocityIcor {
@@ -167,7 +167,7 @@ Wrench line_contact_wrench(double b, double R, double alpha);
 /// F >= 0 (F per unit mu W), trying both senses of rotation, by Newton's method on
 /// (ln R, alpha) with a finite-difference Jacobian and backtracking, from (R0, alpha0).
 /// The finite-rectangle iCOR of issue 5 item 4 is this with the closed-form rectangle
-/// wrench of models.md B; with line_contact_wrench it is eq 4.13 (tested).
+/// wrench of docs/models.md B; with line_contact_wrench it is eq 4.13 (tested).
 struct QuasiStaticIcor {
   double R = 0.0, alpha = 0.0;
   double force = 0.0;   ///< |F| / (mu W)

@@ -1,14 +1,14 @@
 // The dynamic iCOR (issue 5 item 3, thesis section 5.5, Fig 5.3) and the quasi-static iCOR of
-// a finite rectangle (issue 5 item 4, beyond the thesis), models.md section D.
+// a finite rectangle (issue 5 item 4, beyond the thesis), docs/models.md section D.
 //
-// Geometry shared by both (thesis Fig 4.1 in the frame of models.md section 0): the rod's
+// Geometry shared by both (thesis Fig 4.1 in the frame of docs/models.md section 0): the rod's
 // contact is a thin rectangle 2a x 2b, body x' across the width (half-width a), body y' along
 // the rod (half-length b = L/2). The push is along world +X (the rod starts at theta = 0, so
 // the push is perpendicular to it) and is applied at the body point (0, yn), yn >= 0: the rod
 // turns clockwise about an iCOR on the far side of the CM (body y' < 0). Distances along the
 // rod are reported with the sign of chapter 4: R_axial > 0 on the far side.
 //
-// Dynamic iCOR: the rough-surface model (models.md C) for the nanorod under the `coulomb`
+// Dynamic iCOR: the rough-surface model (docs/models.md C) for the nanorod under the `coulomb`
 // law (stick_slip.hpp: a push inside the limit surface leaves the rod stuck), integrated from
 // rest; the iCOR is read off the velocities (icor_from_velocity) at the requested times.
 // Limits (docs/icor.md): as F/(mu W) -> infinity at a fixed impulse F t the iCOR tends to the

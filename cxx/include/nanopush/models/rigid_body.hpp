@@ -1,5 +1,5 @@
-// The pushed rigid body in the plane (models.md §0) and the smooth-surface right-hand side
-// (models.md §A; thesis eqs 3.22–3.26 with erratum 1).
+// The pushed rigid body in the plane (docs/models.md §0) and the smooth-surface right-hand side
+// (docs/models.md §A; thesis eqs 3.22–3.26 with erratum 1).
 #pragma once
 #include <cmath>
 #include <type_traits>
@@ -20,7 +20,7 @@ struct BarGeometry {
 /// Constant push: magnitude F [N], world direction beta [rad], attached at body point (pbx, pby) [m].
 struct Push {
   double force = 0, beta = 0, pbx = 0, pby = 0;
-  /// Thesis mapping (models.md §0): thesis (xn, yn) -> body point (xn, -yn).
+  /// Thesis mapping (docs/models.md §0): thesis (xn, yn) -> body point (xn, -yn).
   static Push from_thesis(double F, double beta, double xn, double yn) { return {F, beta, xn, -yn}; }
   /// Torque about the CM at orientation theta: (R(theta) pb) x F.
   template <typename S>

@@ -1,4 +1,4 @@
-// Rolling of nanotubes (models.md section E; thesis section 3.2-3.3, eqs 3.10-3.21,
+// Rolling of nanotubes (docs/models.md section E; thesis section 3.2-3.3, eqs 3.10-3.21,
 // Figs 3.3-3.4). A rigid cylinder of radius r (I_cm = m r^2 / 2) pushed by a force F
 // parallel to the plane at height h above its axis (h in [-r, r]).
 //
@@ -48,7 +48,7 @@ struct Decision {
   double fs_available = 0.0;  ///< mu N_slide [N]
 };
 
-/// Rolling versus sliding (models.md E: "decide from which threshold is lower"):
+/// Rolling versus sliding (docs/models.md E: "decide from which threshold is lower"):
 /// - F below both thresholds: stuck;
 /// - rolling threshold lower (or equal) and F >= F_roll: rolling if the static friction
 ///   eq 3.16 asks for is available (|fs| <= mu N), else rolling_with_slip;

@@ -1,4 +1,4 @@
-// Rough-surface sliding of the nanobar (models.md §C; thesis eqs 3.51–3.56 with errata 1–3):
+// Rough-surface sliding of the nanobar (docs/models.md §C; thesis eqs 3.51–3.56 with errata 1–3):
 // the smooth-surface equations plus the Coulomb friction resultant over the contact
 // rectangle (friction.hpp), evaluated at the iCOR implied by the rigid velocity and rotated
 // to world axes.

@@ -1,5 +1,5 @@
 // The `coulomb` friction law: event-located stick–slip for the rough-surface nanobar
-// (models.md §C). docs/stick_slip.md gives the mechanics; in short:
+// (docs/models.md §C). docs/stick_slip.md gives the mechanics; in short:
 //
 //  * Sliding: the friction wrench depends only on the direction of the rigid velocity
 //    V = (vx, vy, omega) and is continuous (C^1) in it while V != 0 (also through omega = 0

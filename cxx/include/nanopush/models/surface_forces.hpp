@@ -1,4 +1,4 @@
-// Surface and adhesion forces at the nanoscale: models.md section F (thesis Ch. 2 and
+// Surface and adhesion forces at the nanoscale: docs/models.md section F (thesis Ch. 2 and
 // section 3.1, Table 3.1). Closed forms after Israelachvili, "Intermolecular and Surface
 // Forces" (the thesis' ref [59]), Johnson-Kendall-Roberts (1971), Parsegian (2006).
 //
@@ -105,7 +105,7 @@ double flat_flat_vdw_pressure(double A, double D);
 
 /// Parsegian rod (cylinder) of length L [m] and diameter d [m] parallel to a plane at gap
 /// z0 [m]: attractive force L A d^(1/2) / (16 z0^(5/2)) [N] (thesis section 4.2.3, ref [82];
-/// models.md section D). Valid for z0 << d << L.
+/// docs/models.md section D). Valid for z0 << d << L.
 double rod_plane_vdw_force(double A, double L, double d, double z0);
 
 /// Symmetric layered surfaces (eq 2.39): half-spaces 1 coated with layers 2 of thickness

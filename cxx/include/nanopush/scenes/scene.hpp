@@ -11,7 +11,7 @@
 
 namespace nanopush {
 
-/// The support surface (models.md §A, §C).
+/// The support surface (docs/models.md §A, §C).
 struct SurfaceSettings {
   std::string kind = "smooth";  ///< smooth | rough
   double mu = 0;                ///< Coulomb friction coefficient
@@ -37,7 +37,7 @@ struct SolverSettings {
 struct Scene {
   std::string name, description;
   std::filesystem::path source;
-  std::string model = "smooth";  ///< surface model: smooth (models.md §A) or rough (§C)
+  std::string model = "smooth";  ///< surface model: smooth (docs/models.md §A) or rough (§C)
   SurfaceSettings surface;
   std::string shape = "bar";
   BarGeometry geometry;          ///< half-width a, half-length b
