@@ -9,7 +9,10 @@
 #include <string>
 #include <vector>
 
+// The C API is the only thing libnanopush_capi exports (built with hidden visibility).
+#pragma GCC visibility push(default)
 #include "nanopush.h"
+#pragma GCC visibility pop
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/scenes/scene.hpp"
 #include "nanopush/engines/engines.hpp"

@@ -1,13 +1,19 @@
 # Install and export (issue 8). After `cmake --install`, other projects use
 #   find_package(nanopush CONFIG REQUIRED)
-# and link nanopush::core (C++ library), nanopush::capi (C API, nanopush.h),
-# nanopush::fortran (`use nanopush`), nanopush::f77 (FORTRAN 77 library) or nanopush::bridge
-# (its bind(C) shims, f77_*.h). Layout under the prefix:
-#   include/nanopush/*.hpp, include/nanopush.h, include/nanopush/f77_*.h
+# and link nanopush::core (the C++ solver; also nanopush::numerics, ::models, ::scenes one by
+# one), nanopush::engines (C++ and F77 engines), nanopush::outputs, nanopush::capi (C API,
+# nanopush.h), nanopush::fortran (`use nanopush`), nanopush::f77 (FORTRAN 77 library) or
+# nanopush::bridge (its bind(C) shims, f77_*.h). Layout under the prefix:
+#   include/nanopush/<layer>/*.hpp, include/nanopush.h, include/nanopush/f77_*.h
 #   include/nanopush/<CompilerID>-<version>/*.mod   (one compiler's .mod files never mix with another's)
-#   lib/libnanopush_*.a, lib/cmake/nanopush/, bin/nanopush, share/nanopush/scenes/
+#   lib/libnanopush_*.a (or .so with -DBUILD_SHARED_LIBS=ON), lib/cmake/nanopush/,
+#   lib/pkgconfig/nanopush.pc (the C API for pkg-config),
+#   bin/nanopush, bin/nanobar, bin/nanobar_quad, share/nanopush/scenes/
+# Nothing installed names the build or the source tree (cmake/Packaging.cmake): the prefix can
+# be copied or moved.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
+include(${CMAKE_CURRENT_LIST_DIR}/PkgConfig.cmake)
 
 # Installed include directories (the build-tree ones are BUILD_INTERFACE in each CMakeLists.txt).
 target_include_directories(nanopush_bridge PUBLIC
@@ -25,7 +31,11 @@ install(TARGETS nanopush_numerics nanopush_models nanopush_scenes nanopush_core
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
         RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-install(TARGETS nanopush RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+# The command line and the legacy programs it runs (`nanopush legacy`: nanobar; the benchmark's
+# rough-surface reference: nanobar_quad), found beside the running nanopush.
+if(NANOPUSH_DRIVERS)
+  install(TARGETS nanopush nanobar nanobar_quad RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+endif()
 
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/cxx/include/nanopush DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
         FILES_MATCHING PATTERN "*.hpp")
@@ -39,6 +49,7 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/drivers/scenes/ DESTINATION ${CMAKE_INST
 set(_cfgdir ${CMAKE_INSTALL_LIBDIR}/cmake/nanopush)
 install(EXPORT nanopushTargets NAMESPACE nanopush:: DESTINATION ${_cfgdir})
 set(NANOPUSH_WITH_SUNDIALS ${SUNDIALS_FOUND})
+set(NANOPUSH_SHARED_LIBS ${BUILD_SHARED_LIBS})
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/nanopushConfig.cmake.in
   ${PROJECT_BINARY_DIR}/nanopushConfig.cmake INSTALL_DESTINATION ${_cfgdir})
 write_basic_package_version_file(${PROJECT_BINARY_DIR}/nanopushConfigVersion.cmake
