@@ -461,6 +461,7 @@ std::string report_section(const Scene& scene, const BenchOptions& o, const Benc
 
 int bench_cmd(BenchOptions o) {
   Scene scene = load_scene(resolve_scene(o.scene));
+  set_provenance_scene(o.scene);
   if (o.samples != 0) {
     require_range("--samples", o.samples, 2, 1e7);
     scene.solver.samples = o.samples;
@@ -520,7 +521,7 @@ void reproduce_bench_scene(ReproduceContext& ctx, const std::string& step, const
   const Scene scene = load_scene(resolve_scene(preset));
   const BenchOutcome r = run_bench(scene, o, nullptr);
   const fs::path csv = dir / (file + ".csv"), png = dir / (file + ".png");
-  bench::write_csv(r.rows, csv);
+  bench::write_csv(r.rows, csv, preset);
   ctx.produced(csv);
   for (const auto& f : plot_all(r.rows, csv, png, label)) {
     ctx.produced(f);

@@ -219,10 +219,22 @@ std::string fixed(double v, int decimals) {
 
 void step_table31(ReproduceContext& ctx) {
   const auto path = ctx.out / "table3_1.csv";
-  AtomicFile f(path);
-  auto& s = f.stream();
-  s << "material,epsilon,A,gamma_old,gamma_corrected,gamma_corrected_unrounded_factor,A_printed,gamma_old_printed,"
-       "gamma_corrected_printed,gamma_experimental,gamma_experimental_printed_mJ_per_m2,old_status,corrected_status\n";
+  CsvWriter f(path, {text_column("material", "material of Table 3.1"),
+                     {"epsilon", "1", "relative permittivity (as printed)"},
+                     {"A", "J", "Hamaker constant (as printed)"},
+                     {"gamma_old", "J/m^2", "surface energy A/(24 pi D0^2), D0 = 0.165 nm (eq 3.6), ours"},
+                     {"gamma_corrected", "J/m^2", "surface energy A/1.9302e-18 m^2 (eq 3.9), ours"},
+                     {"gamma_corrected_unrounded_factor", "J/m^2",
+                      "surface energy A/(24 pi (0.16 nm)^2), the factor of eq 3.9 before rounding"},
+                     {"A_printed", "J", "Hamaker constant printed in the thesis"},
+                     {"gamma_old_printed", "J/m^2", "old surface energy printed in the thesis"},
+                     {"gamma_corrected_printed", "J/m^2", "corrected surface energy printed in the thesis"},
+                     {"gamma_experimental", "J/m^2", "experimental surface energy printed (mid-point of a range)"},
+                     text_column("gamma_experimental_printed_mJ_per_m2",
+                                 "experimental surface energy as printed in the thesis, in mJ/m^2 (text: may be a range)"),
+                     text_column("old_status", "does gamma_old round to the printed value"),
+                     text_column("corrected_status", "does gamma_corrected round to the printed value")});
+  std::ostringstream s;
   std::ostringstream md;
   md << "\n## Table 3.1: surface energies from Hamaker constants\n\n"
      << "Old: gamma = A/(24 pi D0^2), D0 = 0.165 nm (eq 3.6). Corrected: gamma = A/1.9302e-18 (eq 3.9); the\n"
@@ -243,11 +255,11 @@ void step_table31(ReproduceContext& ctx) {
     if (!c.old_exact) old_mismatch.push_back(row.material + " (" + old_status + ")");
     if (!c.corrected_exact && c.corrected_unrounded) corr_unrounded.push_back(row.material);
     if (!c.corrected_exact && !c.corrected_unrounded) corr_none.push_back(row.material);
-    s << csv_text(row.material) << "," << csv_number(row.permittivity) << "," << csv_number(row.A) << ","
-      << csv_number(c.gamma_old) << "," << csv_number(c.gamma_corrected) << "," << csv_number(c.gamma_corrected_exact)
-      << "," << csv_number(row.A) << "," << csv_number(row.old_printed * 1e-3) << ","
-      << csv_number(row.corrected_printed * 1e-3) << "," << csv_number(row.experimental_mid * 1e-3) << ","
-      << csv_text(row.experimental) << "," << csv_text(old_status) << "," << csv_text(corr_status) << "\n";
+    f.cells({csv_text(row.material), csv_number(row.permittivity), csv_number(row.A), csv_number(c.gamma_old),
+             csv_number(c.gamma_corrected), csv_number(c.gamma_corrected_exact), csv_number(row.A),
+             csv_number(row.old_printed * 1e-3), csv_number(row.corrected_printed * 1e-3),
+             csv_number(row.experimental_mid * 1e-3), csv_text(row.experimental), csv_text(old_status),
+             csv_text(corr_status)});
     md << "| " << row.material << " | " << fixed(row.A * 1e20, row.A_decimals) << " | "
        << fixed(c.gamma_old * 1e3, row.old_decimals + 2) << " | " << fixed(row.old_printed, row.old_decimals) << " | "
        << old_status << " | " << fixed(c.gamma_corrected * 1e3, 4) << " | " << fixed(row.corrected_printed, 4) << " | "
@@ -310,7 +322,11 @@ void step_fig33(ReproduceContext& ctx) {
   const double F = rolling::minimum_rolling_force(W, k, r);
   const int n = ctx.quick ? 41 : 401;
   const auto csv = ctx.out / "fig3_3.csv";
-  CsvWriter w(csv, {"h", "h_over_r", "fs_cxx", "fs_f77", "fs_over_F"});
+  CsvWriter w(csv, {{"h", "m", "push height h of eq 3.16 (|h| <= r)"},
+                    {"h_over_r", "1", "push height over the tube radius"},
+                    {"fs_cxx", "N", "static friction for pure rolling, fs = (F/3)(1 - 2h/r) (eq 3.16), C++"},
+                    {"fs_f77", "N", "the same from the FORTRAN 77 routine"},
+                    {"fs_over_F", "1", "fs_cxx / F, F = minimum rolling force"}});
   double maxdiff = 0.0;
   for (int i = 0; i < n; ++i) {
     const double h = -r + 2.0 * r * i / (n - 1);
@@ -361,9 +377,16 @@ void step_fig34(ReproduceContext& ctx) {
   const auto t = thesis_mwcnt();
   const double r = t.body.radius, W = t.load.normal_load, kjkr = t.load.contact_half_width;
   std::vector<double> ks = {0.0, 0.5e-9, 1.0e-9, 1.5e-9, 2.0e-9, 2.5e-9, 3.0e-9, kjkr};
-  std::vector<std::string> header = {"h", "h_over_r"};
-  for (std::size_t j = 0; j + 1 < ks.size(); ++j) header.push_back("fs_k" + fixed(ks[j] * 1e9, 1) + "nm");
-  header.push_back("fs_k_jkr");
+  Columns header = {{"h", "m", "push height h of eq 3.16 (|h| <= r)"}, {"h_over_r", "1", "push height over the tube radius"}};
+  for (std::size_t j = 0; j + 1 < ks.size(); ++j) {
+    std::string k = fixed(ks[j] * 1e9, 1);
+    std::replace(k.begin(), k.end(), '.', 'p');
+    header.push_back({"fs_k_" + k + "nm", "N",
+                      "static friction (eq 3.16) at F = minimum rolling force, rolling coefficient k = " +
+                          fixed(ks[j] * 1e9, 1) + " nm",
+                      "number", {{"k", ks[j]}}});
+  }
+  header.push_back({"fs_k_jkr", "N", "the same with k = the JKR contact half-width b_JKR", "number", {{"k", kjkr}}});
   const int n = ctx.quick ? 21 : 201;
   const auto csv = ctx.out / "fig3_4.csv";
   CsvWriter w(csv, header);
@@ -385,7 +408,10 @@ void step_fig34(ReproduceContext& ctx) {
   ctx.produced(csv);
   // Thresholds and the rolling-vs-sliding decision.
   const auto csv2 = ctx.out / "fig3_4_thresholds.csv";
-  CsvWriter w2(csv2, {"k", "rolling_resistance_fs", "minimum_rolling_force", "sliding_threshold_mu0.1"});
+  CsvWriter w2(csv2, {{"k", "m", "rolling coefficient"},
+                      {"rolling_resistance_fs", "N", "rolling resistance fs = W k / r"},
+                      {"minimum_rolling_force", "N", "minimum rolling force F = 1.01 W k / r"},
+                      {"sliding_threshold_mu_0p1", "N", "sliding threshold mu N (eq 3.19) at mu = 0.1", "number", {{"mu", 0.1}}}});
   for (double k : ks)
     w2.row({k, rolling::rolling_resistance(W, k, r), rolling::minimum_rolling_force(W, k, r),
             rolling::sliding_threshold(0.1, t.load.sliding_load)});

@@ -225,11 +225,12 @@ int run_bench(const Options& o) {
     std::cout << "| " << r.what << " | " << std::setprecision(4) << r.evals_per_s << " | " << r.evals << " | "
               << std::setprecision(3) << r.seconds << " |\n";
   if (!o.bench_csv.empty()) {
-    AtomicFile f(o.bench_csv);
-    f.stream() << "evaluation,evaluations_per_s,evaluations,seconds\n";
+    CsvWriter f(o.bench_csv, {text_column("evaluation", "the evaluation form timed"),
+                              {"evaluation_rate", "1/s", "evaluations per second"},
+                              count_column("evaluations", "evaluations timed"),
+                              {"time", "s", "wall time of those evaluations"}});
     for (const auto& r : rows)
-      f.stream() << '"' << r.what << "\"," << csv_number(r.evals_per_s) << ',' << r.evals << ','
-                 << csv_number(r.seconds) << '\n';
+      f.cells({csv_quote(r.what), csv_number(r.evals_per_s), std::to_string(r.evals), csv_number(r.seconds)});
     f.commit();
   }
   return 0;
@@ -276,10 +277,15 @@ void fig3_9(ReproduceContext& ctx) {
   const std::vector<double> alphas = {0.0, kPi / 6, kPi / 4, kPi / 3, kPi / 2};
   const std::vector<std::string> names = {"0", "pi/6", "pi/4", "pi/3", "pi/2"};
   const int n = ctx.quick ? 61 : 601;
-  std::vector<std::string> header = {"R_m", "R_over_L"};
+  Columns header = {{"R", "m", "distance of the iCOR from the centre of the contact"},
+                    {"R_over_L", "1", "R / max(a, b)"}};
   for (std::size_t k = 0; k < alphas.size(); ++k) {
-    header.push_back("Ffn_alpha" + std::to_string(k));
-    header.push_back("Mfn_alpha" + std::to_string(k));
+    header.push_back({"Ffn_alpha" + std::to_string(k), "1",
+                      "normalised friction force |f|/(mu N) at iCOR direction alpha = " + names[k], "number",
+                      {{"alpha", alphas[k]}}});
+    header.push_back({"Mfn_alpha" + std::to_string(k), "1",
+                      "normalised friction moment |m_f|/(mu N max(a, b)) at iCOR direction alpha = " + names[k],
+                      "number", {{"alpha", alphas[k]}}});
   }
   const auto csv = ctx.out / "fig3_9_friction_vs_R.csv";
   CsvWriter w(csv, header);
@@ -375,8 +381,12 @@ void fig3_10_11(ReproduceContext& ctx) {
   double fmin = 1e300, fmax = -1e300, mmax = -1e300, worst_engine = 0.0;
   double mmax_cx = 0, mmax_cy = 0;
   {
-    AtomicFile f(csv);
-    f.stream() << "icor_x_nm,icor_y_nm,R_m,alpha_rad,Ffn,Mfn\n";
+    CsvWriter f(csv, {{"icor_x_nm", "nm", "iCOR x' in body axes (across the width), in nanometres"},
+                      {"icor_y_nm", "nm", "iCOR y' in body axes (along the length), in nanometres"},
+                      {"R", "m", "distance of the iCOR from the centre of the contact"},
+                      {"alpha", "rad", "direction of the iCOR: (x', y') = -R (cos alpha, sin alpha)"},
+                      {"Ffn", "1", "normalised friction force |f|/(mu N) (Fig 3.10)"},
+                      {"Mfn", "1", "normalised friction moment |m_f|/(mu N max(a, b)) (Fig 3.11)"}});
     for (int i = 0; i < n; ++i) {
       const double cx = xmax * (2 * i - (n - 1)) / (n - 1);  // exactly 0 at the centre
       for (int j = 0; j < n; ++j) {
@@ -395,10 +405,9 @@ void fig3_10_11(ReproduceContext& ctx) {
           mmax_cx = cx;
           mmax_cy = cy;
         }
-        f.stream() << csv_number(cx * 1e9) << ',' << csv_number(cy * 1e9) << ',' << csv_number(R) << ','
-                   << csv_number(alpha) << ',' << csv_number(Ffn) << ',' << csv_number(Mfn) << '\n';
+        f.row({cx * 1e9, cy * 1e9, R, alpha, Ffn, Mfn});
       }
-      f.stream() << '\n';  // gnuplot scan separator
+      f.blank_line();  // gnuplot scan separator
     }
     f.commit();
   }

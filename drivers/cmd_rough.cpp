@@ -9,6 +9,7 @@
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/outputs/io.hpp"
 #include "nanopush/outputs/plot.hpp"
+#include "nanopush/outputs/trajectory_csv.hpp"
 #include "nanopush/engines/engines.hpp"
 #include "registry.hpp"
 
@@ -55,8 +56,12 @@ RunStats stats_of(const Scene& sc, const Trajectory& tr) {
   return s;
 }
 
-void write_rough_csv(const Trajectory& tr, const std::filesystem::path& p) {
-  CsvWriter w(p, {"t", "x", "y", "theta", "vx", "vy", "omega", "fx", "fy", "mf", "f_abs", "w_push", "w_fric"});
+void write_rough_csv(const Trajectory& tr, const std::filesystem::path& p, const std::string& scene) {
+  Columns cols = trajectory_column_specs();
+  cols.push_back({"f_abs", "N", "magnitude of the friction force, hypot(fx, fy)"});
+  cols.push_back({"w_push", "J", "work done by the push since t = 0"});
+  cols.push_back({"w_fric", "J", "work done by friction since t = 0 (<= 0)"});
+  CsvWriter w(p, cols, scene);
   for (std::size_t i = 0; i < tr.rows.size(); ++i) {
     const auto& r = tr.rows[i];
     std::vector<double> v(r.begin(), r.end());
@@ -90,12 +95,31 @@ void reproduce_rough(ReproduceContext& ctx) {
     if (!ctx.quick || f == 12 || f == 17 || f == 18 || f == 25 || f == 29) figs.push_back(f);
 
   CsvWriter summary(dir / "summary.csv",
-                    {"fig", "mu", "thesis_complete", "thesis_t_reached_s", "thesis_nfcn_cxx", "thesis_nfcn_f77",
-                     "thesis_nrejct_cxx", "thesis_dev_theta_cxx_f77_rad", "thesis_energy_rel", "thesis_power_max_W",
-                     "coulomb_nfcn", "coulomb_events", "coulomb_stuck_at_s", "coulomb_energy_rel",
-                     "coulomb_power_max_W", "cvode_nfcn", "cvode_dev_theta_rad", "coulomb_theta_min", "coulomb_theta_max",
-                     "coulomb_mf_min_Nm", "coulomb_mf_max_Nm", "coulomb_fx_min_N", "coulomb_fx_max_N",
-                     "coulomb_f_min_N", "coulomb_f_max_N"});
+                    {{"fig", "1", "thesis figure 3.<fig> (scene thesis/fig3_<fig>)", "integer"},
+                     {"mu", "1", "friction coefficient of the scene"},
+                     count_column("thesis_complete", "1 if the thesis law ran to t_end, 0 if it stopped (chatter)"),
+                     {"thesis_t_reached", "s", "last output time reached under the thesis law"},
+                     count_column("thesis_nfcn_cxx", "RHS evaluations, thesis law, C++ faithful engine"),
+                     count_column("thesis_nfcn_f77", "RHS evaluations, thesis law, F77 engine"),
+                     count_column("thesis_nrejct_cxx", "rejected steps, thesis law, C++ faithful engine"),
+                     {"thesis_dev_theta_cxx_f77", "rad", "max |theta_cxx - theta_f77|, thesis law"},
+                     {"thesis_energy_rel", "1", "energy balance error / max work, thesis law"},
+                     {"thesis_power_max", "W", "largest friction power (must be <= 0), thesis law"},
+                     count_column("coulomb_nfcn", "RHS evaluations, coulomb law, C++ faithful engine"),
+                     count_column("coulomb_events", "rest events (velocity zero located), coulomb law"),
+                     {"coulomb_stuck_at", "s", "time the body stuck for good, coulomb law; -1 if it never did"},
+                     {"coulomb_energy_rel", "1", "energy balance error / max work, coulomb law"},
+                     {"coulomb_power_max", "W", "largest friction power (must be <= 0), coulomb law"},
+                     count_column("cvode_nfcn", "RHS evaluations, coulomb law, CVODE (rtol / 100)"),
+                     {"cvode_dev_theta", "rad", "max |theta_cvode - theta_bs|, coulomb law"},
+                     {"coulomb_theta_min", "rad", "smallest orientation, coulomb law"},
+                     {"coulomb_theta_max", "rad", "largest orientation, coulomb law"},
+                     {"coulomb_mf_min", "N m", "smallest friction moment, coulomb law"},
+                     {"coulomb_mf_max", "N m", "largest friction moment, coulomb law"},
+                     {"coulomb_fx_min", "N", "smallest friction force x, coulomb law"},
+                     {"coulomb_fx_max", "N", "largest friction force x, coulomb law"},
+                     {"coulomb_f_min", "N", "smallest friction force magnitude, coulomb law"},
+                     {"coulomb_f_max", "N", "largest friction force magnitude, coulomb law"}});
   std::ostringstream table;
   table << "| Fig | mu | thesis law: RHS evals C++ / F77 | reached | C++-F77 theta | coulomb law: RHS evals | "
            "rest events | energy balance (thesis / coulomb) | CVODE theta dev |\n"
@@ -127,7 +151,7 @@ void reproduce_rough(ReproduceContext& ctx) {
     for (auto& [tr, tag] : {std::pair{&tc, "thesis_cxx"}, std::pair{&tf, "thesis_f77"}, std::pair{&cc, "coulomb_cxx"},
                             std::pair{&cv, "coulomb_cvode"}}) {
       const fs::path p = dir / (base + "_" + tag + ".csv");
-      write_rough_csv(*tr, p);
+      write_rough_csv(*tr, p, "thesis/" + base);
       ctx.produced(p);
     }
     const RunStats st = stats_of(sc, tc), sco = stats_of(sc, cc);

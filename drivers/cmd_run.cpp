@@ -57,6 +57,7 @@ void print_summary(const Scene& sc, const Trajectory& tr, double seconds, std::o
 
 int run_cmd(const RunOptions& o) {
   const Scene sc = load_scene(resolve_scene(o.scene));
+  set_provenance_scene(o.scene);  // recorded in the CSV's sidecar
   if (!o.quiet && !sc.load_report.empty()) std::cerr << sc.name << ": " << sc.load_report;
   RunSettings rs;
   rs.engine = o.engine;
@@ -82,11 +83,14 @@ int run_cmd(const RunOptions& o) {
     return 3;
   }
   if (out == "-") {
-    std::cout << "t,x,y,theta,vx,vy,omega,fx,fy,mf\n" << std::setprecision(17);
+    // Standard output: the same CSV as the file, without a sidecar (docs/outputs.md).
+    std::vector<std::vector<std::string>> rows;
     for (auto& r : tr.rows) {
-      for (std::size_t i = 0; i < r.size(); ++i) std::cout << (i ? "," : "") << r[i];
-      std::cout << "\n";
+      std::vector<std::string> cells;
+      for (double v : r) cells.push_back(csv_number(v));
+      rows.push_back(std::move(cells));
     }
+    std::cout << csv_document(trajectory_column_specs(), rows);
   } else {
     write_trajectory_csv(tr, out);
   }

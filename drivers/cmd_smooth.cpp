@@ -21,9 +21,20 @@ void reproduce_fig3_6(ReproduceContext& ctx) {
   fs::create_directories(dir);
   const std::vector<std::string> cases = {"a", "b", "c", "d", "e", "f", "g", "h"};
   CsvWriter summary(dir / "summary.csv",
-                    {"case", "theta0_rad", "theta_eq_rad", "period_exact_s", "max_err_theta_cxx_rad",
-                     "max_err_theta_f77_rad", "max_dev_theta_cxx_f77_rad", "energy_drift_rel_cxx",
-                     "nfcn_cxx", "nfcn_f77", "naccpt_cxx", "naccpt_f77", "nrejct_cxx", "nrejct_f77"});
+                    {text_column("case", "scene of Fig 3.6 (thesis/fig3_6<case>)"),
+                     {"theta0", "rad", "initial orientation"},
+                     {"theta_eq", "rad", "equilibrium orientation of the pendulum (push line through the CM)"},
+                     {"period_exact", "s", "period of the exact pendulum solution (0: no oscillation)"},
+                     {"max_err_theta_cxx", "rad", "max |theta - theta_exact| over the outputs, C++ faithful engine"},
+                     {"max_err_theta_f77", "rad", "max |theta - theta_exact| over the outputs, F77 engine"},
+                     {"max_dev_theta_cxx_f77", "rad", "max |theta_cxx - theta_f77| over the outputs"},
+                     {"energy_drift_rel_cxx", "1", "max |E(t) - E(0)| / (F lever), C++ engine"},
+                     count_column("nfcn_cxx", "RHS evaluations, C++ faithful engine"),
+                     count_column("nfcn_f77", "RHS evaluations, F77 engine"),
+                     count_column("naccpt_cxx", "accepted steps, C++ faithful engine"),
+                     count_column("naccpt_f77", "accepted steps, F77 engine"),
+                     count_column("nrejct_cxx", "rejected steps, C++ faithful engine"),
+                     count_column("nrejct_f77", "rejected steps, F77 engine")});
   plot::Figure fig;
   fig.title = "Fig 3.6: nanobar pushed on a smooth surface (theta against t; C++ and F77 engines)";
   fig.rows = 4;
@@ -48,8 +59,9 @@ void reproduce_fig3_6(ReproduceContext& ctx) {
     fo.engine = "f77";
     const Trajectory tc = run_engine(sc, cx);
     const Trajectory tf = run_engine(sc, fo);
-    write_trajectory_csv(tc, dir / (sc.name + "_cxx.csv"));
-    write_trajectory_csv(tf, dir / (sc.name + "_f77.csv"));
+    const std::string scene_id = "thesis/fig3_6" + c;
+    write_trajectory_csv(tc, dir / (sc.name + "_cxx.csv"), scene_id);
+    write_trajectory_csv(tf, dir / (sc.name + "_f77.csv"), scene_id);
     ctx.produced(dir / (sc.name + "_cxx.csv"));
     ctx.produced(dir / (sc.name + "_f77.csv"));
     const Pendulum<double> ex(sc.push.theta_equilibrium(), sc.initial[kTheta], sc.push.force * sc.push.lever(),
@@ -58,7 +70,12 @@ void reproduce_fig3_6(ReproduceContext& ctx) {
     auto energy = [&](const TrajectoryRow& r) {
       return 0.5 * sc.inertia * r[6] * r[6] - Fd * std::cos(r[3] - sc.push.theta_equilibrium());
     };
-    CsvWriter err(dir / (sc.name + "_error.csv"), {"t_s", "theta_exact_rad", "err_cxx_rad", "err_f77_rad"});
+    CsvWriter err(dir / (sc.name + "_error.csv"),
+                  {{"t", "s", "time"},
+                   {"theta_exact", "rad", "orientation of the exact pendulum solution"},
+                   {"err_cxx", "rad", "|theta - theta_exact|, C++ faithful engine"},
+                   {"err_f77", "rad", "|theta - theta_exact|, F77 engine"}},
+                  scene_id);
     double ec = 0, ef = 0, dev = 0, drift = 0;
     for (std::size_t i = 0; i < tc.rows.size(); ++i) {
       const double t = tc.rows[i][0], th = ex.theta(t);

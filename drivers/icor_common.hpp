@@ -7,6 +7,7 @@
 #include <iostream>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -50,32 +51,41 @@ inline std::vector<NamedSolver> all_solvers(double L, double k2) {
 
 inline std::string cell(const std::optional<double>& v) { return v ? csv_number(*v) : std::string(); }
 
-/// A CSV whose cells may be empty (a branch that does not exist): written atomically.
+/// A CSV whose cells may be empty (a branch that does not exist), with its sidecar
+/// (docs/outputs.md): written atomically, or to standard output (no sidecar) when the path is
+/// empty or "-".
 class Table {
  public:
-  Table(const std::filesystem::path& path, std::vector<std::string> header) : path_(path), header_(std::move(header)) {}
-  void row(std::vector<std::string> cells) { rows_.push_back(std::move(cells)); }
-  std::string text() const {
-    std::ostringstream o;
-    for (std::size_t i = 0; i < header_.size(); ++i) o << (i ? "," : "") << header_[i];
-    o << "\n";
-    for (const auto& r : rows_) {
-      for (std::size_t i = 0; i < r.size(); ++i) o << (i ? "," : "") << r[i];
-      o << "\n";
-    }
-    return o.str();
+  Table(const std::filesystem::path& path, Columns columns) : path_(path), columns_(std::move(columns)) {}
+  void row(std::vector<std::string> cells) {
+    if (cells.size() != columns_.size())
+      throw std::logic_error(path_.string() + ": row of " + std::to_string(cells.size()) + " cells for " +
+                             std::to_string(columns_.size()) + " columns");
+    rows_.push_back(std::move(cells));
   }
-  /// Write to the file (atomically), or to stdout when the path is empty or "-".
+  std::string text() const { return csv_document(columns_, rows_); }
   void write() const {
     if (path_.empty() || path_ == "-") std::cout << text();
-    else write_file_atomic(path_, text());
+    else write_csv_atomic(path_, columns_, rows_);
   }
 
  private:
   std::filesystem::path path_;
-  std::vector<std::string> header_;
+  Columns columns_;
   std::vector<std::vector<std::string>> rows_;
 };
+
+/// A column family's name part for a parameter value: 0.1 -> "0p1", 1e-4 -> "0p0001", 2 -> "2".
+inline std::string value_name(double v) {
+  std::ostringstream s;
+  s << v;
+  std::string r = s.str();
+  for (char& c : r)
+    if (c == '.') c = 'p';
+    else if (c == '-') c = 'm';
+    else if (c == '+') c = 'p';
+  return r;
+}
 
 inline std::vector<double> sweep(double lo, double hi, int n, bool log) {
   if (n < 1) throw InputError("--n", std::to_string(n), "must be >= 1");

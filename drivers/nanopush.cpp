@@ -5,10 +5,13 @@
 #include <iostream>
 
 #include "nanopush/numerics/error.hpp"
+#include "nanopush/outputs/io.hpp"
 #include "registry.hpp"
 
 int main(int argc, char** argv) {
   using namespace nanopush;
+  // Provenance of every CSV sidecar this run writes (docs/outputs.md).
+  set_provenance(NANOPUSH_VERSION, join_command_line(argc, argv));
   CLI::App app{
       "nanopush " NANOPUSH_VERSION
       ": mechanics of pushing nano-objects with an AFM tip.\n"

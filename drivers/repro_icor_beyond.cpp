@@ -47,9 +47,18 @@ void step_fig5_3(ReproduceContext& ctx) {
   };
   const int n = ctx.quick ? 8 : 59;
   const auto csv = ctx.out / "fig5_3.csv";
-  std::vector<std::string> h = {"yn", "R_impulsive_5_5", "R_4_13", "R_5_4_table_branch", "R_quasi_static_rectangle"};
-  for (double r : kDynamicRatios) h.push_back("R_dynamic_F=" + ratio_name(r) + "muW");
-  for (double r : kDynamicRatios) h.push_back("theta_F=" + ratio_name(r) + "muW");
+  Columns h = {{"yn", "m", "push point: distance from the CM along the rod"},
+               {"R_impulsive", "m", "impulsive iCOR k^2/yn (eq 5.5)"},
+               {"R_unknown_pressure", "m", "quasi-static iCOR, unknown pressure (eq 4.13)"},
+               {"R_constrained_table_branch", "m", "|R| of the constrained cubic's Table 5.1 branch (eq 5.4)"},
+               {"R_quasi_static_rectangle", "m", "quasi-static iCOR of the 2a x L contact strip"}};
+  for (double r : kDynamicRatios)
+    h.push_back({"R_dynamic_ratio_" + value_name(r), "m",
+                 "dynamic iCOR along the axis at t = 1e-10 s, F = " + ratio_name(r) + " mu W; empty if not rotating",
+                 "number", {{"force_ratio", r}}});
+  for (double r : kDynamicRatios)
+    h.push_back({"theta_ratio_" + value_name(r), "rad", "rotation at t = 1e-10 s, F = " + ratio_name(r) + " mu W",
+                 "number", {{"force_ratio", r}}});
   Table t(csv, h);
   int between_fail = 0, between_total = 0;
   std::vector<double> yns = sweep(5e-9, b, n, false);
@@ -86,7 +95,14 @@ void step_fig5_3(ReproduceContext& ctx) {
 
   // The two limits, read along the way.
   const auto lim = ctx.out / "fig5_3_limits.csv";
-  Table tl(lim, {"limit", "yn", "parameter", "t", "R", "reference", "relative_distance", "integrator"});
+  Table tl(lim, {text_column("limit", "which limit: impulsive (fixed impulse), quasi-static (F -> F_min), no motion"),
+                 {"yn", "m", "push point: distance from the CM along the rod"},
+                 {"parameter", "1", "F/(mu W) for the impulsive limit; F/F_min - 1 for the quasi-static one and the check"},
+                 {"t", "s", "time of the reading"},
+                 {"R", "m", "dynamic iCOR along the axis; empty when stuck"},
+                 {"reference", "m", "the limit's iCOR: impulsive (eq 5.5) or quasi-static rectangle"},
+                 {"relative_distance", "1", "|R / reference - 1|; empty when stuck"},
+                 text_column("integrator", "integrator used: bulirsch-stoer or cvode")});
   struct LimitRow {
     double yn, p, R, ref, d;
   };
@@ -200,9 +216,15 @@ void step_icor_rectangle(ReproduceContext& ctx) {
   const double L = rod.length, b = rod.half_length();
   const int n = ctx.quick ? 12 : 60;
   const auto csv = ctx.out / "icor_rectangle.csv";
-  std::vector<std::string> h = {"yn", "R_4_13", "F_min_4_8_ratio"};
-  for (double ab : kAspects) h.push_back("R_a/b=" + ratio_name(ab));
-  for (double ab : kAspects) h.push_back("F_min_ratio_a/b=" + ratio_name(ab));
+  Columns h = {{"yn", "m", "push point: distance from the CM along the rod"},
+               {"R_unknown_pressure", "m", "quasi-static iCOR of the line contact (eq 4.13)"},
+               {"F_min_line_ratio", "1", "minimum push force of the line contact over mu W (eq 4.8)"}};
+  for (double ab : kAspects)
+    h.push_back({"R_aspect_" + value_name(ab), "m", "quasi-static iCOR of the 2a x L rectangle, a/b = " + ratio_name(ab),
+                 "number", {{"aspect", ab}}});
+  for (double ab : kAspects)
+    h.push_back({"F_min_ratio_aspect_" + value_name(ab), "1",
+                 "minimum push force of the rectangle over mu W, a/b = " + ratio_name(ab), "number", {{"aspect", ab}}});
   Table t(csv, h);
   std::vector<double> worst(kAspects.size(), 0.0);
   bool all_converged = true;

@@ -25,14 +25,17 @@ void step_table5_1(ReproduceContext& ctx) {
   const auto rod = icor::nanorod();
   const double L = rod.length, k2 = rod.gyration_squared();
   const auto solvers = all_solvers(L, k2);
-  std::vector<std::string> header = {"yn", "thesis"};
+  Columns header = {{"yn", "m", "push point: distance from the CM along the rod"},
+                    {"thesis", "m", "|R| printed in Table 5.1"}};
   for (const auto& s : solvers) {
-    header.push_back(s.name + "_negative");
-    header.push_back(s.name + "_positive");
+    header.push_back({s.name + "_negative", "m", "negative root of the constrained cubic (eq 5.4), " + s.name});
+    header.push_back({s.name + "_positive", "m", "positive root (the other branch), " + s.name + "; empty if none"});
   }
-  for (const auto& s : solvers) header.push_back("deviation_" + s.name);
-  header.push_back("printed_digits_match");
-  header.push_back("max_relative_spread");
+  for (const auto& s : solvers)
+    header.push_back({"deviation_" + s.name, "1", "(|R_negative| - printed) / printed, " + s.name});
+  header.push_back(count_column("printed_digits_match",
+                                "1 if |R_negative| rounded to the printed digits equals the printed value for all solvers"));
+  header.push_back({"max_relative_spread", "1", "largest relative difference between the four solvers' roots"});
   const auto path = ctx.out / "table5_1.csv";
   Table t(path, header);
   ctx.report << "\n## Table 5.1: iCOR from the constrained cubic (5.4), nanorod L = 590 nm\n\n"
@@ -125,8 +128,19 @@ void step_error_analysis(ReproduceContext& ctx) {
     }
     lines.push_back({"5.4", s.name, R, icor::kThesisStdConstrained});
   }
-  Table t(path, {"equation", "solver", "n", "yn_first", "yn_last", "yn_step", "mean_R_nm", "sample_std_nm",
-                 "population_std_nm", "thesis_std_nm", "truncated_4dp", "rounded_4dp", "deviation_nm"});
+  Table t(path, {text_column("equation", "4.13 (unknown pressure) or 5.4 (constrained cubic)"),
+                 text_column("solver", "closed form, or the solver of the cubic"),
+                 count_column("n", "samples"),
+                 {"yn_first", "m", "first push point"},
+                 {"yn_last", "m", "last push point"},
+                 {"yn_step", "m", "push point spacing"},
+                 {"mean_R_nm", "nm", "mean |R| over the samples, in nanometres (as the thesis)"},
+                 {"sample_std_nm", "nm", "sample standard deviation of |R| (n - 1), in nanometres"},
+                 {"population_std_nm", "nm", "population standard deviation of |R| (n), in nanometres"},
+                 {"thesis_std_nm", "nm", "standard deviation printed in section 5.6.1.1, in nanometres"},
+                 {"truncated_4dp", "nm", "sample_std_nm truncated to 4 decimals"},
+                 {"rounded_4dp", "nm", "sample_std_nm rounded to 4 decimals"},
+                 {"deviation_nm", "nm", "sample_std_nm - thesis_std_nm"}});
   for (const auto& l : lines) {
     const double n = static_cast<double>(l.R.size());
     double mean = 0.0;
@@ -152,7 +166,11 @@ void step_fig4_2(ReproduceContext& ctx) {
   const double L = rod.length, b = rod.half_length();
   const int n = ctx.quick ? 30 : 296;
   const auto csv = ctx.out / "fig4_2.csv";
-  CsvWriter w(csv, {"yn", "R_4_1_experimental_fit", "R_4_2_falvo", "R_4_3_li", "R_4_13_unknown_pressure"});
+  CsvWriter w(csv, {{"yn", "m", "push point: distance from the CM along the rod"},
+                    {"R_experimental_fit", "m", "iCOR distance from the CM, experimental fit (eq 4.1)"},
+                    {"R_falvo", "m", "iCOR distance, Falvo et al. (eq 4.2)"},
+                    {"R_li", "m", "iCOR distance, Li et al. (eq 4.3)"},
+                    {"R_unknown_pressure", "m", "iCOR distance, unknown pressure (eq 4.13)"}});
   double worst = 0.0;
   for (double yn : sweep(0.0, b, n, false)) {
     const double r = icor::unknown_pressure(yn, L);
@@ -192,8 +210,10 @@ void step_fig4_3(ReproduceContext& ctx) {
   const int n = ctx.quick ? 30 : 296;
   const double F = 0.15 * W;  // one push force for the whole family: F >= mu W >= F_min for mu <= 0.15
   const auto csv = ctx.out / "fig4_3.csv";
-  std::vector<std::string> h = {"yn"};
-  for (double mu : kMuFamily43) h.push_back("R_4_7_" + mu_name(mu));
+  Columns h = {{"yn", "m", "push point: distance from the CM along the rod"}};
+  for (double mu : kMuFamily43)
+    h.push_back({"R_known_pressure_mu_" + value_name(mu), "m",
+                 "iCOR distance, known uniform pressure (eq 4.7), F = 0.15 W, " + mu_name(mu), "number", {{"mu", mu}}});
   CsvWriter w(csv, h);
   for (double yn : sweep(0.0, b, n, false)) {
     std::vector<double> r = {yn};
@@ -220,8 +240,9 @@ void step_fig4_4(ReproduceContext& ctx) {
   const double L = rod.length, b = rod.half_length(), W = rod.load();
   const int n = ctx.quick ? 30 : 296;
   const auto csv = ctx.out / "fig4_4.csv";
-  std::vector<std::string> h = {"yn"};
-  for (double mu : kMuFamily44) h.push_back("F_min_4_8_" + mu_name(mu));
+  Columns h = {{"yn", "m", "push point: distance from the CM along the rod"}};
+  for (double mu : kMuFamily44)
+    h.push_back({"F_min_mu_" + value_name(mu), "N", "minimum push force (eq 4.8), " + mu_name(mu), "number", {{"mu", mu}}});
   CsvWriter w(csv, h);
   for (double yn : sweep(0.0, b, n, false)) {
     std::vector<double> r = {yn};
@@ -247,8 +268,11 @@ void step_fig4_5(ReproduceContext& ctx) {
   const double L = rod.length, b = rod.half_length(), W = rod.load();
   const int n = ctx.quick ? 30 : 296;
   const auto csv = ctx.out / "fig4_5.csv";
-  std::vector<std::string> h = {"yn", "R_4_13"};
-  for (double mu : kMuFamily44) h.push_back("F_4_10_" + mu_name(mu));
+  Columns h = {{"yn", "m", "push point: distance from the CM along the rod"},
+               {"R_unknown_pressure", "m", "iCOR distance, unknown pressure (eq 4.13)"}};
+  for (double mu : kMuFamily44)
+    h.push_back({"F_from_icor_mu_" + value_name(mu), "N", "push force from the iCOR (eq 4.10), " + mu_name(mu), "number",
+                 {{"mu", mu}}});
   CsvWriter w(csv, h);
   for (double yn : sweep(0.0, b, n, false)) {
     const double R = icor::unknown_pressure(yn, L);
@@ -275,7 +299,12 @@ void step_fig5_2(ReproduceContext& ctx) {
   const double L = rod.length, b = rod.half_length(), k2 = rod.gyration_squared();
   const int n = ctx.quick ? 30 : 296;
   const auto csv = ctx.out / "fig5_2.csv";
-  Table t(csv, {"yn", "R_4_13", "R_5_4_negative", "R_5_4_positive", "far_side_5_4", "near_side_5_4"});
+  Table t(csv, {{"yn", "m", "push point: distance from the CM along the rod"},
+                {"R_unknown_pressure", "m", "iCOR distance, unknown pressure (eq 4.13)"},
+                {"R_constrained_negative", "m", "negative root of the constrained cubic (eq 5.4); empty if none"},
+                {"R_constrained_positive", "m", "positive root of the constrained cubic (eq 5.4); empty if none"},
+                {"R_constrained_far_side", "m", "-R_constrained_negative: Table 5.1's branch, > 0 on the far side"},
+                {"R_constrained_near_side", "m", "-R_constrained_positive: the other branch; empty if none"}});
   for (double yn : sweep(0.0, b, n, false)) {
     const auto s = icor::solve_constrained_cubic(yn, L, k2, CubicMethod::Eigen);
     std::optional<double> far, near;
@@ -290,7 +319,8 @@ void step_fig5_2(ReproduceContext& ctx) {
   const auto pts = ctx.out / "fig5_2_bifurcation.csv";
   {
     const double r0 = std::sqrt((b * b - 2.0 * k2) / 3.0);
-    CsvWriter w(pts, {"yn", "R"});
+    CsvWriter w(pts, {{"yn", "m", "push point (0: the bifurcation)"},
+                      {"R", "m", "roots +-sqrt((b^2 - 2 k^2)/3) of eq 5.4 at yn = 0"}});
     w.row({0.0, r0});
     w.row({0.0, -r0});
     w.commit();

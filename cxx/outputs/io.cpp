@@ -1,6 +1,11 @@
 #include "nanopush/outputs/io.hpp"
 
+#include <charconv>
+#include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <ctime>
+#include <sstream>
 #include <stdexcept>
 #include <system_error>
 #include <unistd.h>
@@ -23,10 +28,16 @@ AtomicFile::~AtomicFile() {
   }
 }
 
-void AtomicFile::commit() {
+void AtomicFile::finish() {
+  if (finished_) return;
   out_.flush();
   if (!out_) throw std::runtime_error("write failed: " + tmp_.string());
   out_.close();
+  finished_ = true;
+}
+
+void AtomicFile::commit() {
+  finish();
   std::error_code ec;
   std::filesystem::rename(tmp_, target_, ec);
   if (ec) throw std::runtime_error("cannot rename " + tmp_.string() + " to " + target_.string() + ": " + ec.message());
@@ -40,29 +51,223 @@ void write_file_atomic(const std::filesystem::path& path, const std::string& tex
 }
 
 std::string csv_number(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
+  if (std::isnan(v)) return {};  // missing: the empty cell
+  char buf[64];
+  // Integral values up to 2^53 (counts, most of all) in plain digits: 100000, not 1e+05.
+  // Every such integer is exact, so the digits read back to the same double.
+  if (std::fabs(v) <= 9007199254740992.0 && v == std::trunc(v)) {
+    const auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed);
+    return std::string(buf, r.ptr);
+  }
+  // Otherwise the shortest decimal that reads back to the same double (3e-08, 0.1, inf).
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
 }
 
-CsvWriter::CsvWriter(const std::filesystem::path& path, const std::vector<std::string>& header)
-    : file_(path) {
-  auto& o = file_.stream();
-  for (std::size_t i = 0; i < header.size(); ++i) o << (i ? "," : "") << header[i];
-  o << '\n';
+std::string csv_quote(const std::string& s) {
+  const bool needs = s.find_first_of(",\"\r\n") != std::string::npos ||
+                     (!s.empty() && (s.front() == ' ' || s.back() == ' '));
+  if (!needs) return s;
+  std::string q = "\"";
+  for (char c : s) q += (c == '"') ? std::string("\"\"") : std::string(1, c);
+  return q + "\"";
+}
+
+std::string json_string(const std::string& s) {
+  std::string r = "\"";
+  for (unsigned char c : s) {
+    switch (c) {
+      case '"': r += "\\\""; break;
+      case '\\': r += "\\\\"; break;
+      case '\n': r += "\\n"; break;
+      case '\t': r += "\\t"; break;
+      case '\r': r += "\\r"; break;
+      default:
+        if (c < 0x20) {
+          char b[8];
+          std::snprintf(b, sizeof b, "\\u%04x", c);
+          r += b;
+        } else {
+          r += static_cast<char>(c);
+        }
+    }
+  }
+  return r + "\"";
+}
+
+// ---- provenance -------------------------------------------------------------------------
+
+namespace {
+Provenance& provenance_mut() {
+  static Provenance p;
+  return p;
+}
+
+std::string utc_now() {
+  const std::time_t t = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+  std::tm tm{};
+  gmtime_r(&t, &tm);
+  char b[32];
+  std::strftime(b, sizeof b, "%Y-%m-%dT%H:%M:%SZ", &tm);
+  return b;
+}
+
+bool valid_name(const std::string& n) {
+  if (n.empty() || !((n[0] >= 'A' && n[0] <= 'Z') || (n[0] >= 'a' && n[0] <= 'z'))) return false;
+  for (char c : n)
+    if (!((c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_')) return false;
+  return true;
+}
+
+void check_columns(const Columns& columns, const std::filesystem::path& path) {
+  for (const auto& c : columns) {
+    if (!valid_name(c.name))
+      throw std::logic_error(path.string() + ": column name '" + c.name + "' is not [A-Za-z][A-Za-z0-9_]*");
+    if (c.description.empty()) throw std::logic_error(path.string() + ": column " + c.name + " has no description");
+    if (c.type != "number" && c.type != "integer" && c.type != "string")
+      throw std::logic_error(path.string() + ": column " + c.name + " has type '" + c.type + "'");
+    if (c.type != "string" && c.unit.empty())
+      throw std::logic_error(path.string() + ": numeric column " + c.name + " has no unit (\"1\" if dimensionless)");
+  }
+}
+}  // namespace
+
+void set_provenance(std::string version, std::string command) {
+  provenance_mut().version = std::move(version);
+  provenance_mut().command = std::move(command);
+}
+void set_provenance_scene(std::string scene) { provenance_mut().scene = std::move(scene); }
+const Provenance& provenance() { return provenance_mut(); }
+
+std::string join_command_line(int argc, const char* const* argv) {
+  std::string r;
+  for (int i = 0; i < argc; ++i) {
+    std::string a = argv[i] ? argv[i] : "";
+    if (i == 0) a = std::filesystem::path(a).filename().string();
+    const bool quote = a.empty() || a.find_first_of(" \t\n'\"\\$`") != std::string::npos;
+    if (quote) {
+      std::string q = "'";
+      for (char c : a) q += (c == '\'') ? std::string("'\\''") : std::string(1, c);
+      a = q + "'";
+    }
+    r += (i ? " " : "") + a;
+  }
+  return r;
+}
+
+// ---- schema -------------------------------------------------------------------------------
+
+std::filesystem::path schema_path(const std::filesystem::path& csv) {
+  std::filesystem::path p = csv;
+  if (p.extension() == ".csv") p.replace_extension();
+  p += ".schema.json";
+  return p;
+}
+
+std::string table_schema_json(const Columns& columns, const std::string& scene) {
+  const auto& pv = provenance();
+  std::ostringstream j;
+  j << "{\n  \"fields\": [\n";
+  for (std::size_t i = 0; i < columns.size(); ++i) {
+    const auto& c = columns[i];
+    j << "    {\"name\": " << json_string(c.name) << ", \"type\": " << json_string(c.type)
+      << ", \"unit\": " << json_string(c.unit) << ", \"description\": " << json_string(c.description);
+    if (!c.parameters.empty()) {
+      j << ", \"nanopush:parameters\": {";
+      bool first = true;
+      for (const auto& [k, v] : c.parameters) {
+        j << (first ? "" : ", ") << json_string(k) << ": " << (std::isfinite(v) ? csv_number(v) : std::string("null"));
+        first = false;
+      }
+      j << "}";
+    }
+    j << "}" << (i + 1 < columns.size() ? "," : "") << "\n";
+  }
+  j << "  ],\n"
+    << "  \"missingValues\": [\"\"],\n"
+    << "  \"nanopush\": {\n"
+    << "    \"convention\": \"docs/outputs.md\",\n"
+    << "    \"version\": " << json_string(pv.version) << ",\n"
+    << "    \"command\": " << json_string(pv.command) << ",\n"
+    << "    \"scene\": " << json_string(scene.empty() ? pv.scene : scene) << ",\n"
+    << "    \"created\": " << json_string(utc_now()) << ",\n"
+    << "    \"number_format\": \"shortest decimal that reads back to the same IEEE double; inf and -inf for "
+       "infinities; the empty cell for a missing value\"\n"
+    << "  }\n}\n";
+  return j.str();
+}
+
+// ---- CSV ----------------------------------------------------------------------------------
+
+namespace {
+std::string header_line(const Columns& columns) {
+  std::string h;
+  for (std::size_t i = 0; i < columns.size(); ++i) h += (i ? "," : "") + columns[i].name;
+  return h + "\n";
+}
+std::string join_cells(const std::vector<std::string>& cells) {
+  std::string r;
+  for (std::size_t i = 0; i < cells.size(); ++i) r += (i ? "," : "") + cells[i];
+  return r + "\n";
+}
+/// Write the sidecar's temporary, then rename the CSV, then the sidecar.
+void commit_with_schema(AtomicFile& csv, const Columns& columns, const std::string& scene) {
+  csv.finish();
+  AtomicFile schema(schema_path(csv.target()));
+  schema.stream() << table_schema_json(columns, scene);
+  schema.finish();
+  csv.commit();
+  schema.commit();
+}
+}  // namespace
+
+CsvWriter::CsvWriter(const std::filesystem::path& path, Columns columns, std::string scene)
+    : file_(path), columns_(std::move(columns)), scene_(std::move(scene)) {
+  check_columns(columns_, path);
+  file_.stream() << header_line(columns_);
+}
+
+void CsvWriter::check_width(std::size_t n) const {
+  if (n != columns_.size())
+    throw std::logic_error(file_.target().string() + ": row of " + std::to_string(n) + " cells for " +
+                           std::to_string(columns_.size()) + " columns");
 }
 
 void CsvWriter::row(const std::vector<double>& values) {
+  check_width(values.size());
   auto& o = file_.stream();
   for (std::size_t i = 0; i < values.size(); ++i) o << (i ? "," : "") << csv_number(values[i]);
   o << '\n';
 }
 
 void CsvWriter::row(const std::string& label, const std::vector<double>& values) {
+  check_width(values.size() + 1);
   auto& o = file_.stream();
-  o << label;
+  o << csv_quote(label);
   for (double v : values) o << ',' << csv_number(v);
   o << '\n';
+}
+
+void CsvWriter::cells(const std::vector<std::string>& cells) {
+  check_width(cells.size());
+  file_.stream() << join_cells(cells);
+}
+
+void CsvWriter::blank_line() { file_.stream() << '\n'; }
+
+void CsvWriter::commit() { commit_with_schema(file_, columns_, scene_); }
+
+std::string csv_document(const Columns& columns, const std::vector<std::vector<std::string>>& rows) {
+  std::string t = header_line(columns);
+  for (const auto& r : rows) t += join_cells(r);
+  return t;
+}
+
+void write_csv_atomic(const std::filesystem::path& path, const Columns& columns,
+                      const std::vector<std::vector<std::string>>& rows, const std::string& scene) {
+  CsvWriter w(path, columns, scene);
+  for (const auto& r : rows) w.cells(r);
+  w.commit();
 }
 
 }  // namespace nanopush

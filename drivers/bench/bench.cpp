@@ -123,9 +123,11 @@ std::vector<double> tolerance_sweep(int kmin, int kmax, int kstep, double rtol_m
 }
 
 const std::vector<std::string>& csv_columns() {
-  static const std::vector<std::string> c = {"engine", "precision", "rtol",   "error",  "nfcn",
-                                             "naccpt", "nrejct",    "wall_s", "rhs_s",  "overhead_ns_per_rhs",
-                                             "repeats", "status", "wall_spread", "own_ns_per_rhs"};
+  static const std::vector<std::string> c = [] {
+    std::vector<std::string> names;
+    for (const auto& col : csv_column_specs()) names.push_back(col.name);
+    return names;
+  }();
   return c;
 }
 
@@ -262,19 +264,35 @@ std::vector<Row> run_sweep(const Problem& p, const std::vector<Engine>& engines,
   return rows;
 }
 
-void write_csv(const std::vector<Row>& rows, const std::filesystem::path& path) {
-  AtomicFile f(path);
-  auto& o = f.stream();
-  const auto& c = csv_columns();
-  for (std::size_t i = 0; i < c.size(); ++i) o << (i ? "," : "") << c[i];
-  o << "\n";
-  for (const auto& r : rows) {
-    o << r.engine << "," << r.precision << "," << csv_number(r.rtol) << "," << csv_number(r.error) << "," << r.nfcn
-      << "," << r.naccpt << "," << r.nrejct << "," << csv_number(r.wall_s) << "," << csv_number(r.rhs_s) << ","
-      << csv_number(r.overhead_ns_per_rhs) << "," << r.repeats << "," << r.status << "," << csv_number(r.wall_spread)
-      << "," << csv_number(r.own_ns_per_rhs) << "\n";
-  }
-  f.commit();
+const Columns& csv_column_specs() {
+  static const Columns c = {
+      text_column("engine", "engine label (docs/performance.md)"),
+      text_column("precision", "scalar of the integration: double, long or quad"),
+      {"rtol", "1", "relative tolerance (atol_i = rtol scale_i)"},
+      {"error", "1", "max over outputs and components of |y - y_ref| / (scale + |y_ref|); empty if the solve failed"},
+      count_column("nfcn", "RHS evaluations"),
+      count_column("naccpt", "accepted steps; -1 = not reported by the engine"),
+      count_column("nrejct", "rejected steps; -1 = not reported by the engine"),
+      {"wall_s", "s", "median wall time of `repeats` solves (timing: varies run to run)"},
+      {"rhs_s", "s", "median time of nfcn bare RHS calls (timing)"},
+      {"overhead_ns_per_rhs", "ns", "(wall_s - rhs_s) / nfcn, in nanoseconds (timing)"},
+      count_column("repeats", "timed solves per point"),
+      count_column("status", "0 = success; -2 = error below the reference's resolution; else the engine's failure code"),
+      {"wall_spread", "1", "(upper - lower quartile) / median of the repeats' wall times; empty with < 4 repeats"},
+      {"own_ns_per_rhs", "ns",
+       "the integrator alone (RHS values replayed) per RHS call, in nanoseconds; empty without --replay (timing)"},
+  };
+  return c;
+}
+
+void write_csv(const std::vector<Row>& rows, const std::filesystem::path& path, const std::string& scene) {
+  CsvWriter w(path, csv_column_specs(), scene);
+  for (const auto& r : rows)
+    w.cells({csv_quote(r.engine), csv_quote(r.precision), csv_number(r.rtol), csv_number(r.error),
+             std::to_string(r.nfcn), std::to_string(r.naccpt), std::to_string(r.nrejct), csv_number(r.wall_s),
+             csv_number(r.rhs_s), csv_number(r.overhead_ns_per_rhs), std::to_string(r.repeats),
+             std::to_string(r.status), csv_number(r.wall_spread), csv_number(r.own_ns_per_rhs)});
+  w.commit();
 }
 
 namespace {

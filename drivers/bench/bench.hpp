@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "nanopush/numerics/scalar.hpp"
+#include "nanopush/outputs/io.hpp"
 
 namespace nanopush::bench {
 
@@ -155,6 +156,8 @@ std::optional<double> overhead_within_from(const std::vector<Row>& rows, const s
 
 /// CSV header of the benchmark (docs/performance.md documents every column).
 const std::vector<std::string>& csv_columns();
+/// The same columns with their units and meanings (the CSV's sidecar, docs/outputs.md).
+const Columns& csv_column_specs();
 
 struct SweepSettings {
   int repeats = 9;          ///< timed solves per point (median reported), after one untimed warm-up solve
@@ -174,8 +177,8 @@ struct SweepSettings {
 std::vector<Row> run_sweep(const Problem& p, const std::vector<Engine>& engines, const Reference& ref,
                            const SweepSettings& s);
 
-/// Write the rows as CSV (atomically).
-void write_csv(const std::vector<Row>& rows, const std::filesystem::path& path);
+/// Write the rows as CSV with its sidecar (atomically, docs/outputs.md); `scene` goes into the sidecar.
+void write_csv(const std::vector<Row>& rows, const std::filesystem::path& path, const std::string& scene = {});
 
 /// Work-precision figure: error against RHS evaluations and against wall time, log-log,
 /// one line per engine (and precision). Writes `png` and its gnuplot script.

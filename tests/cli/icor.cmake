@@ -31,7 +31,7 @@ set_tests_properties(cli.icor.bad_length_message PROPERTIES
 
 add_test(NAME cli.icor.formulas
          COMMAND $<TARGET_FILE:nanopush> icor formulas --n 5)
-set_tests_properties(cli.icor.formulas PROPERTIES PASS_REGULAR_EXPRESSION "^yn,R_4_1,R_4_2,R_4_3,R_4_13")
+set_tests_properties(cli.icor.formulas PROPERTIES PASS_REGULAR_EXPRESSION "^yn,R_experimental_fit,R_falvo,R_li,R_unknown_pressure,R_known_pressure,F_min,F_from_icor,R_constrained_negative,R_constrained_positive,F_constrained_negative,R_impulsive\n")
 
 add_test(NAME cli.icor.estimate_mu_from_force
          COMMAND $<TARGET_FILE:nanopush> icor estimate-mu --force 1e-6 --force-sigma 3e-8 --yn 200e-9

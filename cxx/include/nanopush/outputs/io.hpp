@@ -1,9 +1,16 @@
 // Output that is never lost and never half-written: every file goes to a temporary
 // name in the same directory and is renamed over the target only when complete.
+//
+// CSV files follow one convention (docs/outputs.md): a header of plain identifiers, numbers
+// in the shortest form that reads back to the same double, the empty cell for a missing
+// value, and beside FILE.csv a Frictionless Table Schema FILE.schema.json naming each
+// column's type, unit and meaning plus the run's provenance (version, command line, scene,
+// time). Dates and timings go only into the sidecar, never into the CSV.
 #pragma once
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -19,32 +26,99 @@ class AtomicFile {
   std::ofstream& stream() { return out_; }
   [[nodiscard]] const std::filesystem::path& temp_path() const { return tmp_; }
   [[nodiscard]] const std::filesystem::path& target() const { return target_; }
+  /// Flush and close the temporary, leaving it in place (throws on a write error); commit() renames.
+  void finish();
   /// Flush, close and rename onto the target. Throws std::runtime_error on failure.
   void commit();
 
  private:
   std::filesystem::path target_, tmp_;
   std::ofstream out_;
-  bool committed_ = false;
+  bool finished_ = false, committed_ = false;
 };
 
 /// Write `text` to `path` atomically.
 void write_file_atomic(const std::filesystem::path& path, const std::string& text);
 
-/// CSV writer over an AtomicFile: header once, rows of doubles at 17 significant digits.
+/// One CSV column as the sidecar declares it. `unit`: SI symbol ("m", "s", "rad", "N", "N m",
+/// "J", "kg", "m/s", ...), "1" for a dimensionless number, "" for text. `type`: a Table
+/// Schema type: "number", "integer" or "string". `parameters`: values that the column is
+/// taken at when the header is a family (e.g. {"mu", 0.1}), written as the field's
+/// "nanopush:parameters" object.
+struct Column {
+  std::string name, unit, description;
+  std::string type = "number";
+  std::map<std::string, double> parameters = {};
+};
+using Columns = std::vector<Column>;
+
+/// Shorthands: a text column and a count column.
+inline Column text_column(std::string name, std::string description) {
+  return {std::move(name), "", std::move(description), "string"};
+}
+inline Column count_column(std::string name, std::string description) {
+  return {std::move(name), "1", std::move(description), "integer"};
+}
+
+/// The process-wide provenance that every sidecar records. main() sets the program's
+/// version and command line; whoever loads a scene sets it (a writer may name its own).
+struct Provenance {
+  std::string version;  ///< NANOPUSH_VERSION
+  std::string command;  ///< argv joined by spaces (arguments with blanks quoted)
+  std::string scene;    ///< scene name or path, "" if none
+};
+void set_provenance(std::string version, std::string command);
+void set_provenance_scene(std::string scene);
+const Provenance& provenance();
+/// argv joined into one line: arguments with spaces or quotes are single-quoted.
+std::string join_command_line(int argc, const char* const* argv);
+
+/// The sidecar of a CSV: FILE.csv -> FILE.schema.json (any other name: NAME.schema.json).
+std::filesystem::path schema_path(const std::filesystem::path& csv);
+/// The Table Schema JSON for `columns` (with provenance; `scene` overrides the context's).
+std::string table_schema_json(const Columns& columns, const std::string& scene = {});
+
+/// A CSV file and its sidecar, both written atomically: rows go to a temporary file; commit()
+/// writes the schema to its own temporary, then renames the CSV and then the schema into
+/// place (the sidecar never appears without its CSV). Without commit() nothing appears.
 class CsvWriter {
  public:
-  CsvWriter(const std::filesystem::path& path, const std::vector<std::string>& header);
+  CsvWriter(const std::filesystem::path& path, Columns columns, std::string scene = {});
+  /// Row of numbers (csv_number each; NaN becomes the empty cell).
   void row(const std::vector<double>& values);
   /// Row with a leading text cell (e.g. an engine or material name).
   void row(const std::string& label, const std::vector<double>& values);
-  void commit() { file_.commit(); }
+  /// Row of cells already formatted (csv_number, csv_text, "" for missing).
+  void cells(const std::vector<std::string>& cells);
+  /// A blank line (gnuplot's scan separator in grid files; readers skip it).
+  void blank_line();
+  void commit();
+  [[nodiscard]] const Columns& columns() const { return columns_; }
 
  private:
+  void check_width(std::size_t n) const;
   AtomicFile file_;
+  Columns columns_;
+  std::string scene_;
 };
 
-/// Format a double for CSV/reports: %.17g (round-trip exact).
+/// Write a complete CSV (header from `columns`, then `rows` of formatted cells) and its sidecar.
+void write_csv_atomic(const std::filesystem::path& path, const Columns& columns,
+                      const std::vector<std::vector<std::string>>& rows, const std::string& scene = {});
+
+/// The CSV text (header and rows, no sidecar), e.g. for standard output.
+std::string csv_document(const Columns& columns, const std::vector<std::vector<std::string>>& rows);
+
+/// Format a double for CSV/reports: the shortest decimal that reads back (strtod) to the same
+/// double (std::to_chars), e.g. 3e-08, 0.1, -0, 1e+300; integral values up to 2^53 in plain
+/// digits (100000, not 1e+05); "inf"/"-inf" for infinities; NaN
+/// (a missing value) is the empty string.
 std::string csv_number(double v);
+
+/// Quote a text cell when it needs it (comma, quote, newline or leading/trailing blank).
+std::string csv_quote(const std::string& s);
+
+/// The JSON string literal of `s` (quotes included).
+std::string json_string(const std::string& s);
 
 }  // namespace nanopush

@@ -1,12 +1,19 @@
-// A trajectory as CSV: the columns of trajectory_columns(), one row per output time.
+// A trajectory as CSV: the columns of trajectory_columns(), one row per output time, with
+// its Table Schema sidecar (docs/outputs.md).
 #pragma once
 #include <filesystem>
+#include <string>
 
+#include "nanopush/outputs/io.hpp"
 #include "nanopush/scenes/simulate.hpp"
 
 namespace nanopush {
 
-/// Write a trajectory CSV (header t,x,...,mf) atomically.
-void write_trajectory_csv(const Trajectory& tr, const std::filesystem::path& path);
+/// The trajectory columns t, x, ..., mf with their units and meanings (SI, world frame).
+const Columns& trajectory_column_specs();
+
+/// Write a trajectory CSV (header t,x,...,mf) and its sidecar atomically; `scene` names the
+/// scene in the sidecar (default: the process-wide provenance).
+void write_trajectory_csv(const Trajectory& tr, const std::filesystem::path& path, const std::string& scene = {});
 
 }  // namespace nanopush

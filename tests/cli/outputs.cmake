@@ -1,0 +1,41 @@
+# The CSV convention (docs/outputs.md) on everything nanopush writes: every CSV of
+# `reproduce --quick` has a valid Table Schema sidecar whose fields are the header, each with
+# a unit and a description; headers are plain identifiers; no cell spells nan.
+set(_np $<TARGET_FILE:nanopush>)
+set(_env "NANOPUSH_SCENES=${NANOPUSH_SCENES}")
+set(_check ${CMAKE_CURRENT_LIST_DIR}/scripts/check_sidecars.cmake)
+
+set(_out ${CMAKE_CURRENT_BINARY_DIR}/outputs-reproduce-quick)
+add_test(NAME cli.outputs.reproduce_clean COMMAND ${CMAKE_COMMAND} -E rm -rf ${_out})
+set_tests_properties(cli.outputs.reproduce_clean PROPERTIES FIXTURES_SETUP cli_outputs_clean)
+add_test(NAME cli.outputs.reproduce COMMAND ${_np} reproduce --quick --out ${_out})
+set_tests_properties(cli.outputs.reproduce PROPERTIES ENVIRONMENT "${_env}" TIMEOUT 900
+  FIXTURES_REQUIRED cli_outputs_clean FIXTURES_SETUP cli_outputs_reproduce)
+add_test(NAME cli.outputs.sidecars COMMAND ${CMAKE_COMMAND} -DDIR=${_out} -DMIN_FILES=60 -P ${_check})
+set_tests_properties(cli.outputs.sidecars PROPERTIES FIXTURES_REQUIRED cli_outputs_reproduce TIMEOUT 300)
+
+# The subcommands' own CSV files: run (scene recorded), icor tables, bench, friction --bench-csv.
+set(_cmd ${CMAKE_CURRENT_BINARY_DIR}/outputs-commands)
+add_test(NAME cli.outputs.commands_clean COMMAND ${CMAKE_COMMAND} -E rm -rf ${_cmd})
+set_tests_properties(cli.outputs.commands_clean PROPERTIES FIXTURES_SETUP cli_outputs_cmd_clean)
+function(_outputs_command name)
+  add_test(NAME cli.outputs.command_${name} COMMAND ${_np} ${ARGN})
+  set_tests_properties(cli.outputs.command_${name} PROPERTIES ENVIRONMENT "${_env}"
+    FIXTURES_REQUIRED cli_outputs_cmd_clean FIXTURES_SETUP cli_outputs_cmd)
+endfunction()
+_outputs_command(run run fig3_6c --out ${_cmd}/run/fig3_6c.csv --quiet)
+_outputs_command(icor_formulas icor formulas --n 5 --out ${_cmd}/icor/formulas.csv)
+_outputs_command(icor_roots icor roots --yn 0 --yn 1e-9 --out ${_cmd}/icor/roots.csv)
+_outputs_command(icor_rectangle icor rectangle --n 3 --out ${_cmd}/icor/rectangle.csv)
+_outputs_command(icor_dynamic icor dynamic --yn 1e-7 --force-ratio 0.5 --force-ratio 2 --out ${_cmd}/icor/dynamic.csv)
+_outputs_command(icor_estimate_mu icor estimate-mu --force 1e-6 --yn 2e-7 --yn-sigma 5e-9 --out ${_cmd}/icor/mu.csv)
+_outputs_command(friction_bench friction --bench --bench-seconds 0.001 --bench-csv ${_cmd}/friction/bench.csv)
+_outputs_command(bench bench fig3_6a --quick --quiet --no-plot --engines cxx-faithful --out ${_cmd}/bench/bench.csv)
+add_test(NAME cli.outputs.command_sidecars COMMAND ${CMAKE_COMMAND} -DDIR=${_cmd} -DMIN_FILES=8 -P ${_check})
+set_tests_properties(cli.outputs.command_sidecars PROPERTIES FIXTURES_REQUIRED cli_outputs_cmd)
+add_test(NAME cli.outputs.run_scene COMMAND ${CMAKE_COMMAND} -DDIR=${_cmd}/run -DSCENE=fig3_6c -P ${_check})
+set_tests_properties(cli.outputs.run_scene PROPERTIES FIXTURES_REQUIRED cli_outputs_cmd)
+# The sidecar's provenance: the command line as typed, the version; the CSV itself holds no date.
+add_test(NAME cli.outputs.run_provenance COMMAND ${CMAKE_COMMAND} -E cat ${_cmd}/run/fig3_6c.schema.json)
+set_tests_properties(cli.outputs.run_provenance PROPERTIES FIXTURES_REQUIRED cli_outputs_cmd
+  PASS_REGULAR_EXPRESSION "\"command\": \"nanopush run fig3_6c --out [^\"]*/run/fig3_6c.csv --quiet\"")
