@@ -76,7 +76,7 @@ set_tests_properties(cli.icor.dynamic_bad_integrator_fails PROPERTIES WILL_FAIL 
 add_test(NAME cli.icor.rectangle_thin
          COMMAND $<TARGET_FILE:nanopush> icor rectangle --n 3 --aspect 1e-4)
 set_tests_properties(cli.icor.rectangle_thin PROPERTIES
-  PASS_REGULAR_EXPRESSION "0\\.0001,[0-9e.-]+,[0-9e.-]+,1\\.47[0-9e.-]+,1\\.8232003[0-9e.-]*,1\\.5707963")
+  PASS_REGULAR_EXPRESSION "1e-04,[0-9e.-]+,[0-9e.-]+,1\\.47[0-9e.-]+,1\\.8232003[0-9e.-]*,1\\.5707963")
 add_test(NAME cli.icor.rectangle_bad_aspect_fails
          COMMAND $<TARGET_FILE:nanopush> icor rectangle --aspect 2)
 set_tests_properties(cli.icor.rectangle_bad_aspect_fails PROPERTIES WILL_FAIL TRUE)
