@@ -47,7 +47,11 @@ struct RegisterReproduce {
   RegisterReproduce(ReproduceStep s) { reproduce_steps().push_back(std::move(s)); }
 };
 
-/// Directory holding scene presets: $NANOPUSH_SCENES, else <source>/drivers/scenes.
+/// Directory of the running executable (/proc/self/exe).
+std::filesystem::path executable_dir();
+/// Directory holding scene presets: $NANOPUSH_SCENES, else <prefix>/share/nanopush/scenes
+/// beside the installed executable (<prefix>/bin), else <source>/drivers/scenes when run from
+/// a build tree. No path is compiled in.
 std::filesystem::path scenes_dir();
 /// Resolve a scene argument: an existing path, or a preset name such as
 /// "thesis/fig3_6a" or "fig3_6a" (searched under scenes_dir()).

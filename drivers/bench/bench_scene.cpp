@@ -192,11 +192,23 @@ RoughBarModel bench_rough_model(const Scene& sc) {
   return m;
 }
 
+/// The extended-precision legacy program: $NANOPUSH_QUAD_PROGRAM, else nanobar_quad beside the
+/// running executable (bin/ of an install, the build tree's top), else one directory up (the
+/// build tree's tests/). No path is compiled in: an installed prefix may be moved.
+std::filesystem::path quad_program() {
+  namespace fs = std::filesystem;
+  if (const char* env = std::getenv("NANOPUSH_QUAD_PROGRAM"); env && *env) return env;
+  std::error_code ec;
+  const fs::path exe_dir = fs::read_symlink("/proc/self/exe", ec).parent_path();
+  for (const fs::path& cand : {exe_dir / "nanobar_quad", exe_dir.parent_path() / "nanobar_quad"})
+    if (!ec && fs::is_regular_file(cand)) return cand;
+  return exe_dir / "nanobar_quad";
+}
+
 /// One run of the extended-precision legacy program on the scene's deck at rtol.
 Solve quad_legacy_run(const Scene& sc, const Problem& p, const RoughBarModel& m, double rtol) {
   namespace fs = std::filesystem;
-  const char* env = std::getenv("NANOPUSH_QUAD_PROGRAM");
-  const fs::path prog = env && *env ? fs::path(env) : fs::path(NANOPUSH_QUAD_PROGRAM);
+  const fs::path prog = quad_program();
   if (!fs::exists(prog)) throw InputError("NANOPUSH_QUAD_PROGRAM", prog.string(), "no such program (target nanobar_quad)");
   Scene s = sc;
   s.solver.max_steps = 10000000;
