@@ -17,6 +17,7 @@
 #include "nanopush/outputs/io.hpp"
 #include "nanopush/outputs/plot.hpp"
 #include "registry.hpp"
+#include "scene_args.hpp"
 
 namespace nanopush::cli {
 namespace {
@@ -25,6 +26,7 @@ using bench::Row;
 
 struct BenchOptions {
   std::string scene = "fig3_6a";
+  std::vector<std::string> sets;  ///< --set KEY=VALUE
   std::string out;  // CSV; default bench_<scene>.csv
   std::string plot;  // PNG; default beside the CSV
   std::vector<std::string> engines;
@@ -460,7 +462,7 @@ std::string report_section(const Scene& scene, const BenchOptions& o, const Benc
 }
 
 int bench_cmd(BenchOptions o) {
-  Scene scene = load_scene(resolve_scene(o.scene));
+  Scene scene = load_scene_arg(o.scene, o.sets);
   set_provenance_scene(o.scene);
   if (o.samples != 0) {
     require_range("--samples", o.samples, 2, 1e7);
@@ -548,6 +550,7 @@ RegisterCommand reg{
      [](CLI::App& app) -> std::function<int()> {
        auto o = std::make_shared<BenchOptions>();
        app.add_option("SCENE", o->scene, "scene file or preset name (smooth, or rough under the thesis law)")->capture_default_str();
+       add_set_option(app, o->sets);
        app.add_option("--out", o->out, "CSV output (default bench_<scene>.csv); columns in docs/performance.md");
        app.add_option("--plot", o->plot, "work-precision PNG (default: the CSV's name with .png)");
        app.add_flag("--no-plot", o->no_plot, "write the CSV only");

@@ -14,6 +14,7 @@
 #include "nanopush/outputs/io.hpp"
 #include "nanopush/engines/engines.hpp"
 #include "registry.hpp"
+#include "scene_args.hpp"
 
 namespace nanopush::cli {
 namespace {
@@ -28,11 +29,12 @@ void check_deck_scene(const Scene& sc) {
 
 struct DeckOptions {
   std::string scene, out;
+  std::vector<std::string> sets;  ///< --set KEY=VALUE
   double rtol = 0;
 };
 
 int deck_cmd(const DeckOptions& o) {
-  const Scene sc = load_scene(resolve_scene(o.scene));
+  const Scene sc = load_scene_arg(o.scene, o.sets);
   check_deck_scene(sc);
   const double rtol = o.rtol > 0 ? o.rtol : sc.solver.rtol;
   const std::string text = legacy_deck(sc, rtol, sc.atol_vector(rtol, sc.solver.atol, 8));
@@ -53,12 +55,13 @@ std::filesystem::path self_dir() {
 
 struct LegacyOptions {
   std::string scene, program;
+  std::vector<std::string> sets;  ///< --set KEY=VALUE
   double tolerance = 0;
 };
 
 int legacy_cmd(const LegacyOptions& o) {
   namespace fs = std::filesystem;
-  const Scene sc = load_scene(resolve_scene(o.scene));
+  const Scene sc = load_scene_arg(o.scene, o.sets);
   check_deck_scene(sc);
   const fs::path prog = o.program.empty() ? self_dir() / "nanobar" : fs::path(o.program);
   if (!fs::exists(prog)) throw InputError("--program", prog.string(), "no such program (build target 'nanobar')");
@@ -112,6 +115,7 @@ RegisterCommand reg_deck{{"deck", "Write a scene as the classic input deck of th
                           [](CLI::App& app) -> std::function<int()> {
                             auto o = std::make_shared<DeckOptions>();
                             app.add_option("SCENE", o->scene, "scene file or preset name")->required();
+                            add_set_option(app, o->sets);
                             app.add_option("--out", o->out, "deck file (default: standard output)");
                             app.add_option("--rtol", o->rtol, "relative tolerance (default: the scene's)")
                                 ->check(CLI::PositiveNumber);
@@ -124,6 +128,7 @@ RegisterCommand reg_legacy{{"legacy",
                             61, [](CLI::App& app) -> std::function<int()> {
                               auto o = std::make_shared<LegacyOptions>();
                               app.add_option("SCENE", o->scene, "scene file or preset name")->required();
+                            add_set_option(app, o->sets);
                               app.add_option("--program", o->program, "the legacy program (default: nanobar beside nanopush)");
                               app.add_option("--tolerance", o->tolerance, "largest relative difference (default 1e-15)")
                                   ->check(CLI::PositiveNumber);

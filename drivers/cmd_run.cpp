@@ -10,12 +10,14 @@
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/engines/engines.hpp"
 #include "registry.hpp"
+#include "scene_args.hpp"
 
 namespace nanopush::cli {
 namespace {
 
 struct RunOptions {
   std::string scene, engine, method, out, law, precision;
+  std::vector<std::string> sets;  ///< --set KEY=VALUE
   double rtol = 0, atol = -1;
   bool quiet = false;
   bool keep_partial = false;
@@ -36,7 +38,8 @@ std::function<void(double)> progress_printer(const std::string& label) {
 }
 
 void add_common(CLI::App& app, RunOptions& o) {
-  app.add_option("SCENE", o.scene, "scene file, or a preset name such as fig3_6a (see drivers/scenes)")->required();
+  app.add_option("SCENE", o.scene, "scene file, or a preset name such as fig3_6a (`nanopush presets`)")->required();
+  add_set_option(app, o.sets);
   app.add_option("--rtol", o.rtol, "relative tolerance (default: the scene's solver.rtol)")->check(CLI::PositiveNumber);
   app.add_option("--atol", o.atol,
                  "absolute tolerance, one value for every state component (default: the scene's; 0 = rtol times "
@@ -56,7 +59,7 @@ void print_summary(const Scene& sc, const Trajectory& tr, double seconds, std::o
 }
 
 int run_cmd(const RunOptions& o) {
-  const Scene sc = load_scene(resolve_scene(o.scene));
+  const Scene sc = load_scene_arg(o.scene, o.sets);
   set_provenance_scene(o.scene);  // recorded in the CSV's sidecar
   if (!o.quiet && !sc.load_report.empty()) std::cerr << sc.name << ": " << sc.load_report;
   RunSettings rs;
@@ -112,7 +115,7 @@ struct CompareOptions : RunOptions {
 };
 
 int compare_cmd(const CompareOptions& o) {
-  const Scene sc = load_scene(resolve_scene(o.scene));
+  const Scene sc = load_scene_arg(o.scene, o.sets);
   RunSettings a, b;
   a.engine = "cxx";
   a.method = o.method.empty() ? "faithful" : o.method;

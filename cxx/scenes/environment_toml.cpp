@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "nanopush/numerics/error.hpp"
+#include "nanopush/scenes/scene_keys.hpp"
 
 namespace nanopush {
 namespace {
@@ -119,9 +120,11 @@ std::string liquid_names() {
   return s;
 }
 
-/// Material constants keys shared by bodies and substrates.
-const std::set<std::string> kMaterialKeys = {"material", "density", "hamaker", "youngs_modulus",
-                                             "poisson_ratio", "surface_energy"};
+/// The keys a table admits, from the scene key table (scene_keys.cpp).
+std::set<std::string> table_keys(std::string_view table) {
+  const auto v = scene_table_keys(table);
+  return {v.begin(), v.end()};
+}
 
 forces::Material parse_material(const Fields& f, bool need_density) {
   forces::Material m;
@@ -161,7 +164,7 @@ forces::Liquid parse_liquid_node(const toml::node& n, const std::string& path) {
   }
   const toml::table* t = n.as_table();
   if (!t) throw InputError(path, node_text(n), "must be a liquid name or a table");
-  Fields f(*t, path, {"name", "density", "hamaker", "surface_tension", "molar_volume", "contact_angle"});
+  Fields f(*t, path, table_keys("environment.liquid"));
   forces::Liquid l;
   if (auto name = f.string("name")) {
     auto found = forces::find_liquid(*name);
@@ -184,8 +187,7 @@ forces::Liquid parse_liquid_node(const toml::node& n, const std::string& path) {
 }  // namespace
 
 Environment parse_environment(const toml::table& t, std::string_view path) {
-  Fields f(t, path, {"medium", "humidity", "temperature", "liquid", "contact_angle", "adhesion", "gap", "gravity",
-                     "substrate"});
+  Fields f(t, path, table_keys("environment"));
   Environment e;
   const std::string medium = f.string("medium").value_or("vacuum");
   if (medium == "vacuum") e.medium = Medium::vacuum;
@@ -226,7 +228,7 @@ Environment parse_environment(const toml::table& t, std::string_view path) {
       if (!m) throw InputError(sp, "\"" + *name + "\"", "unknown material (known: " + material_names() + ")");
       e.substrate = *m;
     } else if (const toml::table* st = n->as_table()) {
-      Fields sf(*st, sp, kMaterialKeys);
+      Fields sf(*st, sp, table_keys("environment.substrate"));
       e.substrate = parse_material(sf, false);
     } else {
       throw InputError(sp, node_text(*n), "must be a material name or a table");
@@ -237,9 +239,7 @@ Environment parse_environment(const toml::table& t, std::string_view path) {
 }
 
 Body parse_body(const toml::table& t, std::string_view path) {
-  std::set<std::string> keys = kMaterialKeys;
-  for (const char* k : {"name", "shape", "length", "width", "height", "radius", "inner_radius"}) keys.insert(k);
-  Fields f(t, path, keys);
+  Fields f(t, path, table_keys("body"));
   Body b;
   b.name = f.string("name").value_or(std::string(path));
   const auto shape = f.string("shape");

@@ -3,6 +3,8 @@
 #include <toml++/toml.h>
 
 #include <algorithm>
+#include <charconv>
+#include <cstdint>
 #include <cmath>
 #include <fstream>
 #include <set>
@@ -117,14 +119,18 @@ Scene parse_scene(std::string_view text, const std::string& source_name) {
       << e.description();
     throw InputError(s.str());
   }
-  check_keys(root, "", {"scene", "object", "push", "initial", "surface", "solver", "environment", "body"});
+  return scene_from_document(root, source_name);
+}
+
+Scene scene_from_document(const toml::table& root, const std::string& source_name) {
+  check_keys(root, "", scene_table_keys(""));
   Scene sc;
   sc.source = source_name;
 
   // [scene]
   if (root.get("scene")) {
     const auto& t = require_table(root, "scene");
-    check_keys(t, "scene", {"name", "description"});
+    check_keys(t, "scene", scene_table_keys("scene"));
     sc.name = opt_string(t, "scene", "name").value_or("");
     sc.description = opt_string(t, "scene", "description").value_or("");
   }
@@ -133,7 +139,7 @@ Scene parse_scene(std::string_view text, const std::string& source_name) {
   // [object]
   {
     const auto& t = require_table(root, "object");
-    check_keys(t, "object", {"shape", "length", "width", "height", "density", "mass", "inertia"});
+    check_keys(t, "object", scene_table_keys("object"));
     sc.shape = opt_string(t, "object", "shape").value_or("bar");
     require_one_of("object.shape", sc.shape, {"bar"});
     sc.length = number(t, "object", "length");
@@ -170,7 +176,7 @@ Scene parse_scene(std::string_view text, const std::string& source_name) {
   // [push]
   {
     const auto& t = require_table(root, "push");
-    check_keys(t, "push", {"force", "direction", "xn", "yn", "point"});
+    check_keys(t, "push", scene_table_keys("push"));
     const double F = number(t, "push", "force");
     require_positive("push.force", F, "N");
     const double beta = opt_number(t, "push", "direction").value_or(0.0);
@@ -205,7 +211,7 @@ Scene parse_scene(std::string_view text, const std::string& source_name) {
     const auto& t = require_table(root, "initial");
     const std::vector<std::string> keys = {"x", "y", "theta", "vx", "vy", "omega"};
     const std::vector<std::string> units = {"m", "m", "rad", "m/s", "m/s", "rad/s"};
-    check_keys(t, "initial", keys);
+    check_keys(t, "initial", scene_table_keys("initial"));
     for (std::size_t i = 0; i < keys.size(); ++i) {
       sc.initial[i] = opt_number(t, "initial", keys[i]).value_or(0.0);
       require_finite("initial." + keys[i], sc.initial[i], units[i]);
@@ -215,7 +221,7 @@ Scene parse_scene(std::string_view text, const std::string& source_name) {
   // [surface]
   if (root.get("surface")) {
     const auto& t = require_table(root, "surface");
-    check_keys(t, "surface", {"kind", "mu", "f_vdw", "g", "normal_load", "law"});
+    check_keys(t, "surface", scene_table_keys("surface"));
     sc.model = opt_string(t, "surface", "kind").value_or("smooth");
     require_one_of("surface.kind", sc.model, {"smooth", "rough"});
     sc.surface.kind = sc.model;
@@ -241,8 +247,7 @@ Scene parse_scene(std::string_view text, const std::string& source_name) {
   // [solver]
   {
     const auto& t = require_table(root, "solver");
-    check_keys(t, "solver", {"t_end", "samples", "rtol", "atol", "engine", "method", "precision", "h0", "hmax",
-                         "max_steps"});
+    check_keys(t, "solver", scene_table_keys("solver"));
     if (auto ms = opt_number(t, "solver", "max_steps")) {
       if (!(*ms >= 1 && *ms <= 1e9) || std::floor(*ms) != *ms)
         throw InputError("solver.max_steps", fmt(*ms), "must be an integer in [1, 1000000000]");
@@ -325,7 +330,140 @@ Scene parse_scene(std::string_view text, const std::string& source_name) {
     r << "friction limit mu N = " << sc.surface.mu * N << " N\n";
     sc.load_report = r.str();
   }
+  sc.document = std::make_shared<const toml::table>(root);
   return sc;
+}
+
+// ---- Setting keys after loading --------------------------------------------------------------
+
+namespace {
+
+const SceneKey& known_key(const std::string& key, const std::string& value_text) {
+  const SceneKey* k = find_scene_key(key);
+  if (!k) throw InputError(key, value_text, "unknown scene key (`nanopush scene-keys` lists them)");
+  return *k;
+}
+
+/// Put `value` at the dotted `key` of `doc`, creating tables on the way.
+void put(toml::table& doc, const std::string& key, const SceneValue& value) {
+  const SceneKey& k = known_key(key, value.to_string());
+  const std::string shown = value.kind() == KeyType::string ? "\"" + value.text() + "\"" : value.to_string();
+  toml::table* t = &doc;
+  std::size_t start = 0;
+  for (std::size_t dot = key.find('.'); dot != std::string::npos; dot = key.find('.', start)) {
+    const std::string part = key.substr(start, dot - start);
+    toml::node* n = t->get(part);
+    if (!n) n = &t->insert_or_assign(part, toml::table{}).first->second;
+    if (!n->is_table())
+      throw InputError(key, shown, key.substr(0, dot) + " is not a table in this scene (it is a name): set " +
+                                       key.substr(0, dot) + " itself, or give its table in the file");
+    t = n->as_table();
+    start = dot + 1;
+  }
+  const std::string leaf = key.substr(start);
+  switch (k.type) {
+    case KeyType::number:
+      if (value.kind() != KeyType::number) throw InputError(key, shown, "must be a number (" + std::string(k.unit) + ")");
+      t->insert_or_assign(leaf, value.number());
+      break;
+    case KeyType::integer: {
+      const double v = value.number();
+      if (value.kind() != KeyType::number || !(std::fabs(v) <= 9e15) || std::floor(v) != v)
+        throw InputError(key, shown, "must be a whole number in " + std::string(k.range));
+      t->insert_or_assign(leaf, static_cast<std::int64_t>(v));
+      break;
+    }
+    case KeyType::string:
+      if (value.kind() != KeyType::string) throw InputError(key, shown, "must be text: " + std::string(k.range));
+      t->insert_or_assign(leaf, value.text());
+      break;
+    case KeyType::boolean:
+      if (value.kind() != KeyType::boolean) throw InputError(key, shown, "must be true or false");
+      t->insert_or_assign(leaf, value.flag());
+      break;
+    case KeyType::array:
+    case KeyType::table:
+      throw InputError(key, shown, "is a" + std::string(k.type == KeyType::array ? "n array" : " table") +
+                                       ": set its scalar keys instead (`nanopush scene-keys`)");
+  }
+}
+
+}  // namespace
+
+SceneValue SceneValue::from_text(std::string_view key, std::string_view text) {
+  const SceneKey& k = known_key(std::string(key), std::string(text));
+  const std::string s(text);
+  switch (k.type) {
+    case KeyType::number:
+    case KeyType::integer: {
+      double v = 0;
+      const auto r = std::from_chars(s.data(), s.data() + s.size(), v);
+      if (s.empty() || r.ec != std::errc() || r.ptr != s.data() + s.size())
+        throw InputError(std::string(key), s, "must be a number" + (k.unit.empty() ? std::string() : " (" + std::string(k.unit) + ")"));
+      return v;
+    }
+    case KeyType::boolean:
+      if (s == "true") return true;
+      if (s == "false") return false;
+      throw InputError(std::string(key), s, "must be true or false");
+    default:
+      return s;
+  }
+}
+
+std::string SceneValue::to_string() const {
+  switch (kind_) {
+    case KeyType::number: return fmt(number_);
+    case KeyType::boolean: return flag_ ? "true" : "false";
+    default: return text_;
+  }
+}
+
+void Scene::set(const std::string& key, const SceneValue& value) { set(std::vector<SceneSetting>{{key, value}}); }
+
+void Scene::set(const std::vector<SceneSetting>& settings) {
+  toml::table doc = document ? *document : toml::table{};
+  for (const auto& [key, value] : settings) put(doc, key, value);
+  const std::filesystem::path keep = source;
+  Scene next = scene_from_document(doc, source.string());
+  next.source = keep;
+  *this = std::move(next);
+}
+
+void Scene::unset(const std::string& key) {
+  known_key(key, "(unset)");
+  toml::table doc = document ? *document : toml::table{};
+  toml::table* t = &doc;
+  std::size_t start = 0;
+  for (std::size_t dot = key.find('.'); dot != std::string::npos && t; dot = key.find('.', start)) {
+    toml::node* n = t->get(key.substr(start, dot - start));
+    t = n ? n->as_table() : nullptr;
+    start = dot + 1;
+  }
+  if (t) t->erase(key.substr(start));
+  const std::filesystem::path keep = source;
+  Scene next = scene_from_document(doc, source.string());
+  next.source = keep;
+  *this = std::move(next);
+}
+
+std::string Scene::to_toml() const {
+  std::ostringstream o;
+  if (document) o << *document << "\n";
+  return o.str();
+}
+
+SceneBuilder& SceneBuilder::set(const std::string& key, const SceneValue& value) {
+  put(doc_, key, value);
+  return *this;
+}
+
+Scene SceneBuilder::build(const std::string& name) const {
+  toml::table doc = doc_;
+  if (!doc.get("scene")) doc.insert_or_assign("scene", toml::table{});
+  toml::table& st = *doc.get("scene")->as_table();
+  if (!st.get("name")) st.insert_or_assign("name", name);
+  return scene_from_document(doc, name);
 }
 
 Scene load_scene(const std::filesystem::path& path) {

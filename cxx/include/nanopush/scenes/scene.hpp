@@ -3,11 +3,16 @@
 #pragma once
 #include <array>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
+#include <toml++/toml.h>
+
 #include "nanopush/models/rigid_body.hpp"
+#include "nanopush/scenes/scene_keys.hpp"
 
 namespace nanopush {
 
@@ -33,6 +38,34 @@ struct SolverSettings {
   double hmax = 0;             ///< largest step [s]; 0 = none
   long max_steps = 100000;     ///< attempted steps before giving up
 };
+
+/// A value for a scene key: a number, an integer, a string or a flag. Its type must match the
+/// key's (scene_keys.hpp); a number given for an integer key must be a whole number.
+class SceneValue {
+ public:
+  SceneValue(double v) : kind_(KeyType::number), number_(v) {}                     // NOLINT
+  SceneValue(int v) : kind_(KeyType::number), number_(v) {}                        // NOLINT
+  SceneValue(long v) : kind_(KeyType::number), number_(static_cast<double>(v)) {}  // NOLINT
+  SceneValue(bool v) : kind_(KeyType::boolean), flag_(v) {}                        // NOLINT
+  SceneValue(const char* v) : kind_(KeyType::string), text_(v) {}                  // NOLINT
+  SceneValue(std::string v) : kind_(KeyType::string), text_(std::move(v)) {}       // NOLINT
+  /// A value as text (the command line's KEY=VALUE): read as the key's type.
+  static SceneValue from_text(std::string_view key, std::string_view text);
+  [[nodiscard]] KeyType kind() const { return kind_; }
+  [[nodiscard]] double number() const { return number_; }
+  [[nodiscard]] bool flag() const { return flag_; }
+  [[nodiscard]] const std::string& text() const { return text_; }
+  /// As written in messages and tables: a number in its shortest exact form, text as is.
+  [[nodiscard]] std::string to_string() const;
+
+ private:
+  KeyType kind_;
+  double number_ = 0;
+  bool flag_ = false;
+  std::string text_;
+};
+
+using SceneSetting = std::pair<std::string, SceneValue>;
 
 struct Scene {
   std::string name, description;
@@ -64,6 +97,32 @@ struct Scene {
     return surface.normal_load > 0 ? surface.normal_load : mass * surface.g + surface.f_vdw;
   }
   [[nodiscard]] bool rough() const { return surface.kind == "rough"; }
+
+  /// Set one key after loading, validated as the file is: the whole scene is read again from
+  /// its document with the new value, so a value out of range, a key this scene's model does
+  /// not use (surface.mu on a smooth surface) or a conflict (object.mass beside
+  /// object.density) throws InputError naming the key, and the scene is left unchanged.
+  void set(const std::string& key, const SceneValue& value);
+  /// Several keys at once (then validated together: surface.kind = "rough" with surface.mu).
+  void set(const std::vector<SceneSetting>& settings);
+  /// Remove a key (back to its default); the scene must still be valid.
+  void unset(const std::string& key);
+  /// The scene file's document, with every set() applied (TOML).
+  [[nodiscard]] std::string to_toml() const;
+  /// The document behind this scene (toml++). Null for a default-constructed Scene.
+  std::shared_ptr<const toml::table> document;
+};
+
+/// A scene built from nothing in code: set keys, then build() validates the whole, e.g.
+///   SceneBuilder b; b.set("object.length", 100e-9); ... ; Scene s = b.build();
+class SceneBuilder {
+ public:
+  /// Checks the key exists and the value's type; the rest waits for build().
+  SceneBuilder& set(const std::string& key, const SceneValue& value);
+  [[nodiscard]] Scene build(const std::string& name = "scene") const;
+
+ private:
+  toml::table doc_;
 };
 
 /// Parse a scene; throws InputError naming the TOML key, the value and the allowed range.
@@ -73,6 +132,8 @@ struct Scene {
 std::string extended_precision_obstacle(bool rough, const std::string& engine, const std::string& method);
 
 Scene parse_scene(std::string_view toml_text, const std::string& source_name = "<string>");
+/// A scene from a parsed TOML document (what parse_scene and Scene::set use).
+Scene scene_from_document(const toml::table& doc, const std::string& source_name = "<string>");
 Scene load_scene(const std::filesystem::path& path);
 
 }  // namespace nanopush

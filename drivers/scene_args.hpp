@@ -1,0 +1,22 @@
+// The scene argument every scene-taking subcommand shares: SCENE (a file or a preset name)
+// and any number of --set KEY=VALUE, applied together and validated as the file is.
+#pragma once
+#include <CLI/CLI.hpp>
+
+#include <string>
+#include <vector>
+
+#include "nanopush/scenes/scene.hpp"
+
+namespace nanopush::cli {
+
+/// Declare `--set KEY=VALUE` (repeatable) on `app`, collected into `sets`.
+void add_set_option(CLI::App& app, std::vector<std::string>& sets);
+
+/// Split "KEY=VALUE" texts into typed settings (the key's type from the scene key table).
+std::vector<SceneSetting> parse_settings(const std::vector<std::string>& sets, const std::string& option = "--set");
+
+/// Load SCENE (resolve_scene) and apply the --set values.
+Scene load_scene_arg(const std::string& scene, const std::vector<std::string>& sets);
+
+}  // namespace nanopush::cli
