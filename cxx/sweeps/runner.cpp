@@ -1,0 +1,273 @@
+// Running a sweep on threads: the journal (resume), the work queue, the ordered table; and
+// joining shard tables.
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cinttypes>
+#include <cstdio>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <thread>
+
+#include "nanopush/numerics/error.hpp"
+#include "nanopush/sweeps/sweep.hpp"
+
+namespace nanopush::sweep {
+namespace {
+
+constexpr const char* kJournalMagic = "nanopush-sweep-journal 1";
+
+std::uint64_t fnv1a(std::string_view s) {
+  std::uint64_t h = 1469598103934665603ULL;
+  for (unsigned char c : s) {
+    h ^= c;
+    h *= 1099511628211ULL;
+  }
+  return h;
+}
+
+std::string hex(std::uint64_t v) {
+  char b[17];
+  std::snprintf(b, sizeof b, "%016" PRIx64, v);
+  return b;
+}
+
+std::string join_cells(const std::vector<std::string>& row) {
+  std::string s;
+  for (std::size_t i = 0; i < row.size(); ++i) {
+    if (i) s += ',';
+    s += row[i];
+  }
+  return s;
+}
+
+/// Split a CSV line into its cells, keeping each cell's text as written (quotes included).
+std::vector<std::string> split_cells(const std::string& line) {
+  std::vector<std::string> out;
+  std::string cur;
+  bool quoted = false;
+  for (char c : line) {
+    if (c == '"') quoted = !quoted;
+    if (c == ',' && !quoted) {
+      out.push_back(cur);
+      cur.clear();
+    } else {
+      cur += c;
+    }
+  }
+  out.push_back(cur);
+  return out;
+}
+
+std::string record_text(std::size_t index, const std::string& line) { return std::to_string(index) + "\t" + line; }
+
+}  // namespace
+
+// ---- journal -------------------------------------------------------------------------------
+
+Journal::Journal(std::filesystem::path path, const std::string& identity) : path_(std::move(path)) {
+  const std::string header = std::string(kJournalMagic) + " " + hex(fnv1a(identity));
+  std::error_code ec;
+  if (std::filesystem::exists(path_, ec)) {
+    std::ifstream in(path_, std::ios::binary);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const auto first = text.find('\n');
+    if (first == std::string::npos || text.substr(0, first) != header)
+      throw InputError("journal", path_.string(),
+                       "belongs to a different sweep (scene, axes, task, options or shard differ): remove it to "
+                       "start this sweep afresh");
+    // Records: "index<TAB>checksum<TAB>row\n"; keep only complete records that match.
+    std::size_t pos = first + 1, complete = pos;
+    while (pos < text.size()) {
+      const auto end = text.find('\n', pos);
+      if (end == std::string::npos) break;  // a record cut short by a kill
+      const std::string line = text.substr(pos, end - pos);
+      pos = end + 1;
+      complete = pos;
+      const auto t1 = line.find('\t'), t2 = t1 == std::string::npos ? t1 : line.find('\t', t1 + 1);
+      if (t2 == std::string::npos) continue;
+      const std::string idx = line.substr(0, t1), sum = line.substr(t1 + 1, t2 - t1 - 1), row = line.substr(t2 + 1);
+      if (idx.empty() || idx.find_first_not_of("0123456789") != std::string::npos) continue;
+      const std::size_t index = std::stoull(idx);
+      if (sum != hex(fnv1a(record_text(index, row)))) continue;
+      resumed_[index] = split_cells(row);
+    }
+    fd_ = ::open(path_.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
+    if (fd_ < 0) throw InputError("journal", path_.string(), "cannot be opened for appending");
+    if (complete < text.size() && ::ftruncate(fd_, static_cast<off_t>(complete)) != 0)
+      throw InputError("journal", path_.string(), "cannot drop its incomplete last record");
+  } else {
+    fd_ = ::open(path_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_APPEND | O_CLOEXEC, 0644);
+    if (fd_ < 0) throw InputError("journal", path_.string(), "cannot be created (does the directory exist?)");
+    const std::string h = header + "\n";
+    if (::write(fd_, h.data(), h.size()) != static_cast<ssize_t>(h.size()))
+      throw InputError("journal", path_.string(), "cannot be written");
+  }
+}
+
+Journal::~Journal() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+void Journal::append(std::size_t index, const std::vector<std::string>& row) {
+  const std::string line = join_cells(row);
+  const std::string rec = std::to_string(index) + "\t" + hex(fnv1a(record_text(index, line))) + "\t" + line + "\n";
+  std::lock_guard<std::mutex> lock(mutex_);
+  // One write per record: a kill leaves at most the last record incomplete (then ignored).
+  const char* p = rec.data();
+  std::size_t left = rec.size();
+  while (left > 0) {
+    const ssize_t w = ::write(fd_, p, left);
+    if (w < 0) throw std::runtime_error("journal " + path_.string() + ": write failed");
+    p += w;
+    left -= static_cast<std::size_t>(w);
+  }
+}
+
+void Journal::remove() {
+  if (fd_ >= 0) ::close(fd_);
+  fd_ = -1;
+  std::error_code ec;
+  std::filesystem::remove(path_, ec);
+}
+
+std::string sweep_identity(const Plan& plan, const Task& task, std::size_t shard_index, std::size_t shard_count) {
+  std::ostringstream s;
+  s << task.identity() << "\nshard " << shard_index << "/" << shard_count << "\nkeys";
+  for (const auto& k : plan.keys) s << " " << k;
+  s << "\npoints " << plan.size() << "\n";
+  for (const auto& pt : plan.points) {
+    for (const auto& v : pt) s << v.to_string() << ",";
+    s << "\n";
+  }
+  return s.str();
+}
+
+// ---- tables --------------------------------------------------------------------------------
+
+void write_table(const std::filesystem::path& out, const Plan& plan, const Task& task,
+                 const std::map<std::size_t, std::vector<std::string>>& rows, std::size_t shard_index,
+                 std::size_t shard_count) {
+  (void)shard_index;
+  (void)shard_count;
+  std::vector<std::vector<std::string>> ordered;
+  ordered.reserve(rows.size());
+  for (const auto& [i, r] : rows) ordered.push_back(r);
+  write_csv_atomic(out, table_columns(plan, task), ordered, task.scene_name());
+}
+
+std::size_t merge_tables(const std::vector<std::filesystem::path>& shards, const std::filesystem::path& out) {
+  if (shards.empty()) throw InputError("--merge", "(none)", "give the shard tables to join");
+  std::string header;
+  std::map<std::size_t, std::string> lines;
+  std::size_t failed = 0;
+  for (const auto& path : shards) {
+    std::ifstream in(path);
+    if (!in) throw InputError("--merge", path.string(), "cannot open the shard table");
+    std::string h, line;
+    if (!std::getline(in, h)) throw InputError("--merge", path.string(), "empty file");
+    if (header.empty()) header = h;
+    if (h != header)
+      throw InputError("--merge", path.string(), "its columns differ from " + shards.front().string() + "'s");
+    while (std::getline(in, line)) {
+      if (line.empty()) continue;
+      const auto comma = line.find(',');
+      const std::string idx = line.substr(0, comma);
+      if (idx.empty() || idx.find_first_not_of("0123456789") != std::string::npos)
+        throw InputError("--merge", path.string(), "a row without a point index: " + line.substr(0, 40));
+      const std::size_t i = std::stoull(idx);
+      if (!lines.emplace(i, line).second)
+        throw InputError("--merge", path.string(), "point " + idx + " appears in more than one shard");
+      if (row_failed(split_cells(line))) ++failed;
+    }
+  }
+  // Every point 0 .. n-1 exactly once (a missing shard leaves a gap).
+  std::size_t expect = 0;
+  for (const auto& [i, l] : lines) {
+    if (i != expect)
+      throw InputError("--merge", "point " + std::to_string(expect),
+                       "is in no shard: give every shard's table (a shard may also be unfinished)");
+    ++expect;
+  }
+  std::string text = header + "\n";
+  for (const auto& [i, l] : lines) text += l + "\n";
+  write_file_atomic(out, text);
+  // The sidecar: the shards' (their columns are the table's).
+  const auto side = schema_path(shards.front());
+  std::error_code ec;
+  if (std::filesystem::exists(side, ec)) {
+    std::ifstream in(side);
+    write_file_atomic(schema_path(out), std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>()));
+  }
+  return failed;
+}
+
+// ---- threads -------------------------------------------------------------------------------
+
+Result run_local(const Plan& plan, const Task& task, const Options& o) {
+  if (o.shard_count == 0 || o.shard_index >= o.shard_count)
+    throw InputError("--shard", std::to_string(o.shard_index) + "/" + std::to_string(o.shard_count),
+                     "must be i/n with 0 <= i < n");
+  (void)table_columns(plan, task);  // every varied key is the task's, before any work
+  const auto pts = shard_points(plan.size(), o.shard_index, o.shard_count);
+  Journal journal(o.out.string() + ".journal", sweep_identity(plan, task, o.shard_index, o.shard_count));
+  std::map<std::size_t, std::vector<std::string>> rows;
+  std::vector<std::size_t> pending;
+  const std::set<std::size_t> mine(pts.begin(), pts.end());
+  for (const auto& [i, r] : journal.resumed())
+    if (mine.count(i)) rows[i] = r;
+  for (std::size_t i : pts)
+    if (!rows.count(i)) pending.push_back(i);
+  Result res;
+  res.points = pts.size();
+  res.resumed = rows.size();
+
+  unsigned jobs = o.jobs ? o.jobs : std::max(1u, std::thread::hardware_concurrency());
+  jobs = static_cast<unsigned>(std::min<std::size_t>(jobs, std::max<std::size_t>(pending.size(), 1)));
+  std::atomic<std::size_t> next{0}, done{rows.size()};
+  std::atomic<unsigned> running{jobs};
+  std::mutex mutex;
+  std::exception_ptr failure;
+  auto worker = [&] {
+    try {
+      while (!(o.stop && o.stop->load())) {
+        const std::size_t k = next.fetch_add(1);
+        if (k >= pending.size()) break;
+        auto row = evaluate_row(plan, task, pending[k]);
+        journal.append(pending[k], row);
+        std::lock_guard<std::mutex> lock(mutex);
+        rows[pending[k]] = std::move(row);
+        ++done;
+      }
+    } catch (...) {
+      std::lock_guard<std::mutex> lock(mutex);
+      if (!failure) failure = std::current_exception();
+    }
+    --running;
+  };
+  std::vector<std::thread> threads;
+  for (unsigned t = 0; t < jobs; ++t) threads.emplace_back(worker);
+  auto last = std::chrono::steady_clock::now();
+  while (running.load() > 0) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    if (o.progress && std::chrono::steady_clock::now() - last > std::chrono::milliseconds(500)) {
+      last = std::chrono::steady_clock::now();
+      o.progress(done.load(), pts.size());
+    }
+  }
+  for (auto& t : threads) t.join();
+  if (failure) std::rethrow_exception(failure);
+  if (o.progress) o.progress(done.load(), pts.size());
+  res.done = rows.size();
+  for (const auto& [i, r] : rows) res.failed += row_failed(r) ? 1 : 0;
+  if (rows.size() < pts.size()) return res;  // stopped: the journal keeps what was done
+  write_table(o.out, plan, task, rows, o.shard_index, o.shard_count);
+  journal.remove();
+  res.complete = true;
+  return res;
+}
+
+}  // namespace nanopush::sweep

@@ -1,0 +1,350 @@
+// What a sweep evaluates at a point: a run of a scene (summary of its trajectory), or one of
+// the closed-form evaluations (friction wrench, iCOR formulas, mu estimate).
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "nanopush/engines/engines.hpp"
+#include "nanopush/models/friction.hpp"
+#include "nanopush/models/icor.hpp"
+#include "nanopush/numerics/error.hpp"
+#include "nanopush/outputs/trajectory_csv.hpp"
+#include "nanopush/sweeps/sweep.hpp"
+
+namespace nanopush::sweep {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+std::string cell(double v) { return csv_number(v); }  // NaN -> "" (missing)
+
+// ---- run: a scene's trajectory, summarised ---------------------------------------------------
+
+class RunTask final : public Task {
+ public:
+  RunTask(const Scene& base, RunSettings s, std::filesystem::path trajectories)
+      : base_(base), settings_(std::move(s)), trajectories_(std::move(trajectories)) {}
+  [[nodiscard]] std::string name() const override { return "run"; }
+  [[nodiscard]] std::string scene_name() const override { return base_.name; }
+
+  [[nodiscard]] Columns outputs() const override {
+    return {{"x_final", "m", "x of the centre of mass at t_end (world axes)"},
+            {"y_final", "m", "y of the centre of mass at t_end"},
+            {"theta_final", "rad", "angle at t_end"},
+            {"distance", "m", "path length of the centre of mass over the output samples"},
+            {"rotation", "rad", "total rotation: the sum of |delta theta| over the output samples"},
+            {"icor_x", "m", "final iCOR, x offset from the centre of mass (world axes); empty in pure translation"},
+            {"icor_y", "m", "final iCOR, y offset from the centre of mass; empty in pure translation"},
+            {"t_stick", "s", "coulomb law: first time after 0 the object comes to rest and stays stuck; empty if never"},
+            {"f_peak", "N", "largest friction force |(fx, fy)| over the output samples"},
+            {"w_friction", "J", "work done by friction from 0 to t_end (rough surface; 0 on a smooth one)"},
+            count_column("nfcn", "right-hand-side evaluations"),
+            count_column("steps", "accepted steps"),
+            count_column("rejected", "rejected steps")};
+  }
+
+  [[nodiscard]] Column input_column(const std::string& key) const override {
+    const SceneKey* k = find_scene_key(key);
+    if (!k) throw InputError(key, "(varied)", "unknown scene key (`nanopush scene-keys` lists them)");
+    std::string name = key;  // a plain identifier: surface.mu -> surface_mu
+    for (char& ch : name)
+      if (ch == '.') ch = '_';
+    Column c{name, std::string(k->unit), "scene key " + key + ": " + std::string(k->description)};
+    if (k->type == KeyType::string || k->type == KeyType::boolean) c.type = "string";
+    if (k->type == KeyType::integer) c.type = "integer";
+    return c;
+  }
+
+  [[nodiscard]] std::vector<std::string> evaluate(const std::vector<SceneSetting>& point,
+                                                  std::size_t index) const override {
+    Scene sc = base_;
+    if (!point.empty()) sc.set(point);
+    const Trajectory tr = run_engine(sc, settings_);
+    if (!trajectories_.empty())
+      write_trajectory_csv(tr, trajectories_ / ("point_" + std::to_string(index) + ".csv"));
+    const auto& rows = tr.rows;
+    const auto& last = rows.back();
+    double dist = 0, rot = 0, fpeak = 0;
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      fpeak = std::max(fpeak, std::hypot(rows[i][7], rows[i][8]));
+      if (i == 0) continue;
+      dist += std::hypot(rows[i][1] - rows[i - 1][1], rows[i][2] - rows[i - 1][2]);
+      rot += std::fabs(rows[i][3] - rows[i - 1][3]);
+    }
+    double ix = kNaN, iy = kNaN;
+    if (last[6] != 0.0) {  // v = omega x r: the point at rest is CM + (-vy, vx) / omega
+      ix = -last[5] / last[6];
+      iy = last[4] / last[6];
+    }
+    double t_stick = kNaN;
+    for (const auto& e : tr.events)
+      if (e.stuck && e.t > 0.0) {
+        t_stick = e.t;
+        break;
+      }
+    const double wf = tr.work_fric.empty() ? 0.0 : tr.work_fric.back();
+    return {cell(last[1]), cell(last[2]), cell(last[3]), cell(dist), cell(rot), cell(ix), cell(iy), cell(t_stick),
+            cell(fpeak), cell(wf), std::to_string(tr.stats.nfcn), std::to_string(tr.stats.naccpt),
+            std::to_string(tr.stats.nrejct)};
+  }
+
+  [[nodiscard]] std::string identity() const override {
+    return "run\n" + base_.to_toml() + "\nengine=" + settings_.engine + " method=" + settings_.method +
+           " law=" + settings_.law + " rtol=" + fmt(settings_.rtol) + " atol=" + fmt(settings_.atol) +
+           " precision=" + settings_.precision;
+  }
+
+ private:
+  Scene base_;
+  RunSettings settings_;
+  std::filesystem::path trajectories_;
+};
+
+// ---- closed-form evaluations over named parameters ---------------------------------------
+
+struct Param {
+  std::string key, unit, description;
+  double dflt;  ///< NaN: required (or optional, see the task)
+};
+
+class ParamTask : public Task {
+ public:
+  ParamTask(std::vector<Param> params, const std::vector<SceneSetting>& fixed) : params_(std::move(params)) {
+    for (const auto& p : params_) values_[p.key] = p.dflt;
+    for (const auto& [k, v] : fixed) values_[check(k, v)] = v.number();
+  }
+  [[nodiscard]] Column input_column(const std::string& key) const override {
+    for (const auto& p : params_)
+      if (p.key == key) {
+        std::string name = key;
+        for (char& ch : name)
+          if (ch == '.') ch = '_';
+        return {name, p.unit, key + ": " + p.description};
+      }
+    throw InputError(key, "(varied)", "not a parameter of --task " + name() + " (" + keys() + ")");
+  }
+  [[nodiscard]] std::vector<std::string> evaluate(const std::vector<SceneSetting>& point,
+                                                  std::size_t /*index*/) const override {
+    auto v = values_;
+    for (const auto& [k, x] : point) v[check(k, x)] = x.number();
+    return compute(v);
+  }
+  [[nodiscard]] std::string identity() const override {
+    std::ostringstream s;
+    s << name();
+    for (const auto& [k, x] : values_) s << " " << k << "=" << fmt(x);
+    return s.str();
+  }
+
+ protected:
+  using Values = std::map<std::string, double>;
+  [[nodiscard]] virtual std::vector<std::string> compute(const Values& v) const = 0;
+  static double need(const Values& v, const std::string& key) {
+    const double x = v.at(key);
+    if (std::isnan(x)) throw InputError(key, "(missing)", "required: give it with --set or vary it");
+    return x;
+  }
+  static icor::Rod rod_of(const Values& v) {
+    icor::Rod r;
+    r.length = v.at("rod.length");
+    r.radius = v.at("rod.radius");
+    r.density = v.at("rod.density");
+    r.hamaker = v.at("rod.hamaker");
+    r.z0 = v.at("rod.z0");
+    r.gravity = v.at("rod.gravity");
+    r.validate();
+    return r;
+  }
+  static std::vector<Param> rod_params() {
+    const icor::Rod r;
+    return {{"rod.length", "m", "rod length L", r.length},
+            {"rod.radius", "m", "rod radius", r.radius},
+            {"rod.density", "kg/m^3", "rod density", r.density},
+            {"rod.hamaker", "J", "Hamaker constant H (assumed literature-order value by default)", r.hamaker},
+            {"rod.z0", "m", "rod-plane separation z0", r.z0},
+            {"rod.gravity", "m/s^2", "gravity", r.gravity}};
+  }
+
+ private:
+  std::string check(const std::string& key, const SceneValue& v) const {
+    bool known = false;
+    for (const auto& p : params_) known = known || p.key == key;
+    if (!known) throw InputError(key, v.to_string(), "not a parameter of --task " + name() + " (" + keys() + ")");
+    if (v.kind() != KeyType::number) throw InputError(key, v.to_string(), "must be a number");
+    return key;
+  }
+  [[nodiscard]] std::string keys() const {
+    std::string s;
+    for (const auto& p : params_) s += (s.empty() ? "" : ", ") + p.key;
+    return s;
+  }
+  std::vector<Param> params_;
+  Values values_;
+};
+
+class FrictionTask final : public ParamTask {
+ public:
+  explicit FrictionTask(const std::vector<SceneSetting>& fixed)
+      : ParamTask({{"a", "m", "contact half-width (body x')", 27.5e-9},
+                   {"b", "m", "contact half-length (body y')", 50e-9},
+                   {"muN", "N", "friction limit mu N", 1.0},
+                   {"R", "m", "iCOR distance from the centre of mass", kNaN},
+                   {"alpha", "rad", "iCOR direction: the iCOR is at -R (cos alpha, sin alpha) in body axes", 0.0},
+                   {"sense", "1", "+1 counter-clockwise, -1 clockwise rotation", 1.0}},
+                  fixed) {}
+  [[nodiscard]] std::string name() const override { return "friction"; }
+  [[nodiscard]] Columns outputs() const override {
+    return {{"fx", "N", "friction force, body x' (docs/friction.md)"},
+            {"fy", "N", "friction force, body y'"},
+            {"mf", "N m", "friction moment about the centre of mass"}};
+  }
+
+ protected:
+  [[nodiscard]] std::vector<std::string> compute(const Values& v) const override {
+    const double s = need(v, "sense");
+    if (s != 1.0 && s != -1.0) throw InputError("sense", fmt(s), "must be 1 or -1");
+    const auto w = rectangle_friction_wrench_checked(need(v, "a"), need(v, "b"), need(v, "muN"), need(v, "R"),
+                                                     need(v, "alpha"), static_cast<int>(s));
+    return {cell(w.fx), cell(w.fy), cell(w.mf)};
+  }
+};
+
+class IcorTask final : public ParamTask {
+ public:
+  explicit IcorTask(const std::vector<SceneSetting>& fixed) : ParamTask(params(), fixed) {}
+  [[nodiscard]] std::string name() const override { return "icor"; }
+  [[nodiscard]] Columns outputs() const override {
+    return {{"R_experimental_fit", "m", "iCOR distance, experimental fit (thesis eq 4.1)"},
+            {"R_falvo", "m", "iCOR distance, Falvo et al. (eq 4.2)"},
+            {"R_li", "m", "iCOR distance, Li et al. (eq 4.3)"},
+            {"R_unknown_pressure", "m", "iCOR distance, unknown pressure distribution (eq 4.13)"},
+            {"R_constrained", "m", "iCOR of the constrained cubic (eq 5.4), Table 5.1's negative branch; empty if none"},
+            {"R_impulsive", "m", "impulsive iCOR (eq 5.5)"},
+            {"F_min", "N", "minimum push force for known pressure (eq 4.8)"},
+            {"R_known_pressure", "m", "iCOR for known pressure at push force `force` (eq 4.7); empty without force"},
+            {"load", "N", "rod load W = m g + F_vdw"}};
+  }
+
+ protected:
+  static std::vector<Param> params() {
+    std::vector<Param> p = {{"yn", "m", "push point: distance from the centre of mass along the rod", kNaN},
+                            {"mu", "1", "friction coefficient", 0.1},
+                            {"force", "N", "push force (for eq 4.7; optional)", kNaN}};
+    for (auto& r : rod_params()) p.push_back(r);
+    return p;
+  }
+  [[nodiscard]] std::vector<std::string> compute(const Values& v) const override {
+    const icor::Rod rod = rod_of(v);
+    const double L = rod.length, yn = need(v, "yn"), mu = need(v, "mu"), W = rod.load();
+    const auto sol = icor::solve_constrained_cubic(yn, L, rod.gyration_squared(), icor::CubicMethod::Brent);
+    const double F = v.at("force");
+    return {cell(icor::experimental_fit(yn, L)),
+            cell(icor::falvo(yn, L)),
+            cell(icor::li(yn, L)),
+            cell(icor::unknown_pressure(yn, L)),
+            cell(sol.negative ? *sol.negative : kNaN),
+            cell(icor::impulsive(yn, rod.gyration_squared())),
+            cell(icor::minimum_force(mu, W, yn, L)),
+            cell(std::isnan(F) ? kNaN : icor::known_pressure(mu, W, yn, F, L)),
+            cell(W)};
+  }
+};
+
+class EstimateMuTask final : public ParamTask {
+ public:
+  explicit EstimateMuTask(const std::vector<SceneSetting>& fixed) : ParamTask(params(), fixed) {}
+  [[nodiscard]] std::string name() const override { return "estimate-mu"; }
+  [[nodiscard]] Columns outputs() const override {
+    return {text_column("basis", "force (minimum push force at yn, eq 4.8) or icor (force and observed iCOR R, eq 4.10)"),
+            {"mu", "1", "estimated friction coefficient"},
+            {"sigma_mu", "1", "its standard uncertainty (first-order propagation, inputs uncorrelated)"},
+            {"load", "N", "rod load W used"}};
+  }
+
+ protected:
+  static std::vector<Param> params() {
+    std::vector<Param> p = {{"force", "N", "measured push force", kNaN},
+                            {"sigma_force", "N", "its standard uncertainty", 0.0},
+                            {"yn", "m", "push point (basis force); give yn or R", kNaN},
+                            {"sigma_yn", "m", "its standard uncertainty", 0.0},
+                            {"R", "m", "observed iCOR distance (basis icor); give yn or R", kNaN},
+                            {"sigma_R", "m", "its standard uncertainty", 0.0},
+                            {"sigma_L", "m", "uncertainty of the rod length", 0.0},
+                            {"sigma_H", "J", "uncertainty of the Hamaker constant", 0.0}};
+    for (auto& r : rod_params()) p.push_back(r);
+    return p;
+  }
+  [[nodiscard]] std::vector<std::string> compute(const Values& v) const override {
+    const icor::Rod rod = rod_of(v);
+    const bool has_yn = !std::isnan(v.at("yn")), has_R = !std::isnan(v.at("R"));
+    if (has_yn == has_R)
+      throw InputError("yn/R", has_yn ? "both given" : "neither given", "give exactly one: yn (basis force) or R (basis icor)");
+    const icor::Measured F{need(v, "force"), v.at("sigma_force")};
+    const auto e = has_yn ? icor::estimate_mu_from_force(rod, F, {v.at("yn"), v.at("sigma_yn")}, v.at("sigma_L"),
+                                                         v.at("sigma_H"))
+                          : icor::estimate_mu_from_icor(rod, F, {v.at("R"), v.at("sigma_R")}, v.at("sigma_L"),
+                                                        v.at("sigma_H"));
+    return {has_yn ? "force" : "icor", cell(e.mu), cell(e.sigma), cell(e.load)};
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Task> make_run_task(const Scene& base, RunSettings settings, std::filesystem::path trajectories) {
+  return std::make_unique<RunTask>(base, std::move(settings), std::move(trajectories));
+}
+std::unique_ptr<Task> make_friction_task(const std::vector<SceneSetting>& fixed) {
+  return std::make_unique<FrictionTask>(fixed);
+}
+std::unique_ptr<Task> make_icor_task(const std::vector<SceneSetting>& fixed) { return std::make_unique<IcorTask>(fixed); }
+std::unique_ptr<Task> make_estimate_mu_task(const std::vector<SceneSetting>& fixed) {
+  return std::make_unique<EstimateMuTask>(fixed);
+}
+std::unique_ptr<Task> make_task(const std::string& name, const std::vector<SceneSetting>& fixed) {
+  if (name == "friction") return make_friction_task(fixed);
+  if (name == "icor") return make_icor_task(fixed);
+  if (name == "estimate-mu") return make_estimate_mu_task(fixed);
+  throw InputError("--task", name, "must be one of: run, friction, icor, estimate-mu");
+}
+
+// ---- rows --------------------------------------------------------------------------------
+
+Columns table_columns(const Plan& plan, const Task& task) {
+  Columns c{count_column("point", "index of the point in the plan (0-based; the table's order)")};
+  for (const auto& k : plan.keys) c.push_back(task.input_column(k));
+  for (auto& o : task.outputs()) c.push_back(o);
+  c.push_back(text_column("status", "ok, bad_input (a value the model refuses), solver_failure or error"));
+  c.push_back(text_column("message", "why the point failed; empty when ok"));
+  return c;
+}
+
+std::vector<std::string> evaluate_row(const Plan& plan, const Task& task, std::size_t i) {
+  std::vector<std::string> row{std::to_string(i)};
+  for (const auto& v : plan.points.at(i))
+    row.push_back(v.kind() == KeyType::number ? csv_number(v.number()) : csv_quote(v.to_string()));
+  const std::size_t n_out = task.outputs().size();
+  std::string status = "ok", message;
+  try {
+    auto out = task.evaluate(plan.settings(i), i);
+    for (auto& c : out) row.push_back(std::move(c));
+  } catch (const InputError& e) {
+    status = "bad_input";
+    message = e.what();
+  } catch (const SolverError& e) {
+    status = "solver_failure";
+    message = e.what();
+  } catch (const std::exception& e) {
+    status = "error";
+    message = e.what();
+  }
+  if (status != "ok") row.resize(1 + plan.keys.size() + n_out);  // empty outputs
+  for (char& ch : message)
+    if (ch == '\n' || ch == '\r' || ch == '\t') ch = ' ';
+  row.push_back(status);
+  row.push_back(csv_quote(message));
+  return row;
+}
+
+bool row_failed(const std::vector<std::string>& row) { return row.size() < 2 || row[row.size() - 2] != "ok"; }
+
+}  // namespace nanopush::sweep

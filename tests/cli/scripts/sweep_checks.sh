@@ -1,0 +1,82 @@
+#!/usr/bin/env bash
+# Checks of nanopush sweep and --set that need several runs compared byte for byte.
+# Usage: sweep_checks.sh MODE NANOPUSH WORKDIR [MPIEXEC]
+set -euo pipefail
+mode=$1 np=$2 dir=$3 mpiexec=${4:-}
+rm -rf "$dir" && mkdir -p "$dir" && cd "$dir"
+# A small rough-surface grid under the coulomb law (points differ in cost; one fails).
+grid=(fig3_18 --set surface.law=coulomb --vary surface.mu=0.02:0.2:5 --vary push.yn=0:45e-9:4 --quiet)
+fail() { echo "FAIL: $*"; exit 1; }
+status() { set +e; "$@"; local rc=$?; set -e; echo $rc; }
+
+case $mode in
+jobs)  # the table is the same bytes for 1 and 2 threads
+  [ "$(status "$np" sweep "${grid[@]}" --jobs 1 --out j1.csv)" = 0 ] || fail "jobs 1"
+  [ "$(status "$np" sweep "${grid[@]}" --jobs 2 --out j2.csv)" = 0 ] || fail "jobs 2"
+  cmp j1.csv j2.csv || fail "jobs 1 and 2 differ"
+  [ "$(wc -l < j1.csv)" = 21 ] || fail "expected 20 rows and a header"
+  [ -f j1.schema.json ] || fail "no sidecar"
+  [ ! -e j1.csv.journal ] || fail "journal left after a complete sweep"
+  head -1 j1.csv | grep -q '^point,surface_mu,push_yn,x_final,' || fail "header: $(head -1 j1.csv)" ;;
+shards)  # two shards merged equal one run
+  "$np" sweep "${grid[@]}" --out all.csv
+  "$np" sweep "${grid[@]}" --shard 0/2 --out s0.csv
+  "$np" sweep "${grid[@]}" --shard 1/2 --out s1.csv
+  "$np" sweep --merge s1.csv s0.csv --out merged.csv --quiet
+  cmp all.csv merged.csv || fail "merged shards differ from one run"
+  [ "$(status "$np" sweep --merge s0.csv --out part.csv --quiet 2> err.txt)" = 2 ] || fail "a missing shard must be an error"
+  grep -q "point 1: is in no shard" err.txt || fail "message: $(cat err.txt)" ;;
+mpi)  # two MPI ranks write the same table as one process
+  "$np" sweep "${grid[@]}" --out serial.csv
+  $mpiexec --oversubscribe -np 2 "$np" sweep "${grid[@]}" --out mpi.csv
+  cmp serial.csv mpi.csv || fail "MPI table differs"
+  [ ! -e mpi.csv.journal ] || fail "journal left" ;;
+resume)  # killed with SIGKILL mid-way, then resumed: the same table as an uninterrupted run
+  big=(fig3_18 --set surface.law=coulomb --vary surface.mu=0.02:0.2:20 --vary push.yn=0:45e-9:20 --quiet --jobs 1)
+  set +e; "$np" sweep "${big[@]}" --out full.csv; set -e
+  "$np" sweep "${big[@]}" --out killed.csv &
+  pid=$!
+  for _ in $(seq 1 400); do
+    [ -f killed.csv.journal ] && [ "$(wc -l < killed.csv.journal)" -ge 40 ] && break
+    sleep 0.02
+  done
+  kill -9 $pid; wait $pid || true
+  [ ! -e killed.csv ] || fail "a table appeared for an unfinished sweep"
+  n=$(wc -l < killed.csv.journal)
+  [ "$n" -ge 2 ] && [ "$n" -lt 401 ] || fail "journal has $n lines"
+  # A record cut short (as by a kill mid-write) is ignored.
+  printf '123\tdeadbeef\t123,0.1,trunc' >> killed.csv.journal
+  set +e; "$np" sweep "${big[@]}" --out killed.csv; set -e
+  cmp full.csv killed.csv || fail "resumed table differs"
+  # A journal of another sweep is refused.
+  printf 'nanopush-sweep-journal 1 0000000000000000\n' > other.csv.journal
+  [ "$(status "$np" sweep "${grid[@]}" --out other.csv 2> err.txt)" = 2 ] || fail "foreign journal accepted"
+  grep -q "belongs to a different sweep" err.txt || fail "message: $(cat err.txt)" ;;
+failing)  # a failing point is a row; the exit status counts the failures (64 + n)
+  rc=$(status "$np" sweep fig3_6a --vary solver.max_steps=1,100000 --out f.csv --quiet)
+  [ "$rc" = 65 ] || fail "exit status $rc, expected 65 (one failed point)"
+  grep -q '^0,1,.*,solver_failure,' f.csv || fail "no failure row: $(cat f.csv)"
+  grep -q '^1,100000,.*,ok,$' f.csv || fail "the good point is missing" ;;
+set)  # --set changes exactly what an edited scene file changes (bit for bit)
+  sed -e 's/^mu = 0.06/mu = 0.1/' -e 's/^yn = 45e-9 /yn = 20e-9 /' "$5" > edited.toml
+  grep -q '^mu = 0.1$' edited.toml && grep -q '^yn = 20e-9 ' edited.toml || fail "sed did not edit the scene"
+  "$np" run fig3_18 --set surface.mu=0.1 --set push.yn=20e-9 --out set.csv --quiet
+  "$np" run edited.toml --out edited.csv --quiet
+  cmp set.csv edited.csv || fail "--set differs from the edited file"
+  "$np" deck fig3_18 --set surface.mu=0.1 --set push.yn=20e-9 > set.deck
+  "$np" deck edited.toml > edited.deck
+  # (the first line names the source file)
+  cmp <(tail -n +2 set.deck) <(tail -n +2 edited.deck) || fail "deck --set differs" ;;
+tasks)  # sweeps of closed-form evaluations
+  "$np" sweep --task friction --set a=27.5e-9 --set b=50e-9 --vary R=1e-9:1e-6:3 --vary alpha=0,1.5707963267948966 --out fr.csv --quiet
+  [ "$(wc -l < fr.csv)" = 7 ] || fail "friction rows"
+  head -1 fr.csv | grep -q '^point,R,alpha,fx,fy,mf,status,message$' || fail "friction header $(head -1 fr.csv)"
+  "$np" sweep --task icor --vary yn=0:100e-9:3 --set mu=0.1 --out ic.csv --quiet
+  grep -q '^2,1e-07,' ic.csv || fail "icor row"
+  "$np" sweep --task estimate-mu --set force=2e-6 --set sigma_force=1e-7 --vary yn=10e-9,50e-9 --out mu.csv --quiet
+  grep -q '^0,1e-08,force,' mu.csv || fail "estimate-mu row: $(cat mu.csv)"
+  [ "$(status "$np" sweep --task friction --vary Q=1,2 --out bad.csv --quiet 2> err.txt)" = 2 ] || fail "bad key accepted"
+  grep -q "Q = (varied): not a parameter of --task friction" err.txt || fail "message: $(cat err.txt)" ;;
+*) fail "unknown mode $mode" ;;
+esac
+echo "sweep check $mode: ok"

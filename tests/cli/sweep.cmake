@@ -1,0 +1,41 @@
+# nanopush sweep and --set (issue: many scenes at once). Each check compares whole tables
+# byte for byte (tests/cli/scripts/sweep_checks.sh).
+set(_np $<TARGET_FILE:nanopush>)
+set(_env "NANOPUSH_SCENES=${NANOPUSH_SCENES}")
+set(_sweep_sh ${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/sweep_checks.sh)
+set(_sweep_dir ${CMAKE_CURRENT_BINARY_DIR}/sweep)
+foreach(_mode jobs shards resume failing tasks)
+  add_test(NAME cli.sweep.${_mode} COMMAND bash ${_sweep_sh} ${_mode} ${_np} ${_sweep_dir}/${_mode})
+  set_tests_properties(cli.sweep.${_mode} PROPERTIES ENVIRONMENT "${_env}"
+                       PASS_REGULAR_EXPRESSION "sweep check ${_mode}: ok")
+endforeach()
+add_test(NAME cli.set.edited_file COMMAND bash ${_sweep_sh} set ${_np} ${_sweep_dir}/set ""
+                                          ${NANOPUSH_SCENES}/thesis/fig3_18.toml)
+set_tests_properties(cli.set.edited_file PROPERTIES ENVIRONMENT "${_env}" PASS_REGULAR_EXPRESSION "sweep check set: ok")
+if(NANOPUSH_MPI)
+  # CI runs as root: Open MPI refuses that unless told it is intended.
+  add_test(NAME cli.sweep.mpi COMMAND bash ${_sweep_sh} mpi ${_np} ${_sweep_dir}/mpi ${MPIEXEC_EXECUTABLE})
+  set_tests_properties(cli.sweep.mpi PROPERTIES PASS_REGULAR_EXPRESSION "sweep check mpi: ok"
+    ENVIRONMENT "${_env};OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1;OMPI_MCA_rmaps_base_oversubscribe=1")
+endif()
+
+# --set: bad keys and values are refused with key, value and range (exit 2), nothing written.
+add_test(NAME cli.set.unknown_key COMMAND ${_np} run fig3_6a --set surface.muu=0.1 --out -)
+set_tests_properties(cli.set.unknown_key PROPERTIES ENVIRONMENT "${_env}"
+  PASS_REGULAR_EXPRESSION "surface.muu = 0.1: unknown scene key")
+add_test(NAME cli.set.unused_key COMMAND ${_np} run fig3_6a --set surface.mu=0.1 --out -)
+set_tests_properties(cli.set.unused_key PROPERTIES ENVIRONMENT "${_env}"
+  PASS_REGULAR_EXPRESSION "surface.mu = \\(present\\): only meaningful with surface.kind = \"rough\"")
+add_test(NAME cli.set.out_of_range COMMAND ${_np} compare fig3_18 --set surface.mu=-0.1)
+set_tests_properties(cli.set.out_of_range PROPERTIES ENVIRONMENT "${_env}"
+  PASS_REGULAR_EXPRESSION "surface.mu = -0.1: must be in \\[0, 10\\]")
+add_test(NAME cli.set.not_a_number COMMAND ${_np} run fig3_18 --set surface.mu=abc --out -)
+set_tests_properties(cli.set.not_a_number PROPERTIES ENVIRONMENT "${_env}"
+  PASS_REGULAR_EXPRESSION "surface.mu = abc: must be a number")
+add_test(NAME cli.set.exit_status COMMAND ${_np} run fig3_18 --set surface.mu=abc --out -)
+set_tests_properties(cli.set.exit_status PROPERTIES ENVIRONMENT "${_env}" WILL_FAIL TRUE)
+add_test(NAME cli.sweep.bad_axis COMMAND ${_np} sweep fig3_18 --vary surface.mu=0.1:0.2)
+set_tests_properties(cli.sweep.bad_axis PROPERTIES ENVIRONMENT "${_env}"
+  PASS_REGULAR_EXPRESSION "a range is FROM:TO:N")
+add_test(NAME cli.scene_keys COMMAND ${_np} scene-keys)
+set_tests_properties(cli.scene_keys PROPERTIES PASS_REGULAR_EXPRESSION "surface.mu +number")
