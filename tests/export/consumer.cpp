@@ -1,4 +1,6 @@
-// Consumer of the installed nanopush C++ library (nanopush::core) and C API (nanopush::capi).
+// Consumer of the installed nanopush C++ library (nanopush::core, nanopush::engines) and C API
+// (nanopush::capi). Built by tests/export (C, C++ and Fortran enabled) and by tests/export/cxx_only
+// (C++ only), neither setting CMAKE_CXX_STANDARD: C++20 comes with the targets.
 // Usage: consumer_cxx SCENE.toml [cxx|f77]
 //          run a scene and print the trajectory exactly as `nanopush run SCENE --engine E --out -
 //          --quiet` does
@@ -14,6 +16,7 @@
 #include <nanopush.h>
 #include <nanopush/numerics/error.hpp>
 #include <nanopush/models/friction.hpp>
+#include <nanopush/scenes/simulate.hpp>
 #include <nanopush/engines/engines.hpp>
 
 namespace {
@@ -54,7 +57,9 @@ int main(int argc, char** argv) {
     const nanopush::Scene scene = nanopush::load_scene(argv[1]);
     nanopush::RunSettings settings;
     settings.engine = argc > 2 ? argv[2] : "";
-    const nanopush::Trajectory tr = nanopush::run_engine(scene, settings);
+    // The C++ engine through nanopush::core alone (simulate.hpp), the F77 one through nanopush::engines.
+    const nanopush::Trajectory tr =
+        settings.engine == "cxx" ? nanopush::run_scene(scene, settings) : nanopush::run_engine(scene, settings);
     std::cout << "t,x,y,theta,vx,vy,omega,fx,fy,mf\n" << std::setprecision(17);
     for (const auto& r : tr.rows) {
       for (std::size_t i = 0; i < r.size(); ++i) std::cout << (i ? "," : "") << r[i];
