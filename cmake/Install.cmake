@@ -25,8 +25,16 @@ set_target_properties(nanopush_f77 PROPERTIES EXPORT_NAME f77)
 # consumers nothing (no flags), but CMake needs it in the export set.
 set_target_properties(nanopush_warnings PROPERTIES EXPORT_NAME internal_warnings)
 
-install(TARGETS nanopush_numerics nanopush_models nanopush_scenes nanopush_core
-                nanopush_engines nanopush_outputs nanopush_bridge nanopush_f77 nanopush_capi nanopush_fortran nanopush_warnings
+set(_nanopush_libraries nanopush_numerics nanopush_models nanopush_scenes nanopush_core
+    nanopush_engines nanopush_outputs nanopush_bridge nanopush_f77 nanopush_capi nanopush_fortran nanopush_warnings)
+# Libraries of newer layers, installed and exported when the tree has them (a shared `nanopush`
+# linking a library that is not installed would not run from the prefix).
+foreach(_t nanopush_sweeps)
+  if(TARGET ${_t})
+    list(APPEND _nanopush_libraries ${_t})
+  endif()
+endforeach()
+install(TARGETS ${_nanopush_libraries}
         EXPORT nanopushTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
