@@ -18,10 +18,11 @@
 #include <nanopush/models/friction.hpp>
 #include <nanopush/scenes/simulate.hpp>
 #include <nanopush/engines/engines.hpp>
+#include <nanopush/outputs/io.hpp>
 
 namespace {
 int friction(int sense) {
-  std::cout << "R,alpha,fx,fy,mf\n" << std::setprecision(17);
+  std::cout << "R,alpha,fx,fy,mf\n";
   std::string line;
   nanopush_error err = nanopush_new_error();
   while (std::getline(std::cin, line)) {
@@ -40,7 +41,10 @@ int friction(int sense) {
       std::cerr << "consumer_cxx: the C API and the C++ library differ at R = " << R << ", alpha = " << alpha << "\n";
       return 1;
     }
-    std::cout << R << ',' << alpha << ',' << w[0] << ',' << w[1] << ',' << w[2] << '\n';
+    // Numbers formatted as the CLI's CSV formats them (nanopush::csv_number, nanopush::outputs).
+    using nanopush::csv_number;
+    std::cout << csv_number(R) << ',' << csv_number(alpha) << ',' << csv_number(w[0]) << ',' << csv_number(w[1])
+              << ',' << csv_number(w[2]) << '\n';
   }
   nanopush_delete_error(&err);
   return 0;
@@ -60,9 +64,9 @@ int main(int argc, char** argv) {
     // The C++ engine through nanopush::core alone (simulate.hpp), the F77 one through nanopush::engines.
     const nanopush::Trajectory tr =
         settings.engine == "cxx" ? nanopush::run_scene(scene, settings) : nanopush::run_engine(scene, settings);
-    std::cout << "t,x,y,theta,vx,vy,omega,fx,fy,mf\n" << std::setprecision(17);
+    std::cout << "t,x,y,theta,vx,vy,omega,fx,fy,mf\n";
     for (const auto& r : tr.rows) {
-      for (std::size_t i = 0; i < r.size(); ++i) std::cout << (i ? "," : "") << r[i];
+      for (std::size_t i = 0; i < r.size(); ++i) std::cout << (i ? "," : "") << nanopush::csv_number(r[i]);
       std::cout << "\n";
     }
   } catch (const std::exception& e) {
