@@ -24,6 +24,9 @@
 !> nanopush_friction_from_velocity (friction resultant over a rectangle), the iCOR formulas
 !> nanopush_icor_<name> (eqs 4.1, 4.2, 4.3, 4.13, 4.7, 4.8, 4.10, 4.11, 5.2, 5.5: functions
 !> returning the value, NaN on failure) and nanopush_icor_cubic_roots (eq 5.4, Brent or Eigen).
+!> Friction coefficient from measurements, with its propagated uncertainty (the numbers of
+!> `nanopush icor estimate-mu`): nanopush_estimate_mu_from_force (Fig 4.4) and
+!> nanopush_estimate_mu_from_icor (Fig 4.5).
 !>
 !> Your own ODE with the C++ Bulirsch-Stoer (nanopush_integrate): write a subroutine with the
 !> interface nanopush_rhs_fn,
@@ -105,6 +108,7 @@ module nanopush
             nanopush_icor_force_from_icor, nanopush_icor_force_unknown_pressure, &
             nanopush_icor_constrained_force, nanopush_icor_impulsive, nanopush_icor_cubic_roots, &
             nanopush_icor_nanorod, nanopush_icor_rod_properties
+  public :: nanopush_estimate_mu_from_force, nanopush_estimate_mu_from_icor
 
   !> Free a handle (safe on a handle never created or already freed).
   interface nanopush_destroy
@@ -362,6 +366,22 @@ module nanopush
       real(c_double), intent(in) :: rod(6)
       real(c_double), intent(inout) :: props(5)
     end function c_icor_rod_properties
+    integer(c_int) function c_estimate_mu_from_force(error, rod, force, sigma_force, yn, sigma_yn, &
+        sigma_L, sigma_H, mu, sigma, load, derivatives) bind(C, name="nanopush_estimate_mu_from_force")
+      import :: c_int, c_ptr, c_double
+      type(c_ptr), value, intent(in) :: error
+      real(c_double), intent(in) :: rod(6)
+      real(c_double), value, intent(in) :: force, sigma_force, yn, sigma_yn, sigma_L, sigma_H
+      real(c_double), intent(inout) :: mu, sigma, load, derivatives(4)
+    end function c_estimate_mu_from_force
+    integer(c_int) function c_estimate_mu_from_icor(error, rod, force, sigma_force, R, sigma_R, &
+        sigma_L, sigma_H, mu, sigma, load, derivatives) bind(C, name="nanopush_estimate_mu_from_icor")
+      import :: c_int, c_ptr, c_double
+      type(c_ptr), value, intent(in) :: error
+      real(c_double), intent(in) :: rod(6)
+      real(c_double), value, intent(in) :: force, sigma_force, R, sigma_R, sigma_L, sigma_H
+      real(c_double), intent(inout) :: mu, sigma, load, derivatives(4)
+    end function c_estimate_mu_from_icor
     integer(c_int) function c_strlen(s) bind(C, name="strlen")
       import :: c_int, c_ptr
       type(c_ptr), value, intent(in) :: s
@@ -874,6 +894,69 @@ contains
     call finish(err, "nanopush_icor_rod_properties", msg, stat)
     if (present(errmsg)) errmsg = msg
   end subroutine nanopush_icor_rod_properties
+
+  ! ---- Friction coefficient from measurements (C: nanopush_estimate_mu_*) ----------------
+  ! rod(6) as nanopush_icor_nanorod (its load W = m g + F_vdw(L, H) is recomputed); force [N] > 0
+  ! and the standard uncertainties sigma_force [N], sigma_L [m] (rod length), sigma_H [J]
+  ! (Hamaker constant), all >= 0 (sigma_L, sigma_H default 0). Outputs: mu [-], sigma [-] its
+  ! first-order standard uncertainty (inputs uncorrelated), load W [N], derivatives(4) =
+  ! (dmu/dF [1/N], dmu/dyn or dmu/dR [1/m], dmu/dL [1/m], dmu/dH [1/J]); all NaN on failure.
+
+  !> Fig 4.4 (eq 4.8 inverted): mu = F (sqrt(yn^2 + b^2) + yn) / (W b), b = L/2, from the minimum
+  !> push force F measured at yn [m] from the CM (0 <= yn <= b), sigma_yn [m] >= 0.
+  subroutine nanopush_estimate_mu_from_force(rod, force, sigma_force, yn, sigma_yn, mu, sigma, sigma_L, &
+                                             sigma_H, load, derivatives, stat, errmsg)
+    real(dp), intent(in) :: rod(6), force, sigma_force, yn, sigma_yn
+    real(dp), intent(out) :: mu, sigma
+    real(dp), intent(in), optional :: sigma_L, sigma_H
+    real(dp), intent(out), optional :: load, derivatives(4)
+    integer, intent(out), optional :: stat
+    character(len=:), allocatable, intent(out), optional :: errmsg
+    type(c_ptr) :: err
+    character(len=:), allocatable :: msg
+    real(c_double) :: m, s, w, d(4)
+    m = nan()
+    s = nan()
+    w = nan()
+    d = nan()
+    err = c_new_error()
+    if (c_estimate_mu_from_force(err, rod, force, sigma_force, yn, sigma_yn, opt_real(sigma_L, 0.0_dp), &
+                                 opt_real(sigma_H, 0.0_dp), m, s, w, d) /= 0) continue  ! the status is in err
+    mu = m
+    sigma = s
+    if (present(load)) load = w
+    if (present(derivatives)) derivatives = d
+    call finish(err, "nanopush_estimate_mu_from_force", msg, stat)
+    if (present(errmsg)) errmsg = msg
+  end subroutine nanopush_estimate_mu_from_force
+
+  !> Fig 4.5 (eq 4.10 inverted): mu = F b / (W R) from a push force F and the observed CM-to-iCOR
+  !> distance R [m] > 0, sigma_R [m] >= 0. dmu/dL = 0 exactly (b and W both scale with L).
+  subroutine nanopush_estimate_mu_from_icor(rod, force, sigma_force, R, sigma_R, mu, sigma, sigma_L, &
+                                            sigma_H, load, derivatives, stat, errmsg)
+    real(dp), intent(in) :: rod(6), force, sigma_force, R, sigma_R
+    real(dp), intent(out) :: mu, sigma
+    real(dp), intent(in), optional :: sigma_L, sigma_H
+    real(dp), intent(out), optional :: load, derivatives(4)
+    integer, intent(out), optional :: stat
+    character(len=:), allocatable, intent(out), optional :: errmsg
+    type(c_ptr) :: err
+    character(len=:), allocatable :: msg
+    real(c_double) :: m, s, w, d(4)
+    m = nan()
+    s = nan()
+    w = nan()
+    d = nan()
+    err = c_new_error()
+    if (c_estimate_mu_from_icor(err, rod, force, sigma_force, R, sigma_R, opt_real(sigma_L, 0.0_dp), &
+                                opt_real(sigma_H, 0.0_dp), m, s, w, d) /= 0) continue  ! the status is in err
+    mu = m
+    sigma = s
+    if (present(load)) load = w
+    if (present(derivatives)) derivatives = d
+    call finish(err, "nanopush_estimate_mu_from_icor", msg, stat)
+    if (present(errmsg)) errmsg = msg
+  end subroutine nanopush_estimate_mu_from_icor
 
   ! ---- helpers --------------------------------------------------------------------------
 

@@ -30,7 +30,7 @@ extern "C" {
 #endif
 
 /* Version of this interface: major * 10000 + minor * 100 + patch. */
-#define NANOPUSH_API_VERSION 300
+#define NANOPUSH_API_VERSION 400
 int nanopush_get_api_version(void);
 
 /* ---- Status codes ---------------------------------------------------------------------- */
@@ -266,6 +266,34 @@ int nanopush_icor_nanorod(nanopush_error error, double* rod);
  * props[5] = (mass [kg], inertia about the CM [kg m^2], k2 = I/m [m^2], van der Waals force
  * F_vdw [N] (Parsegian), load W = m g + F_vdw [N]). The W and k2 of `nanopush icor`. */
 int nanopush_icor_rod_properties(nanopush_error error, const double* rod, double* props);
+
+/* ---- Friction coefficient from measurements (docs/icor.md, thesis Figs 4.4, 4.5) ------------ */
+/* mu [-] with its first-order uncertainty (inputs uncorrelated), as `nanopush icor estimate-mu`.
+ *   rod[6]       the rod, as nanopush_icor_rod_properties: (L [m], radius [m], density [kg/m^3],
+ *                H [J], z0 [m], g [m/s^2]); its load W = m g + F_vdw(L, H) is recomputed
+ *   force [N]    measured push force F, > 0; sigma_force [N] its standard uncertainty, >= 0
+ *   sigma_L [m], sigma_H [J]  standard uncertainties of the rod length and the Hamaker constant,
+ *                >= 0 (0: taken as exact)
+ *   mu           out: the friction coefficient [-]
+ *   sigma        out: its standard uncertainty [-], sqrt(sum (dmu/dx sigma_x)^2)
+ *   load         out: the load W [N] used
+ *   derivatives[4] out: (dmu/dF [1/N], dmu/dyn or dmu/dR [1/m], dmu/dL [1/m], dmu/dH [1/J])
+ * Any output pointer may be NULL. Identical (bit for bit) to nanopush::icor::estimate_mu_from_force
+ * / estimate_mu_from_icor (their contributions' derivatives, by name). Bad input:
+ * NANOPUSH_BAD_INPUT, the message naming the library's quantity ("F = 0: must be > 0 (N)",
+ * "yn uncertainty = -1e-09: must be >= 0 (m)", "rod.length = 0: ..."); NULL rod:
+ * NANOPUSH_NULL_HANDLE. A failed call writes no output. */
+/* Fig 4.4, eq 4.8 inverted: mu = F (sqrt(yn^2 + b^2) + yn) / (W b), b = L/2, from the minimum
+ * push force F measured at yn [m] from the centre of mass (0 <= yn <= b); sigma_yn [m] >= 0. */
+int nanopush_estimate_mu_from_force(nanopush_error error, const double* rod, double force, double sigma_force,
+                                    double yn, double sigma_yn, double sigma_L, double sigma_H,
+                                    double* mu, double* sigma, double* load, double* derivatives);
+/* Fig 4.5, eq 4.10 inverted: mu = F b / (W R) from a push force F and the observed distance
+ * R [m] (> 0) from the centre of mass to the iCOR; sigma_R [m] >= 0. dmu/dL = 0 exactly
+ * (b and W both scale with L). */
+int nanopush_estimate_mu_from_icor(nanopush_error error, const double* rod, double force, double sigma_force,
+                                   double R, double sigma_R, double sigma_L, double sigma_H,
+                                   double* mu, double* sigma, double* load, double* derivatives);
 
 #ifdef __cplusplus
 }

@@ -1,6 +1,7 @@
 // The friction and iCOR entry points of the C API (bindings/nanopush.h) return exactly the numbers
 // of the C++ library (bit for bit: same doubles, NaN where both are NaN), and bad input comes back
-// as a status and a message with the outputs untouched.
+// as a status and a message with the outputs untouched. Also the friction coefficient estimates
+// (nanopush_estimate_mu_from_force / _from_icor = icor::estimate_mu_from_force / _from_icor).
 //
 // Usage: capi_test_friction_icor [POINTS.csv SENSE OUT.csv]
 //   With arguments it also writes the library's friction wrench (muN = 1, the nanobar's a and b:
@@ -130,6 +131,82 @@ void icor_matches_library() {
     }
 }
 
+/// d mu / d input of the library's contribution named `input` (NaN if absent: fails every ==).
+double library_derivative(const nanopush::icor::MuEstimate& e, const std::string& input) {
+  for (const auto& c : e.contributions)
+    if (c.input == input) return c.derivative;
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+/// The estimate of the C API (all outputs) equals the library's, bit for bit; then the same call
+/// with every output NULL, and with each output alone, succeeds and writes the same number.
+template <class CallC>
+void check_estimate(const nanopush::icor::MuEstimate& ref, const char* second, CallC&& call_c, const std::string& what) {
+  double mu = -1, sigma = -1, load = -1, d[4] = {-1, -1, -1, -1};
+  const int st = call_c(&mu, &sigma, &load, d);
+  check(st == NANOPUSH_OK, what + ": status " + std::to_string(st));
+  check(mu == ref.mu && sigma == ref.sigma && load == ref.load, what + ": mu, sigma, load = library");
+  check(ref.contributions.size() == 4, what + ": the library has 4 contributions");
+  check(d[0] == library_derivative(ref, "F") && d[1] == library_derivative(ref, second) &&
+            d[2] == library_derivative(ref, "L") && d[3] == library_derivative(ref, "H"),
+        what + ": derivatives = library's dmu/dF, dmu/d" + second + ", dmu/dL, dmu/dH");
+  check(call_c(nullptr, nullptr, nullptr, nullptr) == NANOPUSH_OK, what + ": every output NULL");
+  double v = -1, d2[4] = {-1, -1, -1, -1};
+  check(call_c(&v, nullptr, nullptr, nullptr) == NANOPUSH_OK && v == ref.mu, what + ": mu alone");
+  check(call_c(nullptr, &v, nullptr, nullptr) == NANOPUSH_OK && v == ref.sigma, what + ": sigma alone");
+  check(call_c(nullptr, nullptr, &v, nullptr) == NANOPUSH_OK && v == ref.load, what + ": load alone");
+  check(call_c(nullptr, nullptr, nullptr, d2) == NANOPUSH_OK && d2[0] == d[0] && d2[1] == d[1] && d2[2] == d[2] &&
+            d2[3] == d[3],
+        what + ": derivatives alone");
+}
+
+void estimate_mu_matches_library() {
+  namespace icor = nanopush::icor;
+  icor::Rod other;  // a rod unlike the thesis' one in every field
+  other.length = 400e-9;
+  other.radius = 10e-9;
+  other.density = 2000.0;
+  other.hamaker = 3e-19;
+  other.z0 = 0.3e-9;
+  other.gravity = 0.0;
+  int n = 0;
+  for (const icor::Rod& rod : {icor::nanorod(), other}) {
+    const double r6[6] = {rod.length, rod.radius, rod.density, rod.hamaker, rod.z0, rod.gravity};
+    const double b = rod.half_length();
+    const double sigmas[][4] = {{0, 0, 0, 0}, {3e-8, 5e-9, 5e-9, 1e-19}, {1e-7, 0, 2e-8, 0}};
+    for (const double F : {1e-9, 1e-6, 2.5e-6, 0.3})
+      for (const auto& s : sigmas) {
+        for (const double yn : {0.0, 1e-15, 1e-9, 98.3e-9, 0.5 * b, b}) {
+          const auto ref = icor::estimate_mu_from_force(rod, {F, s[0]}, {yn, s[1]}, s[2], s[3]);
+          std::ostringstream what;
+          what << "estimate_mu_from_force L = " << rod.length << ", F = " << F << ", yn = " << yn << ", sigmas "
+               << s[0] << " " << s[1] << " " << s[2] << " " << s[3];
+          check_estimate(ref, "yn",
+                         [&](double* mu, double* sigma, double* load, double* d) {
+                           return nanopush_estimate_mu_from_force(nullptr, r6, F, s[0], yn, s[1], s[2], s[3], mu,
+                                                                  sigma, load, d);
+                         },
+                         what.str());
+          ++n;
+        }
+        for (const double R : {1e-12, 30e-9, 120e-9, b, 1e-6, 1.0}) {
+          const auto ref = icor::estimate_mu_from_icor(rod, {F, s[0]}, {R, s[1]}, s[2], s[3]);
+          std::ostringstream what;
+          what << "estimate_mu_from_icor L = " << rod.length << ", F = " << F << ", R = " << R << ", sigmas " << s[0]
+               << " " << s[1] << " " << s[2] << " " << s[3];
+          check_estimate(ref, "R",
+                         [&](double* mu, double* sigma, double* load, double* d) {
+                           return nanopush_estimate_mu_from_icor(nullptr, r6, F, s[0], R, s[1], s[2], s[3], mu,
+                                                                 sigma, load, d);
+                         },
+                         what.str());
+          ++n;
+        }
+      }
+  }
+  std::printf("estimate_mu: %d estimates compared with the library\n", n);
+}
+
 /// status and message fragment of a failing call; the output must be left untouched.
 void expect_error(nanopush_error err, int status, int want_status, const char* fragment, bool untouched,
                   const std::string& what) {
@@ -179,6 +256,67 @@ void bad_input() {
   double props[5] = {7, 7, 7, 7, 7};
   expect_error(err, nanopush_icor_rod_properties(err, rod, props), NANOPUSH_BAD_INPUT, "rod.length = 0",
                props[0] == 7, "rod_properties L = 0");
+
+  // Friction coefficient estimates: every bad input names the library's quantity, value and range
+  // and writes no output.
+  double mu = 7, sigma = 7, load = 7, d[4] = {7, 7, 7, 7};
+  const auto untouched = [&] { return mu == 7 && sigma == 7 && load == 7 && d[0] == 7 && d[1] == 7 && d[2] == 7 && d[3] == 7; };
+  double r6[6];
+  nanopush_icor_nanorod(nullptr, r6);
+  const auto from_force = [&](const double* r, double F, double sF, double yn, double syn, double sL, double sH) {
+    return nanopush_estimate_mu_from_force(err, r, F, sF, yn, syn, sL, sH, &mu, &sigma, &load, d);
+  };
+  const auto from_icor = [&](const double* r, double F, double sF, double R, double sR, double sL, double sH) {
+    return nanopush_estimate_mu_from_icor(err, r, F, sF, R, sR, sL, sH, &mu, &sigma, &load, d);
+  };
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const auto force_error = [&](int status, int want, const char* fragment, const char* what) {
+    expect_error(err, status, want, fragment, untouched(), std::string("estimate_mu_from_force ") + what);
+  };
+  force_error(from_force(r6, 0.0, 0, 1e-7, 0, 0, 0), NANOPUSH_BAD_INPUT, "F = 0: must be > 0 (N)", "force = 0");
+  force_error(from_force(r6, -1e-6, 0, 1e-7, 0, 0, 0), NANOPUSH_BAD_INPUT, "F = -1e-06: must be > 0 (N)", "force < 0");
+  force_error(from_force(r6, nan, 0, 1e-7, 0, 0, 0), NANOPUSH_BAD_INPUT, "F = nan: must be a finite number (N)",
+              "force NaN");
+  force_error(from_force(r6, 1e-6, -1e-8, 1e-7, 0, 0, 0), NANOPUSH_BAD_INPUT,
+              "F uncertainty = -1e-08: must be >= 0 (N)", "sigma_force < 0");
+  force_error(from_force(r6, 1e-6, 0, -1e-9, 0, 0, 0), NANOPUSH_BAD_INPUT, "yn = -1e-09: must be >= 0 (m)", "yn < 0");
+  force_error(from_force(r6, 1e-6, 0, 3e-7, 0, 0, 0), NANOPUSH_BAD_INPUT,
+              "yn = 3e-07: must be in [0, 2.95e-07] (m; push point on the rod", "yn > b");
+  force_error(from_force(r6, 1e-6, 0, 1e-7, -5e-9, 0, 0), NANOPUSH_BAD_INPUT,
+              "yn uncertainty = -5e-09: must be >= 0 (m)", "sigma_yn < 0");
+  force_error(from_force(r6, 1e-6, 0, 1e-7, 0, -1e-9, 0), NANOPUSH_BAD_INPUT,
+              "L uncertainty = -1e-09: must be >= 0 (m)", "sigma_L < 0");
+  force_error(from_force(r6, 1e-6, 0, 1e-7, 0, 0, -1e-20), NANOPUSH_BAD_INPUT,
+              "H uncertainty = -1e-20: must be >= 0 (J)", "sigma_H < 0");
+  force_error(from_force(nullptr, 1e-6, 0, 1e-7, 0, 0, 0), NANOPUSH_NULL_HANDLE, "rod = NULL", "rod = NULL");
+  double bad_rod[6];
+  nanopush_icor_nanorod(nullptr, bad_rod);
+  bad_rod[0] = 0.0;
+  expect_error(err, from_force(bad_rod, 1e-6, 0, 1e-7, 0, 0, 0), NANOPUSH_BAD_INPUT, "rod.length = 0: must be > 0 (m)",
+               untouched(), "estimate_mu_from_force rod.length = 0");
+  bad_rod[0] = r6[0];
+  bad_rod[3] = -4.7e-19;
+  expect_error(err, from_icor(bad_rod, 1e-6, 0, 1e-7, 0, 0, 0), NANOPUSH_BAD_INPUT, "rod.hamaker = -4.7e-19: must be > 0 (J)",
+               untouched(), "estimate_mu_from_icor rod.hamaker < 0");
+  expect_error(err, from_icor(r6, 0.0, 0, 1e-7, 0, 0, 0), NANOPUSH_BAD_INPUT, "F = 0: must be > 0 (N)", untouched(),
+               "estimate_mu_from_icor force = 0");
+  expect_error(err, from_icor(r6, 1e-6, -1.0, 1e-7, 0, 0, 0), NANOPUSH_BAD_INPUT, "F uncertainty = -1: must be >= 0 (N)",
+               untouched(), "estimate_mu_from_icor sigma_force < 0");
+  expect_error(err, from_icor(r6, 1e-6, 0, 0.0, 0, 0, 0), NANOPUSH_BAD_INPUT, "R = 0: must be > 0 (m)", untouched(),
+               "estimate_mu_from_icor R = 0");
+  expect_error(err, from_icor(r6, 1e-6, 0, -1e-7, 0, 0, 0), NANOPUSH_BAD_INPUT, "R = -1e-07: must be > 0 (m)",
+               untouched(), "estimate_mu_from_icor R < 0");
+  expect_error(err, from_icor(r6, 1e-6, 0, 1e-7, -1e-9, 0, 0), NANOPUSH_BAD_INPUT,
+               "R uncertainty = -1e-09: must be >= 0 (m)", untouched(), "estimate_mu_from_icor sigma_R < 0");
+  expect_error(err, from_icor(r6, 1e-6, 0, 1e-7, 0, -1e-9, 0), NANOPUSH_BAD_INPUT,
+               "L uncertainty = -1e-09: must be >= 0 (m)", untouched(), "estimate_mu_from_icor sigma_L < 0");
+  expect_error(err, from_icor(r6, 1e-6, 0, 1e-7, 0, 0, -1e-20), NANOPUSH_BAD_INPUT,
+               "H uncertainty = -1e-20: must be >= 0 (J)", untouched(), "estimate_mu_from_icor sigma_H < 0");
+  expect_error(err, from_icor(nullptr, 1e-6, 0, 1e-7, 0, 0, 0), NANOPUSH_NULL_HANDLE, "rod = NULL", untouched(),
+               "estimate_mu_from_icor rod = NULL");
+  // A success leaves the error handle as it was (here: cleared).
+  check(from_icor(r6, 1e-6, 0, 1e-7, 0, 0, 0) == NANOPUSH_OK && nanopush_check_error(err) == NANOPUSH_OK && mu != 7,
+        "estimate_mu_from_icor succeeds after the failures");
   nanopush_delete_error(&err);
 }
 
@@ -213,6 +351,7 @@ int write_reference(const char* points, int sense, const char* out_path) {
 int main(int argc, char** argv) {
   friction_matches_library();
   icor_matches_library();
+  estimate_mu_matches_library();
   bad_input();
   std::printf("%d checks, %d failures\n", checks, failures);
   if (failures) return 1;

@@ -126,7 +126,7 @@ program test_fortran_errors
 
   ! Status names.
   call check(nanopush_status_name(NANOPUSH_BAD_INPUT) == "bad input", "status name")
-  call check(nanopush_api_version() == 300, "API version 0.3.0")
+  call check(nanopush_api_version() == 400, "API version 0.4.0")
 
   if (failures > 0) error stop "test_fortran_errors: failures above"
   print '(a)', "all checks hold"

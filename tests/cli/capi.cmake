@@ -67,6 +67,29 @@ add_test(NAME capi.friction_icor_cli
     -P ${_capi_dir}/run_friction_icor_cli.cmake)
 set_tests_properties(capi.friction_icor_cli PROPERTIES PASS_REGULAR_EXPRESSION "friction/icor CLI comparison: all checks hold")
 
+# Friction coefficient from measurements (nanopush_estimate_mu_from_force / _from_icor): the C API
+# equals icor::estimate_mu_* bit for bit in capi.friction_icor_c above; the Fortran module gives
+# the numbers of `nanopush icor estimate-mu --out` (capi.estimate_mu_cli) and, without stat,
+# error-stops with the library's message (capi.fortran_estimate_mu_error_stop_*).
+add_executable(capi_test_estimate_mu_fortran ${_capi_dir}/test_fortran_estimate_mu.f90)
+target_link_libraries(capi_test_estimate_mu_fortran PRIVATE nanopush_fortran nanopush_warnings)
+set_target_properties(capi_test_estimate_mu_fortran PROPERTIES
+  Fortran_MODULE_DIRECTORY ${NANOPUSH_MODDIR}/capi_test_estimate_mu_fortran)
+add_test(NAME capi.estimate_mu_cli
+  COMMAND ${CMAKE_COMMAND} -DNANOPUSH=$<TARGET_FILE:nanopush> -DFORTRAN_EXE=$<TARGET_FILE:capi_test_estimate_mu_fortran>
+    -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/capi_estimate_mu -P ${_capi_dir}/run_estimate_mu_cli.cmake)
+set_tests_properties(capi.estimate_mu_cli PROPERTIES PASS_REGULAR_EXPRESSION "estimate-mu CLI comparison: all checks hold")
+add_executable(capi_error_stop_estimate_mu ${_capi_dir}/error_stop_estimate_mu.f90)
+target_link_libraries(capi_error_stop_estimate_mu PRIVATE nanopush_fortran nanopush_warnings)
+set_target_properties(capi_error_stop_estimate_mu PROPERTIES
+  Fortran_MODULE_DIRECTORY ${NANOPUSH_MODDIR}/capi_error_stop_estimate_mu)
+add_test(NAME capi.fortran_estimate_mu_error_stop_message COMMAND capi_error_stop_estimate_mu)
+set_tests_properties(capi.fortran_estimate_mu_error_stop_message PROPERTIES
+  PASS_REGULAR_EXPRESSION "nanopush: nanopush_estimate_mu_from_icor: R = 0: must be > 0 \\(m\\)"
+  FAIL_REGULAR_EXPRESSION "not reached")
+add_test(NAME capi.fortran_estimate_mu_error_stop_exit COMMAND capi_error_stop_estimate_mu)
+set_tests_properties(capi.fortran_estimate_mu_error_stop_exit PROPERTIES WILL_FAIL TRUE)
+
 # A rough-surface scene from Fortran, law chosen by the caller = `nanopush run --law` exactly.
 add_executable(capi_test_rough ${_capi_dir}/test_fortran_rough.f90)
 target_link_libraries(capi_test_rough PRIVATE nanopush_fortran nanopush_warnings)

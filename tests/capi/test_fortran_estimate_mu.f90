@@ -1,0 +1,279 @@
+!> The friction coefficient estimates through `use nanopush` give the numbers of
+!> `nanopush icor estimate-mu` exactly (its CSV holds 17 significant digits, so reading it back
+!> gives the same doubles), and bad input comes back as stat + errmsg naming the quantity.
+!> Usage: capi_test_estimate_mu_fortran OUT.csv MODE F SIGMA_F X SIGMA_X SIGMA_L SIGMA_H [ROD...]
+!>   OUT.csv  `nanopush icor estimate-mu ... --out OUT.csv` run with the same numbers
+!>   MODE     yn (--yn X --yn-sigma SIGMA_X, Fig 4.4) or icor (--icor X --icor-sigma SIGMA_X, Fig 4.5)
+!>   ROD      six values L radius density H z0 g (--length --radius --density --hamaker --z0
+!>            --gravity); default: the thesis nanorod (the CLI's defaults)
+!> The numbers are given as the same decimal strings to both programs (both read them correctly
+!> rounded).
+program test_fortran_estimate_mu
+  use nanopush
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
+  implicit none
+  integer :: failures = 0, checks = 0, i
+  real(dp) :: rod(6), F, sF, x, sx, sL, sH
+  character(len=:), allocatable :: mode, arg
+
+  if (command_argument_count() /= 8 .and. command_argument_count() /= 14) &
+    error stop "usage: capi_test_estimate_mu_fortran OUT.csv MODE F SIGMA_F X SIGMA_X SIGMA_L SIGMA_H [ROD(6)]"
+  mode = argument(2)
+  F = number(3)
+  sF = number(4)
+  x = number(5)
+  sx = number(6)
+  sL = number(7)
+  sH = number(8)
+  rod = nanopush_icor_nanorod()
+  if (command_argument_count() == 14) then
+    do i = 1, 6
+      rod(i) = number(8 + i)
+    end do
+  end if
+  call check(mode == "yn" .or. mode == "icor", "MODE is yn or icor")
+
+  call compare_cli(argument(1))
+  call defaults_and_optional_outputs()
+  call bad_input()
+
+  print '(i0,a,i0,a)', checks, " checks, ", failures, " failures"
+  if (failures > 0) error stop "test_fortran_estimate_mu: failures above"
+  print '(a)', "Fortran estimate_mu (" // mode // "): identical to nanopush icor estimate-mu"
+
+  if (allocated(mode)) deallocate(mode)
+  if (allocated(arg)) deallocate(arg)
+
+contains
+
+  !> One estimate with every output, by MODE.
+  subroutine estimate(mu, sigma, load, d, stat, errmsg)
+    real(dp), intent(out) :: mu, sigma, load, d(4)
+    integer, intent(out) :: stat
+    character(len=:), allocatable, intent(out) :: errmsg
+    if (mode == "yn") then
+      call nanopush_estimate_mu_from_force(rod, F, sF, x, sx, mu, sigma, sigma_L=sL, sigma_H=sH, load=load, &
+                                           derivatives=d, stat=stat, errmsg=errmsg)
+    else
+      call nanopush_estimate_mu_from_icor(rod, F, sF, x, sx, mu, sigma, sigma_L=sL, sigma_H=sH, load=load, &
+                                          derivatives=d, stat=stat, errmsg=errmsg)
+    end if
+  end subroutine estimate
+
+  !> input,value,sigma,dmu_dinput,contribution: rows mu, W, F, yn|R, L, H.
+  subroutine compare_cli(path)
+    character(len=*), intent(in) :: path
+    character(len=4096) :: line
+    character(len=:), allocatable :: name, msg
+    real(dp) :: mu, sigma, load, d(4), c(4), want_value, want_sigma, deriv
+    integer :: unit, ios, stat, rows, k
+    call estimate(mu, sigma, load, d, stat, msg)
+    call check(stat == NANOPUSH_OK, "estimate: stat = NANOPUSH_OK (" // msg // ")")
+    open (newunit=unit, file=path, status="old", action="read")
+    read (unit, '(a)') line
+    call check(trim(line) == "input,value,sigma,dmu_dinput,contribution", "CLI CSV: header")
+    rows = 0
+    do
+      read (unit, '(a)', iostat=ios) line
+      if (ios /= 0) exit
+      rows = rows + 1
+      name = field(line, 1)
+      call fields(line, c)
+      select case (name)
+      case ("mu")
+        call same(mu, c(1), "mu")
+        call same(sigma, c(2), "sigma")
+      case ("W")
+        call same(load, c(1), "load W")
+      case default
+        k = 0
+        if (name == "F") then
+          k = 1
+          want_value = F
+          want_sigma = sF
+        else if ((name == "yn" .and. mode == "yn") .or. (name == "R" .and. mode == "icor")) then
+          k = 2
+          want_value = x
+          want_sigma = sx
+        else if (name == "L") then
+          k = 3
+          want_value = rod(1)
+          want_sigma = sL
+        else if (name == "H") then
+          k = 4
+          want_value = rod(4)
+          want_sigma = sH
+        end if
+        call check(k > 0, "CLI CSV: unexpected row '" // name // "'")
+        if (k == 0) cycle
+        deriv = d(k)
+        call same(want_value, c(1), "value of " // name // " (the CLI read the same input)")
+        call same(want_sigma, c(2), "sigma of " // name // " (the CLI read the same input)")
+        call same(deriv, c(3), "dmu/d" // name)
+        call same(abs(deriv) * want_sigma, c(4), "|dmu/d" // name // "| sigma_" // name)
+      end select
+    end do
+    close (unit)
+    call check(rows == 6, "CLI CSV: 6 rows (mu, W, F, yn or R, L, H)")
+    print '(a,es24.17,a,es24.17,a)', "mu = ", mu, " +- ", sigma, " (= the CLI)"
+  end subroutine compare_cli
+
+  !> sigma_L and sigma_H default to 0; load, derivatives, stat and errmsg may be omitted.
+  subroutine defaults_and_optional_outputs()
+    real(dp) :: mu0, s0, w0, d0(4), mu, s, w, d(4)
+    integer :: stat
+    if (mode == "yn") then
+      call nanopush_estimate_mu_from_force(rod, F, sF, x, sx, mu0, s0, sigma_L=0.0_dp, sigma_H=0.0_dp, load=w0, &
+                                           derivatives=d0)
+      call nanopush_estimate_mu_from_force(rod, F, sF, x, sx, mu, s, load=w, derivatives=d, stat=stat)
+    else
+      call nanopush_estimate_mu_from_icor(rod, F, sF, x, sx, mu0, s0, sigma_L=0.0_dp, sigma_H=0.0_dp, load=w0, &
+                                          derivatives=d0)
+      call nanopush_estimate_mu_from_icor(rod, F, sF, x, sx, mu, s, load=w, derivatives=d, stat=stat)
+    end if
+    call check(stat == NANOPUSH_OK, "defaults: stat")
+    call check(mu == mu0 .and. s == s0 .and. w == w0 .and. all(d == d0), "sigma_L, sigma_H default to 0")
+    if (mode == "yn") then
+      call nanopush_estimate_mu_from_force(rod, F, sF, x, sx, mu, s, sL, sH)   ! positional sigma_L, sigma_H
+    else
+      call nanopush_estimate_mu_from_icor(rod, F, sF, x, sx, mu, s, sL, sH)
+    end if
+    call check(.not. ieee_is_nan(mu) .and. .not. ieee_is_nan(s), "no optional outputs")
+  end subroutine defaults_and_optional_outputs
+
+  !> Each bad input: stat = NANOPUSH_BAD_INPUT, errmsg the library's message, outputs NaN.
+  subroutine bad_input()
+    real(dp) :: bad(6)
+    call expect_force(rod, 0.0_dp, 0.0_dp, 1e-7_dp, 0.0_dp, 0.0_dp, 0.0_dp, "F = 0: must be > 0 (N)")
+    call expect_force(rod, -1e-6_dp, 0.0_dp, 1e-7_dp, 0.0_dp, 0.0_dp, 0.0_dp, "F = -1e-06: must be > 0 (N)")
+    call expect_force(rod, 1e-6_dp, -1e-8_dp, 1e-7_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
+                      "F uncertainty = -1e-08: must be >= 0 (N)")
+    call expect_force(rod, 1e-6_dp, 0.0_dp, -1e-9_dp, 0.0_dp, 0.0_dp, 0.0_dp, "yn = -1e-09: must be >= 0 (m)")
+    call expect_force(rod, 1e-6_dp, 0.0_dp, 1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, "yn = 1: must be in [0, ")
+    call expect_force(rod, 1e-6_dp, 0.0_dp, 1e-7_dp, -5e-9_dp, 0.0_dp, 0.0_dp, &
+                      "yn uncertainty = -5e-09: must be >= 0 (m)")
+    call expect_force(rod, 1e-6_dp, 0.0_dp, 1e-7_dp, 0.0_dp, -1e-9_dp, 0.0_dp, &
+                      "L uncertainty = -1e-09: must be >= 0 (m)")
+    call expect_force(rod, 1e-6_dp, 0.0_dp, 1e-7_dp, 0.0_dp, 0.0_dp, -1e-20_dp, &
+                      "H uncertainty = -1e-20: must be >= 0 (J)")
+    call expect_icor(rod, 0.0_dp, 0.0_dp, 1e-7_dp, 0.0_dp, 0.0_dp, 0.0_dp, "F = 0: must be > 0 (N)")
+    call expect_icor(rod, 1e-6_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, "R = 0: must be > 0 (m)")
+    call expect_icor(rod, 1e-6_dp, 0.0_dp, -1e-7_dp, 0.0_dp, 0.0_dp, 0.0_dp, "R = -1e-07: must be > 0 (m)")
+    call expect_icor(rod, 1e-6_dp, 0.0_dp, 1e-7_dp, -1e-9_dp, 0.0_dp, 0.0_dp, &
+                     "R uncertainty = -1e-09: must be >= 0 (m)")
+    call expect_icor(rod, 1e-6_dp, 0.0_dp, 1e-7_dp, 0.0_dp, 0.0_dp, -1e-20_dp, &
+                     "H uncertainty = -1e-20: must be >= 0 (J)")
+    bad = rod
+    bad(1) = 0
+    call expect_force(bad, 1e-6_dp, 0.0_dp, 1e-7_dp, 0.0_dp, 0.0_dp, 0.0_dp, "rod.length = 0: must be > 0 (m)")
+    call expect_icor(bad, 1e-6_dp, 0.0_dp, 1e-7_dp, 0.0_dp, 0.0_dp, 0.0_dp, "rod.length = 0: must be > 0 (m)")
+  end subroutine bad_input
+
+  subroutine expect_force(r, F_, sF_, yn, syn, sL_, sH_, want)
+    real(dp), intent(in) :: r(6), F_, sF_, yn, syn, sL_, sH_
+    character(len=*), intent(in) :: want
+    real(dp) :: mu, s, w, d(4)
+    integer :: stat
+    character(len=:), allocatable :: msg
+    call nanopush_estimate_mu_from_force(r, F_, sF_, yn, syn, mu, s, sigma_L=sL_, sigma_H=sH_, load=w, &
+                                         derivatives=d, stat=stat, errmsg=msg)
+    call expect(stat, msg, mu, s, w, d, want, "estimate_mu_from_force")
+  end subroutine expect_force
+
+  subroutine expect_icor(r, F_, sF_, R_, sR, sL_, sH_, want)
+    real(dp), intent(in) :: r(6), F_, sF_, R_, sR, sL_, sH_
+    character(len=*), intent(in) :: want
+    real(dp) :: mu, s, w, d(4)
+    integer :: stat
+    character(len=:), allocatable :: msg
+    call nanopush_estimate_mu_from_icor(r, F_, sF_, R_, sR, mu, s, sigma_L=sL_, sigma_H=sH_, load=w, &
+                                        derivatives=d, stat=stat, errmsg=msg)
+    call expect(stat, msg, mu, s, w, d, want, "estimate_mu_from_icor")
+  end subroutine expect_icor
+
+  subroutine expect(stat, msg, mu, s, w, d, want, where)
+    integer, intent(in) :: stat
+    character(len=*), intent(in) :: msg, want, where
+    real(dp), intent(in) :: mu, s, w, d(4)
+    call check(stat == NANOPUSH_BAD_INPUT, where // ": stat = NANOPUSH_BAD_INPUT for '" // want // "'")
+    call check(index(msg, want) == 1, where // ": errmsg '" // msg // "' should start with '" // want // "'")
+    call check(ieee_is_nan(mu) .and. ieee_is_nan(s) .and. ieee_is_nan(w) .and. all(ieee_is_nan(d)), &
+               where // ": outputs NaN after '" // want // "'")
+  end subroutine expect
+
+  subroutine same(got, want, what)
+    real(dp), intent(in) :: got, want
+    character(len=*), intent(in) :: what
+    logical :: ok
+    ok = got == want .or. (ieee_is_nan(got) .and. ieee_is_nan(want))
+    if (.not. ok) print '(a,": got ",es25.17," want ",es25.17)', what, got, want
+    call check(ok, what)
+  end subroutine same
+
+  subroutine check(ok, what)
+    logical, intent(in) :: ok
+    character(len=*), intent(in) :: what
+    checks = checks + 1
+    if (.not. ok) then
+      failures = failures + 1
+      print '(2a)', "FAIL: ", what
+    end if
+  end subroutine check
+
+  !> The i-th comma-separated field of a CSV line (no quoting in these files).
+  function field(line, i) result(f)
+    character(len=*), intent(in) :: line
+    integer, intent(in) :: i
+    character(len=:), allocatable :: f
+    integer :: k, start, comma
+    start = 1
+    do k = 1, i - 1
+      comma = index(line(start:), ",")
+      if (comma == 0) then
+        f = ""
+        return
+      end if
+      start = start + comma
+    end do
+    comma = index(line(start:), ",")
+    if (comma == 0) then
+      f = trim(line(start:))
+    else
+      f = line(start:start + comma - 2)
+    end if
+  end function field
+
+  !> Fields 2..5 as numbers (value, sigma, dmu_dinput, contribution); empty fields become NaN.
+  subroutine fields(line, v)
+    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+    character(len=*), intent(in) :: line
+    real(dp), intent(out) :: v(4)
+    integer :: j, ios
+    character(len=:), allocatable :: f
+    do j = 1, 4
+      f = field(line, j + 1)
+      v(j) = ieee_value(0.0_dp, ieee_quiet_nan)
+      if (len_trim(f) == 0) cycle
+      read (f, *, iostat=ios) v(j)
+      if (ios /= 0) v(j) = ieee_value(0.0_dp, ieee_quiet_nan)
+    end do
+  end subroutine fields
+
+  real(dp) function number(i)
+    integer, intent(in) :: i
+    integer :: ios
+    arg = argument(i)
+    read (arg, *, iostat=ios) number
+    if (ios /= 0) error stop "test_fortran_estimate_mu: argument is not a number"
+  end function number
+
+  function argument(i) result(a)
+    integer, intent(in) :: i
+    character(len=:), allocatable :: a
+    integer :: length
+    call get_command_argument(i, length=length)
+    allocate (character(len=length) :: a)
+    call get_command_argument(i, a)
+  end function argument
+
+end program test_fortran_estimate_mu
