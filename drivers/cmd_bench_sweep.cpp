@@ -1,0 +1,559 @@
+// nanopush bench-sweep: how fast the sweep machinery runs a grid of rough-surface scenes
+// (points/s) on 1 and 2 threads in one process and on 1 and 2 MPI ranks (mpirun, one thread
+// per rank), its overhead over evaluating the points alone, and the parallel efficiency.
+// A benchmark, never a timed test: every configuration's table must equal the 1-thread table
+// byte for byte (otherwise the driver fails), and the targets are reported, not asserted.
+// docs/sweeps.md ("Benchmark") documents the results.
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <limits>
+#include <sstream>
+#include <thread>
+
+#include "nanopush/numerics/error.hpp"
+#include "nanopush/outputs/io.hpp"
+#include "nanopush/outputs/plot.hpp"
+#include "nanopush/sweeps/sweep.hpp"
+#include "registry.hpp"
+#include "scene_args.hpp"
+
+extern char** environ;
+
+namespace nanopush::cli {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+constexpr double kOverheadTarget = 0.02;   // (wall - sum of point times) / sum of point times
+constexpr double kEfficiencyTarget = 0.9;  // (points/s at N) / (N x points/s at 1)
+constexpr const char* kScene = "fig3_18";
+constexpr const char* kLaw = "surface.law=coulomb";
+
+struct BenchSweepOptions {
+  std::string out = "bench_sweep";
+  int repeats = 3;
+  int per_axis = 10;
+  bool no_mpi = false, no_plot = false, quiet = false;
+};
+
+/// The grid: mu x push offset x push angle, K values each (K^3 points).
+std::vector<std::string> axis_specs(int k) {
+  const std::string n = std::to_string(k);
+  return {"surface.mu=0.02:0.2:" + n, "push.yn=0:45e-9:" + n, "push.direction=0:0.5:" + n};
+}
+
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+/// CPU time (user + system, s) of this process's threads and of its waited-for children.
+double cpu_seconds() {
+  double t = 0;
+  for (int who : {RUSAGE_SELF, RUSAGE_CHILDREN}) {
+    rusage u{};
+    if (::getrusage(who, &u) != 0) continue;
+    t += static_cast<double>(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
+         1e-6 * static_cast<double>(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+  }
+  return t;
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return std::numeric_limits<double>::quiet_NaN();
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+/// The host's load averages (1, 5, 15 min) from /proc/loadavg; NaN where unreadable.
+std::array<double, 3> load_average() {
+  std::array<double, 3> a{};
+  a.fill(std::numeric_limits<double>::quiet_NaN());
+  std::ifstream f("/proc/loadavg");
+  f >> a[0] >> a[1] >> a[2];
+  return a;
+}
+
+std::string load_text(const std::array<double, 3>& a) {
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(2) << a[0] << " " << a[1] << " " << a[2];
+  return s.str();
+}
+
+std::string fixed(double v, int digits) {
+  if (!std::isfinite(v)) return "n/a";
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(digits) << v;
+  return s.str();
+}
+
+std::string read_file(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  if (!in) throw std::runtime_error("bench-sweep: cannot read " + p.string());
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+/// An executable `name` on PATH, or empty.
+fs::path find_on_path(const std::string& name) {
+  const char* path = std::getenv("PATH");
+  if (!path) return {};
+  std::stringstream ss(path);
+  std::string dir;
+  while (std::getline(ss, dir, ':')) {
+    const fs::path c = fs::path(dir.empty() ? "." : dir) / name;
+    std::error_code ec;
+    if (fs::is_regular_file(c, ec) && ::access(c.c_str(), X_OK) == 0) return c;
+  }
+  return {};
+}
+
+/// Run argv[0] (a full path) with `extra_env` added, stdin from /dev/null, stdout and stderr
+/// into `log`; wait for it. Returns the exit status (128 + signal when killed).
+int spawn_and_wait(const std::vector<std::string>& argv, const std::vector<std::string>& extra_env, const fs::path& log) {
+  std::vector<std::string> env;
+  for (char** e = environ; e && *e; ++e) {
+    const std::string kv(*e);
+    const std::string name = kv.substr(0, kv.find('='));
+    const bool replaced = std::any_of(extra_env.begin(), extra_env.end(),
+                                      [&](const std::string& x) { return x.substr(0, x.find('=')) == name; });
+    if (!replaced) env.push_back(kv);
+  }
+  env.insert(env.end(), extra_env.begin(), extra_env.end());
+  std::vector<char*> av, ev;
+  for (const auto& a : argv) av.push_back(const_cast<char*>(a.c_str()));
+  av.push_back(nullptr);
+  for (const auto& e : env) ev.push_back(const_cast<char*>(e.c_str()));
+  ev.push_back(nullptr);
+  posix_spawn_file_actions_t fa;
+  posix_spawn_file_actions_init(&fa);
+  posix_spawn_file_actions_addopen(&fa, 0, "/dev/null", O_RDONLY, 0);
+  posix_spawn_file_actions_addopen(&fa, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_adddup2(&fa, 1, 2);
+  pid_t pid = 0;
+  const int rc = ::posix_spawn(&pid, av[0], &fa, nullptr, av.data(), ev.data());
+  posix_spawn_file_actions_destroy(&fa);
+  if (rc != 0) throw std::runtime_error("bench-sweep: cannot start " + argv[0] + ": " + std::strerror(rc));
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0) {
+    if (errno != EINTR) throw std::runtime_error("bench-sweep: waitpid failed for " + argv[0]);
+  }
+  if (WIFEXITED(status)) return WEXITSTATUS(status);
+  return 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+}
+
+/// One measured configuration.
+struct Config {
+  std::string mode;  ///< direct | threads | mpi
+  unsigned threads = 1, ranks = 1;
+  std::vector<double> walls;  ///< one per repeat (direct: the sum of the points' own times)
+  std::vector<double> launches;  ///< mpi: mpirun -np RANKS nanopush --version, one per repeat
+  std::vector<double> cpus;      ///< CPU time of the run (all threads and processes), one per repeat
+  double load1 = std::numeric_limits<double>::quiet_NaN();
+  [[nodiscard]] unsigned workers() const { return threads * ranks; }
+};
+
+/// Temporary directory for the tables of the runs (removed at the end unless a check failed).
+struct TempDir {
+  fs::path path;
+  bool keep = false;
+  TempDir() {
+    std::string tmpl = (fs::temp_directory_path() / "nanopush-bench-sweep-XXXXXX").string();
+    if (!::mkdtemp(tmpl.data())) throw std::runtime_error("bench-sweep: cannot create a temporary directory");
+    path = tmpl;
+  }
+  ~TempDir() {
+    std::error_code ec;
+    if (!keep) fs::remove_all(path, ec);
+  }
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+};
+
+int bench_sweep(const BenchSweepOptions& o) {
+  if (o.repeats < 1) throw InputError("--repeats", std::to_string(o.repeats), "must be >= 1");
+  const auto load_start = load_average();
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+
+  // The plan and the task, exactly as `nanopush sweep fig3_18 --set ... --vary ...` builds them.
+  const auto specs = axis_specs(o.per_axis);
+  Scene sc = load_scene_arg(kScene, {kLaw});
+  set_provenance_scene(kScene);
+  RunSettings rs;
+  rs.engine = "";
+  rs.method = "";
+  rs.law = "";
+  rs.precision = "";
+  (void)resolve_settings(sc, rs);
+  const auto task = sweep::make_run_task(sc, rs);
+  std::vector<sweep::Axis> axes;
+  for (const auto& s : specs) axes.push_back(sweep::parse_axis(s, false));
+  const sweep::Plan plan = sweep::cartesian(axes);
+  const std::size_t n = plan.size();
+  const auto columns = sweep::table_columns(plan, *task);
+
+  // MPI: mpirun on PATH and a nanopush built with MPI.
+  fs::path mpirun;
+  std::string mpi_note;
+#ifdef NANOPUSH_HAVE_MPI
+  if (o.no_mpi) {
+    mpi_note = "MPI configurations skipped (--no-mpi)";
+  } else {
+    mpirun = find_on_path("mpirun");
+    if (mpirun.empty()) mpi_note = "MPI configurations skipped: no mpirun on PATH";
+  }
+#else
+  mpi_note = "MPI configurations skipped: this nanopush was built without MPI (NANOPUSH_MPI=OFF)";
+#endif
+  const fs::path self = fs::read_symlink("/proc/self/exe");
+
+  TempDir tmp;
+  const fs::path out_dir = o.out;
+  fs::create_directories(out_dir);
+  if (!o.quiet) {
+    std::cerr << "bench-sweep: " << n << " points (" << kScene << ", " << kLaw;
+    for (const auto& s : specs) std::cerr << ", " << s;
+    std::cerr << "), task run, " << o.repeats << " repeats; host: " << cores << " cores, load average "
+              << load_text(load_start) << "\n";
+    if (!mpi_note.empty()) std::cerr << "bench-sweep: " << mpi_note << "\n";
+  }
+
+  // Configurations, measured interleaved (repeat r of every configuration before repeat r+1)
+  // so that a change in the host's load touches every configuration alike.
+  std::vector<Config> configs;
+  auto add = [&](const char* mode, unsigned threads, unsigned ranks) {
+    Config c;
+    c.mode = mode;
+    c.threads = threads;
+    c.ranks = ranks;
+    configs.push_back(std::move(c));
+  };
+  add("threads", 1, 1);
+  add("direct", 1, 1);
+  add("threads", 2, 1);
+  if (!mpirun.empty()) {
+    add("mpi", 1, 1);
+    add("mpi", 1, 2);
+  }
+
+  std::string reference;  // the 1-thread table (CSV bytes)
+  std::size_t failed_points = 0;
+  auto check_same = [&](const std::string& text, const std::string& what, const fs::path& file) {
+    if (text == reference) return;
+    tmp.keep = true;
+    throw std::runtime_error("bench-sweep: the table of " + what + " differs from the 1-thread table (" +
+                             (file.empty() ? std::string("in memory") : file.string()) + " vs " +
+                             (tmp.path / "threads1_r0.csv").string() +
+                             "): the sweep got different answers; the tables are kept in " + tmp.path.string());
+  };
+
+  // Warm-up (not timed): page in the code and the scene's first evaluations.
+  for (std::size_t i = 0; i < std::min<std::size_t>(n, 3); ++i) (void)sweep::evaluate_row(plan, *task, i);
+
+  for (int r = 0; r < o.repeats; ++r) {
+    for (auto& c : configs) {
+      const std::string tag = c.mode + std::to_string(c.mode == "mpi" ? c.ranks : c.threads) + "_r" + std::to_string(r);
+      const fs::path table = tmp.path / (tag + ".csv");
+      double wall = 0, cpu = 0;
+      constexpr double nan_cpu = std::numeric_limits<double>::quiet_NaN();
+      if (c.mode == "direct") {
+        // The points alone: evaluate_row on this thread, each call timed, the times summed.
+        std::vector<std::vector<std::string>> rows;
+        rows.reserve(n);
+        const double c0 = cpu_seconds();
+        for (std::size_t i = 0; i < n; ++i) {
+          const auto t0 = Clock::now();
+          auto row = sweep::evaluate_row(plan, *task, i);
+          wall += seconds_since(t0);
+          rows.push_back(std::move(row));
+        }
+        cpu = cpu_seconds() - c0;
+        check_same(csv_document(columns, rows), "the points evaluated alone (evaluate_row)", {});
+      } else if (c.mode == "threads") {
+        sweep::Options opt;
+        opt.jobs = c.threads;
+        opt.out = table;
+        const double c0 = cpu_seconds();
+        const auto t0 = Clock::now();
+        const auto res = sweep::run_local(plan, *task, opt);
+        wall = seconds_since(t0);
+        cpu = cpu_seconds() - c0;
+        if (!res.complete || res.done != n)
+          throw std::runtime_error("bench-sweep: the " + tag + " sweep did not complete");
+        const std::string text = read_file(table);
+        if (reference.empty()) {
+          reference = text;
+          failed_points = res.failed;
+        }
+        check_same(text, std::to_string(c.threads) + " threads (repeat " + std::to_string(r + 1) + ")", table);
+      } else {
+        std::vector<std::string> argv = {mpirun.string(), "--oversubscribe", "-np", std::to_string(c.ranks),
+                                         self.string(), "sweep", kScene, "--set", kLaw};
+        for (const auto& s : specs) {
+          argv.push_back("--vary");
+          argv.push_back(s);
+        }
+        for (const char* a : {"--task", "run", "--jobs", "1", "--quiet", "--out"}) argv.emplace_back(a);
+        argv.push_back(table.string());
+        std::vector<std::string> env;
+        if (::geteuid() == 0) env = {"OMPI_ALLOW_RUN_AS_ROOT=1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1"};
+        const fs::path log = tmp.path / (tag + ".log");
+        {
+          // The launch alone (mpirun starting RANKS processes that do nothing), for the report.
+          const auto l0 = Clock::now();
+          const int lrc = spawn_and_wait({mpirun.string(), "--oversubscribe", "-np", std::to_string(c.ranks),
+                                          self.string(), "--version"},
+                                         env, log);
+          if (lrc != 0) {
+            tmp.keep = true;
+            throw std::runtime_error("bench-sweep: mpirun -np " + std::to_string(c.ranks) +
+                                     " nanopush --version exited with " + std::to_string(lrc) + "; its output:\n" +
+                                     read_file(log));
+          }
+          c.launches.push_back(seconds_since(l0));
+        }
+        const double c0 = cpu_seconds();
+        const auto t0 = Clock::now();
+        const int rc = spawn_and_wait(argv, env, log);
+        wall = seconds_since(t0);
+        // Not recorded: Open MPI's ranks are reaped by its launcher daemon, not always by mpirun,
+        // so this process's RUSAGE_CHILDREN misses them.
+        cpu = nan_cpu;
+        (void)c0;
+        // The sweep's exit status: 0, or 64 + the number of failed points (at most 127).
+        const int expected = failed_points ? 64 + static_cast<int>(std::min<std::size_t>(failed_points, 63)) : 0;
+        std::error_code ec;
+        if (rc != expected || !fs::exists(table, ec)) {
+          tmp.keep = true;
+          throw std::runtime_error("bench-sweep: mpirun -np " + std::to_string(c.ranks) + " ... sweep exited with " +
+                                   std::to_string(rc) + " (expected " + std::to_string(expected) + "); its output:\n" +
+                                   (fs::exists(log, ec) ? read_file(log) : std::string("(no log)")));
+        }
+        check_same(read_file(table), std::to_string(c.ranks) + " MPI ranks (repeat " + std::to_string(r + 1) + ")",
+                   table);
+      }
+      c.walls.push_back(wall);
+      c.cpus.push_back(cpu);
+      c.load1 = load_average()[0];
+      if (!o.quiet)
+        std::cerr << "bench-sweep: repeat " << (r + 1) << "/" << o.repeats << " " << std::left << std::setw(8)
+                  << c.mode << std::right << " threads " << c.threads << " ranks " << c.ranks << ": "
+                  << fixed(wall, 3) << " s, " << fixed(static_cast<double>(n) / wall, 1)
+                  << " points/s, CPU " << fixed(cpu, 3) << " s (load " << fixed(c.load1, 2) << ")\n";
+      // Only the first table of each kind is kept until the end (the reference); drop the rest.
+      std::error_code ec;
+      if (tag != "threads1_r0") fs::remove(table, ec);
+      fs::remove(schema_path(table), ec);
+    }
+  }
+  const auto load_end = load_average();
+
+  // ---- figures
+  auto find = [&](const std::string& mode, unsigned threads, unsigned ranks) -> const Config* {
+    for (const auto& c : configs)
+      if (c.mode == mode && c.threads == threads && c.ranks == ranks) return &c;
+    return nullptr;
+  };
+  auto pps = [&](const Config* c) {
+    return c ? static_cast<double>(n) / median(c->walls) : std::numeric_limits<double>::quiet_NaN();
+  };
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const Config* t1 = find("threads", 1, 1);
+  const Config* t2 = find("threads", 2, 1);
+  const Config* m1 = find("mpi", 1, 1);
+  const Config* m2 = find("mpi", 1, 2);
+  const Config* direct = find("direct", 1, 1);
+  const double eff_t2 = pps(t2) / (2 * pps(t1));
+  const double eff_m2 = m1 && m2 ? pps(m2) / (2 * pps(m1)) : nan;
+  // Overhead: per repeat, the 1-thread sweep against the points alone measured right after it
+  // (a change of the host's load between repeats cancels), the median over the repeats; and
+  // the same in CPU time (insensitive to how much of a core the host gave the run).
+  std::vector<double> paired, paired_cpu;
+  for (std::size_t r = 0; r < t1->walls.size(); ++r) {
+    paired.push_back((t1->walls[r] - direct->walls[r]) / direct->walls[r]);
+    paired_cpu.push_back((t1->cpus[r] - direct->cpus[r]) / direct->cpus[r]);
+  }
+  const double overhead = median(paired), overhead_cpu = median(paired_cpu);
+  // CPU-time efficiency: CPU at 1 worker / CPU at N (1 when parallel work costs no extra CPU).
+  const double cpu_eff_t2 = median(t1->cpus) / median(t2->cpus);
+
+  // ---- the CSV (and its sidecar)
+  const Columns cols = {
+      text_column("mode", "threads: sweep::run_local in this process; mpi: mpirun -np RANKS nanopush sweep --jobs 1 "
+                          "(launch included); direct: the points alone, sweep::evaluate_row on one thread"),
+      count_column("threads", "threads per process"),
+      count_column("ranks", "MPI ranks (1 for one process)"),
+      count_column("workers", "threads x ranks"),
+      count_column("points", "points of the grid"),
+      count_column("repeats", "timed runs of the configuration"),
+      {"wall_s", "s", "median wall time of a run (direct: median sum of the points' own evaluation times)"},
+      {"wall_min_s", "s", "fastest run"},
+      {"wall_max_s", "s", "slowest run"},
+      {"points_per_s", "1/s", "points / wall_s"},
+      {"efficiency", "1", "points_per_s / (workers x points_per_s at 1 worker of the same mode); empty for direct"},
+      {"overhead", "1",
+       "direct row only: (1-thread sweep wall - sum of point times) / sum of point times, per repeat, median"},
+      {"overhead_cpu", "1", "direct row only: the same in CPU time (1-thread sweep CPU - direct CPU) / direct CPU"},
+      {"cpu_s", "s",
+       "median CPU time (user + system) of a run, every thread; cpu_s / wall_s is the share of the cores the run "
+       "got; empty for mpi (the ranks' CPU time is not visible to the driver)"},
+      {"launch_s", "s", "mpi rows only: median wall time of mpirun -np RANKS nanopush --version (the launch alone)"},
+      {"load_1min", "1", "host 1-minute load average (/proc/loadavg) after the configuration's last run"},
+  };
+  std::vector<std::vector<std::string>> rows;
+  // Order: threads, mpi, direct (the plot's series read contiguous rows).
+  std::vector<const Config*> order;
+  for (const char* mode : {"threads", "mpi", "direct"})
+    for (const auto& c : configs)
+      if (c.mode == mode) order.push_back(&c);
+  for (const Config* c : order) {
+    const double p = pps(c);
+    double eff = nan;
+    if (c->mode == "threads") eff = p / (c->workers() * pps(t1));
+    if (c->mode == "mpi") eff = p / (c->workers() * pps(m1));
+    rows.push_back({csv_quote(c->mode), std::to_string(c->threads), std::to_string(c->ranks),
+                    std::to_string(c->workers()), std::to_string(n), std::to_string(c->walls.size()),
+                    csv_number(median(c->walls)), csv_number(*std::min_element(c->walls.begin(), c->walls.end())),
+                    csv_number(*std::max_element(c->walls.begin(), c->walls.end())), csv_number(p), csv_number(eff),
+                    csv_number(c->mode == "direct" ? overhead : nan),
+                    csv_number(c->mode == "direct" ? overhead_cpu : nan), csv_number(median(c->cpus)),
+                    csv_number(c->launches.empty() ? nan : median(c->launches)), csv_number(c->load1)});
+  }
+  const fs::path csv = out_dir / "sweep_bench.csv";
+  write_csv_atomic(csv, cols, rows, kScene);
+
+  // ---- the plot: points/s against workers, threads and ranks, the ideal line dashed
+  const fs::path png = out_dir / "sweep_bench.png";
+  std::string plot_note;
+  if (o.no_plot) {
+    plot_note = "no plot (--no-plot)";
+  } else if (!plot::available()) {
+    plot_note = "no plot: gnuplot is not on PATH";
+  } else {
+    auto q = [](const std::string& s) {
+      std::string r = "'";
+      for (char ch : s) r += ch == '\'' ? std::string("''") : std::string(1, ch);
+      return r + "'";
+    };
+    const std::string f = q(csv.string());
+    std::ostringstream b;
+    b << "set title " << q("nanopush sweep: " + std::to_string(n) + " rough-surface points (" + kScene +
+                           ", coulomb law), task run; median of " + std::to_string(o.repeats) +
+                           (o.repeats == 1 ? " run" : " runs"))
+      << " noenhanced\n"
+      << "set xlabel 'workers (threads in one process, or MPI ranks of one thread)'\n"
+      << "set ylabel 'points/s'\nset grid\nset key left top\nset xrange [0.8:2.2]\nset xtics 1\nset yrange [0:*]\n"
+      << "P1 = " << csv_number(pps(t1)) << "\n"
+      << "plot " << f
+      << " skip 1 using (strcol(1) eq 'threads' ? $4 : 1/0):($5/$7):($5/$9):($5/$8) with yerrorlines lw 2 pt 7 "
+         "title 'threads (one process)', \\\n";
+    if (m1)
+      b << "     " << f
+        << " skip 1 using (strcol(1) eq 'mpi' ? $4 : 1/0):($5/$7):($5/$9):($5/$8) with yerrorlines lw 2 pt 5 "
+           "title 'MPI ranks (mpirun, launch included)', \\\n";
+    b << "     P1*x with lines dt 2 lw 1.5 lc rgb 'black' title 'ideal: workers x 1-thread rate'\n";
+    plot::render_script(b.str(), png, 900, 600);
+  }
+
+  // ---- the report
+  auto met = [](bool ok) { return ok ? std::string("met") : std::string("**NOT met**"); };
+  std::ostringstream md;
+  md << "# Sweep benchmark\n\n"
+     << "`nanopush bench-sweep`: " << n << " points of " << kScene << " with `" << kLaw << "`, axes";
+  for (const auto& s : specs) md << " `" << s << "`";
+  md << " (the run task), median of " << o.repeats << (o.repeats == 1 ? " run" : " runs")
+     << " per configuration. Host: " << cores
+     << " cores; load average (1, 5, 15 min) " << load_text(load_start) << " at the start, " << load_text(load_end)
+     << " at the end.";
+  if (load_end[0] > cores || load_start[0] > cores)
+    md << " The host was busy (load above its core count): the times and efficiencies understate an idle machine.";
+  md << "\n\n"
+     << "| mode | threads | ranks | wall (s, median) | min–max (s) | points/s | efficiency | CPU (s) | cores used | "
+        "mpirun launch (s) | load (1 min) |\n"
+     << "|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const Config* c : order) {
+    const double p = pps(c);
+    double eff = nan;
+    if (c->mode == "threads") eff = p / (c->workers() * pps(t1));
+    if (c->mode == "mpi") eff = p / (c->workers() * pps(m1));
+    md << "| " << c->mode << " | " << c->threads << " | " << c->ranks << " | " << fixed(median(c->walls), 3) << " | "
+       << fixed(*std::min_element(c->walls.begin(), c->walls.end()), 3) << "–"
+       << fixed(*std::max_element(c->walls.begin(), c->walls.end()), 3) << " | " << fixed(p, 1) << " | "
+       << (c->mode == "direct" ? std::string("–") : fixed(eff, 3)) << " | " << fixed(median(c->cpus), 3) << " | "
+       << fixed(median(c->cpus) / median(c->walls), 2) << " | "
+       << (c->launches.empty() ? std::string("–") : fixed(median(c->launches), 3)) << " | " << fixed(c->load1, 2)
+       << " |\n";
+  }
+  md << "\n`direct` is the sum of the points' own evaluation times (`sweep::evaluate_row` on one thread, "
+        "no queue, journal or table); `mpi` times `mpirun` from launch to exit (the launch alone, `mpirun -np R "
+        "nanopush --version`, in its own column). CPU is the run's CPU time (every thread; not measured for MPI, whose ranks the launcher reaps); cores used = "
+        "CPU / wall, at most the worker count: below it, the host gave the run less than a core per worker.\n\n"
+     << "| target | measured | |\n|---|---|---|\n"
+     << "| sweep overhead (1 thread) <= " << fixed(100 * kOverheadTarget, 0) << " % | " << fixed(100 * overhead, 2)
+     << " % (CPU time: " << fixed(100 * overhead_cpu, 2) << " %) | " << met(overhead <= kOverheadTarget) << " |\n"
+     << "| parallel efficiency, 2 threads >= " << fixed(kEfficiencyTarget, 2) << " | " << fixed(eff_t2, 3)
+     << " (CPU time: " << fixed(cpu_eff_t2, 3) << ") | "
+     << met(eff_t2 >= kEfficiencyTarget) << " |\n";
+  if (m2)
+    md << "| parallel efficiency, 2 MPI ranks >= " << fixed(kEfficiencyTarget, 2) << " | " << fixed(eff_m2, 3)
+       << " | " << met(eff_m2 >= kEfficiencyTarget) << " |\n";
+  else
+    md << "| parallel efficiency, 2 MPI ranks >= " << fixed(kEfficiencyTarget, 2) << " | n/a | " << mpi_note
+       << " |\n";
+  md << "\nThe overhead is the median over the repeats of (1-thread sweep − points alone) / points alone, "
+        "each pair measured back to back; a negative value means the host's noise exceeds the overhead. The "
+        "CPU-time figures (overhead in CPU seconds; efficiency = CPU at 1 worker / CPU at 2) do not depend on how "
+        "much of a core the host gave the run: a CPU-time efficiency near 1 with a low wall-time efficiency means "
+        "the host, not the sweep, held the run back.\n";
+  md << "\nEvery configuration's table equals the 1-thread table byte for byte (" << failed_points
+     << " of " << n << " points failed).";
+  if (!mpi_note.empty()) md << " " << mpi_note << ".";
+  md << "\n\nFiles: `" << csv.filename().string() << "` (sidecar `" << schema_path(csv).filename().string() << "`)";
+  if (plot_note.empty())
+    md << ", `" << png.filename().string() << "`:\n\n![points/s against workers](" << png.filename().string() << ")\n";
+  else
+    md << "; " << plot_note << ".\n";
+  write_file_atomic(out_dir / "report.md", md.str());
+
+  std::cout << md.str();
+  return 0;
+}
+
+RegisterCommand reg{
+    {"bench-sweep",
+     "Benchmark of the sweep machinery: points/s of a rough-surface grid (fig3_18, coulomb law; mu x push offset x "
+     "push angle) on 1 and 2 threads and 1 and 2 MPI ranks, the overhead over the points alone and the parallel "
+     "efficiency; CSV, PNG and report.md (docs/sweeps.md)",
+     91, [](CLI::App& app) -> std::function<int()> {
+       auto o = std::make_shared<BenchSweepOptions>();
+       app.add_option("--out", o->out,
+                      "output directory: sweep_bench.csv (+ .schema.json), sweep_bench.png (+ .gp), report.md")
+           ->capture_default_str();
+       app.add_option("--repeats", o->repeats, "timed runs per configuration; the median wall time (s) is reported")
+           ->check(CLI::Range(1, 100))
+           ->capture_default_str();
+       app.add_option("--points-per-axis", o->per_axis,
+                      "values per axis K (K^3 points): surface.mu 0.02-0.2 (1), push.yn 0-45e-9 m, push.direction "
+                      "0-0.5 rad")
+           ->check(CLI::Range(2, 40))
+           ->capture_default_str();
+       app.add_flag("--no-mpi", o->no_mpi, "skip the MPI configurations (mpirun -np 1 and 2)");
+       app.add_flag("--no-plot", o->no_plot, "no PNG (the CSV and report only)");
+       app.add_flag("--quiet", o->quiet, "no progress on standard error");
+       return [o] { return bench_sweep(*o); };
+     }}};
+
+}  // namespace
+}  // namespace nanopush::cli
