@@ -69,6 +69,25 @@ int nanopush_scene_get_name(nanopush_error error, nanopush_scene scene, char* bu
   return n;
 }
 
+int nanopush_scene_set_real(nanopush_error error, nanopush_scene scene, const char* key, double value) {
+  return guarded(error, [&] {
+    require_handle(scene, "scene");
+    require_handle(key, "key");
+    scene->scene.set(key, nanopush::SceneValue(value));
+    return NANOPUSH_OK;
+  });
+}
+
+int nanopush_scene_set_string(nanopush_error error, nanopush_scene scene, const char* key, const char* value) {
+  return guarded(error, [&] {
+    require_handle(scene, "scene");
+    require_handle(key, "key");
+    require_handle(value, "value");
+    scene->scene.set(key, nanopush::SceneValue::from_text(key, value));
+    return NANOPUSH_OK;
+  });
+}
+
 int nanopush_scene_get_info(nanopush_error error, nanopush_scene scene, double* t_end, int* samples,
                             double* mass, double* inertia, double* initial) {
   return guarded(error, [&] {

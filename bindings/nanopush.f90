@@ -101,6 +101,7 @@ module nanopush
   public :: nanopush_rhs_fn
   public :: nanopush_api_version, nanopush_status_name
   public :: nanopush_load_scene, nanopush_parse_scene, nanopush_destroy, nanopush_scene_info
+  public :: nanopush_scene_set
   public :: nanopush_run, nanopush_integrate
   public :: nanopush_friction_wrench, nanopush_friction_from_velocity
   public :: nanopush_icor_experimental_fit, nanopush_icor_falvo, nanopush_icor_li, &
@@ -109,6 +110,13 @@ module nanopush
             nanopush_icor_constrained_force, nanopush_icor_impulsive, nanopush_icor_cubic_roots, &
             nanopush_icor_nanorod, nanopush_icor_rod_properties
   public :: nanopush_estimate_mu_from_force, nanopush_estimate_mu_from_icor
+
+  !> Set a scene key after loading, validated as in the file (docs/scenes.md):
+  !> call nanopush_scene_set(scene, "surface.mu", 0.1_dp, stat=stat); a value may be real(dp),
+  !> an integer, or text read as the key's type ("coulomb", "0.1").
+  interface nanopush_scene_set
+    module procedure scene_set_real, scene_set_integer, scene_set_text
+  end interface nanopush_scene_set
 
   !> Free a handle (safe on a handle never created or already freed).
   interface nanopush_destroy
@@ -157,6 +165,17 @@ module nanopush
       type(c_ptr), value, intent(in) :: error
       character(kind=c_char), intent(in) :: text(*), source(*)
     end function c_parse_scene
+    integer(c_int) function c_scene_set_real(error, scene, key, value) bind(C, name="nanopush_scene_set_real")
+      import :: c_ptr, c_char, c_int, c_double
+      type(c_ptr), value, intent(in) :: error, scene
+      character(kind=c_char), intent(in) :: key(*)
+      real(c_double), value, intent(in) :: value
+    end function c_scene_set_real
+    integer(c_int) function c_scene_set_string(error, scene, key, value) bind(C, name="nanopush_scene_set_string")
+      import :: c_ptr, c_char, c_int
+      type(c_ptr), value, intent(in) :: error, scene
+      character(kind=c_char), intent(in) :: key(*), value(*)
+    end function c_scene_set_string
     subroutine c_delete_scene(scene) bind(C, name="nanopush_delete_scene")
       import :: c_ptr
       type(c_ptr), intent(inout) :: scene
@@ -436,6 +455,44 @@ contains
     call finish(err, "nanopush_parse_scene", msg, stat)
     if (present(errmsg)) errmsg = msg
   end subroutine nanopush_parse_scene
+
+  subroutine scene_set_real(scene, key, value, stat, errmsg)
+    type(nanopush_scene), intent(inout) :: scene
+    character(len=*), intent(in) :: key
+    real(dp), intent(in) :: value
+    integer, intent(out), optional :: stat
+    character(len=:), allocatable, intent(out), optional :: errmsg
+    type(c_ptr) :: err
+    character(len=:), allocatable :: msg
+    integer(c_int) :: st
+    err = c_new_error()
+    st = c_scene_set_real(err, scene%ptr, to_c(key), real(value, c_double))
+    call finish(err, "nanopush_scene_set", msg, stat)
+    if (present(errmsg)) errmsg = msg
+  end subroutine scene_set_real
+
+  subroutine scene_set_integer(scene, key, value, stat, errmsg)
+    type(nanopush_scene), intent(inout) :: scene
+    character(len=*), intent(in) :: key
+    integer, intent(in) :: value
+    integer, intent(out), optional :: stat
+    character(len=:), allocatable, intent(out), optional :: errmsg
+    call scene_set_real(scene, key, real(value, dp), stat, errmsg)
+  end subroutine scene_set_integer
+
+  subroutine scene_set_text(scene, key, value, stat, errmsg)
+    type(nanopush_scene), intent(inout) :: scene
+    character(len=*), intent(in) :: key, value
+    integer, intent(out), optional :: stat
+    character(len=:), allocatable, intent(out), optional :: errmsg
+    type(c_ptr) :: err
+    character(len=:), allocatable :: msg
+    integer(c_int) :: st
+    err = c_new_error()
+    st = c_scene_set_string(err, scene%ptr, to_c(key), to_c(value))
+    call finish(err, "nanopush_scene_set", msg, stat)
+    if (present(errmsg)) errmsg = msg
+  end subroutine scene_set_text
 
   subroutine destroy_scene(scene)
     type(nanopush_scene), intent(inout) :: scene

@@ -85,6 +85,16 @@ int nanopush_scene_get_info(nanopush_error error, nanopush_scene scene, double* 
  * pbx [m], pby [m] the body-axes point of the centre-of-mass frame where it acts). */
 int nanopush_scene_get_push(nanopush_error error, nanopush_scene scene, double* push);
 
+/* Set a scene key after loading ("surface.mu", "push.yn", ...; `nanopush scene-keys` and
+ * docs/scenes.md list every key with its unit and range), validated as the file is: a value
+ * out of range, of the wrong type, a key the scene's model does not use (surface.mu on a smooth
+ * surface) or a conflict gives NANOPUSH_BAD_INPUT naming the key, and the scene is unchanged.
+ *   nanopush_scene_set_real:   a number (an integer key needs a whole number), SI units;
+ *   nanopush_scene_set_string: the value as text, read as the key's type, as `--set KEY=VALUE`
+ *                              does ("coulomb" for surface.law, "0.1" for surface.mu). */
+int nanopush_scene_set_real(nanopush_error error, nanopush_scene scene, const char* key, double value);
+int nanopush_scene_set_string(nanopush_error error, nanopush_scene scene, const char* key, const char* value);
+
 /* ---- Runs ------------------------------------------------------------------------------ */
 typedef struct nanopush_trajectory_s* nanopush_trajectory;
 

@@ -112,3 +112,16 @@ target_link_libraries(capi_test_precision PRIVATE nanopush_fortran nanopush_warn
 set_target_properties(capi_test_precision PROPERTIES Fortran_MODULE_DIRECTORY ${NANOPUSH_MODDIR}/capi_test_precision)
 add_test(NAME capi.fortran_precision COMMAND capi_test_precision)
 set_tests_properties(capi.fortran_precision PROPERTIES PASS_REGULAR_EXPRESSION "test_fortran_precision: all checks hold")
+
+# Scene keys set through the C API and the Fortran module (issue: scenes from code).
+set(_capi_rough_scene ${PROJECT_SOURCE_DIR}/drivers/scenes/thesis/fig3_18.toml)
+add_executable(capi_test_scene_set ${_capi_dir}/test_capi_scene_set.c)
+target_link_libraries(capi_test_scene_set PRIVATE nanopush_capi nanopush_warnings)
+add_test(NAME capi.c_scene_set COMMAND capi_test_scene_set ${_capi_rough_scene})
+set_tests_properties(capi.c_scene_set PROPERTIES PASS_REGULAR_EXPRESSION "capi scene_set: all checks hold")
+add_executable(capi_test_fortran_scene_set ${_capi_dir}/test_fortran_scene_set.f90)
+target_link_libraries(capi_test_fortran_scene_set PRIVATE nanopush_fortran nanopush_warnings)
+set_target_properties(capi_test_fortran_scene_set PROPERTIES
+  Fortran_MODULE_DIRECTORY ${NANOPUSH_MODDIR}/capi_test_fortran_scene_set)
+add_test(NAME capi.fortran_scene_set COMMAND capi_test_fortran_scene_set ${_capi_rough_scene})
+set_tests_properties(capi.fortran_scene_set PROPERTIES PASS_REGULAR_EXPRESSION "fortran scene_set: all checks hold")
