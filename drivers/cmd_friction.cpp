@@ -19,6 +19,7 @@
 #include "nanopush/models/friction_cubature.hpp"
 #include "nanopush/outputs/io.hpp"
 #include "nanopush/outputs/plot.hpp"
+#include "nanopush/sweeps/sweep.hpp"
 #include "registry.hpp"
 
 namespace nanopush::cli {
@@ -272,6 +273,24 @@ double mean_distance_rect(double a, double b) {
   return d / 3 + a * a / (6 * b) * std::log((b + d) / a) + b * b / (6 * a) * std::log((a + d) / b);
 }
 
+/// The friction wrench (mu N = 1, counter-clockwise) of the a x b contact at every point of
+/// `plan` (keys R, alpha) through the sweep engine's friction task, on every core; in point order.
+std::vector<FrictionWrench> wrenches_by_sweep(double a, double b, const sweep::Plan& plan) {
+  const auto task = sweep::make_friction_task({{"a", a}, {"b", b}, {"muN", 1.0}, {"sense", 1.0}});
+  const auto rows = sweep::evaluate_points(plan, *task, 0);
+  const std::size_t ifx = sweep::column_index(plan, *task, "fx"), ify = sweep::column_index(plan, *task, "fy"),
+                    imf = sweep::column_index(plan, *task, "mf");
+  std::vector<FrictionWrench> out;
+  out.reserve(rows.size());
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const auto& r = rows[i];
+    if (sweep::row_failed(r))
+      throw SolverError("friction sweep, point " + std::to_string(i) + ": " + r.back());
+    out.push_back({sweep::cell_number(r[ifx]), sweep::cell_number(r[ify]), sweep::cell_number(r[imf])});
+  }
+  return out;
+}
+
 void fig3_9(ReproduceContext& ctx) {
   const double a = kBarA, b = kBarB, L = std::max(a, b);
   const std::vector<double> alphas = {0.0, kPi / 6, kPi / 4, kPi / 3, kPi / 2};
@@ -293,12 +312,21 @@ void fig3_9(ReproduceContext& ctx) {
   bool monotone = true;
   std::vector<double> prevF(alphas.size(), -1.0), prevM(alphas.size(), 1e300);
   std::vector<double> lastF(alphas.size()), lastM(alphas.size());
+  // The grid R x alpha (alpha fastest) through the sweep engine; the F77 check beside it.
+  std::vector<double> rhos;
+  sweep::Axis axR{"R", {}}, axA{"alpha", {}};
   for (int i = 0; i < n; ++i) {
-    const double rho = std::pow(10.0, -3.0 + 6.0 * i / (n - 1));
+    rhos.push_back(std::pow(10.0, -3.0 + 6.0 * i / (n - 1)));
+    axR.values.emplace_back(rhos.back() * L);
+  }
+  for (double al : alphas) axA.values.emplace_back(al);
+  const auto wrench = wrenches_by_sweep(a, b, sweep::cartesian({axR, axA}));
+  for (int i = 0; i < n; ++i) {
+    const double rho = rhos[static_cast<std::size_t>(i)];
     const double R = rho * L;
     std::vector<double> row = {R, rho};
     for (std::size_t k = 0; k < alphas.size(); ++k) {
-      const auto c = rectangle_friction_wrench(a, b, 1.0, R, alphas[k], 1);
+      const auto& c = wrench[static_cast<std::size_t>(i) * alphas.size() + k];
       double f[3];
       if (np_f77_rectangle_friction(a, b, 1.0, R, alphas[k], 1, f) != 0) throw SolverError("F77 RECTFR failed");
       const double Ffn = std::hypot(c.fx, c.fy), Mfn = std::fabs(c.mf) / L;
@@ -387,13 +415,24 @@ void fig3_10_11(ReproduceContext& ctx) {
                       {"alpha", "rad", "direction of the iCOR: (x', y') = -R (cos alpha, sin alpha)"},
                       {"Ffn", "1", "normalised friction force |f|/(mu N) (Fig 3.10)"},
                       {"Mfn", "1", "normalised friction moment |m_f|/(mu N max(a, b)) (Fig 3.11)"}});
+    // The iCOR grid as a list of points (R, alpha), evaluated by the sweep engine.
+    sweep::Plan plan;
+    plan.keys = {"R", "alpha"};
+    for (int i = 0; i < n; ++i) {
+      const double cx = xmax * (2 * i - (n - 1)) / (n - 1);
+      for (int j = 0; j < n; ++j) {
+        const double cy = ymax * (2 * j - (n - 1)) / (n - 1);
+        plan.points.push_back({std::hypot(cx, cy), std::atan2(-cy, -cx)});
+      }
+    }
+    const auto wrench = wrenches_by_sweep(a, b, plan);
     for (int i = 0; i < n; ++i) {
       const double cx = xmax * (2 * i - (n - 1)) / (n - 1);  // exactly 0 at the centre
       for (int j = 0; j < n; ++j) {
         const double cy = ymax * (2 * j - (n - 1)) / (n - 1);
         // iCOR at body point (cx, cy) = -R (cos alpha, sin alpha).
         const double R = std::hypot(cx, cy), alpha = std::atan2(-cy, -cx);
-        const auto c = rectangle_friction_wrench(a, b, 1.0, R, alpha, 1);
+        const auto& c = wrench[static_cast<std::size_t>(i) * static_cast<std::size_t>(n) + static_cast<std::size_t>(j)];
         double w[3];
         if (np_f77_rectangle_friction(a, b, 1.0, R, alpha, 1, w) != 0) throw SolverError("F77 RECTFR failed");
         const double Ffn = std::hypot(c.fx, c.fy), Mfn = std::fabs(c.mf) / L;

@@ -13,6 +13,7 @@
 #include "nanopush/models/icor_dynamic.hpp"
 #include "nanopush/outputs/io.hpp"
 #include "nanopush/outputs/plot.hpp"
+#include "nanopush/sweeps/sweep.hpp"
 #include "registry.hpp"
 #include "icor_common.hpp"
 
@@ -161,9 +162,43 @@ void step_error_analysis(ReproduceContext& ctx) {
   ctx.produced(path);
 }
 
+/// The icor task's outputs `names` over the grid yn x mu (mu fastest; no mu: the task's
+/// default) for the thesis nanorod, through the sweep engine on every core: per point (in
+/// plan order), the values of `names`.
+std::vector<std::vector<double>> icor_by_sweep(const std::vector<double>& yns, const std::vector<double>& mus,
+                                               const std::vector<std::string>& names,
+                                               std::optional<double> force = std::nullopt) {
+  const auto rod = icor::nanorod();
+  std::vector<SceneSetting> fixed = {{"rod.length", rod.length}, {"rod.radius", rod.radius},
+                                     {"rod.density", rod.density}, {"rod.hamaker", rod.hamaker},
+                                     {"rod.z0", rod.z0},         {"rod.gravity", rod.gravity}};
+  if (force) fixed.emplace_back("force", *force);
+  const auto task = sweep::make_icor_task(fixed);
+  std::vector<sweep::Axis> axes = {{"yn", {}}};
+  for (double y : yns) axes[0].values.emplace_back(y);
+  if (!mus.empty()) {
+    axes.push_back({"mu", {}});
+    for (double m : mus) axes[1].values.emplace_back(m);
+  }
+  const sweep::Plan plan = sweep::cartesian(axes);
+  const auto rows = sweep::evaluate_points(plan, *task, 0);
+  std::vector<std::size_t> cols;
+  for (const auto& nm : names) cols.push_back(sweep::column_index(plan, *task, nm));
+  std::vector<std::vector<double>> out;
+  out.reserve(rows.size());
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    if (sweep::row_failed(rows[i]))
+      throw SolverError("icor sweep, point " + std::to_string(i) + ": " + rows[i].back());
+    std::vector<double> v;
+    for (std::size_t c : cols) v.push_back(sweep::cell_number(rows[i][c]));
+    out.push_back(std::move(v));
+  }
+  return out;
+}
+
 void step_fig4_2(ReproduceContext& ctx) {
   const auto rod = icor::nanorod();
-  const double L = rod.length, b = rod.half_length();
+  const double b = rod.half_length();
   const int n = ctx.quick ? 30 : 296;
   const auto csv = ctx.out / "fig4_2.csv";
   CsvWriter w(csv, {{"yn", "m", "push point: distance from the CM along the rod"},
@@ -172,10 +207,12 @@ void step_fig4_2(ReproduceContext& ctx) {
                     {"R_li", "m", "iCOR distance, Li et al. (eq 4.3)"},
                     {"R_unknown_pressure", "m", "iCOR distance, unknown pressure (eq 4.13)"}});
   double worst = 0.0;
-  for (double yn : sweep(0.0, b, n, false)) {
-    const double r = icor::unknown_pressure(yn, L);
-    worst = std::max({worst, std::fabs(icor::falvo(yn, L) - r) / r, std::fabs(icor::li(yn, L) - r) / r});
-    w.row({yn, icor::experimental_fit(yn, L), icor::falvo(yn, L), icor::li(yn, L), r});
+  const auto yns = sweep(0.0, b, n, false);
+  const auto v = icor_by_sweep(yns, {}, {"R_experimental_fit", "R_falvo", "R_li", "R_unknown_pressure"});
+  for (std::size_t i = 0; i < yns.size(); ++i) {
+    const double yn = yns[i], fit = v[i][0], falvo = v[i][1], li = v[i][2], r = v[i][3];
+    worst = std::max({worst, std::fabs(falvo - r) / r, std::fabs(li - r) / r});
+    w.row({yn, fit, falvo, li, r});
   }
   w.commit();
   ctx.produced(csv);
@@ -206,7 +243,7 @@ std::string mu_name(double mu) {
 
 void step_fig4_3(ReproduceContext& ctx) {
   const auto rod = icor::nanorod();
-  const double L = rod.length, b = rod.half_length(), W = rod.load();
+  const double b = rod.half_length(), W = rod.load();
   const int n = ctx.quick ? 30 : 296;
   const double F = 0.15 * W;  // one push force for the whole family: F >= mu W >= F_min for mu <= 0.15
   const auto csv = ctx.out / "fig4_3.csv";
@@ -215,9 +252,11 @@ void step_fig4_3(ReproduceContext& ctx) {
     h.push_back({"R_known_pressure_mu_" + value_name(mu), "m",
                  "iCOR distance, known uniform pressure (eq 4.7), F = 0.15 W, " + mu_name(mu), "number", {{"mu", mu}}});
   CsvWriter w(csv, h);
-  for (double yn : sweep(0.0, b, n, false)) {
-    std::vector<double> r = {yn};
-    for (double mu : kMuFamily43) r.push_back(icor::known_pressure(mu, W, yn, F, L));
+  const auto yns = sweep(0.0, b, n, false);
+  const auto v = icor_by_sweep(yns, kMuFamily43, {"R_known_pressure"}, F);
+  for (std::size_t i = 0; i < yns.size(); ++i) {
+    std::vector<double> r = {yns[i]};
+    for (std::size_t k = 0; k < kMuFamily43.size(); ++k) r.push_back(v[i * kMuFamily43.size() + k][0]);
     w.row(r);
   }
   w.commit();
@@ -237,16 +276,18 @@ void step_fig4_3(ReproduceContext& ctx) {
 
 void step_fig4_4(ReproduceContext& ctx) {
   const auto rod = icor::nanorod();
-  const double L = rod.length, b = rod.half_length(), W = rod.load();
+  const double b = rod.half_length();
   const int n = ctx.quick ? 30 : 296;
   const auto csv = ctx.out / "fig4_4.csv";
   Columns h = {{"yn", "m", "push point: distance from the CM along the rod"}};
   for (double mu : kMuFamily44)
     h.push_back({"F_min_mu_" + value_name(mu), "N", "minimum push force (eq 4.8), " + mu_name(mu), "number", {{"mu", mu}}});
   CsvWriter w(csv, h);
-  for (double yn : sweep(0.0, b, n, false)) {
-    std::vector<double> r = {yn};
-    for (double mu : kMuFamily44) r.push_back(icor::minimum_force(mu, W, yn, L));
+  const auto yns = sweep(0.0, b, n, false);
+  const auto v = icor_by_sweep(yns, kMuFamily44, {"F_min"});
+  for (std::size_t i = 0; i < yns.size(); ++i) {
+    std::vector<double> r = {yns[i]};
+    for (std::size_t k = 0; k < kMuFamily44.size(); ++k) r.push_back(v[i * kMuFamily44.size() + k][0]);
     w.row(r);
   }
   w.commit();
@@ -265,7 +306,7 @@ void step_fig4_4(ReproduceContext& ctx) {
 
 void step_fig4_5(ReproduceContext& ctx) {
   const auto rod = icor::nanorod();
-  const double L = rod.length, b = rod.half_length(), W = rod.load();
+  const double b = rod.half_length();
   const int n = ctx.quick ? 30 : 296;
   const auto csv = ctx.out / "fig4_5.csv";
   Columns h = {{"yn", "m", "push point: distance from the CM along the rod"},
@@ -274,10 +315,11 @@ void step_fig4_5(ReproduceContext& ctx) {
     h.push_back({"F_from_icor_mu_" + value_name(mu), "N", "push force from the iCOR (eq 4.10), " + mu_name(mu), "number",
                  {{"mu", mu}}});
   CsvWriter w(csv, h);
-  for (double yn : sweep(0.0, b, n, false)) {
-    const double R = icor::unknown_pressure(yn, L);
-    std::vector<double> r = {yn, R};
-    for (double mu : kMuFamily44) r.push_back(icor::force_from_icor(mu, W, R, L));
+  const auto yns = sweep(0.0, b, n, false);
+  const auto v = icor_by_sweep(yns, kMuFamily44, {"R_unknown_pressure", "F_from_icor"});
+  for (std::size_t i = 0; i < yns.size(); ++i) {
+    std::vector<double> r = {yns[i], v[i * kMuFamily44.size()][0]};
+    for (std::size_t k = 0; k < kMuFamily44.size(); ++k) r.push_back(v[i * kMuFamily44.size() + k][1]);
     w.row(r);
   }
   w.commit();

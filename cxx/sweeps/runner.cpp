@@ -4,6 +4,9 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <limits>
 #include <chrono>
 #include <cinttypes>
 #include <cstdio>
@@ -206,6 +209,54 @@ std::size_t merge_tables(const std::vector<std::filesystem::path>& shards, const
 }
 
 // ---- threads -------------------------------------------------------------------------------
+
+std::vector<std::vector<std::string>> evaluate_points(const Plan& plan, const Task& task, unsigned jobs) {
+  (void)table_columns(plan, task);  // every varied key is the task's, before any work
+  std::vector<std::vector<std::string>> rows(plan.size());
+  if (jobs == 0) jobs = std::max(1u, std::thread::hardware_concurrency());
+  jobs = static_cast<unsigned>(std::min<std::size_t>(jobs, std::max<std::size_t>(plan.size(), 1)));
+  std::atomic<std::size_t> next{0};
+  std::mutex mutex;
+  std::exception_ptr failure;
+  auto worker = [&] {
+    try {
+      for (;;) {
+        const std::size_t k = next.fetch_add(1);
+        if (k >= rows.size()) break;
+        rows[k] = evaluate_row(plan, task, k);  // each slot written by one thread only
+      }
+    } catch (...) {
+      std::lock_guard<std::mutex> lock(mutex);
+      if (!failure) failure = std::current_exception();
+      next = rows.size();  // stop taking points
+    }
+  };
+  if (jobs <= 1) {
+    worker();
+  } else {
+    std::vector<std::thread> threads;
+    for (unsigned t = 0; t < jobs; ++t) threads.emplace_back(worker);
+    for (auto& t : threads) t.join();
+  }
+  if (failure) std::rethrow_exception(failure);
+  return rows;
+}
+
+std::size_t column_index(const Plan& plan, const Task& task, const std::string& name) {
+  const Columns cols = table_columns(plan, task);
+  for (std::size_t i = 0; i < cols.size(); ++i)
+    if (cols[i].name == name) return i;
+  throw InputError("column", name, "not a column of --task " + task.name());
+}
+
+double cell_number(const std::string& cell) {
+  if (cell.empty()) return std::numeric_limits<double>::quiet_NaN();
+  double v = 0;
+  const auto r = std::from_chars(cell.data(), cell.data() + cell.size(), v);
+  if (r.ec != std::errc() || r.ptr != cell.data() + cell.size())
+    throw InputError("cell", cell, "must be a number");
+  return v;
+}
 
 Result run_local(const Plan& plan, const Task& task, const Options& o) {
   if (o.shard_count == 0 || o.shard_index >= o.shard_count)

@@ -222,7 +222,8 @@ class IcorTask final : public ParamTask {
             {"R_impulsive", "m", "impulsive iCOR (eq 5.5)"},
             {"F_min", "N", "minimum push force for known pressure (eq 4.8)"},
             {"R_known_pressure", "m", "iCOR for known pressure at push force `force` (eq 4.7); empty without force"},
-            {"load", "N", "rod load W = m g + F_vdw"}};
+            {"load", "N", "rod load W = m g + F_vdw"},
+            {"F_from_icor", "N", "push force from the iCOR R_unknown_pressure (eq 4.10) at mu"}};
   }
 
  protected:
@@ -237,16 +238,17 @@ class IcorTask final : public ParamTask {
     const icor::Rod rod = rod_of(v);
     const double L = rod.length, yn = need(v, "yn"), mu = need(v, "mu"), W = rod.load();
     const auto sol = icor::solve_constrained_cubic(yn, L, rod.gyration_squared(), icor::CubicMethod::Brent);
-    const double F = v.at("force");
+    const double F = v.at("force"), R = icor::unknown_pressure(yn, L);
     return {cell(icor::experimental_fit(yn, L)),
             cell(icor::falvo(yn, L)),
             cell(icor::li(yn, L)),
-            cell(icor::unknown_pressure(yn, L)),
+            cell(R),
             cell(sol.negative ? *sol.negative : kNaN),
             cell(icor::impulsive(yn, rod.gyration_squared())),
             cell(icor::minimum_force(mu, W, yn, L)),
             cell(std::isnan(F) ? kNaN : icor::known_pressure(mu, W, yn, F, L)),
-            cell(W)};
+            cell(W),
+            cell(icor::force_from_icor(mu, W, R, L))};
   }
 };
 

@@ -145,6 +145,19 @@ struct Result {
 /// journal.
 Result run_local(const Plan& plan, const Task& task, const Options& options);
 
+/// In memory: the rows of every point (evaluate_row), in point order, computed on `jobs`
+/// threads (0 = every core); no journal, no file. A failing point's row keeps its status and
+/// message (see row_failed). The rows are the same whatever `jobs` is.
+std::vector<std::vector<std::string>> evaluate_points(const Plan& plan, const Task& task, unsigned jobs = 0);
+
+/// The position of a column (an input key's or an output's name, as in table_columns) in the
+/// rows of plan and task; throws InputError when there is none.
+std::size_t column_index(const Plan& plan, const Task& task, const std::string& name);
+
+/// A number cell read back as the double it was written from (cells are shortest round-trip
+/// text): "" (missing) is NaN; text that is not a whole number throws InputError.
+double cell_number(const std::string& cell);
+
 /// Write the table of `rows` (point index -> row), ordered, with its sidecar. `total` is the
 /// plan's size (recorded in the sidecar with the shard, so --merge can check coverage).
 void write_table(const std::filesystem::path& out, const Plan& plan, const Task& task,
