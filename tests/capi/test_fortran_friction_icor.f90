@@ -51,8 +51,9 @@ contains
     character(len=32) :: at
     open (newunit=unit, file=path, status="old", action="read")
     read (unit, '(a)') line
-    call check(trim(line) == "yn,R_4_1,R_4_2,R_4_3,R_4_13,R_4_7,F_min_4_8,F_4_10,R_5_4_negative," // &
-               "R_5_4_positive,F_5_2_negative,R_5_5", "formulas: header")
+    call check(trim(line) == "yn,R_experimental_fit,R_falvo,R_li,R_unknown_pressure,R_known_pressure," // &
+               "F_min,F_from_icor,R_constrained_negative,R_constrained_positive,F_constrained_negative," // &
+               "R_impulsive", "formulas: header")
     rows = 0
     do
       read (unit, '(a)', iostat=ios) line
