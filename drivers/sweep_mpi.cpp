@@ -39,12 +39,6 @@ namespace {
 
 enum Tag : int { kRequest = 1, kWork = 2, kRow = 3 };
 
-std::string join_cells(const std::vector<std::string>& row) {
-  std::string s;
-  for (std::size_t i = 0; i < row.size(); ++i) s += (i ? "," : "") + row[i];
-  return s;
-}
-
 /// Threads of one rank: take indices from `queue`, put finished rows into `outbox`.
 struct LocalWork {
   std::mutex m;
@@ -88,25 +82,8 @@ unsigned threads_per_rank(unsigned asked) {
 }
 
 void send_row(std::size_t i, const std::vector<std::string>& row) {
-  std::string msg = std::to_string(i) + "\n" + join_cells(row);
+  std::string msg = std::to_string(i) + "\n" + sweep::join_cells(row);
   MPI_Send(msg.data(), static_cast<int>(msg.size()), MPI_CHAR, 0, kRow, MPI_COMM_WORLD);
-}
-
-std::vector<std::string> split_row(const std::string& line) {
-  std::vector<std::string> out;
-  std::string cur;
-  bool quoted = false;
-  for (char c : line) {
-    if (c == '"') quoted = !quoted;
-    if (c == ',' && !quoted) {
-      out.push_back(cur);
-      cur.clear();
-    } else {
-      cur += c;
-    }
-  }
-  out.push_back(cur);
-  return out;
 }
 
 }  // namespace
@@ -178,7 +155,7 @@ int run_mpi_sweep(const sweep::Plan& plan, const sweep::Task& task, const sweep:
           MPI_Recv(msg.data(), len, MPI_CHAR, st.MPI_SOURCE, kRow, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
           const auto nl = msg.find('\n');
           const std::size_t i = std::stoull(msg.substr(0, nl));
-          auto row = split_row(msg.substr(nl + 1));
+          auto row = sweep::split_cells(msg.substr(nl + 1));
           journal.append(i, row);
           rows[i] = std::move(row);
         }

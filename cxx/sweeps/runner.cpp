@@ -38,6 +38,10 @@ std::string hex(std::uint64_t v) {
   return b;
 }
 
+std::string record_text(std::size_t index, const std::string& line) { return std::to_string(index) + "\t" + line; }
+
+}  // namespace
+
 std::string join_cells(const std::vector<std::string>& row) {
   std::string s;
   for (std::size_t i = 0; i < row.size(); ++i) {
@@ -47,7 +51,6 @@ std::string join_cells(const std::vector<std::string>& row) {
   return s;
 }
 
-/// Split a CSV line into its cells, keeping each cell's text as written (quotes included).
 std::vector<std::string> split_cells(const std::string& line) {
   std::vector<std::string> out;
   std::string cur;
@@ -64,10 +67,6 @@ std::vector<std::string> split_cells(const std::string& line) {
   out.push_back(cur);
   return out;
 }
-
-std::string record_text(std::size_t index, const std::string& line) { return std::to_string(index) + "\t" + line; }
-
-}  // namespace
 
 // ---- journal -------------------------------------------------------------------------------
 

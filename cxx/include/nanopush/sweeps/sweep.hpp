@@ -89,6 +89,9 @@ Columns table_columns(const Plan& plan, const Task& task);
 std::vector<std::string> evaluate_row(const Plan& plan, const Task& task, std::size_t i);
 /// True when a row's status is not ok.
 bool row_failed(const std::vector<std::string>& row);
+/// A row as one CSV line (cells as formatted, joined by commas), and back (quotes kept).
+std::string join_cells(const std::vector<std::string>& row);
+std::vector<std::string> split_cells(const std::string& line);
 
 /// Points of shard `index` of `count` (index, index + count, ...): every point in exactly one.
 std::vector<std::size_t> shard_points(std::size_t n, std::size_t index, std::size_t count);
