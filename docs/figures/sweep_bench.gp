@@ -9,7 +9,7 @@ set key left top
 set xrange [0.8:2.2]
 set xtics 1
 set yrange [0:*]
-P1 = 268.8789068060794
+P1 = 375.833830574019
 plot 'docs/figures/sweep_bench.csv' skip 1 using (strcol(1) eq 'threads' ? $4 : 1/0):($5/$7):($5/$9):($5/$8) with yerrorlines lw 2 pt 7 title 'threads (one process)', \
      'docs/figures/sweep_bench.csv' skip 1 using (strcol(1) eq 'mpi' ? $4 : 1/0):($5/$7):($5/$9):($5/$8) with yerrorlines lw 2 pt 5 title 'MPI ranks (mpirun, launch included)', \
      P1*x with lines dt 2 lw 1.5 lc rgb 'black' title 'ideal: workers x 1-thread rate'
