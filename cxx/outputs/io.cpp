@@ -164,7 +164,7 @@ std::filesystem::path schema_path(const std::filesystem::path& csv) {
   return p;
 }
 
-std::string table_schema_json(const Columns& columns, const std::string& scene) {
+std::string table_schema_json(const Columns& columns, const std::string& scene, const RunInfo& run) {
   const auto& pv = provenance();
   std::ostringstream j;
   j << "{\n  \"fields\": [\n";
@@ -190,7 +190,14 @@ std::string table_schema_json(const Columns& columns, const std::string& scene) 
     << "    \"version\": " << json_string(pv.version) << ",\n"
     << "    \"command\": " << json_string(pv.command) << ",\n"
     << "    \"scene\": " << json_string(scene.empty() ? pv.scene : scene) << ",\n"
-    << "    \"created\": " << json_string(utc_now()) << ",\n"
+    << "    \"created\": " << json_string(utc_now()) << ",\n";
+  if (!run.empty()) {
+    j << "    \"run\": {";
+    for (std::size_t i = 0; i < run.size(); ++i)
+      j << (i ? ", " : "") << json_string(run[i].first) << ": " << run[i].second;
+    j << "},\n";
+  }
+  j
     << "    \"number_format\": \"shortest decimal that reads back to the same IEEE double; inf and -inf for "
        "infinities; the empty cell for a missing value\"\n"
     << "  }\n}\n";
@@ -211,10 +218,10 @@ std::string join_cells(const std::vector<std::string>& cells) {
   return r + "\n";
 }
 /// Write the sidecar's temporary, then rename the CSV, then the sidecar.
-void commit_with_schema(AtomicFile& csv, const Columns& columns, const std::string& scene) {
+void commit_with_schema(AtomicFile& csv, const Columns& columns, const std::string& scene, const RunInfo& run) {
   csv.finish();
   AtomicFile schema(schema_path(csv.target()));
-  schema.stream() << table_schema_json(columns, scene);
+  schema.stream() << table_schema_json(columns, scene, run);
   schema.finish();
   csv.commit();
   schema.commit();
@@ -255,7 +262,7 @@ void CsvWriter::cells(const std::vector<std::string>& cells) {
 
 void CsvWriter::blank_line() { file_.stream() << '\n'; }
 
-void CsvWriter::commit() { commit_with_schema(file_, columns_, scene_); }
+void CsvWriter::commit() { commit_with_schema(file_, columns_, scene_, run_); }
 
 std::string csv_document(const Columns& columns, const std::vector<std::vector<std::string>>& rows) {
   std::string t = header_line(columns);
@@ -264,8 +271,10 @@ std::string csv_document(const Columns& columns, const std::vector<std::vector<s
 }
 
 void write_csv_atomic(const std::filesystem::path& path, const Columns& columns,
-                      const std::vector<std::vector<std::string>>& rows, const std::string& scene) {
+                      const std::vector<std::vector<std::string>>& rows, const std::string& scene,
+                      const RunInfo& run) {
   CsvWriter w(path, columns, scene);
+  w.run_info(run);
   for (const auto& r : rows) w.cells(r);
   w.commit();
 }

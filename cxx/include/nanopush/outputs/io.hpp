@@ -75,8 +75,13 @@ std::string join_command_line(int argc, const char* const* argv);
 
 /// The sidecar of a CSV: FILE.csv -> FILE.schema.json (any other name: NAME.schema.json).
 std::filesystem::path schema_path(const std::filesystem::path& csv);
+/// What a run measured about itself (timings, counts), recorded in the sidecar's
+/// "nanopush"."run" object and never in the table: name, and its value as a JSON literal
+/// (json_string or csv_number of a finite number).
+using RunInfo = std::vector<std::pair<std::string, std::string>>;
+
 /// The Table Schema JSON for `columns` (with provenance; `scene` overrides the context's).
-std::string table_schema_json(const Columns& columns, const std::string& scene = {});
+std::string table_schema_json(const Columns& columns, const std::string& scene = {}, const RunInfo& run = {});
 
 /// A CSV file and its sidecar, both written atomically: rows go to a temporary file; commit()
 /// writes the schema to its own temporary, then renames the CSV and then the schema into
@@ -94,17 +99,21 @@ class CsvWriter {
   void blank_line();
   void commit();
   [[nodiscard]] const Columns& columns() const { return columns_; }
+  /// Timings and counts for the sidecar (RunInfo), set before commit().
+  void run_info(RunInfo info) { run_ = std::move(info); }
 
  private:
   void check_width(std::size_t n) const;
   AtomicFile file_;
   Columns columns_;
   std::string scene_;
+  RunInfo run_;
 };
 
 /// Write a complete CSV (header from `columns`, then `rows` of formatted cells) and its sidecar.
 void write_csv_atomic(const std::filesystem::path& path, const Columns& columns,
-                      const std::vector<std::vector<std::string>>& rows, const std::string& scene = {});
+                      const std::vector<std::vector<std::string>>& rows, const std::string& scene = {},
+                      const RunInfo& run = {});
 
 /// The CSV text (header and rows, no sidecar), e.g. for standard output.
 std::string csv_document(const Columns& columns, const std::vector<std::vector<std::string>>& rows);
