@@ -167,12 +167,14 @@ void step_error_analysis(ReproduceContext& ctx) {
 /// plan order), the values of `names`.
 std::vector<std::vector<double>> icor_by_sweep(const std::vector<double>& yns, const std::vector<double>& mus,
                                                const std::vector<std::string>& names,
-                                               std::optional<double> force = std::nullopt) {
+                                               std::optional<double> force = std::nullopt,
+                                               const std::string& cubic = "brent") {
   const auto rod = icor::nanorod();
   std::vector<SceneSetting> fixed = {{"rod.length", rod.length}, {"rod.radius", rod.radius},
                                      {"rod.density", rod.density}, {"rod.hamaker", rod.hamaker},
                                      {"rod.z0", rod.z0},         {"rod.gravity", rod.gravity}};
   if (force) fixed.emplace_back("force", *force);
+  fixed.emplace_back("cubic", cubic);
   const auto task = sweep::make_icor_task(fixed);
   std::vector<sweep::Axis> axes = {{"yn", {}}};
   for (double y : yns) axes[0].values.emplace_back(y);
@@ -338,7 +340,7 @@ void step_fig4_5(ReproduceContext& ctx) {
 
 void step_fig5_2(ReproduceContext& ctx) {
   const auto rod = icor::nanorod();
-  const double L = rod.length, b = rod.half_length(), k2 = rod.gyration_squared();
+  const double b = rod.half_length(), k2 = rod.gyration_squared();
   const int n = ctx.quick ? 30 : 296;
   const auto csv = ctx.out / "fig5_2.csv";
   Table t(csv, {{"yn", "m", "push point: distance from the CM along the rod"},
@@ -347,13 +349,13 @@ void step_fig5_2(ReproduceContext& ctx) {
                 {"R_constrained_positive", "m", "positive root of the constrained cubic (eq 5.4); empty if none"},
                 {"R_constrained_far_side", "m", "-R_constrained_negative: Table 5.1's branch, > 0 on the far side"},
                 {"R_constrained_near_side", "m", "-R_constrained_positive: the other branch; empty if none"}});
-  for (double yn : sweep(0.0, b, n, false)) {
-    const auto s = icor::solve_constrained_cubic(yn, L, k2, CubicMethod::Eigen);
-    std::optional<double> far, near;
-    if (s.negative) far = -*s.negative;
-    if (s.positive) near = -*s.positive;
-    t.row({csv_number(yn), csv_number(icor::unknown_pressure(yn, L)), cell(s.negative), cell(s.positive), cell(far),
-           cell(near)});
+  const auto yns = sweep(0.0, b, n, false);
+  const auto v = icor_by_sweep(yns, {}, {"R_unknown_pressure", "R_constrained_negative", "R_constrained_positive"},
+                               std::nullopt, "eigen");
+  for (std::size_t i = 0; i < yns.size(); ++i) {  // a missing root is NaN: an empty cell, and so is its negation
+    const double neg = v[i][1], pos = v[i][2];
+    t.row({csv_number(yns[i]), csv_number(v[i][0]), csv_number(neg), csv_number(pos), csv_number(-neg),
+           csv_number(-pos)});
   }
   t.write();
   ctx.produced(csv);

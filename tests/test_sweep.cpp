@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "nanopush/models/friction.hpp"
+#include "nanopush/models/icor.hpp"
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/sweeps/sweep.hpp"
 
@@ -119,4 +120,33 @@ TEST_CASE("sweep: cells read back exactly, columns by name", "[sweep]") {
   CHECK(sweep::cell_number("3e-08") == 3e-8);
   CHECK(sweep::cell_number("-0") == 0.0);
   CHECK_THROWS_AS(sweep::cell_number("1x"), InputError);
+}
+
+TEST_CASE("sweep: the icor task gives both branches of eq 5.4 from the chosen cubic solver", "[sweep]") {
+  const auto rod = icor::nanorod();
+  for (const char* solver : {"brent", "eigen"}) {
+    INFO(solver);
+    const auto task = sweep::make_icor_task({{"cubic", solver}});
+    const auto plan = sweep::cartesian({sweep::parse_axis("yn=0:295e-9:12")});
+    const auto rows = sweep::evaluate_points(plan, *task, 2);
+    const auto ineg = sweep::column_index(plan, *task, "R_constrained_negative");
+    const auto ipos = sweep::column_index(plan, *task, "R_constrained_positive");
+    const auto method = std::string(solver) == "brent" ? icor::CubicMethod::Brent : icor::CubicMethod::Eigen;
+    for (std::size_t i = 0; i < plan.size(); ++i) {
+      // The oracle: the solver called directly (the task adds nothing but the cell).
+      const auto s = icor::solve_constrained_cubic(plan.points[i][0].number(), rod.length, rod.gyration_squared(), method);
+      REQUIRE(!sweep::row_failed(rows[i]));
+      CHECK(rows[i][ineg] == (s.negative ? csv_number(*s.negative) : std::string()));
+      CHECK(rows[i][ipos] == (s.positive ? csv_number(*s.positive) : std::string()));
+    }
+  }
+  // A choice is checked with the plan, before any work: a word the task does not know, or a
+  // word for a number.
+  const auto task = sweep::make_icor_task({});
+  CHECK_THROWS_AS(sweep::make_icor_task({{"cubic", "lapack"}}), InputError);
+  CHECK_THROWS_AS(sweep::make_icor_task({{"cubic", 1.0}}), InputError);
+  CHECK_THROWS_AS(sweep::table_columns(sweep::cartesian({sweep::parse_axis("cubic=brent,qr")}), *task), InputError);
+  CHECK_THROWS_AS(sweep::table_columns(sweep::cartesian({sweep::parse_axis("yn=1e-8,abc")}), *task), InputError);
+  CHECK_NOTHROW(sweep::table_columns(sweep::cartesian({sweep::parse_axis("cubic=brent,eigen")}), *task));
+  CHECK_THROWS_AS(sweep::parse_axis("yn=0:abc:3"), InputError);
 }

@@ -30,15 +30,13 @@ double number_of(const std::string& field, const std::string& text) {
   return v;
 }
 
-/// A value of `key` from text: the scene key's type when the key is a scene key, else a number.
+/// A value of `key` from text: the scene key's type when the key is a scene key, else a number
+/// when it reads as one, else text (the task checks it: Task::check_input).
 SceneValue value_of(const std::string& key, const std::string& text) {
   if (find_scene_key(key)) return SceneValue::from_text(key, text);
   double v = 0;
-  try {
-    v = number_of(key, text);
-  } catch (const InputError&) {
-    throw InputError(key, text, "must be a number");
-  }
+  const auto r = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (text.empty() || r.ec != std::errc() || r.ptr != text.data() + text.size()) return text;
   return v;
 }
 
@@ -55,9 +53,10 @@ Axis parse_axis(const std::string& spec, bool log) {
   if (rhs.find(':') != std::string::npos) {
     const auto parts = split(rhs, ':');
     if (parts.size() != 3) throw InputError(opt, spec, "a range is FROM:TO:N (three fields)");
-    const double from = value_of(a.key, parts[0]).number(), to = value_of(a.key, parts[1]).number();
-    if (value_of(a.key, parts[0]).kind() != KeyType::number || value_of(a.key, parts[1]).kind() != KeyType::number)
-      throw InputError(opt, spec, "a range needs a number-valued key");
+    const SceneValue v0 = value_of(a.key, parts[0]), v1 = value_of(a.key, parts[1]);
+    if (v0.kind() != KeyType::number || v1.kind() != KeyType::number)
+      throw InputError(opt, spec, "a range is FROM:TO:N of numbers, for a number-valued key");
+    const double from = v0.number(), to = v1.number();
     require_finite(opt + " " + a.key + " FROM", from);
     require_finite(opt + " " + a.key + " TO", to);
     double nd = 0;

@@ -152,13 +152,28 @@ std::string sweep_identity(const Plan& plan, const Task& task, std::size_t shard
 
 void write_table(const std::filesystem::path& out, const Plan& plan, const Task& task,
                  const std::map<std::size_t, std::vector<std::string>>& rows, std::size_t shard_index,
-                 std::size_t shard_count) {
-  (void)shard_index;
-  (void)shard_count;
+                 std::size_t shard_count, const RunInfo& timings) {
   std::vector<std::vector<std::string>> ordered;
   ordered.reserve(rows.size());
-  for (const auto& [i, r] : rows) ordered.push_back(r);
-  write_csv_atomic(out, table_columns(plan, task), ordered, task.scene_name());
+  std::size_t failed = 0;
+  for (const auto& [i, r] : rows) {
+    ordered.push_back(r);
+    failed += row_failed(r) ? 1 : 0;
+  }
+  RunInfo run = {{"task", json_string(task.name())},
+                 {"plan_points", std::to_string(plan.size())},
+                 {"shard", json_string(std::to_string(shard_index) + "/" + std::to_string(shard_count))},
+                 {"rows", std::to_string(rows.size())},
+                 {"failed", std::to_string(failed)}};
+  run.insert(run.end(), timings.begin(), timings.end());
+  write_csv_atomic(out, table_columns(plan, task), ordered, task.scene_name(), run);
+}
+
+RunInfo sweep_timings(double wall_s, unsigned threads, int ranks, std::size_t resumed) {
+  return {{"wall_s", csv_number(wall_s)},
+          {"threads", std::to_string(threads)},
+          {"ranks", std::to_string(ranks)},
+          {"resumed", std::to_string(resumed)}};
 }
 
 std::size_t merge_tables(const std::vector<std::filesystem::path>& shards, const std::filesystem::path& out) {
@@ -194,16 +209,38 @@ std::size_t merge_tables(const std::vector<std::filesystem::path>& shards, const
                        "is in no shard: give every shard's table (a shard may also be unfinished)");
     ++expect;
   }
-  std::string text = header + "\n";
-  for (const auto& [i, l] : lines) text += l + "\n";
-  write_file_atomic(out, text);
-  // The sidecar: the shards' (their columns are the table's).
+  // The sidecar: the first shard's (their columns are the table's), its "run" line made the
+  // merged table's; the plan's size recorded there says whether trailing points are missing.
   const auto side = schema_path(shards.front());
+  std::string schema;
   std::error_code ec;
   if (std::filesystem::exists(side, ec)) {
     std::ifstream in(side);
-    write_file_atomic(schema_path(out), std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>()));
+    std::string line;
+    while (std::getline(in, line)) {
+      const auto at = line.find("\"run\": {");
+      if (at == std::string::npos) {
+        schema += line + "\n";
+        continue;
+      }
+      const auto pp = line.find("\"plan_points\": ");
+      if (pp != std::string::npos) {
+        const std::size_t n = std::stoull(line.substr(pp + 15));
+        if (n != lines.size())
+          throw InputError("--merge", std::to_string(lines.size()) + " points",
+                           "the plan has " + std::to_string(n) + ": give every shard's table");
+      }
+      const auto task = line.find("\"task\": ");
+      const std::string task_name = task == std::string::npos ? "\"\"" : line.substr(task + 8, line.find(',', task) - task - 8);
+      schema += line.substr(0, at) + "\"run\": {\"task\": " + task_name + ", \"plan_points\": " +
+                std::to_string(lines.size()) + ", \"shard\": \"merged from " + std::to_string(shards.size()) +
+                "\", \"rows\": " + std::to_string(lines.size()) + ", \"failed\": " + std::to_string(failed) + "},\n";
+    }
   }
+  std::string text = header + "\n";
+  for (const auto& [i, l] : lines) text += l + "\n";
+  write_file_atomic(out, text);
+  if (!schema.empty()) write_file_atomic(schema_path(out), schema);
   return failed;
 }
 
@@ -258,6 +295,7 @@ double cell_number(const std::string& cell) {
 }
 
 Result run_local(const Plan& plan, const Task& task, const Options& o) {
+  const auto start = std::chrono::steady_clock::now();
   if (o.shard_count == 0 || o.shard_index >= o.shard_count)
     throw InputError("--shard", std::to_string(o.shard_index) + "/" + std::to_string(o.shard_count),
                      "must be i/n with 0 <= i < n");
@@ -314,7 +352,9 @@ Result run_local(const Plan& plan, const Task& task, const Options& o) {
   res.done = rows.size();
   for (const auto& [i, r] : rows) res.failed += row_failed(r) ? 1 : 0;
   if (rows.size() < pts.size()) return res;  // stopped: the journal keeps what was done
-  write_table(o.out, plan, task, rows, o.shard_index, o.shard_count);
+  const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - start;
+  write_table(o.out, plan, task, rows, o.shard_index, o.shard_count,
+              sweep_timings(wall.count(), jobs, 1, res.resumed));
   journal.remove();
   res.complete = true;
   return res;

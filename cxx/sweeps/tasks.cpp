@@ -104,14 +104,15 @@ class RunTask final : public Task {
 
 struct Param {
   std::string key, unit, description;
-  double dflt;  ///< NaN: required (or optional, see the task)
+  double dflt;  ///< NaN: required (or optional, see the task); for a choice, the index of the default
+  std::vector<std::string> choices = {};  ///< a text parameter: its allowed values (stored as their index)
 };
 
 class ParamTask : public Task {
  public:
   ParamTask(std::vector<Param> params, const std::vector<SceneSetting>& fixed) : params_(std::move(params)) {
     for (const auto& p : params_) values_[p.key] = p.dflt;
-    for (const auto& [k, v] : fixed) values_[check(k, v)] = v.number();
+    for (const auto& [k, v] : fixed) values_[k] = value(k, v);
   }
   [[nodiscard]] Column input_column(const std::string& key) const override {
     for (const auto& p : params_)
@@ -119,6 +120,7 @@ class ParamTask : public Task {
         std::string name = key;
         for (char& ch : name)
           if (ch == '.') ch = '_';
+        if (!p.choices.empty()) return text_column(name, key + ": " + p.description);
         return {name, p.unit, key + ": " + p.description};
       }
     throw InputError(key, "(varied)", "not a parameter of --task " + name() + " (" + keys() + ")");
@@ -126,13 +128,14 @@ class ParamTask : public Task {
   [[nodiscard]] std::vector<std::string> evaluate(const std::vector<SceneSetting>& point,
                                                   std::size_t /*index*/) const override {
     auto v = values_;
-    for (const auto& [k, x] : point) v[check(k, x)] = x.number();
+    for (const auto& [k, x] : point) v[k] = value(k, x);
     return compute(v);
   }
+  void check_input(const std::string& key, const SceneValue& v) const override { (void)value(key, v); }
   [[nodiscard]] std::string identity() const override {
     std::ostringstream s;
     s << name();
-    for (const auto& [k, x] : values_) s << " " << k << "=" << fmt(x);
+    for (const auto& [k, x] : values_) s << " " << k << "=" << fmt(x);  // a choice by its index
     return s.str();
   }
 
@@ -166,12 +169,22 @@ class ParamTask : public Task {
   }
 
  private:
-  std::string check(const std::string& key, const SceneValue& v) const {
-    bool known = false;
-    for (const auto& p : params_) known = known || p.key == key;
-    if (!known) throw InputError(key, v.to_string(), "not a parameter of --task " + name() + " (" + keys() + ")");
-    if (v.kind() != KeyType::number) throw InputError(key, v.to_string(), "must be a number");
-    return key;
+  /// The value of parameter `key` (a choice: the index of its text), or InputError.
+  [[nodiscard]] double value(const std::string& key, const SceneValue& v) const {
+    for (const auto& p : params_) {
+      if (p.key != key) continue;
+      if (p.choices.empty()) {
+        if (v.kind() != KeyType::number) throw InputError(key, v.to_string(), "must be a number");
+        return v.number();
+      }
+      std::string allowed;
+      for (std::size_t i = 0; i < p.choices.size(); ++i) {
+        if (v.kind() == KeyType::string && v.to_string() == p.choices[i]) return static_cast<double>(i);
+        allowed += (i ? ", " : "") + p.choices[i];
+      }
+      throw InputError(key, v.to_string(), "must be one of: " + allowed);
+    }
+    throw InputError(key, v.to_string(), "not a parameter of --task " + name() + " (" + keys() + ")");
   }
   [[nodiscard]] std::string keys() const {
     std::string s;
@@ -218,7 +231,8 @@ class IcorTask final : public ParamTask {
             {"R_falvo", "m", "iCOR distance, Falvo et al. (eq 4.2)"},
             {"R_li", "m", "iCOR distance, Li et al. (eq 4.3)"},
             {"R_unknown_pressure", "m", "iCOR distance, unknown pressure distribution (eq 4.13)"},
-            {"R_constrained", "m", "iCOR of the constrained cubic (eq 5.4), Table 5.1's negative branch; empty if none"},
+            {"R_constrained_negative", "m", "negative root of the constrained cubic (eq 5.4): Table 5.1's branch; empty if none"},
+            {"R_constrained_positive", "m", "smallest positive root of the constrained cubic (eq 5.4); empty if none"},
             {"R_impulsive", "m", "impulsive iCOR (eq 5.5)"},
             {"F_min", "N", "minimum push force for known pressure (eq 4.8)"},
             {"R_known_pressure", "m", "iCOR for known pressure at push force `force` (eq 4.7); empty without force"},
@@ -230,20 +244,24 @@ class IcorTask final : public ParamTask {
   static std::vector<Param> params() {
     std::vector<Param> p = {{"yn", "m", "push point: distance from the centre of mass along the rod", kNaN},
                             {"mu", "1", "friction coefficient", 0.1},
-                            {"force", "N", "push force (for eq 4.7; optional)", kNaN}};
+                            {"force", "N", "push force (for eq 4.7; optional)", kNaN},
+                            {"cubic", "", "solver of the constrained cubic (eq 5.4): brent or eigen (companion eigenvalues)", 0.0,
+                             {"brent", "eigen"}}};
     for (auto& r : rod_params()) p.push_back(r);
     return p;
   }
   [[nodiscard]] std::vector<std::string> compute(const Values& v) const override {
     const icor::Rod rod = rod_of(v);
     const double L = rod.length, yn = need(v, "yn"), mu = need(v, "mu"), W = rod.load();
-    const auto sol = icor::solve_constrained_cubic(yn, L, rod.gyration_squared(), icor::CubicMethod::Brent);
+    const auto method = v.at("cubic") == 0.0 ? icor::CubicMethod::Brent : icor::CubicMethod::Eigen;
+    const auto sol = icor::solve_constrained_cubic(yn, L, rod.gyration_squared(), method);
     const double F = v.at("force"), R = icor::unknown_pressure(yn, L);
     return {cell(icor::experimental_fit(yn, L)),
             cell(icor::falvo(yn, L)),
             cell(icor::li(yn, L)),
             cell(R),
             cell(sol.negative ? *sol.negative : kNaN),
+            cell(sol.positive ? *sol.positive : kNaN),
             cell(icor::impulsive(yn, rod.gyration_squared())),
             cell(icor::minimum_force(mu, W, yn, L)),
             cell(std::isnan(F) ? kNaN : icor::known_pressure(mu, W, yn, F, L)),
@@ -314,6 +332,8 @@ std::unique_ptr<Task> make_task(const std::string& name, const std::vector<Scene
 Columns table_columns(const Plan& plan, const Task& task) {
   Columns c{count_column("point", "index of the point in the plan (0-based; the table's order)")};
   for (const auto& k : plan.keys) c.push_back(task.input_column(k));
+  for (const auto& point : plan.points)
+    for (std::size_t j = 0; j < point.size() && j < plan.keys.size(); ++j) task.check_input(plan.keys[j], point[j]);
   for (auto& o : task.outputs()) c.push_back(o);
   c.push_back(text_column("status", "ok, bad_input (a value the model refuses), solver_failure or error"));
   c.push_back(text_column("message", "why the point failed; empty when ok"));

@@ -25,12 +25,23 @@ shards)  # two shards merged equal one run
   "$np" sweep --merge s1.csv s0.csv --out merged.csv --quiet
   cmp all.csv merged.csv || fail "merged shards differ from one run"
   [ "$(status "$np" sweep --merge s0.csv --out part.csv --quiet 2> err.txt)" = 2 ] || fail "a missing shard must be an error"
-  grep -q "point 1: is in no shard" err.txt || fail "message: $(cat err.txt)" ;;
+  grep -q "point 1: is in no shard" err.txt || fail "message: $(cat err.txt)"
+  grep -q '"shard": "merged from 2", "rows": 20' merged.schema.json || fail "merged sidecar: $(grep '"run"' merged.schema.json)"
+  # Missing trailing points leave no gap: the plan's size in the sidecar finds them.
+  three=(fig3_18 --vary surface.mu=0.05,0.06,0.07 --quiet)
+  for i in 0 1 2; do "$np" sweep "${three[@]}" --shard $i/3 --out t$i.csv; done
+  [ "$(status "$np" sweep --merge t0.csv t1.csv --out t01.csv --quiet 2> err.txt)" = 2 ] || fail "a missing last shard must be an error"
+  grep -q "the plan has 3" err.txt || fail "message: $(cat err.txt)"
+  [ ! -e t01.csv ] || fail "a refused merge left a table" ;;
 mpi)  # two MPI ranks write the same table as one process
   "$np" sweep "${grid[@]}" --out serial.csv
   $mpiexec --oversubscribe -np 2 "$np" sweep "${grid[@]}" --out mpi.csv
   cmp serial.csv mpi.csv || fail "MPI table differs"
-  [ ! -e mpi.csv.journal ] || fail "journal left" ;;
+  [ ! -e mpi.csv.journal ] || fail "journal left"
+  grep -q '"ranks": 2' mpi.schema.json || fail "sidecar: $(grep '"run"' mpi.schema.json)"
+  # Ranks of two threads each (rank 1 then feeds threads instead of working on its main thread).
+  $mpiexec --oversubscribe -np 2 "$np" sweep "${grid[@]}" --jobs 2 --out mpi2.csv
+  cmp serial.csv mpi2.csv || fail "MPI table with 2 threads per rank differs" ;;
 resume)  # killed with SIGKILL mid-way, then resumed: the same table as an uninterrupted run
   big=(fig3_18 --set surface.law=coulomb --vary surface.mu=0.02:0.2:20 --vary push.yn=0:45e-9:20 --quiet --jobs 1)
   set +e; "$np" sweep "${big[@]}" --out full.csv; set -e
@@ -76,7 +87,16 @@ tasks)  # sweeps of closed-form evaluations
   "$np" sweep --task estimate-mu --set force=2e-6 --set sigma_force=1e-7 --vary yn=10e-9,50e-9 --out mu.csv --quiet
   grep -q '^0,1e-08,force,' mu.csv || fail "estimate-mu row: $(cat mu.csv)"
   [ "$(status "$np" sweep --task friction --vary Q=1,2 --out bad.csv --quiet 2> err.txt)" = 2 ] || fail "bad key accepted"
-  grep -q "Q = (varied): not a parameter of --task friction" err.txt || fail "message: $(cat err.txt)" ;;
+  grep -q "Q = (varied): not a parameter of --task friction" err.txt || fail "message: $(cat err.txt)"
+  grep -q '"run": {"task": "icor", "plan_points": 3, "shard": "0/1", "rows": 3, "failed": 0, "wall_s": ' ic.schema.json \
+    || fail "sidecar run: $(grep '"run"' ic.schema.json)"
+  "$np" sweep --task icor --vary yn=0:100e-9:3 --set cubic=eigen --out ice.csv --quiet
+  head -1 ice.csv | grep -q ',R_constrained_negative,R_constrained_positive,' || fail "icor header $(head -1 ice.csv)"
+  [ "$(status "$np" sweep --task icor --vary yn=0,1e-8 --set cubic=lapack --out bad.csv --quiet 2> err.txt)" = 2 ] || fail "bad choice accepted"
+  grep -q "cubic = lapack: must be one of: brent, eigen" err.txt || fail "message: $(cat err.txt)"
+  [ "$(status "$np" sweep --task friction --vary R=1e-8,abc --out bad.csv --quiet 2> err.txt)" = 2 ] || fail "a word for a number accepted"
+  grep -q "R = abc: must be a number" err.txt || fail "message: $(cat err.txt)"
+  [ ! -e bad.csv ] || fail "a refused sweep left a table" ;;
 *) fail "unknown mode $mode" ;;
 esac
 echo "sweep check $mode: ok"

@@ -57,6 +57,12 @@ class Task {
   /// The column a varied key gets (unit and meaning); throws InputError for a key the task
   /// does not take.
   [[nodiscard]] virtual Column input_column(const std::string& key) const = 0;
+  /// Throws InputError for a value of a varied key the task cannot take at all (a word for a
+  /// number, a choice not allowed), so such a plan fails before any work.
+  virtual void check_input(const std::string& key, const SceneValue& value) const {
+    (void)key;
+    (void)value;
+  }
   /// The output cells at a point (csv_number, "" for missing). Throws InputError (bad input)
   /// or SolverError (the integrator gave up) for a point that fails.
   [[nodiscard]] virtual std::vector<std::string> evaluate(const std::vector<SceneSetting>& point,
@@ -82,7 +88,8 @@ std::unique_ptr<Task> make_estimate_mu_task(const std::vector<SceneSetting>& fix
 /// The task named (run needs a scene: use make_run_task).
 std::unique_ptr<Task> make_task(const std::string& name, const std::vector<SceneSetting>& fixed);
 
-/// The table's columns: point, the varied keys, the task's outputs, status, message.
+/// The table's columns: point, the varied keys, the task's outputs, status, message. Checks
+/// every varied key and value with the task (InputError before any work).
 Columns table_columns(const Plan& plan, const Task& task);
 /// The row of point i: its inputs, outputs and status (ok | bad_input | solver_failure |
 /// error) with the message; never throws for a failing point.
@@ -161,11 +168,16 @@ std::size_t column_index(const Plan& plan, const Task& task, const std::string& 
 /// text): "" (missing) is NaN; text that is not a whole number throws InputError.
 double cell_number(const std::string& cell);
 
-/// Write the table of `rows` (point index -> row), ordered, with its sidecar. `total` is the
-/// plan's size (recorded in the sidecar with the shard, so --merge can check coverage).
+/// Write the table of `rows` (point index -> row), ordered, with its sidecar. The sidecar's
+/// "run" object records the plan's size, the shard, the rows and failed rows, then `timings`
+/// (the caller's: wall time, threads, ranks, rows resumed).
 void write_table(const std::filesystem::path& out, const Plan& plan, const Task& task,
                  const std::map<std::size_t, std::vector<std::string>>& rows, std::size_t shard_index,
-                 std::size_t shard_count);
+                 std::size_t shard_count, const RunInfo& timings = {});
+
+/// The sidecar's timings of a sweep: `wall_s` [s] from the start of this invocation to the
+/// table, the threads per process, the MPI ranks, the rows taken from the journal.
+RunInfo sweep_timings(double wall_s, unsigned threads, int ranks, std::size_t resumed);
 
 /// Join shard tables into the table of the whole plan (the same bytes as one run): checks the
 /// headers agree and that every point appears exactly once. Returns the failed-row count.
