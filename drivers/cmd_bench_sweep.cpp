@@ -154,12 +154,22 @@ int spawn_and_wait(const std::vector<std::string>& argv, const std::vector<std::
   return 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
 }
 
+/// The sweep's own wall time, as its sidecar records it ("run": {"wall_s": ...}).
+double sidecar_wall(const fs::path& table) {
+  const std::string j = read_file(schema_path(table));
+  const auto at = j.find("\"wall_s\": ");
+  if (at == std::string::npos)
+    throw std::runtime_error("bench-sweep: no run.wall_s in " + schema_path(table).string());
+  return std::strtod(j.c_str() + at + 10, nullptr);
+}
+
 /// One measured configuration.
 struct Config {
   std::string mode;  ///< direct | threads | mpi
   unsigned threads = 1, ranks = 1;
   std::vector<double> walls;  ///< one per repeat (direct: the sum of the points' own times)
   std::vector<double> launches;  ///< mpi: mpirun -np RANKS nanopush --version, one per repeat
+  std::vector<double> mpirun_walls;  ///< mpi: mpirun from launch to exit, one per repeat
   std::vector<double> cpus;      ///< CPU time of the run (all threads and processes), one per repeat
   double load1 = std::numeric_limits<double>::quiet_NaN();
   [[nodiscard]] unsigned workers() const { return threads * ranks; }
@@ -327,7 +337,7 @@ int bench_sweep(const BenchSweepOptions& o) {
         const double c0 = cpu_seconds();
         const auto t0 = Clock::now();
         const int rc = spawn_and_wait(argv, env, log);
-        wall = seconds_since(t0);
+        c.mpirun_walls.push_back(seconds_since(t0));
         // Not recorded: Open MPI's ranks are reaped by its launcher daemon, not always by mpirun,
         // so this process's RUSAGE_CHILDREN misses them.
         cpu = nan_cpu;
@@ -343,6 +353,10 @@ int bench_sweep(const BenchSweepOptions& o) {
         }
         check_same(read_file(table), std::to_string(c.ranks) + " MPI ranks (repeat " + std::to_string(r + 1) + ")",
                    table);
+        // The sweep's own time (rank 0, MPI_Init to the table), like the threads' run_local:
+        // without the process launch and without mpirun's ending of the job, which takes ~2 s
+        // whenever a rank exits non-zero (here: 64 + the failed points).
+        wall = sidecar_wall(table);
       }
       c.walls.push_back(wall);
       c.cpus.push_back(cpu);
@@ -392,13 +406,16 @@ int bench_sweep(const BenchSweepOptions& o) {
   // ---- the CSV (and its sidecar)
   const Columns cols = {
       text_column("mode", "threads: sweep::run_local in this process; mpi: mpirun -np RANKS nanopush sweep --jobs 1 "
-                          "(launch included); direct: the points alone, sweep::evaluate_row on one thread"),
+                          "(the sweep's own time from its sidecar); direct: the points alone, sweep::evaluate_row "
+                          "on one thread"),
       count_column("threads", "threads per process"),
       count_column("ranks", "MPI ranks (1 for one process)"),
       count_column("workers", "threads x ranks"),
       count_column("points", "points of the grid"),
       count_column("repeats", "timed runs of the configuration"),
-      {"wall_s", "s", "median wall time of a run (direct: median sum of the points' own evaluation times)"},
+      {"wall_s", "s",
+       "median wall time of a run: threads, run_local in this process; mpi, rank 0 from MPI_Init to the table "
+       "(sidecar run.wall_s); direct, the sum of the points' own evaluation times"},
       {"wall_min_s", "s", "fastest run"},
       {"wall_max_s", "s", "slowest run"},
       {"points_per_s", "1/s", "points / wall_s"},
@@ -410,6 +427,7 @@ int bench_sweep(const BenchSweepOptions& o) {
        "median CPU time (user + system) of a run, every thread; cpu_s / wall_s is the share of the cores the run "
        "got; empty for mpi (the ranks' CPU time is not visible to the driver)"},
       {"launch_s", "s", "mpi rows only: median wall time of mpirun -np RANKS nanopush --version (the launch alone)"},
+      {"mpirun_wall_s", "s", "mpi rows only: median wall time of mpirun from launch to exit (the job as a user waits for it)"},
       {"load_1min", "1", "host 1-minute load average (/proc/loadavg) after the configuration's last run"},
   };
   std::vector<std::vector<std::string>> rows;
@@ -429,7 +447,8 @@ int bench_sweep(const BenchSweepOptions& o) {
                     csv_number(*std::max_element(c->walls.begin(), c->walls.end())), csv_number(p), csv_number(eff),
                     csv_number(c->mode == "direct" ? overhead : nan),
                     csv_number(c->mode == "direct" ? overhead_cpu : nan), csv_number(median(c->cpus)),
-                    csv_number(c->launches.empty() ? nan : median(c->launches)), csv_number(c->load1)});
+                    csv_number(c->launches.empty() ? nan : median(c->launches)),
+                    csv_number(c->mpirun_walls.empty() ? nan : median(c->mpirun_walls)), csv_number(c->load1)});
   }
   const fs::path csv = out_dir / "sweep_bench.csv";
   write_csv_atomic(csv, cols, rows, kScene);
@@ -462,7 +481,7 @@ int bench_sweep(const BenchSweepOptions& o) {
     if (m1)
       b << "     " << f
         << " skip 1 using (strcol(1) eq 'mpi' ? $4 : 1/0):($5/$7):($5/$9):($5/$8) with yerrorlines lw 2 pt 5 "
-           "title 'MPI ranks (mpirun, launch included)', \\\n";
+           "title 'MPI ranks (mpirun -np R, one thread each)', \\\n";
     b << "     P1*x with lines dt 2 lw 1.5 lc rgb 'black' title 'ideal: workers x 1-thread rate'\n";
     plot::render_script(b.str(), png, 900, 600);
   }
@@ -481,8 +500,8 @@ int bench_sweep(const BenchSweepOptions& o) {
     md << " The host was busy (load above its core count): the times and efficiencies understate an idle machine.";
   md << "\n\n"
      << "| mode | threads | ranks | wall (s, median) | min–max (s) | points/s | efficiency | CPU (s) | cores used | "
-        "mpirun launch (s) | load (1 min) |\n"
-     << "|---|---|---|---|---|---|---|---|---|---|---|\n";
+        "mpirun launch (s) | mpirun to exit (s) | load (1 min) |\n"
+     << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const Config* c : order) {
     const double p = pps(c);
     double eff = nan;
@@ -493,12 +512,15 @@ int bench_sweep(const BenchSweepOptions& o) {
        << fixed(*std::max_element(c->walls.begin(), c->walls.end()), 3) << " | " << fixed(p, 1) << " | "
        << (c->mode == "direct" ? std::string("–") : fixed(eff, 3)) << " | " << fixed(median(c->cpus), 3) << " | "
        << fixed(median(c->cpus) / median(c->walls), 2) << " | "
-       << (c->launches.empty() ? std::string("–") : fixed(median(c->launches), 3)) << " | " << fixed(c->load1, 2)
+       << (c->launches.empty() ? std::string("–") : fixed(median(c->launches), 3)) << " | "
+       << (c->mpirun_walls.empty() ? std::string("–") : fixed(median(c->mpirun_walls), 3)) << " | " << fixed(c->load1, 2)
        << " |\n";
   }
   md << "\n`direct` is the sum of the points' own evaluation times (`sweep::evaluate_row` on one thread, "
-        "no queue, journal or table); `mpi` times `mpirun` from launch to exit (the launch alone, `mpirun -np R "
-        "nanopush --version`, in its own column). CPU is the run's CPU time (every thread; not measured for MPI, whose ranks the launcher reaps); cores used = "
+        "no queue, journal or table); `mpi` is the sweep's own time as rank 0 records it in the table's sidecar "
+        "(MPI_Init to the table written), as `threads` is `run_local`'s; the launch alone (`mpirun -np R nanopush "
+        "--version`) and `mpirun` from launch to exit are in their own columns (mpirun takes ~2 s to end a job "
+        "whose rank exits non-zero, as a sweep with failed points does). CPU is the run's CPU time (every thread; not measured for MPI, whose ranks the launcher reaps); cores used = "
         "CPU / wall, at most the worker count: below it, the host gave the run less than a core per worker.\n\n"
      << "| target | measured | |\n|---|---|---|\n"
      << "| sweep overhead (1 thread) <= " << fixed(100 * kOverheadTarget, 0) << " % | " << fixed(100 * overhead, 2)

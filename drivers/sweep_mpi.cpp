@@ -6,7 +6,9 @@
 #include <cstdlib>
 #include <deque>
 #include <iostream>
+#include <optional>
 #include <set>
+#include <string>
 #include <thread>
 
 #include "nanopush/numerics/error.hpp"
@@ -37,12 +39,17 @@ int run_mpi_sweep(const sweep::Plan&, const sweep::Task&, const sweep::Options&,
 
 namespace {
 
-enum Tag : int { kRequest = 1, kWork = 2, kRow = 3 };
+/// Worker rank -> rank 0: kRequest (int: points wanted; 0 when stopping), kRow (a finished
+/// row), kDone (after its last row: nothing more will come). Rank 0 -> worker: kWork (the
+/// point indices; none: no more work). Messages between two ranks arrive in order, so every
+/// row of a rank is received before its kDone.
+enum Tag : int { kRequest = 1, kWork = 2, kRow = 3, kDone = 4 };
 
 /// Threads of one rank: take indices from `queue`, put finished rows into `outbox`.
 struct LocalWork {
   std::mutex m;
-  std::condition_variable cv;
+  std::condition_variable cv;       // to the threads: work was added, or no more will be
+  std::condition_variable done_cv;  // to the rank's main thread: a row is in the outbox
   std::deque<std::size_t> queue;
   std::vector<std::pair<std::size_t, std::vector<std::string>>> outbox;
   bool no_more = false;  // no index will be added any more
@@ -68,10 +75,30 @@ void worker(LocalWork& w, const sweep::Plan& plan, const sweep::Task& task, cons
       std::lock_guard<std::mutex> lock(w.m);
       if (!w.failure) w.failure = std::current_exception();
     }
-    std::lock_guard<std::mutex> lock(w.m);
-    --w.busy;
-    if (!row.empty()) w.outbox.emplace_back(i, std::move(row));
+    {
+      std::lock_guard<std::mutex> lock(w.m);
+      --w.busy;
+      if (!row.empty()) w.outbox.emplace_back(i, std::move(row));
+    }
+    w.done_cv.notify_one();
   }
+}
+
+/// How long the main thread of a rank sleeps between looks at MPI when no local row wakes it.
+/// Its own core is shared with a worker thread (Open MPI binds a rank to a core), so it must
+/// not spin: blocking MPI calls busy-poll, and a short poll interval steals the worker's time.
+constexpr auto kPoll = std::chrono::milliseconds(1);
+
+/// Points a worker rank holds per thread (running and queued), asked for before its threads
+/// run dry: a rank 0 that answers within kPoll then never leaves them idle, and at the end
+/// at most kAhead - 1 points per thread wait behind a slow one. Measured on the benchmark's
+/// grid (docs/sweeps.md): 2 and 4 within noise at kPoll = 1 ms, 5 ms starves the threads.
+constexpr int kAhead = 4;
+
+/// Sleep until a local row is ready or kPoll passes.
+void wait_for_rows(LocalWork& w) {
+  std::unique_lock<std::mutex> lock(w.m);
+  w.done_cv.wait_for(lock, kPoll, [&] { return !w.outbox.empty() || w.failure; });
 }
 
 unsigned threads_per_rank(unsigned asked) {
@@ -86,9 +113,78 @@ void send_row(std::size_t i, const std::vector<std::string>& row) {
   MPI_Send(msg.data(), static_cast<int>(msg.size()), MPI_CHAR, 0, kRow, MPI_COMM_WORLD);
 }
 
+/// Open MPI on one node: its shared-memory path (pml ob1 with btl vader) starts in ~0.03 s where
+/// the UCX pml that Debian's Open MPI prefers takes ~0.2 s per launch (measured with
+/// `mpirun -np 2` on a 2-core host), a tenth of a 1,000-point sweep. So when every rank runs
+/// on this node and the user chose no pml (OMPI_MCA_pml or `--mca pml`, which mpirun passes as
+/// OMPI_MCA_pml), choose ob1. Every rank sees the same variables and decides alike. Across
+/// nodes nothing is changed: there UCX is the fast transport.
+void prefer_shared_memory_on_one_node() {
+  const char* size = std::getenv("OMPI_COMM_WORLD_SIZE");
+  const char* local = std::getenv("OMPI_COMM_WORLD_LOCAL_SIZE");
+  if (!size || !local || std::string(size) != local) return;
+  if (std::getenv("OMPI_MCA_pml")) return;
+  ::setenv("OMPI_MCA_pml", "ob1", 0);
+}
+
+/// The answer to a request sent to rank 0: the point indices (none: no more work), or nothing
+/// yet. With `wait`, sleeps in short steps until it comes (never a blocking MPI call, which
+/// would spin on a core another rank may need).
+std::optional<std::vector<long long>> work_reply(bool wait) {
+  for (;;) {
+    int flag = 0;
+    MPI_Status st;
+    MPI_Iprobe(0, kWork, MPI_COMM_WORLD, &flag, &st);
+    if (flag) {
+      int n = 0;
+      MPI_Get_count(&st, MPI_LONG_LONG, &n);
+      std::vector<long long> got(static_cast<std::size_t>(n));
+      MPI_Recv(got.data(), n, MPI_LONG_LONG, 0, kWork, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+      return got;
+    }
+    if (!wait) return std::nullopt;
+    std::this_thread::sleep_for(std::chrono::microseconds(100));
+  }
+}
+
+/// A worker rank of one thread: the main thread evaluates the points itself and talks to rank 0
+/// between them (its next points asked for ahead), so no second thread shares its core.
+void serve_on_main_thread(const sweep::Plan& plan, const sweep::Task& task, const std::atomic<bool>* stop) {
+  std::deque<std::size_t> queue;
+  bool finished = false, asked = false;
+  for (;;) {
+    const bool stopping = stop && stop->load();
+    if (stopping) queue.clear();  // not started: a resumed sweep computes them
+    if (!finished && !asked) {
+      const int want = stopping ? 0 : kAhead - static_cast<int>(queue.size());
+      if (want > 0 || stopping) {
+        MPI_Send(&want, 1, MPI_INT, 0, kRequest, MPI_COMM_WORLD);
+        asked = true;
+      }
+    }
+    if (asked) {
+      if (auto got = work_reply(queue.empty())) {
+        asked = false;
+        if (got->empty()) finished = true;
+        for (long long i : *got) queue.push_back(static_cast<std::size_t>(i));
+      }
+    }
+    if (queue.empty()) {
+      if (finished) break;
+      continue;
+    }
+    const std::size_t i = queue.front();
+    queue.pop_front();
+    send_row(i, sweep::evaluate_row(plan, task, i));
+  }
+  MPI_Send(nullptr, 0, MPI_INT, 0, kDone, MPI_COMM_WORLD);
+}
+
 }  // namespace
 
 int run_mpi_sweep(const sweep::Plan& plan, const sweep::Task& task, const sweep::Options& o, bool quiet) {
+  const auto start = std::chrono::steady_clock::now();
+  prefer_shared_memory_on_one_node();
   int provided = 0;
   MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
   int rank = 0, size = 1;
@@ -115,7 +211,7 @@ int run_mpi_sweep(const sweep::Plan& plan, const sweep::Task& task, const sweep:
     const std::size_t resumed = rows.size();
     // Rank 0's own threads draw from the same pending list, a few at a time.
     for (unsigned t = 0; t < jobs; ++t) threads.emplace_back(worker, std::ref(w), std::cref(plan), std::cref(task), o.stop);
-    int done_ranks = 0;  // workers told there is no more work
+    int done_ranks = 0;  // worker ranks that sent kDone (all their rows are in)
     auto last = std::chrono::steady_clock::now();
     while (true) {
       const bool stopping = o.stop && o.stop->load();
@@ -146,7 +242,6 @@ int run_mpi_sweep(const sweep::Plan& plan, const sweep::Task& task, const sweep:
             give.push_back(static_cast<long long>(pending.front()));
             pending.pop_front();
           }
-          if (give.empty()) ++done_ranks;  // an empty answer: no more work for that rank
           MPI_Send(give.data(), static_cast<int>(give.size()), MPI_LONG_LONG, st.MPI_SOURCE, kWork, MPI_COMM_WORLD);
         } else if (st.MPI_TAG == kRow) {
           int len = 0;
@@ -158,6 +253,9 @@ int run_mpi_sweep(const sweep::Plan& plan, const sweep::Task& task, const sweep:
           auto row = sweep::split_cells(msg.substr(nl + 1));
           journal.append(i, row);
           rows[i] = std::move(row);
+        } else if (st.MPI_TAG == kDone) {
+          MPI_Recv(nullptr, 0, MPI_INT, st.MPI_SOURCE, kDone, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+          ++done_ranks;
         }
         continue;
       }
@@ -171,7 +269,7 @@ int run_mpi_sweep(const sweep::Plan& plan, const sweep::Task& task, const sweep:
         last = std::chrono::steady_clock::now();
         o.progress(rows.size(), pts.size());
       }
-      std::this_thread::sleep_for(std::chrono::microseconds(200));
+      wait_for_rows(w);
     }
     {
       std::lock_guard<std::mutex> lock(w.m);
@@ -186,17 +284,22 @@ int run_mpi_sweep(const sweep::Plan& plan, const sweep::Task& task, const sweep:
                 << journal.path().string() << "; run the same command again to resume\n";
       status = 130;
     } else {
-      sweep::write_table(o.out, plan, task, rows, o.shard_index, o.shard_count);
+      const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - start;
+      sweep::write_table(o.out, plan, task, rows, o.shard_index, o.shard_count,
+                         sweep::sweep_timings(wall.count(), jobs, size, resumed));
       journal.remove();
       if (!quiet)
         std::cerr << "sweep: " << pts.size() << " points (" << resumed << " from the journal) over " << size
                   << " MPI ranks x " << jobs << " threads, " << failed << " failed: " << o.out.string() << "\n";
       status = failed ? 64 + static_cast<int>(std::min<std::size_t>(failed, 63)) : 0;
     }
+  } else if (jobs == 1) {
+    serve_on_main_thread(plan, task, o.stop);
   } else {
-    // A worker rank: keep its threads supplied, send rows back as they finish.
+    // A worker rank: keep its threads supplied (kAhead points per thread, asked for before
+    // the threads run dry, one request in flight), send rows back as they finish.
     for (unsigned t = 0; t < jobs; ++t) threads.emplace_back(worker, std::ref(w), std::cref(plan), std::cref(task), o.stop);
-    bool finished = false;
+    bool finished = false, asked = false;
     while (true) {
       const bool stopping = o.stop && o.stop->load();
       std::vector<std::pair<std::size_t, std::vector<std::string>>> out;
@@ -205,33 +308,44 @@ int run_mpi_sweep(const sweep::Plan& plan, const sweep::Task& task, const sweep:
         std::lock_guard<std::mutex> lock(w.m);
         out.swap(w.outbox);
         if (w.failure) std::rethrow_exception(w.failure);
-        want = static_cast<int>(jobs) - static_cast<int>(w.queue.size()) - static_cast<int>(w.busy);
+        if (stopping) w.queue.clear();  // not started: a resumed sweep computes them
+        want = kAhead * static_cast<int>(jobs) - static_cast<int>(w.queue.size()) - static_cast<int>(w.busy);
       }
       for (const auto& [i, r] : out) send_row(i, r);
-      if (!finished && (want > 0 || stopping)) {
+      if (!finished && !asked && (want > 0 || stopping)) {
         if (stopping) want = 0;
         MPI_Send(&want, 1, MPI_INT, 0, kRequest, MPI_COMM_WORLD);
+        asked = true;
+      }
+      if (asked) {
+        int flag = 0;
         MPI_Status st;
-        MPI_Probe(0, kWork, MPI_COMM_WORLD, &st);
-        int n = 0;
-        MPI_Get_count(&st, MPI_LONG_LONG, &n);
-        std::vector<long long> got(static_cast<std::size_t>(n));
-        MPI_Recv(got.data(), n, MPI_LONG_LONG, 0, kWork, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-        std::lock_guard<std::mutex> lock(w.m);
-        if (n == 0) {
-          finished = true;
-          w.no_more = true;
+        MPI_Iprobe(0, kWork, MPI_COMM_WORLD, &flag, &st);
+        if (flag) {
+          int n = 0;
+          MPI_Get_count(&st, MPI_LONG_LONG, &n);
+          std::vector<long long> got(static_cast<std::size_t>(n));
+          MPI_Recv(got.data(), n, MPI_LONG_LONG, 0, kWork, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+          asked = false;
+          {
+            std::lock_guard<std::mutex> lock(w.m);
+            if (n == 0) {
+              finished = true;
+              w.no_more = true;
+            }
+            for (long long i : got) w.queue.push_back(static_cast<std::size_t>(i));
+          }
+          w.cv.notify_all();
+          continue;
         }
-        for (long long i : got) w.queue.push_back(static_cast<std::size_t>(i));
-        w.cv.notify_all();
-        continue;
       }
       {
         std::lock_guard<std::mutex> lock(w.m);
         if (finished && w.queue.empty() && w.busy == 0 && w.outbox.empty()) break;
       }
-      std::this_thread::sleep_for(std::chrono::microseconds(200));
+      wait_for_rows(w);
     }
+    MPI_Send(nullptr, 0, MPI_INT, 0, kDone, MPI_COMM_WORLD);
     w.cv.notify_all();
     for (auto& t : threads) t.join();
   }
