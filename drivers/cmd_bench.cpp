@@ -16,6 +16,7 @@
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/outputs/io.hpp"
 #include "nanopush/outputs/plot.hpp"
+#include "cli_checks.hpp"
 #include "registry.hpp"
 #include "scene_args.hpp"
 
@@ -562,18 +563,24 @@ RegisterCommand reg{
                       "scalar of the C++ BS, repeatable: double (53-bit), long (x87 64-bit), quad (__float128, "
                       "113-bit); default double")
            ->check(CLI::IsMember({"double", "long", "quad"}));
-       app.add_option("--kmin", o->kmin, "first k of rtol = 10^(-k/2)")->capture_default_str();
-       app.add_option("--kmax", o->kmax, "last k in double precision (28: rtol 1e-14; each engine stops at its tightest meaningful rtol: C++ BS 1e-14, others 1e-13)")->capture_default_str();
+       app.add_option("--kmin", o->kmin, "first k of rtol = 10^(-k/2)")->check(count(0, 64))->capture_default_str();
+       app.add_option("--kmax", o->kmax, "last k in double precision (28: rtol 1e-14; each engine stops at its tightest meaningful rtol: C++ BS 1e-14, others 1e-13)")->check(count(0, 64))->capture_default_str();
        app.add_option("--kmax-extended", o->kmax_extended, "last k in long/quad precision (56: rtol 1e-28)")
+           ->check(count(0, 64))
            ->capture_default_str();
-       app.add_option("--kstep", o->kstep, "step in k")->capture_default_str();
+       app.add_option("--kstep", o->kstep, "step in k")->check(count(1, 64))->capture_default_str();
        app.add_option("--kstep-extended", o->kstep_extended, "step in k for long/quad engines (0 = --kstep)")
+           ->check(count(0, 64))
            ->capture_default_str();
-       app.add_option("--repeats", o->repeats, "timed solves per point; the median is reported")->capture_default_str();
+       app.add_option("--repeats", o->repeats, "timed solves per point; the median is reported")
+           ->check(count(1, 1000))
+           ->capture_default_str();
        app.add_option("--repeats-extended", o->repeats_extended,
                       "timed solves per point for long/quad engines (0 = --repeats)")
+           ->check(count(0, 1000))
            ->capture_default_str();
-       app.add_option("--samples", o->samples, "override the scene's number of output times (>= 2)");
+       app.add_option("--samples", o->samples, "override the scene's number of output times (0: the scene's)")
+           ->check(count(0, 10000000));
        app.add_flag("--quick", o->quick, "k step 6 and one repeat (seconds)");
        app.add_flag("--quiet", o->quiet, "no per-row progress on standard error");
        app.add_flag("--replay", o->replay,
@@ -583,7 +590,7 @@ RegisterCommand reg{
        app.add_option("--rhs-budget", o->rhs_budget,
                       "stick-slip scenes: RHS evaluations allowed per solve to the engines without event location "
                       "(0 = only their step budgets)")
-           ->check(CLI::NonNegativeNumber)
+           ->check(count(0, 1000000000000))
            ->capture_default_str();
        return [o] { return bench_cmd(*o); };
      }}};

@@ -28,6 +28,7 @@
 #include "nanopush/outputs/io.hpp"
 #include "nanopush/outputs/plot.hpp"
 #include "nanopush/sweeps/sweep.hpp"
+#include "cli_checks.hpp"
 #include "registry.hpp"
 #include "scene_args.hpp"
 
@@ -564,12 +565,12 @@ RegisterCommand reg{
                       "output directory: sweep_bench.csv (+ .schema.json), sweep_bench.png (+ .gp), report.md")
            ->capture_default_str();
        app.add_option("--repeats", o->repeats, "timed runs per configuration; the median wall time (s) is reported")
-           ->check(CLI::Range(1, 100))
+           ->check(count(1, 100))
            ->capture_default_str();
        app.add_option("--points-per-axis", o->per_axis,
                       "values per axis K (K^3 points): surface.mu 0.02-0.2 (1), push.yn 0-45e-9 m, push.direction "
                       "0-0.5 rad")
-           ->check(CLI::Range(2, 40))
+           ->check(count(2, 40))
            ->capture_default_str();
        app.add_flag("--no-mpi", o->no_mpi, "skip the MPI configurations (mpirun -np 1 and 2)");
        app.add_flag("--no-plot", o->no_plot, "no PNG (the CSV and report only)");

@@ -20,6 +20,7 @@
 #include "nanopush/outputs/io.hpp"
 #include "nanopush/outputs/plot.hpp"
 #include "nanopush/sweeps/sweep.hpp"
+#include "cli_checks.hpp"
 #include "registry.hpp"
 
 namespace nanopush::cli {
@@ -248,6 +249,8 @@ RegisterCommand reg{{"friction",
                            ->capture_default_str();
                        app.add_option("--sense", o->sense,
                                       "+1 counter-clockwise rotation (omega > 0), -1 clockwise")
+                           ->check(count(-1, 1))
+                           ->check(CLI::Validator([](std::string& s) { return s == "0" ? std::string("0: must be 1 or -1") : std::string(); }, ""))
                            ->capture_default_str();
                        app.add_option("--engine", o->engine, "cxx (C++) or f77 (FORTRAN 77 RECTFR)")
                            ->check(CLI::IsMember({"cxx", "f77"}))

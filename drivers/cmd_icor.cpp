@@ -19,6 +19,7 @@
 #include "nanopush/models/icor_dynamic.hpp"
 #include "nanopush/outputs/io.hpp"
 #include "nanopush/outputs/plot.hpp"
+#include "cli_checks.hpp"
 #include "registry.hpp"
 #include "icor_common.hpp"
 
@@ -143,7 +144,7 @@ struct MuOptions {
 
 int run_estimate_mu(const MuOptions& o) {
   o.rod.validate();
-  if (o.force < 0.0) throw InputError("--force", "(missing)", "the measured push force is required (N)");
+  if (!(o.force > 0.0)) throw InputError("--force", fmt(o.force), "the measured push force must be > 0 (N)");
   if (o.yn.has_value() == o.icor_R.has_value())
     throw InputError("--yn/--icor", o.yn ? "both given" : "neither given",
                      "give exactly one: --yn (push point, Fig 4.4) or --icor (observed iCOR distance, Fig 4.5)");
@@ -333,7 +334,7 @@ RegisterCommand reg{{"icor",
                        add_rod_options(*f, fo->rod);
                        f->add_option("--yn-min", fo->yn_min, "first push distance from the CM [m]")->capture_default_str();
                        f->add_option("--yn-max", fo->yn_max, "last push distance [m] (default b = L/2)");
-                       f->add_option("--n", fo->n, "number of push points")->capture_default_str();
+                       f->add_option("--n", fo->n, "number of push points")->check(count(1, kMaxCount))->capture_default_str();
                        f->add_option("--mu", fo->mu, "friction coefficient for 4.7, 4.8, 4.10, 5.2 [-]")->capture_default_str();
                        f->add_option("--force-ratio", fo->force_ratio, "push force for eq 4.7 as F/(mu W) [-]")
                            ->capture_default_str();
@@ -345,7 +346,7 @@ RegisterCommand reg{{"icor",
                        auto ro = std::make_shared<RootsOptions>();
                        add_rod_options(*r, ro->rod);
                        r->add_option("--yn", ro->yn, "push distances from the CM [m] (one or more)");
-                       r->add_option("--n", ro->n, "also sweep this many push points from --yn-min to --yn-max");
+                       r->add_option("--n", ro->n, "also sweep this many push points from --yn-min to --yn-max")->check(count(0, kMaxCount));
                        r->add_option("--yn-min", ro->yn_min, "sweep start [m]")->capture_default_str();
                        r->add_option("--yn-max", ro->yn_max, "sweep end [m] (default b = L/2)");
                        r->add_flag("--log", ro->log, "logarithmic sweep");
@@ -358,16 +359,16 @@ RegisterCommand reg{{"icor",
                            "force and an observed iCOR distance (Fig 4.5), with propagated uncertainty");
                        auto mo = std::make_shared<MuOptions>();
                        add_rod_options(*m, mo->rod);
-                       m->add_option("--force", mo->force, "measured push force F [N]")->required();
-                       m->add_option("--force-sigma", mo->force_sigma, "standard uncertainty of F [N]")->capture_default_str();
+                       m->add_option("--force", mo->force, "measured push force F [N]")->check(positive())->required();
+                       m->add_option("--force-sigma", mo->force_sigma, "standard uncertainty of F [N]")->check(non_negative())->capture_default_str();
                        m->add_option("--yn", mo->yn, "push point: distance from the CM along the rod [m] (Fig 4.4 map)");
-                       m->add_option("--yn-sigma", mo->yn_sigma, "standard uncertainty of yn [m]")->capture_default_str();
+                       m->add_option("--yn-sigma", mo->yn_sigma, "standard uncertainty of yn [m]")->check(non_negative())->capture_default_str();
                        m->add_option("--icor", mo->icor_R, "observed iCOR distance from the CM [m] (Fig 4.5 map)");
                        m->add_option("--icor-sigma", mo->icor_sigma, "standard uncertainty of the iCOR distance [m]")
-                           ->capture_default_str();
-                       m->add_option("--length-sigma", mo->length_sigma, "standard uncertainty of L [m]")->capture_default_str();
+                           ->check(non_negative())->capture_default_str();
+                       m->add_option("--length-sigma", mo->length_sigma, "standard uncertainty of L [m]")->check(non_negative())->capture_default_str();
                        m->add_option("--hamaker-sigma", mo->hamaker_sigma, "standard uncertainty of H [J]")
-                           ->capture_default_str();
+                           ->check(non_negative())->capture_default_str();
                        m->add_option("--out", mo->out, "also write the estimate and its budget as CSV");
                        m->callback([action, mo] { *action = [mo] { return run_estimate_mu(*mo); }; });
 
@@ -378,7 +379,7 @@ RegisterCommand reg{{"icor",
                        auto dopt = std::make_shared<DynamicOptions>();
                        add_rod_options(*d, dopt->rod);
                        d->add_option("--yn", dopt->yn, "push distances from the CM [m] (one or more)");
-                       d->add_option("--n", dopt->n, "also sweep this many push points from --yn-min to --yn-max");
+                       d->add_option("--n", dopt->n, "also sweep this many push points from --yn-min to --yn-max")->check(count(0, kMaxCount));
                        d->add_option("--yn-min", dopt->yn_min, "sweep start [m]")->capture_default_str();
                        d->add_option("--yn-max", dopt->yn_max, "sweep end [m] (default b = L/2)");
                        d->add_option("--force-ratio", dopt->force_ratio, "push magnitudes F/(mu W) [-] (one or more)")
@@ -386,7 +387,8 @@ RegisterCommand reg{{"icor",
                        d->add_option("--t-end", dopt->t_end, "time of the reading [s] (thesis: 1e-10)")->capture_default_str();
                        d->add_option("--samples", dopt->samples,
                                      "readings per run, log-spaced from t-end/1000 to t-end (1: t-end only)")
-                           ->capture_default_str();
+                           ->capture_default_str()
+                           ->check(count(1, 1000));
                        d->add_option("--mu", dopt->mu, "friction coefficient [-] (thesis: 0.1)")->capture_default_str();
                        d->add_option("--half-width", dopt->half_width,
                                      "contact strip half-width a [m]; 0 = Hertz line contact under W/L (2.78 nm)")
@@ -405,7 +407,7 @@ RegisterCommand reg{{"icor",
                        add_rod_options(*q, qo->rod);
                        q->add_option("--aspect", qo->aspect, "half-width over half-length a/b [-] (one or more, 1e-6..1)")
                            ->capture_default_str();
-                       q->add_option("--n", qo->n, "number of push points")->capture_default_str();
+                       q->add_option("--n", qo->n, "number of push points")->check(count(1, kMaxCount))->capture_default_str();
                        q->add_option("--yn-min", qo->yn_min, "first push distance from the CM [m]")->capture_default_str();
                        q->add_option("--yn-max", qo->yn_max, "last push distance [m] (default b = L/2)");
                        q->add_option("--out", qo->out, "CSV file (default: standard output)");

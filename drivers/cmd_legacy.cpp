@@ -13,6 +13,8 @@
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/outputs/io.hpp"
 #include "nanopush/engines/engines.hpp"
+#include "cli_checks.hpp"
+#include "nanopush/outputs/process.hpp"
 #include "registry.hpp"
 #include "scene_args.hpp"
 
@@ -70,8 +72,13 @@ int legacy_cmd(const LegacyOptions& o) {
   const fs::path tmp = fs::temp_directory_path() / ("nanopush-legacy-" + std::to_string(::getpid()));
   fs::create_directories(tmp);
   write_file_atomic(tmp / "case.deck", legacy_deck(sc, rtol, atol));
-  const std::string cmd = "'" + prog.string() + "' < '" + (tmp / "case.deck").string() + "' > '" + (tmp / "case.out").string() + "'";
-  const int rc = std::system(cmd.c_str());
+  const int rc = run_program({prog.string()}, (tmp / "case.deck").string(), (tmp / "case.out").string(),
+                             (tmp / "case.err").string());
+  std::string err_text;
+  {
+    std::ifstream e(tmp / "case.err");
+    std::getline(e, err_text, '\0');
+  }
   std::ifstream in(tmp / "case.out");
   std::string line;
   std::vector<std::vector<double>> rows;
@@ -90,7 +97,12 @@ int legacy_cmd(const LegacyOptions& o) {
     if (r.size() == 12) rows.push_back(r);
   }
   fs::remove_all(tmp);
-  if (rc != 0) std::cout << "  (the legacy program exited with status " << rc << ")\n";
+  if (rc != 0 || rows.empty()) {
+    // Nothing to compare: say why on stderr (a solver failure, exit 3), never a quiet exit 1.
+    throw SolverError("the legacy program " + prog.string() + " " +
+                      (rc != 0 ? describe_exit(rc) : std::string("wrote no trajectory rows")) + " on " + sc.name +
+                      (err_text.empty() ? std::string() : "; its error output: " + err_text.substr(0, 2000)));
+  }
   RunSettings rs;
   rs.engine = "f77";
   rs.law = "thesis";
@@ -118,7 +130,7 @@ RegisterCommand reg_deck{{"deck", "Write a scene as the classic input deck of th
                             add_set_option(app, o->sets);
                             app.add_option("--out", o->out, "deck file (default: standard output)");
                             app.add_option("--rtol", o->rtol, "relative tolerance (default: the scene's)")
-                                ->check(CLI::PositiveNumber);
+                                ->check(positive());
                             return [o] { return deck_cmd(*o); };
                           }}};
 
@@ -131,7 +143,7 @@ RegisterCommand reg_legacy{{"legacy",
                             add_set_option(app, o->sets);
                               app.add_option("--program", o->program, "the legacy program (default: nanobar beside nanopush)");
                               app.add_option("--tolerance", o->tolerance, "largest relative difference (default 1e-15)")
-                                  ->check(CLI::PositiveNumber);
+                                  ->check(positive());
                               return [o] { return legacy_cmd(*o); };
                             }}};
 

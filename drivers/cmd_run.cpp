@@ -9,6 +9,7 @@
 #include "nanopush/outputs/trajectory_csv.hpp"
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/engines/engines.hpp"
+#include "cli_checks.hpp"
 #include "registry.hpp"
 #include "scene_args.hpp"
 
@@ -40,11 +41,11 @@ std::function<void(double)> progress_printer(const std::string& label) {
 void add_common(CLI::App& app, RunOptions& o) {
   app.add_option("SCENE", o.scene, "scene file, or a preset name such as fig3_6a (`nanopush presets`)")->required();
   add_set_option(app, o.sets);
-  app.add_option("--rtol", o.rtol, "relative tolerance (default: the scene's solver.rtol)")->check(CLI::PositiveNumber);
+  app.add_option("--rtol", o.rtol, "relative tolerance (default: the scene's solver.rtol)")->check(positive());
   app.add_option("--atol", o.atol,
                  "absolute tolerance, one value for every state component (default: the scene's; 0 = rtol times "
                  "each component's natural scale)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(non_negative());
 }
 
 void print_summary(const Scene& sc, const Trajectory& tr, double seconds, std::ostream& os) {
@@ -197,7 +198,7 @@ RegisterCommand reg_compare{{"compare",
                                    ->check(CLI::IsMember({"faithful", "modern"}));
                                app.add_option("--tolerance", o->tolerance,
                                               "largest allowed max|diff|/max|value| per column (default 100 rtol)")
-                                   ->check(CLI::PositiveNumber);
+                                   ->check(positive());
                                return [o] { return compare_cmd(*o); };
                              }}};
 

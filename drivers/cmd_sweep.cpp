@@ -11,6 +11,7 @@
 
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/sweeps/sweep.hpp"
+#include "cli_checks.hpp"
 #include "registry.hpp"
 #include "scene_args.hpp"
 #include "sweep_mpi.hpp"
@@ -203,7 +204,7 @@ RegisterCommand reg{
        app.add_option("--out", o->out, "the table (CSV; default <scene>_sweep.csv); its journal is OUT.journal");
        app.add_option("--trajectories", o->trajectories, "task run: also keep each point's trajectory, DIR/point_<i>.csv");
        app.add_option("--jobs", o->jobs, "threads (default: every core; under MPI, the cores per rank)")
-           ->check(CLI::Range(1u, 1024u));
+           ->check(count(1, 1024));
        app.add_option("--shard", o->shard, "i/n: run only the i-th of n disjoint parts (job arrays); join with --merge");
        app.add_option("--merge", o->merge, "join these shard tables into --out (and check every point is there once)");
        app.add_flag("--quiet", o->quiet, "no summary or progress on standard error");

@@ -3,9 +3,13 @@
 
 #include <algorithm>
 #include <iostream>
+#include <new>
+#include <stdexcept>
 
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/outputs/io.hpp"
+#include "cli_checks.hpp"
+#include "interrupt.hpp"
 #include "registry.hpp"
 
 int main(int argc, char** argv) {
@@ -18,6 +22,11 @@ int main(int argc, char** argv) {
       "Two engines (modern C++ and FORTRAN 77 Bulirsch-Stoer) on the same scenes. SI units throughout."};
   app.set_version_flag("--version", std::string("nanopush ") + NANOPUSH_VERSION);
   app.require_subcommand(1);
+  app.footer(
+      "Exit status: 0 ok; 1 a comparison past its tolerance (compare, legacy); 2 bad input (nothing written);\n"
+      "3 solver failure; 4 a check against the thesis failed (reproduce, bench); 5 system error (a file or a\n"
+      "program); 64+k sweep with k failed points (127: 63 or more); 70 internal error; 130/143 interrupted\n"
+      "(SIGINT/SIGTERM). docs/errors.md has the details.");
   auto& cmds = cli::commands();
   std::stable_sort(cmds.begin(), cmds.end(), [](auto& a, auto& b) { return a.order < b.order; });
   std::function<int()> action;
@@ -26,10 +35,41 @@ int main(int argc, char** argv) {
     auto act = c.setup(*sub);
     sub->callback([&action, act] { action = act; });
   }
+  cli::install_interrupt_handler();  // temporaries removed, exit 130/143 (interrupt.hpp)
+  cli::harden(app);  // reals finite, counts bounded, everywhere (cli_checks.hpp)
+  const auto known = [&](const char* name) {
+    for (const auto& c : cmds)
+      if (c.name == name) return true;
+    return false;
+  };
+  if (argc > 1 && argv[1][0] != '-' && !known(argv[1])) {
+    std::string names;
+    for (const auto& c : cmds) names += (names.empty() ? "" : ", ") + c.name;
+    std::cerr << "nanopush: error: unknown subcommand '" << argv[1] << "'; the subcommands are: " << names
+              << "\nRun 'nanopush --help' for what each does.\n";
+    return 2;
+  }
   try {
     app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
+  } catch (const CLI::Success& e) {  // --help, --help-all, --version
     return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    // Every parse error is bad input (exit 2, docs/errors.md), said in the project's style.
+    std::string where = "nanopush";
+    for (const CLI::App* a = &app; !a->get_subcommands().empty();) {
+      a = a->get_subcommands().front();
+      where += " " + a->get_name();
+    }
+    std::string what = e.what();
+    // A check of ours reads "VALUE: must be ..." and CLI11 puts "--option: " before it: the
+    // project's form is "--option = VALUE: must be ..." (InputError's).
+    if (dynamic_cast<const CLI::ValidationError*>(&e)) {
+      const auto colon = what.find(": ");
+      if (colon != std::string::npos && what.find(": must be", colon + 2) != std::string::npos)
+        what.replace(colon, 2, " = ");
+    }
+    std::cerr << "nanopush: error: " << what << "\nRun '" << where << " --help' for the options and their ranges.\n";
+    return 2;
   }
   try {
     return action ? action() : 0;
@@ -39,8 +79,14 @@ int main(int argc, char** argv) {
   } catch (const SolverError& e) {
     std::cerr << "nanopush: solver failure: " << e.what() << "\n";
     return 3;
+  } catch (const std::logic_error& e) {
+    std::cerr << "nanopush: internal error (a bug: please report it with the command line): " << e.what() << "\n";
+    return 70;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "nanopush: system error: out of memory\n";
+    return 5;
   } catch (const std::exception& e) {
-    std::cerr << "nanopush: error: " << e.what() << "\n";
-    return 1;
+    std::cerr << "nanopush: system error: " << e.what() << "\n";
+    return 5;
   }
 }

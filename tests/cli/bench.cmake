@@ -29,7 +29,7 @@ set_tests_properties(cli.bench.bad_precision PROPERTIES ENVIRONMENT "${_env}" WI
 
 add_test(NAME cli.bench.bad_repeats COMMAND ${_np} bench fig3_6a --repeats 0)
 set_tests_properties(cli.bench.bad_repeats PROPERTIES ENVIRONMENT "${_env}"
-  PASS_REGULAR_EXPRESSION "--repeats = 0: must be in")
+  PASS_REGULAR_EXPRESSION "--repeats = 0: must be a whole number in \\[1, 1000\\]")
 
 # The report states how steady the host was: the bare RHS time over the sweep.
 add_test(NAME cli.bench.host_speed COMMAND ${_np} bench fig3_6a --quick --quiet --no-plot --engines cxx-faithful
