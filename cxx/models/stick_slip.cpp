@@ -227,7 +227,7 @@ StickSlipResult integrate_coulomb(const RoughBarModel& model, const BsOptions<do
   long steps_in_slide = 1;
   auto check_progress = [&] {
     if (steps_in_slide == 0)
-      throw SolverError("coulomb law: the slide that started from rest at t = " + fmt(t) +
+      throw CoulombError(BsStatus::step_underflow, "coulomb law: the slide that started from rest at t = " + fmt(t) +
                         " s stopped again within its first step; the push is too close to the limit surface for "
                         "the start direction to be resolved (near the minimum force; the CVODE path copes)");
   };
@@ -281,7 +281,7 @@ StickSlipResult integrate_coulomb(const RoughBarModel& model, const BsOptions<do
     if (!r.ok()) {
       out.stats.status = r.status;
       out.stats.message = r.message;
-      throw SolverError("coulomb law: " + r.message);
+      throw CoulombError(r.status, "coulomb law: " + r.message);
     }
     iout += emitted;
     t = r.t_reached;
@@ -291,7 +291,7 @@ StickSlipResult integrate_coulomb(const RoughBarModel& model, const BsOptions<do
       // kinetic energy left is dissipated by friction in the remaining motion: book it there
       // (the push's work over that motion is below F times the position tolerance).
       y[kWorkFric] -= model.kinetic_energy(y.data());
-      if (++n_events > kMaxEvents) throw SolverError("coulomb law: more than " + std::to_string(kMaxEvents) + " rest events");
+      if (++n_events > kMaxEvents) throw CoulombError(BsStatus::too_many_steps, "coulomb law: more than " + std::to_string(kMaxEvents) + " rest events");
       check_progress();
       const bool s = at_rest();
       steps_in_slide = 0;
@@ -309,7 +309,7 @@ StickSlipResult integrate_coulomb(const RoughBarModel& model, const BsOptions<do
         BsResult rr = sub.integrate(rhs, t0, yt.data(), tt);
         accumulate(rr);
         out.root_fcn += rr.nfcn;
-        if (!rr.ok()) throw SolverError("coulomb law, event location: " + rr.message);
+        if (!rr.ok()) throw CoulombError(rr.status, "coulomb law, event location: " + rr.message);
       }
       return yt[kVx] * mode[0] + yt[kVy] * mode[1] + yt[kOmega] * L * mode[2];
     };
@@ -349,7 +349,7 @@ StickSlipResult integrate_coulomb(const RoughBarModel& model, const BsOptions<do
       mode = mode_of(model, y[kVx], y[kVy], y[kOmega]);
       continue;
     }
-    if (++n_events > kMaxEvents) throw SolverError("coulomb law: more than " + std::to_string(kMaxEvents) + " rest events");
+    if (++n_events > kMaxEvents) throw CoulombError(BsStatus::too_many_steps, "coulomb law: more than " + std::to_string(kMaxEvents) + " rest events");
     check_progress();
     const bool s = at_rest();
     steps_in_slide = 0;

@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <charconv>
 #include <cstdint>
+#include <cctype>
 #include <cmath>
+#include <limits>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -76,6 +78,78 @@ void require_one_of(const std::string& field, const std::string& v, const std::v
     throw InputError(field, "\"" + v + "\"", "must be one of: " + join(allowed));
 }
 
+/// A scene name becomes part of output file names: letters, digits, '_', '-' and '.', not
+/// starting with '.' or '-' (no paths, no hidden files, nothing that reads as an option).
+bool is_identifier(const std::string& s) {
+  if (s.empty() || s.size() > 200 || s[0] == '.' || s[0] == '-') return false;
+  for (unsigned char c : s)
+    if (!std::isalnum(c) && c != '_' && c != '-' && c != '.') return false;
+  return true;
+}
+
+/// The file stem as a name: every other character becomes '_'.
+std::string identifier_from(const std::string& stem) {
+  std::string r = stem.substr(0, 200);
+  for (char& c : r)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '-' && c != '.') c = '_';
+  if (r.empty() || r[0] == '.' || r[0] == '-') r = "scene_" + r;
+  return r;
+}
+
+/// Magnitudes the integrators represent: within [kTiny, kHuge] (or 0 where allowed), so that
+/// the squares and products the error norms and right-hand sides form stay normal doubles.
+constexpr double kHuge = 1e150, kTiny = 1e-150;
+
+/// `v` (from `fields`, computed as `what`) must be 0 or within [kTiny, kHuge] in magnitude.
+void require_representable(const std::string& fields, double v, const std::string& unit, const std::string& what = {}) {
+  const double a = std::fabs(v);
+  if (std::isfinite(v) && (a == 0.0 || (a >= kTiny && a <= kHuge))) return;
+  throw InputError(fields, fmt(v),
+                   (what.empty() ? std::string() : "gives " + what + " = " + fmt(v) + " " + unit + ", ") +
+                       "outside the magnitudes the integrators represent: 0 or 1e-150 to 1e150" +
+                       (unit.empty() ? "" : " (" + unit + ")"));
+}
+
+/// Every number of a scene and the quantities its dynamics derive from them (docs/errors.md,
+/// "Magnitudes"): the inputs first, so that the message names the field the user wrote.
+void check_representable(const Scene& sc) {
+  require_representable("object.length", sc.length, "m");
+  require_representable("object.width", sc.width, "m");
+  if (sc.height > 0) require_representable("object.height", sc.height, "m");
+  if (sc.density > 0) require_representable("object.density", sc.density, "kg/m^3");
+  require_representable(sc.density > 0 ? "object.density" : "object.mass", sc.mass, "kg",
+                        sc.density > 0 ? "the mass density x length x width x height" : "");
+  require_representable("object.inertia", sc.inertia, "kg m^2", "the moment of inertia");
+  require_representable("push.force", sc.push.force, "N");
+  require_representable("push.direction", sc.push.beta, "rad");
+  const char* const initial_keys[] = {"x", "y", "theta", "vx", "vy", "omega"};
+  const char* const initial_units[] = {"m", "m", "rad", "m/s", "m/s", "rad/s"};
+  for (std::size_t i = 0; i < sc.initial.size() && i < 6; ++i)
+    require_representable(std::string("initial.") + initial_keys[i], sc.initial[i], initial_units[i]);
+  require_representable("push.force, object.mass", sc.push.force / sc.mass, "m/s^2", "the acceleration F/m");
+  require_representable("push.force, push point, object.inertia",
+                        sc.push.force * std::max(sc.push.lever(), 1e-3 * std::max(sc.length, sc.width)) / sc.inertia,
+                        "rad/s^2", "the angular acceleration F lever / I");
+  if (sc.rough()) {
+    require_representable("surface.f_vdw", sc.surface.f_vdw, "N");
+    require_representable("surface.g", sc.surface.g, "m/s^2");
+    require_representable("surface.normal_load", sc.normal_load(), "N", "the normal load N");
+    require_representable("surface.mu, normal load, object.mass", sc.surface.mu * sc.normal_load() / sc.mass, "m/s^2",
+                          "the friction deceleration mu N / m");
+  }
+  require_representable("solver.t_end", sc.solver.t_end, "s");
+  require_representable("solver.t_end, solver.samples", sc.solver.t_end / (sc.solver.samples - 1), "s",
+                        "the output spacing");
+  // The spacing of the output times must be a step the integrator can take from t_end.
+  if (sc.solver.t_end / (sc.solver.samples - 1) < 64 * std::numeric_limits<double>::epsilon() * sc.solver.t_end)
+    throw InputError("solver.samples", std::to_string(sc.solver.samples),
+                     "output times closer than 64 ulps of t_end apart: fewer samples");
+  require_representable("solver.h0", sc.solver.h0, "s");
+  require_representable("solver.hmax", sc.solver.hmax, "s");
+  require_representable("solver.atol", sc.solver.atol, "SI");
+  for (double x : sc.state_scales()) require_representable("the scene's scales", x, "SI", "a state scale");
+}
+
 }  // namespace
 
 std::string extended_precision_obstacle(bool rough, const std::string& engine, const std::string& method) {
@@ -133,8 +207,12 @@ Scene scene_from_document(const toml::table& root, const std::string& source_nam
     check_keys(t, "scene", scene_table_keys("scene"));
     sc.name = opt_string(t, "scene", "name").value_or("");
     sc.description = opt_string(t, "scene", "description").value_or("");
+    if (t.get("name") && !is_identifier(sc.name))
+      throw InputError("scene.name", "\"" + sc.name + "\"",
+                       "must be an identifier: letters, digits, _ - . (at most 200, not starting with . or -); it "
+                       "names the output files, which go only to --out or the working directory");
   }
-  if (sc.name.empty()) sc.name = std::filesystem::path(source_name).stem().string();
+  if (sc.name.empty()) sc.name = identifier_from(std::filesystem::path(source_name).stem().string());
 
   // [object]
   {
@@ -183,6 +261,8 @@ Scene scene_from_document(const toml::table& root, const std::string& source_nam
     require_finite("push.direction", beta, "rad");
     const auto xn = opt_number(t, "push", "xn");
     const auto yn = opt_number(t, "push", "yn");
+    if (xn) require_finite("push.xn", *xn, "m");
+    if (yn) require_finite("push.yn", *yn, "m");
     const toml::node* pt = t.get("point");
     if (pt && (xn || yn)) throw InputError("push.point", "(present)", "give either push.point = [x', y'] or the thesis push.xn/push.yn, not both");
     if (pt) {
@@ -272,6 +352,10 @@ Scene scene_from_document(const toml::table& root, const std::string& source_nam
     require_one_of("solver.engine", sc.solver.engine, {"cxx", "f77"});
     sc.solver.method = opt_string(t, "solver", "method").value_or("faithful");
     require_one_of("solver.method", sc.solver.method, {"faithful", "modern", "cvode"});
+    if (sc.solver.engine == "f77" && sc.solver.method != "faithful")
+      throw InputError("solver.method", "\"" + sc.solver.method + "\"",
+                       "with solver.engine = \"f77\" there is one method (the F77 Bulirsch-Stoer): leave "
+                       "solver.method out, or use solver.engine = \"cxx\"");
     sc.solver.precision = opt_string(t, "solver", "precision").value_or("double");
     require_one_of("solver.precision", sc.solver.precision, {"double", "long", "quad"});
     if (sc.solver.precision != "double") {
@@ -330,6 +414,7 @@ Scene scene_from_document(const toml::table& root, const std::string& source_nam
     r << "friction limit mu N = " << sc.surface.mu * N << " N\n";
     sc.load_report = r.str();
   }
+  check_representable(sc);
   sc.document = std::make_shared<const toml::table>(root);
   return sc;
 }
@@ -467,11 +552,23 @@ Scene SceneBuilder::build(const std::string& name) const {
 }
 
 Scene load_scene(const std::filesystem::path& path) {
-  std::ifstream in(path);
+  // A scene is a regular file of at most kMaxSceneBytes: never a directory, a device, a FIFO
+  // or a socket (reading /dev/zero or a FIFO would grow or block for ever).
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status st = fs::status(path, ec);
+  if (ec || !fs::exists(st)) throw InputError("SCENE", path.string(), "no such file (nor a preset of that name)");
+  if (fs::is_directory(st)) throw InputError("SCENE", path.string(), "is a directory: give a scene file (.toml)");
+  if (!fs::is_regular_file(st))
+    throw InputError("SCENE", path.string(), "not a regular file (a device, FIFO or socket): give a scene file (.toml)");
+  std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError("SCENE", path.string(), "cannot open the scene file");
-  std::ostringstream s;
-  s << in.rdbuf();
-  Scene sc = parse_scene(s.str(), path.string());
+  std::string text(kMaxSceneBytes + 1, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  if (text.size() > kMaxSceneBytes)
+    throw InputError("SCENE", path.string(), "larger than a scene file may be (1 MiB)");
+  Scene sc = parse_scene(text, path.string());
   sc.source = path;
   return sc;
 }

@@ -22,7 +22,8 @@ std::string_view key_type_name(KeyType t) {
 const std::vector<SceneKey>& scene_keys() {
   using K = KeyType;
   static const std::vector<SceneKey> keys = {
-      {"scene.name", K::string, "", "file stem", "any text", "all", "identifier used in output names"},
+      {"scene.name", K::string, "", "file stem", "letters, digits, _ - . (not first: . -), <= 200", "all",
+       "identifier used in output names"},
       {"scene.description", K::string, "", "\"\"", "any text", "all", "one line shown by `nanopush presets`"},
 
       {"object.shape", K::string, "", "bar", "bar", "all", "a 2a x 2b rectangle seen from above"},

@@ -21,6 +21,14 @@ std::string fmt_short(double v) {
 RunSettings resolve_settings(const Scene& scene, RunSettings s) {
   if (s.engine.empty()) s.engine = scene.solver.engine;
   if (s.engine != "cxx" && s.engine != "f77") throw InputError("engine", s.engine, "must be cxx or f77");
+  // The F77 engine has one method, its own Bulirsch-Stoer: asking it for another is a
+  // conflict, not a setting to ignore. (A scene's solver.method configures the C++ engine and
+  // does not bind a run that chose the F77 engine.)
+  if (s.engine == "f77" && !s.method.empty() && s.method != "faithful")
+    throw InputError("method", s.method,
+                     "the f77 engine has one method (its Bulirsch-Stoer, which faithful reproduces in C++): drop the "
+                     "method or use engine cxx");
+  if (s.engine == "f77") s.method = "faithful";
   if (s.method.empty()) s.method = scene.solver.method;
   if (s.method != "faithful" && s.method != "modern" && s.method != "cvode")
     throw InputError("method", s.method, "must be faithful, modern or cvode");
@@ -155,8 +163,12 @@ Trajectory run_cxx_rough(const Scene& sc, const RunSettings& s) {
       r = integrate_coulomb_cvode(model, s.rtol, tr.atol, y.data(), tout, record);
     else
       r = integrate_coulomb(model, options_for(sc, s, tr.atol), y.data(), tout, record);
-  } catch (const SolverError& e) {
-    tr.stats.status = BsStatus::not_finite;
+  } catch (const CoulombError& e) {
+    tr.stats.status = e.status();
+    tr.stats.message = e.what();
+    return tr;
+  } catch (const SolverError& e) {  // CVODE's failures
+    tr.stats.status = BsStatus::rhs_failed;
     tr.stats.message = e.what();
     return tr;
   }

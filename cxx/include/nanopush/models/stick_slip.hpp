@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "nanopush/numerics/bulirsch_stoer.hpp"
+#include "nanopush/numerics/error.hpp"
 #include "nanopush/models/rough_bar.hpp"
 
 namespace nanopush {
@@ -45,6 +46,18 @@ RestAnalysis analyse_rest(const RoughBarModel& model, double theta);
 struct StickEvent {
   double t = 0;      ///< [s]
   bool stuck = false;  ///< stayed stuck after it (else slid off again)
+};
+
+/// A coulomb-law integration that gave up, with the status that says why (too many steps,
+/// step size underflow, ... as the integrator reports them; too_many_steps for too many rest
+/// events; step_underflow for a slide that stalls in its first step).
+class CoulombError : public SolverError {
+ public:
+  CoulombError(BsStatus status, const std::string& message) : SolverError(message), status_(status) {}
+  [[nodiscard]] BsStatus status() const noexcept { return status_; }
+
+ private:
+  BsStatus status_;
 };
 
 struct StickSlipResult {

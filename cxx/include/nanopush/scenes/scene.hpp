@@ -125,15 +125,22 @@ class SceneBuilder {
   toml::table doc_;
 };
 
-/// Parse a scene; throws InputError naming the TOML key, the value and the allowed range.
 /// Why extended precision (long, quad) cannot run with this surface, engine and method, or
 /// "" when it can: the right-hand side must be templated on the scalar (the smooth bar in the
 /// C++ Bulirsch–Stoer). One rule for scene files and run settings.
 std::string extended_precision_obstacle(bool rough, const std::string& engine, const std::string& method);
 
+/// The largest scene file load_scene reads [bytes].
+inline constexpr std::size_t kMaxSceneBytes = 1u << 20;
+
+/// Parse a scene; throws InputError naming the TOML key, the value and the allowed range.
+/// Beyond each key's range, every number and the quantities derived from them (mass,
+/// inertia, loads, accelerations, the output spacing, the state scales) must be 0 or of
+/// magnitude 1e-150 to 1e150, which the integrators represent (docs/errors.md).
 Scene parse_scene(std::string_view toml_text, const std::string& source_name = "<string>");
 /// A scene from a parsed TOML document (what parse_scene and Scene::set use).
 Scene scene_from_document(const toml::table& doc, const std::string& source_name = "<string>");
+/// Load a scene file: a regular file of at most kMaxSceneBytes (InputError otherwise).
 Scene load_scene(const std::filesystem::path& path);
 
 }  // namespace nanopush
