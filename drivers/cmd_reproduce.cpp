@@ -6,6 +6,7 @@
 
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/outputs/io.hpp"
+#include "interrupt.hpp"
 #include "registry.hpp"
 
 namespace nanopush::cli {
@@ -36,6 +37,15 @@ int run_reproduce(const Options& o) {
   ctx.out = o.out;
   ctx.quick = o.quick;
   std::filesystem::create_directories(ctx.out);
+  // While it runs the directory says it is not a reproduction: INCOMPLETE exists and a
+  // report.md of an earlier run is gone; report.md is written last, then INCOMPLETE removed.
+  const auto marker = ctx.out / "INCOMPLETE";
+  write_file_atomic(marker, "nanopush reproduce is writing this directory (or was interrupted): it is not a complete\n"
+                            "reproduction. Command: " + provenance().command + "\nRun it again; report.md appears and "
+                            "this file goes when every step has run.\n");
+  std::error_code ec;
+  std::filesystem::remove(ctx.out / "report.md", ec);
+  set_interrupt_note(ctx.out.string() + " is incomplete (" + marker.string() + " says so); run reproduce again");
   ctx.report << "# nanopush reproduce\n\n"
              << "Every table and figure below is computed by `nanopush reproduce` from the code in this\n"
              << "repository (C++ engine and FORTRAN 77 engine); nothing is pasted from the thesis except\n"
@@ -68,6 +78,8 @@ int run_reproduce(const Options& o) {
     for (auto& f : ctx.failures) ctx.report << "- " << f << "\n";
   }
   write_file_atomic(ctx.out / "report.md", ctx.report.str());
+  std::filesystem::remove(marker, ec);
+  set_interrupt_note("");
   std::cerr << "reproduce: " << ctx.files.size() << " files and report.md in " << ctx.out.string() << " ("
             << total << " s)\n";
   if (!ctx.failures.empty()) {

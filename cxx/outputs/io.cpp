@@ -1,6 +1,8 @@
 #include "nanopush/outputs/io.hpp"
 
+#include <atomic>
 #include <charconv>
+#include <cstring>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -12,12 +14,64 @@
 
 namespace nanopush {
 
+// ---- temporaries a signal handler can remove --------------------------------------------
+
+namespace {
+// Fixed storage (no allocation, no locks): a slot is claimed with a compare-exchange, its
+// path written, then published by `live`; the handler reads only published slots.
+constexpr int kSlots = 256;
+constexpr std::size_t kPathMax = 4096;
+char g_paths[kSlots][kPathMax];
+std::atomic<int> g_state[kSlots];  // 0 free, 1 claimed, 2 live
+
+int register_temporary(const std::filesystem::path& p) {
+  const std::string s = p.string();
+  if (s.size() >= kPathMax) return -1;
+  for (int i = 0; i < kSlots; ++i) {
+    int expected = 0;
+    if (g_state[i].compare_exchange_strong(expected, 1)) {
+      std::memcpy(g_paths[i], s.c_str(), s.size() + 1);
+      g_state[i].store(2, std::memory_order_release);
+      return i;
+    }
+  }
+  return -1;  // more than kSlots files at once: that one is only removed by its destructor
+}
+
+void unregister_temporary(int slot) {
+  if (slot >= 0) g_state[slot].store(0, std::memory_order_release);
+}
+}  // namespace
+
+void remove_temporary_files() noexcept {
+  for (int i = 0; i < kSlots; ++i)
+    if (g_state[i].load(std::memory_order_acquire) == 2) ::unlink(g_paths[i]);
+}
+
+TemporaryPath::TemporaryPath(std::filesystem::path path) : path_(std::move(path)), slot_(register_temporary(path_)) {}
+
+TemporaryPath::~TemporaryPath() {
+  if (slot_ == -2) return;
+  std::error_code ec;
+  std::filesystem::remove(path_, ec);
+  unregister_temporary(slot_);
+}
+
+void TemporaryPath::release() {
+  unregister_temporary(slot_);
+  slot_ = -2;
+}
+
 AtomicFile::AtomicFile(std::filesystem::path target) : target_(std::move(target)) {
   if (target_.has_parent_path()) std::filesystem::create_directories(target_.parent_path());
   tmp_ = target_;
   tmp_ += ".tmp." + std::to_string(::getpid());
+  slot_ = register_temporary(tmp_);  // before the file exists: a signal may come at any time
   out_.open(tmp_, std::ios::out | std::ios::trunc);
-  if (!out_) throw std::runtime_error("cannot write " + tmp_.string());
+  if (!out_) {
+    unregister_temporary(slot_);
+    throw std::runtime_error("cannot write " + tmp_.string());
+  }
 }
 
 AtomicFile::~AtomicFile() {
@@ -26,6 +80,7 @@ AtomicFile::~AtomicFile() {
     std::error_code ec;
     std::filesystem::remove(tmp_, ec);
   }
+  unregister_temporary(slot_);
 }
 
 void AtomicFile::finish() {
@@ -42,6 +97,8 @@ void AtomicFile::commit() {
   std::filesystem::rename(tmp_, target_, ec);
   if (ec) throw std::runtime_error("cannot rename " + tmp_.string() + " to " + target_.string() + ": " + ec.message());
   committed_ = true;
+  unregister_temporary(slot_);
+  slot_ = -1;
 }
 
 void write_file_atomic(const std::filesystem::path& path, const std::string& text) {

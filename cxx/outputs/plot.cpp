@@ -1,6 +1,7 @@
 #include "nanopush/outputs/plot.hpp"
 
 #include <cstdlib>
+#include <vector>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -8,6 +9,7 @@
 #include <unistd.h>
 
 #include "nanopush/outputs/io.hpp"
+#include "nanopush/outputs/process.hpp"
 
 namespace nanopush::plot {
 
@@ -20,50 +22,45 @@ std::string quote(const std::string& s) {
   }
   return r + "\"";
 }
+
 }  // namespace
 
-bool available() { return std::system("gnuplot --version >/dev/null 2>&1") == 0; }
+bool available() { return run_program({"gnuplot", "--version"}) == 0; }
 
 void render_script(const std::string& body, const std::filesystem::path& png, int width, int height) {
   if (png.has_parent_path()) std::filesystem::create_directories(png.parent_path());
-  std::filesystem::path tmp_png = png;
-  tmp_png += ".tmp." + std::to_string(::getpid()) + ".png";
+  const std::string pid = std::to_string(::getpid());
+  TemporaryPath tmp_png(png.string() + ".tmp." + pid + ".png");
   std::ostringstream gp;
   gp << "set terminal pngcairo size " << width << "," << height << " enhanced font 'Sans,10'\n"
      << "set datafile separator ','\n"
-     << "set output " << quote(tmp_png.string()) << "\n"
+     << "set output " << quote(tmp_png.path().string()) << "\n"
      << body << "\nunset output\n";
   std::filesystem::path script = png;
   script.replace_extension(".gp");
   // The kept script writes the final name, so re-running it by hand just works.
   std::string kept = gp.str();
-  const auto pos = kept.find(quote(tmp_png.string()));
-  if (pos != std::string::npos) kept.replace(pos, quote(tmp_png.string()).size(), quote(png.string()));
-  std::filesystem::path tmp_script = script;
-  tmp_script += ".tmp." + std::to_string(::getpid());
+  const auto pos = kept.find(quote(tmp_png.path().string()));
+  if (pos != std::string::npos) kept.replace(pos, quote(tmp_png.path().string()).size(), quote(png.string()));
+  TemporaryPath tmp_script(script.string() + ".tmp." + pid), tmp_err(script.string() + ".tmp." + pid + ".err");
   {
-    AtomicFile f(tmp_script);
-    f.stream() << gp.str();
-    f.commit();
+    std::ofstream f(tmp_script.path());
+    f << gp.str();
+    if (!f.flush()) throw std::runtime_error("cannot write " + tmp_script.path().string());
   }
-  const std::string cmd = "gnuplot " + quote(tmp_script.string()) + " 2>" + quote(tmp_script.string() + ".err");
-  const int rc = std::system(cmd.c_str());
-  std::error_code ec;
+  const int rc = run_program({"gnuplot", tmp_script.path().string()}, "/dev/null", "/dev/null", tmp_err.path().string());
   std::string err;
   {
-    std::ifstream e(tmp_script.string() + ".err");
+    std::ifstream e(tmp_err.path());
     std::ostringstream ss;
     ss << e.rdbuf();
     err = ss.str();
   }
-  std::filesystem::remove(tmp_script.string() + ".err", ec);
-  std::filesystem::remove(tmp_script, ec);
-  if (rc != 0 || !std::filesystem::exists(tmp_png)) {
-    std::filesystem::remove(tmp_png, ec);
-    throw std::runtime_error("gnuplot failed for " + png.string() + ": " + err);
-  }
+  if (rc != 0 || !std::filesystem::exists(tmp_png.path()))
+    throw std::runtime_error("gnuplot failed for " + png.string() + " (gnuplot " + describe_exit(rc) + "): " + err);
   write_file_atomic(script, kept);
-  std::filesystem::rename(tmp_png, png);
+  std::filesystem::rename(tmp_png.path(), png);
+  tmp_png.release();
 }
 
 void render(const Figure& fig, const std::filesystem::path& png) {

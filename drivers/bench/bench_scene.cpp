@@ -7,6 +7,7 @@
 #include "nanopush/models/rigid_body.hpp"
 #include "nanopush/scenes/deck.hpp"
 #include "nanopush/outputs/io.hpp"
+#include "nanopush/outputs/process.hpp"
 #include "nanopush/models/rough_bar.hpp"
 #include "nanopush/models/stick_slip.hpp"
 
@@ -216,9 +217,7 @@ Solve quad_legacy_run(const Scene& sc, const Problem& p, const RoughBarModel& m,
   fs::create_directories(dir);
   write_file_atomic(dir / "case.deck", legacy_deck(s, rtol, p.atol(rtol), m.rest_direction));
   const auto t0 = detail::Clock::now();
-  const std::string cmd = "'" + prog.string() + "' < '" + (dir / "case.deck").string() + "' > '" +
-                          (dir / "case.out").string() + "' 2>/dev/null";
-  const int rc = std::system(cmd.c_str());
+  const int rc = run_program({prog.string()}, (dir / "case.deck").string(), (dir / "case.out").string());
   Solve r;
   r.seconds = detail::seconds_since(t0);
   std::ifstream in(dir / "case.out");
@@ -246,7 +245,7 @@ Solve quad_legacy_run(const Scene& sc, const Problem& p, const RoughBarModel& m,
   fs::remove_all(dir);
   if (rc != 0 || r.y.size() != p.nout() * static_cast<std::size_t>(p.n)) {
     r.status = 1;
-    r.message = "nanobar_quad at rtol " + fmt(rtol) + " failed (exit " + std::to_string(rc) + ", " +
+    r.message = "nanobar_quad at rtol " + fmt(rtol) + " failed (it " + describe_exit(rc) + ", " +
                 std::to_string(r.y.size() / static_cast<std::size_t>(p.n)) + " samples)";
   }
   return r;

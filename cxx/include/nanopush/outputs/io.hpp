@@ -16,6 +16,10 @@
 
 namespace nanopush {
 
+/// Remove every temporary file an AtomicFile of this process has open (their CSVs were never
+/// committed). Async-signal-safe: for a SIGINT/SIGTERM handler, which then exits.
+void remove_temporary_files() noexcept;
+
 class AtomicFile {
  public:
   explicit AtomicFile(std::filesystem::path target);
@@ -35,6 +39,24 @@ class AtomicFile {
   std::filesystem::path target_, tmp_;
   std::ofstream out_;
   bool finished_ = false, committed_ = false;
+  int slot_ = -1;  ///< where remove_temporary_files() finds tmp_ (-1: not registered)
+};
+
+/// A temporary file name that remove_temporary_files() knows of: removed by the destructor
+/// (unless release()d) or by an interrupt handler, whichever comes first.
+class TemporaryPath {
+ public:
+  explicit TemporaryPath(std::filesystem::path path);
+  TemporaryPath(const TemporaryPath&) = delete;
+  TemporaryPath& operator=(const TemporaryPath&) = delete;
+  ~TemporaryPath();
+  [[nodiscard]] const std::filesystem::path& path() const { return path_; }
+  /// The file was renamed away (or is kept): no longer remove it.
+  void release();
+
+ private:
+  std::filesystem::path path_;
+  int slot_ = -1;
 };
 
 /// Write `text` to `path` atomically.
