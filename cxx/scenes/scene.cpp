@@ -224,6 +224,8 @@ Scene scene_from_document(const toml::table& root, const std::string& source_nam
     sc.width = number(t, "object", "width");
     require_positive("object.length", sc.length, "m");
     require_positive("object.width", sc.width, "m");
+    require_representable("object.length", sc.length, "m");  // before the push point is checked against them
+    require_representable("object.width", sc.width, "m");
     sc.geometry = {sc.width / 2, sc.length / 2};
     const auto mass = opt_number(t, "object", "mass");
     const auto density = opt_number(t, "object", "density");
@@ -478,19 +480,21 @@ void put(toml::table& doc, const std::string& key, const SceneValue& value) {
 SceneValue SceneValue::from_text(std::string_view key, std::string_view text) {
   const SceneKey& k = known_key(std::string(key), std::string(text));
   const std::string s(text);
+  const std::string shown = s.empty() ? "\"\" (empty)" : s;
   switch (k.type) {
     case KeyType::number:
     case KeyType::integer: {
       double v = 0;
       const auto r = std::from_chars(s.data(), s.data() + s.size(), v);
       if (s.empty() || r.ec != std::errc() || r.ptr != s.data() + s.size())
-        throw InputError(std::string(key), s, "must be a number" + (k.unit.empty() ? std::string() : " (" + std::string(k.unit) + ")"));
+        throw InputError(std::string(key), shown, "must be a number" + (k.unit.empty() ? std::string() : " (" + std::string(k.unit) + ")"));
+      require_finite(std::string(key), v, std::string(k.unit));
       return v;
     }
     case KeyType::boolean:
       if (s == "true") return true;
       if (s == "false") return false;
-      throw InputError(std::string(key), s, "must be true or false");
+      throw InputError(std::string(key), shown, "must be true or false");
     default:
       return s;
   }

@@ -37,6 +37,20 @@ SceneValue value_of(const std::string& key, const std::string& text) {
   double v = 0;
   const auto r = std::from_chars(text.data(), text.data() + text.size(), v);
   if (text.empty() || r.ec != std::errc() || r.ptr != text.data() + text.size()) return text;
+  require_finite(key, v);  // NaN would read as "not given" to a task
+  return v;
+}
+
+/// A range end: a number, finite, the message naming the option and the end.
+double range_end(const std::string& opt, const std::string& spec, const std::string& key, const std::string& end,
+                 const std::string& text) {
+  double v = 0;
+  const auto r = std::from_chars(text.data(), text.data() + text.size(), v);
+  const SceneKey* k = find_scene_key(key);
+  if (text.empty() || r.ec != std::errc() || r.ptr != text.data() + text.size() ||
+      (k && k->type != KeyType::number && k->type != KeyType::integer))
+    throw InputError(opt, spec, "a range is FROM:TO:N of numbers, for a number-valued key");
+  require_finite(opt + " " + key + " " + end, v);
   return v;
 }
 
@@ -53,12 +67,7 @@ Axis parse_axis(const std::string& spec, bool log) {
   if (rhs.find(':') != std::string::npos) {
     const auto parts = split(rhs, ':');
     if (parts.size() != 3) throw InputError(opt, spec, "a range is FROM:TO:N (three fields)");
-    const SceneValue v0 = value_of(a.key, parts[0]), v1 = value_of(a.key, parts[1]);
-    if (v0.kind() != KeyType::number || v1.kind() != KeyType::number)
-      throw InputError(opt, spec, "a range is FROM:TO:N of numbers, for a number-valued key");
-    const double from = v0.number(), to = v1.number();
-    require_finite(opt + " " + a.key + " FROM", from);
-    require_finite(opt + " " + a.key + " TO", to);
+    const double from = range_end(opt, spec, a.key, "FROM", parts[0]), to = range_end(opt, spec, a.key, "TO", parts[1]);
     double nd = 0;
     try {
       nd = number_of("N", parts[2]);

@@ -34,6 +34,9 @@ options)  # every real option rejects NaN and Inf; counts have bounds; messages 
   expect 2 "^nanopush: error: unknown subcommand 'frobnicate'; the subcommands are: run, " "$np" frobnicate
   expect 2 '^nanopush: error: SCENE is required' "$np" run
   expect 2 '^nanopush: error: method = modern: the f77 engine has one method' "$np" run fig3_6a --engine f77 --method modern
+  expect 2 '^nanopush: error: R = nan: must be a finite number' "$np" sweep --task friction --vary R=nan,1e-8 --out t.csv
+  expect 2 '^nanopush: error: surface.mu = inf: must be a finite number' "$np" sweep fig3_18 --vary surface.mu=0.1,inf --out t.csv
+  expect 2 '^nanopush: error: body.hamaker = "" \(empty\): must be a number' "$np" run fig3_18 --set body.hamaker=
   # The help states the ranges.
   "$np" icor formulas --help | grep -q 'whole number in \[1, 1000000\]' || fail "--help shows no count range" ;;
 scene)  # scene files and --set: names, file kinds, sizes, magnitudes
