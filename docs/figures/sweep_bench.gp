@@ -1,7 +1,7 @@
 set terminal pngcairo size 900,600 enhanced font 'Sans,10'
 set datafile separator ','
 set output "docs/figures/sweep_bench.png"
-set title 'nanopush sweep: 1000 rough-surface points (fig3_18, coulomb law), task run; median of 3 runs' noenhanced
+set title 'nanopush sweep: 1000 rough-surface points (fig3_18, coulomb law), task run; median of 5 runs' noenhanced
 set xlabel 'workers (threads in one process, or MPI ranks of one thread)'
 set ylabel 'points/s'
 set grid
@@ -9,9 +9,9 @@ set key left top
 set xrange [0.8:2.2]
 set xtics 1
 set yrange [0:*]
-P1 = 375.833830574019
+P1 = 341.4967567282938
 plot 'docs/figures/sweep_bench.csv' skip 1 using (strcol(1) eq 'threads' ? $4 : 1/0):($5/$7):($5/$9):($5/$8) with yerrorlines lw 2 pt 7 title 'threads (one process)', \
-     'docs/figures/sweep_bench.csv' skip 1 using (strcol(1) eq 'mpi' ? $4 : 1/0):($5/$7):($5/$9):($5/$8) with yerrorlines lw 2 pt 5 title 'MPI ranks (mpirun, launch included)', \
+     'docs/figures/sweep_bench.csv' skip 1 using (strcol(1) eq 'mpi' ? $4 : 1/0):($5/$7):($5/$9):($5/$8) with yerrorlines lw 2 pt 5 title 'MPI ranks (mpirun -np R, one thread each)', \
      P1*x with lines dt 2 lw 1.5 lc rgb 'black' title 'ideal: workers x 1-thread rate'
 
 unset output
