@@ -20,6 +20,8 @@ const char* nanopush_status_name(int status) {
     case NANOPUSH_BUFFER_TOO_SMALL: return "buffer too small";
     case NANOPUSH_OUT_OF_MEMORY: return "out of memory";
     case NANOPUSH_INTERNAL: return "internal error";
+    case NANOPUSH_TOO_MUCH_ACCURACY: return "too much accuracy requested";
+    case NANOPUSH_TOUT_TOO_CLOSE: return "output time too close";
     default: return "unknown status";
   }
 }

@@ -1,9 +1,12 @@
 // C API: integrating a user's right-hand side (a C callback with udata) with the C++
 // Bulirsch-Stoer engine, dimension chosen at run time (bindings/nanopush.h).
 #include <cmath>
+#include <vector>
 #include <memory>
 #include <span>
 
+#include <limits>
+#include <algorithm>
 #include "capi_internal.hpp"
 #include "nanopush/numerics/bulirsch_stoer.hpp"
 
@@ -12,6 +15,56 @@ using namespace nanopush::capi;
 namespace {
 
 /// The method name -> the engine's option presets.
+/// What SUNDIALS' CVODE refuses before it starts, refused the same way (and named):
+///  - a non-finite t0, state or output time (bad input);
+///  - output times closer together than the integrator can step (CVODE's "tout too close to
+///    t0 to start integration"): consecutive distinct times, t0 first, less than
+///    1e-14 max(|t|, |t_prev|, span) apart, the Bulirsch-Stoer's smallest step (its step size
+///    underflow rule, span = tout[nout-1] - t0);
+///  - more accuracy than double precision gives: tolsf = eps ||y0||, the weighted RMS norm with
+///    weights 1 / (rtol |y_i| + atol_i), above 1 (CVODE's "too much accuracy requested").
+void check_start(const nanopush::BsOptions<double>& o, double t0, const double* y, int n, const double* tout,
+                 int nout) {
+  nanopush::require_finite("t0", t0);
+  for (int i = 0; i < n; ++i) nanopush::require_finite("y[" + std::to_string(i) + "]", y[i]);
+  constexpr double eps = std::numeric_limits<double>::epsilon();
+  double prev = t0;
+  const double span = std::fabs(tout[nout - 1] - t0);
+  for (int k = 0; k < nout; ++k) {
+    const double t = tout[k];
+    nanopush::require_finite("tout[" + std::to_string(k) + "]", t);
+    if (t < prev)
+      throw nanopush::InputError("tout[" + std::to_string(k) + "]", nanopush::fmt(t),
+                                 "must be >= " + std::string(k ? "tout[" + std::to_string(k - 1) + "]" : "t0") +
+                                     " = " + nanopush::fmt(prev) + " (output times non-decreasing from t0)");
+    if (t != prev && t - prev < 1e-14 * std::max({std::fabs(t), std::fabs(prev), span}))
+      throw StatusError(NANOPUSH_TOUT_TOO_CLOSE,
+                        "tout[" + std::to_string(k) + "] = " + nanopush::fmt(t) + " is too close to " +
+                            (k ? "tout[" + std::to_string(k - 1) + "]" : std::string("t0")) + " = " +
+                            nanopush::fmt(prev) + ": less than 1e-14 max(|t|, span) apart, the smallest step the "
+                            "integrator takes");
+    prev = t;
+  }
+  std::vector<double> r(static_cast<std::size_t>(n), 0.0);  // y_i / w_i, scaled below (no overflow)
+  double big = 0;
+  for (int i = 0; i < n; ++i) {
+    const double a = o.atol.size() == 1 ? o.atol[0] : o.atol[static_cast<std::size_t>(i)];
+    const double w = o.rtol * std::fabs(y[i]) + a;
+    if (y[i] != 0.0) r[static_cast<std::size_t>(i)] = w > 0 ? std::fabs(y[i]) / w : std::numeric_limits<double>::infinity();
+    big = std::max(big, r[static_cast<std::size_t>(i)]);
+  }
+  double sum = 0;
+  if (big > 0 && std::isfinite(big))
+    for (double x : r) sum += (x / big) * (x / big);
+  const double tolsf = std::isfinite(big) ? eps * big * std::sqrt(sum / n) : big;
+  if (tolsf > 1.0)
+    throw StatusError(NANOPUSH_TOO_MUCH_ACCURACY,
+                      "rtol = " + nanopush::fmt(o.rtol) +
+                          " with these atol asks for more accuracy than double precision gives (eps times the "
+                          "weighted norm of y0 is " + nanopush::fmt(tolsf) +
+                          " > 1): loosen rtol to >= 2.2e-16 relative, or give atol > 0 in each component's units");
+}
+
 nanopush::BsOptions<double> preset(const std::string& method, double rtol, std::vector<double> atol) {
   if (method.empty() || method == "faithful") return nanopush::BsOptions<double>::faithful(rtol, std::move(atol));
   if (method == "modern") return nanopush::BsOptions<double>::modern(rtol, std::move(atol));
@@ -26,7 +79,8 @@ nanopush_integrator nanopush_new_integrator(nanopush_error error, int n, const c
                                             const double* atol, int natol) {
   nanopush_integrator out = nullptr;
   guarded(error, [&] {
-    if (n < 1) throw nanopush::InputError("n", std::to_string(n), "must be >= 1 (number of ODE components)");
+    if (n < 1 || n > 1000000)
+      throw nanopush::InputError("n", std::to_string(n), "must be in [1, 1000000] (number of ODE components)");
     nanopush::require_nonnegative("rtol", rtol);
     if (natol != 1 && natol != n)
       throw nanopush::InputError("natol", std::to_string(natol), "must be 1 or n = " + std::to_string(n));
@@ -91,6 +145,7 @@ int nanopush_integrate(nanopush_error error, nanopush_integrator integrator, nan
     require_handle(tout, "tout");
     if (counts) counts[0] = counts[1] = counts[2] = 0;
     const int n = integrator->n;
+    check_start(integrator->options, t0, y, n, tout, nout);
     // A fresh engine per call: its work arrays are local, so calls never share state.
     nanopush::BulirschStoer<double, nanopush::Dynamic> bs(integrator->options, n);
     auto f = [rhs, udata, n](double t, const double* yy, double* dydt) { return rhs(n, t, yy, dydt, udata); };

@@ -63,7 +63,8 @@ module nanopush
                                 NANOPUSH_RHS_FAILED = 4, NANOPUSH_NOT_FINITE = 5, &
                                 NANOPUSH_SOLVER_FAILED = 6, NANOPUSH_NULL_HANDLE = 7, &
                                 NANOPUSH_BUFFER_TOO_SMALL = 8, NANOPUSH_OUT_OF_MEMORY = 9, &
-                                NANOPUSH_INTERNAL = 10
+                                NANOPUSH_INTERNAL = 10, NANOPUSH_TOO_MUCH_ACCURACY = 11, &
+                                NANOPUSH_TOUT_TOO_CLOSE = 12
   !> Rows of a trajectory array and their meaning.
   integer, parameter, public :: NANOPUSH_TRAJECTORY_COLUMNS = 10
   !> Components of the state (x, y, theta, vx, vy, omega), the rows of state_ext.

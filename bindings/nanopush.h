@@ -30,7 +30,7 @@ extern "C" {
 #endif
 
 /* Version of this interface: major * 10000 + minor * 100 + patch. */
-#define NANOPUSH_API_VERSION 400
+#define NANOPUSH_API_VERSION 500
 int nanopush_get_api_version(void);
 
 /* ---- Status codes ---------------------------------------------------------------------- */
@@ -46,6 +46,8 @@ int nanopush_get_api_version(void);
 #define NANOPUSH_BUFFER_TOO_SMALL 8 /* a caller array is too small; nothing was written */
 #define NANOPUSH_OUT_OF_MEMORY 9
 #define NANOPUSH_INTERNAL 10        /* any other C++ exception (a bug: please report) */
+#define NANOPUSH_TOO_MUCH_ACCURACY 11 /* integrate: rtol/atol ask more than double precision gives */
+#define NANOPUSH_TOUT_TOO_CLOSE 12    /* integrate: output times closer than the smallest step */
 
 /* Short fixed description of a status code ("bad input", ...); never NULL, static storage. */
 const char* nanopush_status_name(int status);
@@ -165,8 +167,13 @@ int nanopush_integrator_set_extrapolation(nanopush_error error, nanopush_integra
  *   yout          column-major (n, nout): yout[i + n*k] = y_i(tout[k]); may be NULL if unwanted.
  *                 On failure the columns not reached are left unchanged.
  *   counts[3]     out (may be NULL): RHS evaluations, accepted steps, rejected steps
- * Status: NANOPUSH_OK, NANOPUSH_BAD_INPUT, NANOPUSH_TOO_MANY_STEPS, NANOPUSH_STEP_UNDERFLOW,
- * NANOPUSH_RHS_FAILED, NANOPUSH_NOT_FINITE (as the F77 engine's IERR 0..5), NANOPUSH_NULL_HANDLE.
+ * Status: NANOPUSH_OK, NANOPUSH_BAD_INPUT (also non-finite t0, y or tout), NANOPUSH_TOO_MANY_STEPS,
+ * NANOPUSH_STEP_UNDERFLOW, NANOPUSH_RHS_FAILED, NANOPUSH_NOT_FINITE (as the F77 engine's IERR
+ * 0..5), NANOPUSH_NULL_HANDLE; before any step, as SUNDIALS' CVODE: NANOPUSH_TOUT_TOO_CLOSE
+ * (consecutive distinct output times, t0 first, less than 1e-14 max(|t|, tout[nout-1] - t0)
+ * apart: the integrator's smallest step) and
+ * NANOPUSH_TOO_MUCH_ACCURACY (eps times the RMS norm of y0 weighted by 1/(rtol|y_i|+atol_i)
+ * above 1, e.g. rtol = 1e-300 with atol = 0).
  * The integrator keeps no state between calls except its options; it is not thread-safe to share
  * one integrator between threads (create one per thread). */
 int nanopush_integrate(nanopush_error error, nanopush_integrator integrator, nanopush_rhs rhs, void* udata,

@@ -39,6 +39,23 @@ void Rod::validate() const {
   require_positive("rod.hamaker", hamaker, "J");
   require_positive("rod.z0", z0, "m");
   require_nonnegative("rod.gravity", gravity, "m/s^2");
+  // What the rod's properties derive from them must be finite and > 0, the message naming the
+  // inputs (L = 1e308 gave an infinite mass with status OK).
+  const auto derived = [](const std::string& fields, const std::string& values, double v, const char* what,
+                           const char* unit) {
+    if (!(std::isfinite(v) && v > 0.0))
+      throw InputError(fields, values, std::string("give ") + what + " = " + fmt(v) + " " + unit +
+                                           ", which must be finite and > 0 (inputs too large or too small)");
+  };
+  const std::string L = fmt(length), r = fmt(radius), rho = fmt(density);
+  derived("rod.density, rod.radius, rod.length", rho + ", " + r + ", " + L, mass(), "the mass", "kg");
+  derived("rod.length", L, gyration_squared(), "k^2 = L^2/12", "m^2");
+  derived("rod.density, rod.radius, rod.length", rho + ", " + r + ", " + L, inertia(), "the moment of inertia",
+          "kg m^2");
+  derived("rod.length, rod.hamaker, rod.radius, rod.z0", L + ", " + fmt(hamaker) + ", " + r + ", " + fmt(z0),
+          vdw_force(), "the van der Waals force", "N");
+  derived("rod.density, rod.radius, rod.length, rod.gravity, ...", rho + ", " + r + ", " + L + ", " + fmt(gravity),
+          load(), "the load W", "N");
 }
 double Rod::mass() const { return density * std::numbers::pi * radius * radius * length; }
 double Rod::inertia() const { return mass() * length * length / 12.0; }

@@ -561,7 +561,7 @@ Scene load_scene(const std::filesystem::path& path) {
   namespace fs = std::filesystem;
   std::error_code ec;
   const fs::file_status st = fs::status(path, ec);
-  if (ec || !fs::exists(st)) throw InputError("SCENE", path.string(), "no such file (nor a preset of that name)");
+  if (ec || !fs::exists(st)) throw InputError("SCENE", path.string(), "no such file");
   if (fs::is_directory(st)) throw InputError("SCENE", path.string(), "is a directory: give a scene file (.toml)");
   if (!fs::is_regular_file(st))
     throw InputError("SCENE", path.string(), "not a regular file (a device, FIFO or socket): give a scene file (.toml)");

@@ -66,6 +66,13 @@ program test_fortran_errors
   call expect(stat, NANOPUSH_BAD_INPUT, msg, "kmax = 20: must be in [3, 12]", "bad kmax")
   call nanopush_integrate(vdp_rhs, 0.0_dp, y, [1.0_dp], yout, rtol=-1e-3_dp, ctx=p, stat=stat, errmsg=msg)
   call expect(stat, NANOPUSH_BAD_INPUT, msg, "rtol = -0.001: must be >= 0", "negative rtol")
+  ! The checks SUNDIALS' CVODE makes before its first step, under their Fortran names.
+  call nanopush_integrate(vdp_rhs, 0.0_dp, y, [1.0_dp], yout, rtol=1e-300_dp, atol=[0.0_dp], ctx=p, &
+                          stat=stat, errmsg=msg)
+  call expect(stat, NANOPUSH_TOO_MUCH_ACCURACY, msg, "more accuracy than double precision", "rtol 1e-300")
+  call nanopush_integrate(vdp_rhs, 0.0_dp, y, [1.0_dp, nearest(1.0_dp, 2.0_dp)], yout, ctx=p, stat=stat, errmsg=msg)
+  call expect(stat, NANOPUSH_TOUT_TOO_CLOSE, msg, "is too close to tout[0] = 1", "tout one ulp apart")
+  call check(NANOPUSH_TOO_MUCH_ACCURACY == 11 .and. NANOPUSH_TOUT_TOO_CLOSE == 12, "status values as in nanopush.h")
   call nanopush_integrate(vdp_rhs, 0.0_dp, y, [100.0_dp], yout, maxstp=5, ctx=p, stat=stat, errmsg=msg)
   call expect(stat, NANOPUSH_TOO_MANY_STEPS, msg, "more than 5 steps", "maxstp exceeded")
   ! The RHS reports a failure (stat = 7 once t > 0.5): the integration stops with status 4.
@@ -126,7 +133,7 @@ program test_fortran_errors
 
   ! Status names.
   call check(nanopush_status_name(NANOPUSH_BAD_INPUT) == "bad input", "status name")
-  call check(nanopush_api_version() == 400, "API version 0.4.0")
+  call check(nanopush_api_version() == 500, "API version 0.5.0")
 
   if (failures > 0) error stop "test_fortran_errors: failures above"
   print '(a)', "all checks hold"

@@ -125,3 +125,10 @@ set_target_properties(capi_test_fortran_scene_set PROPERTIES
   Fortran_MODULE_DIRECTORY ${NANOPUSH_MODDIR}/capi_test_fortran_scene_set)
 add_test(NAME capi.fortran_scene_set COMMAND capi_test_fortran_scene_set ${_capi_rough_scene})
 set_tests_properties(capi.fortran_scene_set PROPERTIES PASS_REGULAR_EXPRESSION "fortran scene_set: all checks hold")
+
+# Hardening of the C API (issue: hardening): CVODE's start checks, non-finite arguments, bounded
+# counts, derived quantities, conflicts; the Fortran names of the new statuses.
+add_executable(capi_test_hardening ${_capi_dir}/test_capi_hardening.c)
+target_link_libraries(capi_test_hardening PRIVATE nanopush_capi nanopush_warnings m)
+add_test(NAME capi.c_hardening COMMAND capi_test_hardening ${PROJECT_SOURCE_DIR}/drivers/scenes/thesis/fig3_6a.toml)
+set_tests_properties(capi.c_hardening PROPERTIES PASS_REGULAR_EXPRESSION "capi hardening: all checks hold")
