@@ -41,6 +41,8 @@ program test_fortran_errors
   call expect(stat, NANOPUSH_OK, msg, "", "good scene")
   call nanopush_run(scene, traj, engine="gpu", stat=stat, errmsg=msg)
   call expect(stat, NANOPUSH_BAD_INPUT, msg, "engine = gpu: must be cxx or f77", "bad engine")
+  call nanopush_run(scene, traj, engine="f77", method="modern", stat=stat, errmsg=msg)
+  call expect(stat, NANOPUSH_BAD_INPUT, msg, "method = modern: the f77 engine has one method", "f77 with modern")
   call nanopush_run(scene, traj, method="sloppy", stat=stat, errmsg=msg)
   call expect(stat, NANOPUSH_BAD_INPUT, msg, "method = sloppy", "bad method")
   call nanopush_run(scene, traj, rtol=-1.0_dp, stat=stat, errmsg=msg)
