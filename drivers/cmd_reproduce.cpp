@@ -17,7 +17,10 @@ struct Options {
   std::vector<std::string> only;
   bool quick = false;
   bool list = false;
+  bool no_bench = false;  ///< thesis content only: skip the work-precision benchmarks (bench_*)
 };
+
+bool is_benchmark(const std::string& step) { return step.rfind("bench_", 0) == 0; }
 
 int run_reproduce(const Options& o) {
   auto steps = reproduce_steps();
@@ -52,10 +55,14 @@ int run_reproduce(const Options& o) {
              << "the printed values we compare against, which are labelled as such.\n\n";
   const auto t_all = std::chrono::steady_clock::now();
   std::size_t i = 0, n = 0;
+  const auto selected = [&](const std::string& name) {
+    if (o.no_bench && is_benchmark(name)) return false;
+    return o.only.empty() || std::find(o.only.begin(), o.only.end(), name) != o.only.end();
+  };
   for (auto& s : steps)
-    if (o.only.empty() || std::find(o.only.begin(), o.only.end(), s.name) != o.only.end()) ++n;
+    if (selected(s.name)) ++n;
   for (auto& s : steps) {
-    if (!o.only.empty() && std::find(o.only.begin(), o.only.end(), s.name) == o.only.end()) continue;
+    if (!selected(s.name)) continue;
     ++i;
     std::cerr << "[" << i << "/" << n << "] " << s.name << ": " << s.description << " ..." << std::flush;
     const auto t0 = std::chrono::steady_clock::now();
@@ -98,6 +105,9 @@ RegisterCommand reg{{"reproduce",
                        app.add_option("--only", o->only, "run only these steps (see --list)");
                        app.add_flag("--quick", o->quick, "fewer samples per figure (for tests)");
                        app.add_flag("--list", o->list, "list the steps and exit");
+                       app.add_flag("--no-bench", o->no_bench,
+                                    "thesis content only: skip the work-precision benchmarks (the bench_* steps, most "
+                                    "of the run time)");
                        return [o] { return run_reproduce(*o); };
                      }}};
 
