@@ -1,0 +1,283 @@
+"""nanopush: mechanics of pushing nano-objects (AFM manipulation), from Python.
+
+The C++ solver of nanopush bound with pybind11: NumPy arrays in and out, SI units
+everywhere, the same numbers (bit for bit) as the ``nanopush`` command line and the C,
+C++ and Fortran interfaces.
+
+>>> import nanopush
+>>> scene = nanopush.Scene.preset("fig3_6a")
+>>> scene.set("push.force", 2e-9)                  # any scene key, validated
+>>> r = nanopush.run(scene, engine="cxx", method="faithful")
+>>> r.theta[-1], r.nfcn                            # NumPy arrays, counts
+>>> fx, fy, mf = nanopush.friction_wrench(27.5e-9, 50e-9, R, alpha)   # any shapes
+
+Contents
+--------
+Scene, presets, scene_keys       scene files and the preset scenes (docs/scenes.md)
+run, compare, Result             a scene integrated by the C++ or the F77 engine
+friction_wrench, friction_from_velocity   closed-form friction over a rectangle
+icor                             iCOR formulas of thesis ch. 4-5, the cubic, dynamic iCOR
+estimate_mu                      mu from measurements, with its uncertainty
+sweep                            many points on C++ threads (docs/sweeps.md)
+InputError (a ValueError), SolverError (a RuntimeError)   the library's errors
+
+docs/python.md in the source tree has the install and the examples.
+"""
+
+import os as _os
+import pathlib as _pathlib
+
+from ._nanopush import (  # noqa: F401  (re-exported)
+    InputError,
+    MuEstimate,
+    Result,
+    Scene,
+    SolverError,
+    Wrench,
+    __version__,
+    estimate_mu,
+    friction_from_velocity,
+    friction_wrench,
+    scene_keys,
+)
+from . import _nanopush
+from . import icor  # noqa: F401
+
+__all__ = [
+    "Scene", "presets", "scenes_dir", "scene_keys", "run", "compare", "Result", "Comparison",
+    "friction_wrench", "friction_from_velocity", "Wrench", "icor", "estimate_mu", "MuEstimate",
+    "sweep", "SweepResult", "InputError", "SolverError", "__version__",
+]
+
+# ---- presets ----------------------------------------------------------------------------
+
+
+def scenes_dir():
+    """The directory of the preset scenes: $NANOPUSH_SCENES if set, else the scenes shipped
+    inside the package (the same files as ``nanopush presets`` lists)."""
+    env = _os.environ.get("NANOPUSH_SCENES")
+    if env:
+        return _pathlib.Path(env)
+    return _pathlib.Path(__file__).resolve().parent / "scenes"
+
+
+def _first_comment(path):
+    with open(path, encoding="utf-8") as f:
+        for line in f:
+            s = line.strip()
+            if s.startswith("#"):
+                return s.lstrip("#").strip()
+    return ""
+
+
+def _resolve_preset(name):
+    """The file of a preset name, searched as ``nanopush run`` does: NAME.toml or NAME under
+    scenes_dir(), then its thesis/, bench/ and examples/ folders."""
+    d = scenes_dir()
+    for cand in (d / (name + ".toml"), d / name):
+        if cand.is_file():
+            return cand
+    for sub in ("thesis", "bench", "examples"):
+        cand = d / sub / (name + ".toml")
+        if cand.is_file():
+            return cand
+    raise InputError(f"SCENE = {name}: no preset of that name under {d} (nanopush.presets() lists them)")
+
+
+def presets():
+    """The preset scenes as a dict {name: one-line description}, sorted by name. Names are
+    what Scene.preset and ``nanopush run`` accept: the short name (``fig3_6a``) when it finds
+    the file, else the path under scenes_dir() (``examples/foo``)."""
+    d = scenes_dir()
+    if not d.is_dir():
+        raise InputError(f"scenes directory = {d}: no such directory (set NANOPUSH_SCENES)")
+    out = {}
+    for path in sorted(d.rglob("*.toml")):
+        full = path.relative_to(d).with_suffix("").as_posix()
+        name = full
+        try:
+            if _resolve_preset(path.stem).resolve() == path.resolve():
+                name = path.stem
+        except InputError:
+            pass
+        out[name] = _first_comment(path)
+    return dict(sorted(out.items()))
+
+
+def _preset(name):
+    """A preset scene by name (``fig3_6a``, ``thesis/fig3_6a``; nanopush.presets() lists them)."""
+    return Scene.from_file(str(_resolve_preset(name)))
+
+
+Scene.preset = staticmethod(_preset)
+
+
+def _as_scene(scene):
+    if isinstance(scene, Scene):
+        return scene
+    if isinstance(scene, (str, _os.PathLike)):
+        p = _pathlib.Path(scene)
+        if p.is_file():
+            return Scene.from_file(str(p))
+        return _preset(str(scene))
+    raise TypeError(f"scene must be a nanopush.Scene, a preset name or a file, not {type(scene).__name__}")
+
+
+# ---- run and compare ------------------------------------------------------------------
+
+
+def run(scene, engine=None, method=None, law=None, rtol=None, atol=None, precision=None):
+    """Integrate a scene and return its trajectory (a nanopush.Result).
+
+    scene      a nanopush.Scene, a preset name (``"fig3_6a"``) or a scene file
+    engine     ``"cxx"`` (the C++ solver) or ``"f77"`` (the FORTRAN 77 reproduction);
+               default: the scene's solver.engine
+    method     C++ engine: ``"faithful"`` (the F77 engine's steps exactly), ``"modern"``, or
+               ``"cvode"`` (rough scenes under the coulomb law); default: the scene's
+    law        rough scenes: ``"thesis"`` (eq 3.40 sign law) or ``"coulomb"`` (event-located
+               stick-slip); default: the scene's surface.law
+    rtol       relative tolerance (> 0); default: the scene's solver.rtol
+    atol       absolute tolerance [SI of each state] (>= 0; 0 = rtol times each component's
+               natural scale); default: the scene's
+    precision  ``"double"``, ``"long"`` or ``"quad"`` (C++ engine, smooth scenes); default:
+               the scene's
+
+    The result has NumPy arrays t, x, y, theta, vx, vy, omega, fx, fy, mf (SI, world axes),
+    the counts nfcn, steps, rejected, and to_dict() / to_csv(path). The same numbers, bit
+    for bit, as ``nanopush run SCENE --engine ... --method ...``. The GIL is released while
+    the engine runs. Raises nanopush.InputError (a ValueError) for bad settings and
+    nanopush.SolverError when the integrator gives up (with .status and .partial).
+    """
+    return _nanopush._run(_as_scene(scene), engine or "", method or "", law or "", rtol, atol, precision or "")
+
+
+class Comparison:
+    """The two engines side by side (nanopush.compare): ``cxx`` and ``f77`` (Results),
+    ``columns`` (per trajectory column except t: max_abs_diff, unit, relative = max |diff| /
+    scale, scale = max |value|, ok), ``tolerance`` and ``agree`` (every column within it)."""
+
+    def __init__(self, cxx, f77, columns, tolerance):
+        self.cxx, self.f77, self.columns, self.tolerance = cxx, f77, columns, tolerance
+        self.agree = len(cxx) == len(f77) and all(c["ok"] for c in columns.values())
+
+    def __bool__(self):
+        return self.agree
+
+    def __repr__(self):
+        worst = max((c["relative"] for c in self.columns.values()), default=0.0)
+        return (f"<nanopush.Comparison {self.cxx.engine} vs {self.f77.engine}: worst relative deviation "
+                f"{worst:.3g}, tolerance {self.tolerance:.3g} -> {'agree' if self.agree else 'DISAGREE'}>")
+
+
+def compare(scene, method="faithful", rtol=None, atol=None, tolerance=None):
+    """Run a scene with both engines, the C++ (``method``, faithful or modern) and the F77,
+    under the thesis friction law (the one both implement), and compare them column by
+    column as ``nanopush compare`` does: the largest deviation relative to the column's
+    largest magnitude must be within ``tolerance`` (default 100 rtol). Returns a Comparison
+    (true when the engines agree)."""
+    import numpy as np
+
+    sc = _as_scene(scene)
+    a = run(sc, engine="cxx", method=method, law="thesis", rtol=rtol, atol=atol)
+    b = run(sc, engine="f77", law="thesis", rtol=rtol, atol=atol)
+    tol = tolerance if tolerance is not None and tolerance > 0 else 100 * a.rtol
+    cols = {}
+    if len(a) == len(b):
+        for name in Result.columns[1:]:
+            x, y = getattr(a, name), getattr(b, name)
+            maxabs = float(np.max(np.abs(x - y))) if len(x) else 0.0
+            scale = float(max(np.max(np.abs(x)), np.max(np.abs(y)))) if len(x) else 0.0
+            rel = maxabs / scale if scale > 0 else maxabs
+            cols[name] = {"max_abs_diff": maxabs, "unit": Result.units[name], "relative": rel,
+                          "scale": scale, "ok": rel <= tol}
+    return Comparison(a, b, cols, tol)
+
+
+# ---- sweeps ---------------------------------------------------------------------------
+
+
+class SweepResult:
+    """The table of a sweep, one row per point in point order (docs/sweeps.md): columns by
+    name (``result["fx"]``: float arrays, NaN where a cell is missing; integer columns as
+    int64 when complete; text columns as str arrays), ``columns`` (names, in order),
+    ``units``, ``status`` and ``message`` per point, ``ok`` (a boolean mask), ``failed``
+    (the number of points whose status is not ok) and to_dict()."""
+
+    def __init__(self, names, units, data):
+        self.columns, self.units, self._data = list(names), dict(units), data
+
+    def __getitem__(self, name):
+        return self._data[name]
+
+    def __contains__(self, name):
+        return name in self._data
+
+    def __len__(self):
+        return len(self._data["point"])
+
+    @property
+    def status(self):
+        return self._data["status"]
+
+    @property
+    def message(self):
+        return self._data["message"]
+
+    @property
+    def ok(self):
+        return self._data["status"] == "ok"
+
+    @property
+    def failed(self):
+        return int((~self.ok).sum())
+
+    def to_dict(self):
+        """The columns as a dict of arrays, in order (pandas.DataFrame(result.to_dict()))."""
+        return {k: self._data[k] for k in self.columns}
+
+    def __repr__(self):
+        return f"<nanopush.SweepResult {len(self)} points, {self.failed} failed, columns {self.columns}>"
+
+
+_TASKS = ("friction", "icor", "estimate-mu")
+
+
+def sweep(task, vary=None, *, vary_log=None, points=None, set=None, jobs=0, engine=None, method=None, law=None,
+          check=False):
+    """Evaluate a task at every point of a plan on C++ threads (the GIL released) and return
+    the table as a SweepResult (the rows of ``nanopush sweep``, without files).
+
+    task      a nanopush.Scene, a preset name or a scene file: the ``run`` task (the final
+              pose, distance, rotation, iCOR, stick time, peak friction, work, counts of
+              each run); or ``"friction"``, ``"icor"``, ``"estimate-mu"``
+    vary      {key: values}: the axes of a cartesian grid, the last varying fastest; values
+              are a sequence (numbers, or text for text keys) or ``"FROM:TO:N"``
+    vary_log  {key: "FROM:TO:N"}: geometrically spaced axes (after the ``vary`` axes)
+    points    {key: values} of equal lengths: a list of points instead of a grid
+    set       {key: value}: fixed for every point (scene keys for a run; the task's keys,
+              e.g. {"a": 27.5e-9, "b": 50e-9}, otherwise)
+    jobs      threads (0: every core); the table is the same for any number
+    engine, method, law   the run task's, as for nanopush.run
+    check     raise nanopush.SolverError if any point failed (default: keep the status and
+              message of each point in the table)
+
+    Keys and units per task: docs/sweeps.md. Bad keys or values raise nanopush.InputError
+    before any point runs.
+    """
+    scene = None
+    if isinstance(task, str) and task in _TASKS:
+        name = task
+    elif isinstance(task, str) and task == "run":
+        raise InputError("task = run: a run sweep takes a scene (nanopush.Scene, a preset name or a file)")
+    else:
+        scene, name = _as_scene(task), "run"
+    axes = [(k, v, False) for k, v in (vary or {}).items()]
+    axes += [(k, v, True) for k, v in (vary_log or {}).items()]
+    names, units, data = _nanopush._sweep(name, scene, axes, points, dict(set or {}), int(jobs),
+                                         engine or "", method or "", law or "")
+    res = SweepResult(names, units, data)
+    if check and res.failed:
+        bad = [i for i, ok in enumerate(res.ok) if not ok]
+        raise SolverError(f"sweep: {res.failed} of {len(res)} points failed; first, point {bad[0]}: "
+                          f"{res.status[bad[0]]}: {res.message[bad[0]]}")
+    return res

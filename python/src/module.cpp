@@ -1,0 +1,105 @@
+// The extension module nanopush._nanopush: the C++ API of nanopush for Python. The package
+// (python/nanopush/__init__.py) re-exports it with the pure-Python parts (presets, Result).
+#include "common.hpp"
+
+#include <cmath>
+
+#include "nanopush/numerics/bulirsch_stoer.hpp"
+
+namespace nanopush::python {
+
+DArray as_double_array(const py::handle& obj, const char* name) {
+  if (obj.is_none()) throw InputError(name, "None", "must be a real number or an array of real numbers");
+  auto a = DArray::ensure(obj);
+  if (!a) {
+    PyErr_Clear();
+    throw InputError(name, py::repr(obj).cast<std::string>(), "must be a real number or an array of real numbers");
+  }
+  return a;
+}
+
+py::object scalar_or_array(const py::array_t<double>& a) {
+  if (a.ndim() == 0) return py::float_(*a.data());
+  return a;
+}
+
+namespace {
+
+// Owned for the life of the process (never released at interpreter exit).
+PyObject* g_input_error = nullptr;
+PyObject* g_solver_error = nullptr;
+
+}  // namespace
+
+py::object make_result(const Trajectory& tr);  // run.cpp
+
+void register_errors(py::module_& m) {
+  // nanopush.InputError(ValueError): bad input, the library's "field = value: requirement".
+  g_input_error = PyErr_NewExceptionWithDoc("nanopush.InputError",
+                                "Bad input: the library's message names the field, the value and the allowed "
+                                "range (e.g. 'object.mass = -1: must be > 0 (kg)').\n\n"
+                                "Attributes: field (str, '' when the message names none), index (tuple: the "
+                                "element of a broadcast call, None otherwise).",
+                                PyExc_ValueError, nullptr);
+  if (!g_input_error) throw py::error_already_set();
+  // nanopush.SolverError(RuntimeError): the integrator or a root finder gave up.
+  g_solver_error = PyErr_NewExceptionWithDoc("nanopush.SolverError",
+                                "A numerical failure (too many steps, step size underflow, non-finite state, a "
+                                "root finder that did not converge).\n\n"
+                                "Attributes: status (str: too_many_steps, step_underflow, rhs_failed, not_finite, "
+                                "bad_input, or solver_failure when the failure has no integrator status), "
+                                "status_code (int, the integrator's status as in the C API; None without one), "
+                                "t_reached (float [s] or None), partial (the Result of the samples computed "
+                                "before the failure, or None).",
+                                PyExc_RuntimeError, nullptr);
+  if (!g_solver_error) throw py::error_already_set();
+  m.attr("InputError") = py::handle(g_input_error);
+  m.attr("SolverError") = py::handle(g_solver_error);
+
+  py::register_exception_translator([](std::exception_ptr p) {
+    if (!p) return;
+    try {
+      std::rethrow_exception(p);
+    } catch (const IndexedInputError& e) {
+      py::object ex = py::handle(g_input_error)(e.what());
+      ex.attr("field") = e.field();
+      ex.attr("index") = py::tuple(py::cast(e.index()));
+      PyErr_SetObject(g_input_error, ex.ptr());
+    } catch (const InputError& e) {
+      py::object ex = py::handle(g_input_error)(e.what());
+      ex.attr("field") = e.field();
+      ex.attr("index") = py::none();
+      PyErr_SetObject(g_input_error, ex.ptr());
+    } catch (const RunFailure& e) {
+      py::object ex = py::handle(g_solver_error)(e.what());
+      const auto& st = e.partial().stats;
+      ex.attr("status") = std::string(to_string(st.status));
+      ex.attr("status_code") = static_cast<int>(st.status);
+      ex.attr("t_reached") = st.t_reached;
+      ex.attr("partial") = make_result(e.partial());
+      PyErr_SetObject(g_solver_error, ex.ptr());
+    } catch (const SolverError& e) {
+      py::object ex = py::handle(g_solver_error)(e.what());
+      ex.attr("status") = "solver_failure";
+      ex.attr("status_code") = py::none();
+      ex.attr("t_reached") = py::none();
+      ex.attr("partial") = py::none();
+      PyErr_SetObject(g_solver_error, ex.ptr());
+    }
+  });
+}
+
+}  // namespace nanopush::python
+
+PYBIND11_MODULE(_nanopush, m) {
+  using namespace nanopush::python;
+  m.doc() = "nanopush: mechanics of pushing nano-objects (C++ core; use the package `nanopush`).";
+  register_errors(m);
+  register_scenes(m);
+  register_run(m);
+  register_friction(m);
+  register_icor(m);
+  register_estimate_mu(m);
+  register_sweep(m);
+  m.attr("__version__") = NANOPUSH_VERSION;
+}

@@ -1,0 +1,177 @@
+// nanopush.run: a scene integrated by the C++ or the F77 engine (run_engine), the trajectory
+// as NumPy arrays; nanopush.Result. (compare is in Python, over two runs.)
+#include "common.hpp"
+
+#include <chrono>
+
+#include "nanopush/engines/engines.hpp"
+#include "nanopush/outputs/io.hpp"
+#include "nanopush/outputs/trajectory_csv.hpp"
+
+namespace nanopush::python {
+
+namespace {
+
+/// What nanopush.run returns: the trajectory, the scene's name and the integration's wall time.
+struct RunResult {
+  Trajectory tr;
+  std::string scene;
+  double wall_s = 0.0;
+};
+
+/// A read-only view of column k (k < 0: the whole n x 10 table) of the result `self`.
+py::array column_view(const py::object& self, int k) {
+  const auto& r = self.cast<const RunResult&>();
+  const auto n = static_cast<py::ssize_t>(r.tr.rows.size());
+  const double* data = n > 0 ? r.tr.rows.front().data() : nullptr;
+  static const double empty[10] = {};
+  if (!data) data = empty;
+  constexpr auto row = static_cast<py::ssize_t>(sizeof(TrajectoryRow));
+  py::array a = k < 0 ? py::array_t<double>({n, py::ssize_t{10}}, {row, py::ssize_t{sizeof(double)}}, data, self)
+                      : py::array_t<double>({n}, {row}, data + k, self);
+  a.attr("setflags")(py::arg("write") = false);
+  return a;
+}
+
+py::array_t<double> copy_vector(const std::vector<double>& v) {
+  return py::array_t<double>(static_cast<py::ssize_t>(v.size()), v.data());
+}
+
+RunResult run(const Scene& scene, const std::string& engine, const std::string& method, const std::string& law,
+              const py::object& rtol, const py::object& atol, const std::string& precision) {
+  RunSettings rs;
+  rs.engine = engine;  // "" = the scene's (run_engine)
+  rs.method = method;
+  rs.law = law;
+  rs.precision = precision;
+  rs.rtol = 0.0;
+  rs.atol = -1.0;
+  if (!rtol.is_none()) {
+    rs.rtol = rtol.cast<double>();
+    require_positive("rtol", rs.rtol);
+  }
+  if (!atol.is_none()) {
+    rs.atol = atol.cast<double>();
+    require_nonnegative("atol", rs.atol);
+  }
+  rs.allow_partial = true;  // a failure becomes nanopush.SolverError carrying the partial result
+  RunResult r;
+  r.scene = scene.name;
+  {
+    py::gil_scoped_release release;
+    const auto t0 = std::chrono::steady_clock::now();
+    r.tr = run_engine(scene, rs);
+    r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  }
+  if (!r.tr.complete) {
+    const auto& st = r.tr.stats;
+    throw RunFailure(scene.name + " (" + r.tr.engine_label + "): " + to_string(st.status) +
+                         (st.message.empty() ? "" : ": " + st.message),
+                     r.tr);
+  }
+  return r;
+}
+
+}  // namespace
+
+py::object make_result(const Trajectory& tr) {
+  RunResult r;
+  r.tr = tr;
+  return py::cast(std::move(r));
+}
+
+void register_run(py::module_& m) {
+  auto cls = py::class_<RunResult>(m, "Result", R"doc(A trajectory: one row per output time, SI, world axes, centre of mass.
+
+Columns (read-only NumPy arrays): t [s], x, y [m], theta [rad], vx, vy [m/s], omega [rad/s],
+fx, fy [N] (friction force), mf [N m] (friction moment); `array` is the n x 10 table.
+Counts: nfcn (right-hand-side evaluations), steps (accepted), rejected. to_dict() gives a
+dict of arrays (pandas.DataFrame(result.to_dict())); to_csv(path) writes the CSV of
+`nanopush run --out` (and its Table Schema sidecar).)doc");
+  const auto& cols = trajectory_columns();
+  const auto& units = trajectory_units();
+  for (std::size_t k = 0; k < cols.size(); ++k) {
+    const int kk = static_cast<int>(k);
+    cls.def_property_readonly(
+        cols[k].c_str(), [kk](const py::object& self) { return column_view(self, kk); },
+        (cols[k] + " [" + units[k] + "] at each output time (read-only view)").c_str());
+  }
+  cls.def_property_readonly(
+         "array", [](const py::object& self) { return column_view(self, -1); },
+         "The trajectory as an n x 10 read-only array, columns t, x, y, theta, vx, vy, omega, fx, fy, mf.")
+      .def_property_readonly_static("columns", [](const py::object&) { return trajectory_columns(); },
+                                    "Column names, in order.")
+      .def_property_readonly_static(
+          "units",
+          [](const py::object&) {
+            py::dict d;
+            for (std::size_t k = 0; k < trajectory_columns().size(); ++k)
+              d[py::str(trajectory_columns()[k])] = trajectory_units()[k];
+            return d;
+          },
+          "Unit of each column.")
+      .def(
+          "to_dict",
+          [](const py::object& self) {
+            py::dict d;
+            const auto& r = self.cast<const RunResult&>();
+            for (std::size_t k = 0; k < trajectory_columns().size(); ++k) {
+              py::array_t<double> a(static_cast<py::ssize_t>(r.tr.rows.size()));
+              double* p = a.mutable_data();
+              for (std::size_t i = 0; i < r.tr.rows.size(); ++i) p[i] = r.tr.rows[i][k];
+              d[py::str(trajectory_columns()[k])] = a;
+            }
+            return d;
+          },
+          "The columns as a dict of independent (writable, contiguous) arrays: pandas.DataFrame(r.to_dict()).")
+      .def(
+          "to_csv",
+          [](const RunResult& r, const std::string& path) {
+            py::gil_scoped_release release;
+            write_trajectory_csv(r.tr, path, r.scene);
+          },
+          py::arg("path"),
+          "Write the CSV of `nanopush run --out PATH` (shortest round-trip numbers) with its sidecar "
+          "PATH.schema.json; atomic (a temporary name renamed when complete).")
+      .def_property_readonly("nfcn", [](const RunResult& r) { return r.tr.stats.nfcn; }, "Right-hand-side evaluations.")
+      .def_property_readonly("steps", [](const RunResult& r) { return r.tr.stats.naccpt; }, "Accepted steps.")
+      .def_property_readonly("rejected", [](const RunResult& r) { return r.tr.stats.nrejct; }, "Rejected steps.")
+      .def_property_readonly("engine", [](const RunResult& r) { return r.tr.engine_label; },
+                             "The engine and configuration that ran, e.g. 'cxx-faithful', 'f77', "
+                             "'cxx-faithful-coulomb'.")
+      .def_property_readonly("precision", [](const RunResult& r) { return r.tr.precision; },
+                             "Scalar of the integration: double, long or quad (columns always hold doubles).")
+      .def_property_readonly("rtol", [](const RunResult& r) { return r.tr.rtol; }, "Relative tolerance used.")
+      .def_property_readonly("atol", [](const RunResult& r) { return copy_vector(r.tr.atol); },
+                             "Absolute tolerance of each state component (SI).")
+      .def_property_readonly("complete", [](const RunResult& r) { return r.tr.complete; },
+                             "False only for the partial result a SolverError carries.")
+      .def_property_readonly("status", [](const RunResult& r) { return std::string(to_string(r.tr.stats.status)); },
+                             "The integrator's status: success, or why it stopped.")
+      .def_property_readonly("scene", [](const RunResult& r) { return r.scene; }, "The scene's name.")
+      .def_property_readonly("wall_time", [](const RunResult& r) { return r.wall_s; },
+                             "Wall time of the integration [s] (as `nanopush run` reports it).")
+      .def_property_readonly("work_push", [](const RunResult& r) { return copy_vector(r.tr.work_push); },
+                             "Rough scenes: work of the push from t = 0 to each sample [J] (empty otherwise).")
+      .def_property_readonly("work_friction", [](const RunResult& r) { return copy_vector(r.tr.work_fric); },
+                             "Rough scenes: work of friction from t = 0 to each sample [J] (empty otherwise).")
+      .def_property_readonly(
+          "events",
+          [](const RunResult& r) {
+            py::list l;
+            for (const auto& e : r.tr.events) l.append(py::make_tuple(e.t, e.stuck));
+            return l;
+          },
+          "Coulomb law: (t [s], stuck) at each instant the body came to rest.")
+      .def("__len__", [](const RunResult& r) { return r.tr.rows.size(); })
+      .def("__repr__", [](const RunResult& r) {
+        return "<nanopush.Result " + r.scene + " [" + r.tr.engine_label + "]: " + std::to_string(r.tr.rows.size()) +
+               " samples, " + std::to_string(r.tr.stats.nfcn) + " RHS evaluations>";
+      });
+
+  m.def("_run", &run, py::arg("scene"), py::arg("engine") = "", py::arg("method") = "", py::arg("law") = "",
+        py::arg("rtol") = py::none(), py::arg("atol") = py::none(), py::arg("precision") = "",
+        "Integrate a scene (nanopush.run is the documented entry point).");
+}
+
+}  // namespace nanopush::python

@@ -1,0 +1,163 @@
+// nanopush.sweep: many points at once through the sweep engine (sweeps/sweep.hpp): a plan (a
+// cartesian grid or a list of points), a task (run, friction, icor, estimate-mu), evaluated on
+// C++ threads with the GIL released; the table comes back as columns.
+#include "common.hpp"
+
+#include <cmath>
+
+#include "nanopush/sweeps/sweep.hpp"
+
+namespace nanopush::python {
+
+namespace {
+
+/// A plan value as the command line's parse_axis reads it: a number, a flag or text.
+SceneValue plan_value(const std::string& key, const py::handle& v) {
+  if (py::isinstance<py::bool_>(v) || py::isinstance(v, py::module_::import("numpy").attr("bool_")))
+    return SceneValue(v.cast<bool>());
+  if (py::isinstance<py::str>(v)) return SceneValue(v.cast<std::string>());
+  if (PyNumber_Check(v.ptr())) {
+    const double d = PyFloat_AsDouble(v.ptr());
+    if (d == -1.0 && PyErr_Occurred()) throw py::error_already_set();
+    require_finite(key, d);
+    return SceneValue(d);
+  }
+  throw InputError(key, py::repr(v).cast<std::string>(), "must be a number, a flag or text");
+}
+
+std::vector<SceneValue> plan_values(const std::string& key, const py::handle& values) {
+  std::vector<SceneValue> out;
+  if (py::isinstance<py::str>(values)) {  // "FROM:TO:N" or "V1,V2,..." as on the command line
+    return sweep::parse_axis(key + "=" + values.cast<std::string>(), false).values;
+  }
+  if (!py::isinstance<py::iterable>(values))
+    throw InputError(key, py::repr(values).cast<std::string>(), "must be a sequence of values or 'FROM:TO:N'");
+  for (auto v : values) out.push_back(plan_value(key, v));
+  return out;
+}
+
+py::dict table(const sweep::Plan& plan, const sweep::Task& task, const std::vector<std::vector<std::string>>& rows) {
+  const Columns cols = sweep::table_columns(plan, task);
+  py::dict out;
+  const auto n = static_cast<py::ssize_t>(rows.size());
+  for (std::size_t c = 0; c < cols.size(); ++c) {
+    const auto& col = cols[c];
+    if (col.type == "string") {
+      py::list l;
+      for (const auto& r : rows) l.append(r[c]);
+      out[py::str(col.name)] = py::module_::import("numpy").attr("array")(l, py::arg("dtype") = "str");
+      continue;
+    }
+    py::array_t<double> a(n);
+    bool whole = col.type == "integer";
+    for (py::ssize_t i = 0; i < n; ++i) {
+      const std::string& cell = rows[static_cast<std::size_t>(i)][c];
+      const double v = sweep::cell_number(cell);
+      a.mutable_at(i) = v;
+      if (cell.empty()) whole = false;
+    }
+    if (whole)
+      out[py::str(col.name)] = a.attr("astype")("int64");
+    else
+      out[py::str(col.name)] = a;
+  }
+  return out;
+}
+
+py::tuple run_sweep(const std::string& task_name, const py::object& scene_obj, const py::list& axes,
+                    const py::object& points, const py::dict& fixed, unsigned jobs, const std::string& engine,
+                    const std::string& method, const std::string& law) {
+  std::unique_ptr<sweep::Task> task;
+  if (task_name == "run") {
+    if (scene_obj.is_none()) throw InputError("task", "run", "a run sweep needs a scene");
+    Scene sc = scene_obj.cast<Scene>();
+    RunSettings rs;
+    rs.engine = engine;
+    rs.method = method;
+    rs.law = law;
+    rs.precision = "";
+    if (!fixed.empty()) {
+      std::vector<SceneSetting> s;
+      for (auto item : fixed) {
+        const auto key = item.first.cast<std::string>();
+        s.emplace_back(key, py::isinstance<py::str>(item.second)
+                                ? SceneValue::from_text(key, item.second.cast<std::string>())
+                                : plan_value(key, item.second));
+      }
+      sc.set(s);
+    }
+    (void)resolve_settings(sc, rs);  // bad engine/method/law before any work
+    task = sweep::make_run_task(sc, rs);
+  } else {
+    if (!engine.empty() || !method.empty() || !law.empty())
+      throw InputError("task", task_name, "engine, method and law go with a run sweep (a scene) only");
+    std::vector<SceneSetting> s;
+    for (auto item : fixed) {
+      const auto key = item.first.cast<std::string>();
+      s.emplace_back(key, plan_value(key, item.second));
+    }
+    task = sweep::make_task(task_name, s);
+  }
+  sweep::Plan plan;
+  if (!points.is_none()) {
+    if (!axes.empty()) throw InputError("points", "(given)", "give either points or vary axes, not both");
+    const py::dict d = points.cast<py::dict>();
+    std::size_t n = 0;
+    bool first = true;
+    std::vector<std::vector<SceneValue>> columns;
+    for (auto item : d) {
+      const auto key = item.first.cast<std::string>();
+      plan.keys.push_back(key);
+      columns.push_back(plan_values(key, item.second));
+      if (!first && columns.back().size() != n)
+        throw InputError("points." + key, std::to_string(columns.back().size()) + " values",
+                         "every key needs the same number of values (" + std::to_string(n) + ")");
+      n = columns.back().size();
+      first = false;
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      std::vector<SceneValue> p;
+      for (const auto& c : columns) p.push_back(c[i]);
+      plan.points.push_back(std::move(p));
+    }
+  } else {
+    std::vector<sweep::Axis> ax;
+    for (const auto& item : axes) {
+      const auto t = item.cast<py::tuple>();
+      const auto key = t[0].cast<std::string>();
+      const bool log = t[2].cast<bool>();
+      if (log) {
+        if (!py::isinstance<py::str>(t[1]))
+          throw InputError("vary_log." + key, py::repr(t[1]).cast<std::string>(), "must be 'FROM:TO:N'");
+        ax.push_back(sweep::parse_axis(key + "=" + t[1].cast<std::string>(), true));
+      } else {
+        ax.push_back({key, plan_values(key, t[1])});
+      }
+    }
+    plan = sweep::cartesian(ax);
+  }
+  (void)sweep::table_columns(plan, *task);  // every key and value checked before any work
+  std::vector<std::vector<std::string>> rows;
+  {
+    py::gil_scoped_release release;
+    rows = sweep::evaluate_points(plan, *task, jobs);
+  }
+  const Columns cols = sweep::table_columns(plan, *task);
+  py::list names;
+  py::dict units;
+  for (const auto& c : cols) {
+    names.append(c.name);
+    units[py::str(c.name)] = c.unit;
+  }
+  return py::make_tuple(names, units, table(plan, *task, rows));
+}
+
+}  // namespace
+
+void register_sweep(py::module_& m) {
+  m.def("_sweep", &run_sweep, py::arg("task"), py::arg("scene"), py::arg("axes"), py::arg("points"), py::arg("fixed"),
+        py::arg("jobs"), py::arg("engine"), py::arg("method"), py::arg("law"),
+        "The sweep engine in memory (nanopush.sweep is the documented entry point).");
+}
+
+}  // namespace nanopush::python
