@@ -44,6 +44,10 @@ class RunFailure : public SolverError {
   Trajectory partial_;
 };
 
+/// The integrator's status as an identifier: success, bad_input, too_many_steps,
+/// step_underflow, rhs_failed, not_finite.
+std::string status_name(BsStatus s);
+
 /// Array-or-number argument, converted to float64 (no copy when it already is one).
 using DArray = py::array_t<double, py::array::forcecast>;
 

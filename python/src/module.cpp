@@ -18,6 +18,18 @@ DArray as_double_array(const py::handle& obj, const char* name) {
   return a;
 }
 
+std::string status_name(BsStatus s) {
+  switch (s) {
+    case BsStatus::success: return "success";
+    case BsStatus::bad_input: return "bad_input";
+    case BsStatus::too_many_steps: return "too_many_steps";
+    case BsStatus::step_underflow: return "step_underflow";
+    case BsStatus::rhs_failed: return "rhs_failed";
+    case BsStatus::not_finite: return "not_finite";
+  }
+  return "unknown";
+}
+
 py::object scalar_or_array(const py::array_t<double>& a) {
   if (a.ndim() == 0) return py::float_(*a.data());
   return a;
@@ -73,7 +85,7 @@ void register_errors(py::module_& m) {
     } catch (const RunFailure& e) {
       py::object ex = py::handle(g_solver_error)(e.what());
       const auto& st = e.partial().stats;
-      ex.attr("status") = std::string(to_string(st.status));
+      ex.attr("status") = status_name(st.status);
       ex.attr("status_code") = static_cast<int>(st.status);
       ex.attr("t_reached") = st.t_reached;
       ex.attr("partial") = make_result(e.partial());

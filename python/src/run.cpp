@@ -3,6 +3,9 @@
 #include "common.hpp"
 
 #include <chrono>
+#include <filesystem>
+
+#include <pybind11/stl/filesystem.h>
 
 #include "nanopush/engines/engines.hpp"
 #include "nanopush/outputs/io.hpp"
@@ -126,7 +129,7 @@ dict of arrays (pandas.DataFrame(result.to_dict())); to_csv(path) writes the CSV
           "The columns as a dict of independent (writable, contiguous) arrays: pandas.DataFrame(r.to_dict()).")
       .def(
           "to_csv",
-          [](const RunResult& r, const std::string& path) {
+          [](const RunResult& r, const std::filesystem::path& path) {
             py::gil_scoped_release release;
             write_trajectory_csv(r.tr, path, r.scene);
           },
@@ -146,7 +149,7 @@ dict of arrays (pandas.DataFrame(result.to_dict())); to_csv(path) writes the CSV
                              "Absolute tolerance of each state component (SI).")
       .def_property_readonly("complete", [](const RunResult& r) { return r.tr.complete; },
                              "False only for the partial result a SolverError carries.")
-      .def_property_readonly("status", [](const RunResult& r) { return std::string(to_string(r.tr.stats.status)); },
+      .def_property_readonly("status", [](const RunResult& r) { return status_name(r.tr.stats.status); },
                              "The integrator's status: success, or why it stopped.")
       .def_property_readonly("scene", [](const RunResult& r) { return r.scene; }, "The scene's name.")
       .def_property_readonly("wall_time", [](const RunResult& r) { return r.wall_s; },

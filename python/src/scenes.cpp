@@ -1,7 +1,10 @@
 // nanopush.Scene: scene files, presets (resolved in Python), Scene.set and the key table.
 #include "common.hpp"
 
+#include <filesystem>
 #include <string>
+
+#include <pybind11/stl/filesystem.h>
 
 #include "nanopush/scenes/scene.hpp"
 #include "nanopush/scenes/scene_keys.hpp"
@@ -103,7 +106,7 @@ Build one with Scene.preset("fig3_6a"), Scene.from_file(path) or Scene.from_toml
 change it with scene.set("surface.mu", 0.1) (validated as the file is: a bad key or value
 raises nanopush.InputError and leaves the scene unchanged). Scenes are values: copy.copy(scene)
 or scene.copy() gives an independent one.)doc")
-      .def_static("from_file", [](const std::string& path) { return load_scene(path); }, py::arg("path"),
+      .def_static("from_file", [](const std::filesystem::path& path) { return load_scene(path); }, py::arg("path"),
                   "Read a scene file (TOML, at most 1 MiB). Raises nanopush.InputError naming the key, value and "
                   "allowed range.")
       .def_static(

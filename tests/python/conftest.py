@@ -1,0 +1,93 @@
+"""Shared fixtures of the Python package's tests: the nanopush command line (the oracle the
+package must match bit for bit) and CSV readers that keep every number exact."""
+
+import csv
+import io
+import os
+import subprocess
+import threading
+import time
+
+import pytest
+
+
+def _required_env(name):
+    value = os.environ.get(name)
+    if not value:
+        pytest.fail(f"{name} is not set: run these tests through CTest (ctest -R python)", pytrace=False)
+    return value
+
+
+class Cli:
+    """Runs the nanopush command line built beside the package."""
+
+    def __init__(self, path):
+        self.path = path
+
+    def __call__(self, *args, input=None, expect=0, cwd=None):
+        p = subprocess.run([self.path, *map(str, args)], input=input, capture_output=True, text=True, cwd=cwd)
+        assert p.returncode == expect, f"nanopush {' '.join(map(str, args))}: exit {p.returncode}\n{p.stderr}"
+        return p
+
+    def error(self, *args, expect=2, input=None):
+        """The message of a failing command: stderr without the 'nanopush: error: ' prefix."""
+        p = self(*args, expect=expect, input=input)
+        line = p.stderr.strip().splitlines()[-1]
+        for prefix in ("nanopush: error: ", "nanopush: solver failure: "):
+            if line.startswith(prefix):
+                return line[len(prefix):]
+        return line
+
+
+@pytest.fixture(scope="session")
+def cli():
+    return Cli(_required_env("NANOPUSH_CLI"))
+
+
+@pytest.fixture(scope="session")
+def source_dir():
+    return _required_env("NANOPUSH_SOURCE_DIR")
+
+
+def read_csv(text_or_path):
+    """A CSV as (header, rows of cells), cells as text (numbers are compared by float(cell),
+    which reads the shortest round-trip form back to the exact double)."""
+    if os.path.exists(str(text_or_path)):
+        with open(text_or_path, newline="") as f:
+            text = f.read()
+    else:
+        text = text_or_path
+    rows = [r for r in csv.reader(io.StringIO(text)) if r]
+    return rows[0], rows[1:]
+
+
+def column(header, rows, name, empty=float("nan")):
+    i = header.index(name)
+    return [float(r[i]) if r[i] != "" else empty for r in rows]
+
+
+def assert_runs_without_the_gil(fn, min_seconds=0.05):
+    """Call fn() on a second thread while this thread keeps running Python code, and check
+    that this thread ran through the call: in at least half of its 10 ms intervals. A call
+    holding the GIL lets it run in one or two intervals at most (the switch interval is 5 ms)."""
+    state = {}
+
+    def worker():
+        state["start"] = time.perf_counter()
+        state["result"] = fn()
+        state["end"] = time.perf_counter()
+
+    t = threading.Thread(target=worker)
+    seen = set()
+    t.start()
+    while t.is_alive():
+        seen.add(int(time.perf_counter() * 100))
+    t.join()
+    assert "end" in state, "the call failed"
+    start, end = state["start"], state["end"]
+    assert end - start >= min_seconds, f"call too short to tell ({end - start:.3f} s)"
+    inside = {b for b in seen if start * 100 <= b < end * 100 - 1}
+    intervals = int((end - start) * 100) - 1
+    assert len(inside) >= 0.5 * intervals, (
+        f"this thread ran in {len(inside)} of {intervals} 10-ms intervals of the call: GIL held?")
+    return state["result"]

@@ -1,0 +1,136 @@
+"""nanopush.run, Result and compare against `nanopush run` / `nanopush compare`: the same
+trajectory bit for bit, the same counts, the same messages."""
+
+import re
+
+import numpy as np
+import pytest
+
+import nanopush
+from conftest import column, read_csv
+
+
+def same(a, b):
+    """Bit-for-bit equality of two float arrays (NaN equal to NaN, -0 distinct from 0)."""
+    a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
+    return a.shape == b.shape and np.array_equal(a, b, equal_nan=True) and np.array_equal(np.signbit(a), np.signbit(b))
+
+
+def cli_counts(stderr):
+    m = re.search(r"RHS evaluations (\d+), accepted steps (\d+), rejected steps (\d+)", stderr)
+    assert m, stderr
+    return tuple(int(x) for x in m.groups())
+
+
+@pytest.mark.parametrize("preset, args, kwargs", [
+    ("fig3_6a", ["--engine", "cxx", "--method", "faithful"], dict(engine="cxx", method="faithful")),
+    ("fig3_6a", ["--engine", "f77"], dict(engine="f77")),
+    ("fig3_6c", ["--method", "modern", "--rtol", "1e-9"], dict(method="modern", rtol=1e-9)),
+    ("fig3_17", ["--law", "coulomb"], dict(law="coulomb")),
+    ("fig3_17", ["--engine", "f77", "--law", "thesis"], dict(engine="f77", law="thesis")),
+])
+def test_trajectory_bit_for_bit(cli, tmp_path, preset, args, kwargs):
+    out = tmp_path / "cli.csv"
+    p = cli("run", preset, *args, "--out", out)
+    r = nanopush.run(preset, **kwargs)
+    header, rows = read_csv(out)
+    assert header == nanopush.Result.columns
+    for name in header:
+        assert same(getattr(r, name), column(header, rows, name)), name
+    assert same(r.array, np.array([[float(c) for c in row] for row in rows]))
+    assert (r.nfcn, r.steps, r.rejected) == cli_counts(p.stderr)
+    assert r.engine in p.stderr
+    # The CSV the package writes is the command line's, byte for byte.
+    r.to_csv(tmp_path / "py.csv")
+    assert (tmp_path / "py.csv").read_bytes() == out.read_bytes()
+    assert (tmp_path / "py.schema.json").exists()
+
+
+def test_scene_set_matches_cli_set(cli, tmp_path):
+    out = tmp_path / "cli.csv"
+    cli("run", "fig3_18", "--set", "surface.mu=0.1", "--set", "push.yn=20e-9", "--out", out, "--quiet")
+    scene = nanopush.Scene.preset("fig3_18")
+    scene.set("surface.mu", 0.1)
+    scene.set("push.yn", 20e-9)
+    r = nanopush.run(scene)
+    header, rows = read_csv(out)
+    for name in header:
+        assert same(getattr(r, name), column(header, rows, name)), name
+
+
+def test_result_arrays_and_dict():
+    r = nanopush.run("fig3_6a")
+    n = len(r)
+    assert n == nanopush.Scene.preset("fig3_6a").info()["solver"]["samples"]
+    for name in nanopush.Result.columns:
+        a = getattr(r, name)
+        assert a.shape == (n,) and a.dtype == np.float64
+        assert not a.flags.writeable
+    with pytest.raises(ValueError):
+        r.x[0] = 1.0
+    assert r.array.shape == (n, 10)
+    d = r.to_dict()
+    assert list(d) == nanopush.Result.columns
+    for name, a in d.items():
+        assert a.flags.c_contiguous and a.flags.writeable and same(a, getattr(r, name))
+    d["x"][0] = 123.0  # an independent copy
+    assert r.x[0] != 123.0
+    assert same(r.t, nanopush.Scene.preset("fig3_6a").output_times())
+    assert nanopush.Result.units["mf"] == "N m"
+    # Views keep the result alive.
+    theta = nanopush.run("fig3_6a").theta
+    assert theta[-1] == r.theta[-1]
+    assert r.status == "success" and r.complete and r.wall_time > 0
+
+
+@pytest.mark.parametrize("method", ["faithful", "modern"])
+def test_compare_matches_cli(cli, method):
+    p = cli("compare", "fig3_6c", "--method", method)
+    c = nanopush.compare("fig3_6c", method=method)
+    assert c.agree and bool(c)
+    m = re.search(r"RHS evaluations (\d+) vs (\d+)", p.stdout)
+    assert (c.cxx.nfcn, c.f77.nfcn) == (int(m.group(1)), int(m.group(2)))
+    lines = {ln[2:10].strip(): ln for ln in p.stdout.splitlines() if ln.startswith("  ") and len(ln) > 52}
+    assert set(c.columns) <= set(lines)
+    for name, col in c.columns.items():
+        ln = lines[name]  # fixed-width columns: name, max |diff|, unit, max |diff|/scale, scale
+        assert f"{col['max_abs_diff']:.4g}" == f"{float(ln[10:26]):.4g}", name
+        assert ln[26:36].strip() == col["unit"]
+        assert f"{col['relative']:.4g}" == f"{float(ln[36:52]):.4g}", name
+        assert f"{col['scale']:.4g}" == f"{float(ln[52:].split()[0]):.4g}", name
+    tol = re.search(r"tolerance on max \|diff\|/scale: (\S+)", p.stdout).group(1)
+    assert c.tolerance == pytest.approx(float(tol), rel=1e-4)
+
+
+def test_bad_settings_are_input_errors(cli):
+    msg = cli.error("run", "fig3_6a", "--set", "object.mass=-1")
+    scene = nanopush.Scene.preset("fig3_6a")
+    with pytest.raises(nanopush.InputError) as e:
+        scene.set("object.mass", -1)
+    assert str(e.value) == msg and e.value.field == "object.mass"
+    assert isinstance(e.value, ValueError)
+    with pytest.raises(ValueError, match=r"^engine = gpu: must be cxx or f77$"):
+        nanopush.run(scene, engine="gpu")
+    msg = cli.error("run", "fig3_6a", "--engine", "f77", "--method", "modern")
+    with pytest.raises(nanopush.InputError) as e:
+        nanopush.run(scene, engine="f77", method="modern")
+    assert str(e.value) == msg
+    with pytest.raises(nanopush.InputError, match="rtol"):
+        nanopush.run(scene, rtol=-1.0)
+    with pytest.raises(nanopush.InputError, match="no preset"):
+        nanopush.run("no_such_scene")
+
+
+def test_solver_failure_carries_status_and_partial(cli):
+    msg = cli.error("run", "fig3_6a", "--set", "solver.max_steps=5", "--out", "-", expect=3)
+    scene = nanopush.Scene.preset("fig3_6a")
+    scene.set("solver.max_steps", 5)
+    with pytest.raises(nanopush.SolverError) as e:
+        nanopush.run(scene)
+    err = e.value
+    assert str(err) == msg
+    assert isinstance(err, RuntimeError)
+    assert err.status == "too_many_steps" and err.status_code == 2
+    assert err.partial is not None and not err.partial.complete
+    assert 0 < len(err.partial) < 401 and err.t_reached < scene.info()["solver"]["t_end"]
+    assert err.partial.t[-1] <= err.t_reached
