@@ -36,6 +36,17 @@ std::vector<SceneValue> plan_values(const std::string& key, const py::handle& va
   return out;
 }
 
+/// A text cell as csv_quote wrote it, back to its text.
+std::string unquote(const std::string& cell) {
+  if (cell.size() < 2 || cell.front() != '"' || cell.back() != '"') return cell;
+  std::string out;
+  for (std::size_t i = 1; i + 1 < cell.size(); ++i) {
+    out += cell[i];
+    if (cell[i] == '"' && cell[i + 1] == '"') ++i;
+  }
+  return out;
+}
+
 py::dict table(const sweep::Plan& plan, const sweep::Task& task, const std::vector<std::vector<std::string>>& rows) {
   const Columns cols = sweep::table_columns(plan, task);
   py::dict out;
@@ -44,7 +55,7 @@ py::dict table(const sweep::Plan& plan, const sweep::Task& task, const std::vect
     const auto& col = cols[c];
     if (col.type == "string") {
       py::list l;
-      for (const auto& r : rows) l.append(r[c]);
+      for (const auto& r : rows) l.append(unquote(r[c]));
       out[py::str(col.name)] = py::module_::import("numpy").attr("array")(l, py::arg("dtype") = "str");
       continue;
     }
