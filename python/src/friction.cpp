@@ -2,6 +2,8 @@
 // 2a x 2b rectangle (models/friction.hpp), broadcast over NumPy arrays, GIL released.
 #include "common.hpp"
 
+#include <limits>
+
 #include "f77_friction.h"
 #include "nanopush/models/friction.hpp"
 
@@ -36,6 +38,25 @@ py::object friction_wrench(const py::object& a, const py::object& b, const py::o
         np_f77_friction_message(st, msg, sizeof msg);
         throw InputError(std::string("F77 engine: ") + msg);
       }
+    }));
+  }
+  // The common case: one contact (a, b, sense, muN scalars) at many iCORs. Its parameters are
+  // checked once; per iCOR only R and alpha (the library's message when one is bad), then the
+  // unchecked hot path, as a C++ loop would call it.
+  const DArray pa = as_double_array(a, "a"), pb = as_double_array(b, "b"), ps = as_double_array(sense, "sense"),
+               pm = as_double_array(mu_n, "muN");
+  if (pa.size() == 1 && pb.size() == 1 && ps.size() == 1 && pm.size() == 1 && pa.ndim() == 0 && pb.ndim() == 0 &&
+      ps.ndim() == 0 && pm.ndim() == 0) {
+    const double ca = *pa.data(), cb = *pb.data(), cm = *pm.data();
+    const int cs = sense_of(*ps.data());
+    (void)rectangle_friction_wrench_checked(ca, cb, cm, 0.0, 0.0, cs);
+    return wrench_tuple(broadcast_apply<2, 3>({R, alpha}, {"R", "alpha"}, [=](const double* x, double* w) {
+      if (!(x[0] >= 0.0 && x[0] <= std::numeric_limits<double>::max() && x[1] - x[1] == 0.0))
+        (void)rectangle_friction_wrench_checked(ca, cb, cm, x[0], x[1], cs);  // throws the library's message
+      const auto f = rectangle_friction_wrench(ca, cb, cm, x[0], x[1], cs);
+      w[0] = f.fx;
+      w[1] = f.fy;
+      w[2] = f.mf;
     }));
   }
   return wrench_tuple(broadcast_apply<6, 3>(in, names, [](const double* x, double* w) {
