@@ -61,6 +61,12 @@ def scenes_dir():
     return _pathlib.Path(__file__).resolve().parent / "scenes"
 
 
+def _input_error(message, field=""):
+    e = InputError(message)
+    e.field, e.index = field, None
+    return e
+
+
 def _first_comment(path):
     with open(path, encoding="utf-8") as f:
         for line in f:
@@ -81,7 +87,7 @@ def _resolve_preset(name):
         cand = d / sub / (name + ".toml")
         if cand.is_file():
             return cand
-    raise InputError(f"SCENE = {name}: no preset of that name under {d} (nanopush.presets() lists them)")
+    raise _input_error(f"SCENE = {name}: no preset of that name under {d} (nanopush.presets() lists them)", "SCENE")
 
 
 def presets():
@@ -90,7 +96,7 @@ def presets():
     the file, else the path under scenes_dir() (``examples/foo``)."""
     d = scenes_dir()
     if not d.is_dir():
-        raise InputError(f"scenes directory = {d}: no such directory (set NANOPUSH_SCENES)")
+        raise _input_error(f"scenes directory = {d}: no such directory (set NANOPUSH_SCENES)", "scenes directory")
     out = {}
     for path in sorted(d.rglob("*.toml")):
         full = path.relative_to(d).with_suffix("").as_posix()
@@ -258,8 +264,9 @@ def sweep(task, vary=None, *, vary_log=None, points=None, set=None, jobs=0, engi
               e.g. {"a": 27.5e-9, "b": 50e-9}, otherwise)
     jobs      threads (0: every core); the table is the same for any number
     engine, method, law   the run task's, as for nanopush.run
-    check     raise nanopush.SolverError if any point failed (default: keep the status and
-              message of each point in the table)
+    check     raise nanopush.SolverError if any point failed, with .status the first failed
+              point's and .partial the whole table (default: keep the status and message
+              of each point in the table)
 
     Keys and units per task: docs/sweeps.md. Bad keys or values raise nanopush.InputError
     before any point runs.
@@ -268,7 +275,7 @@ def sweep(task, vary=None, *, vary_log=None, points=None, set=None, jobs=0, engi
     if isinstance(task, str) and task in _TASKS:
         name = task
     elif isinstance(task, str) and task == "run":
-        raise InputError("task = run: a run sweep takes a scene (nanopush.Scene, a preset name or a file)")
+        raise _input_error("task = run: a run sweep takes a scene (nanopush.Scene, a preset name or a file)", "task")
     else:
         scene, name = _as_scene(task), "run"
     axes = [(k, v, False) for k, v in (vary or {}).items()]
@@ -278,6 +285,8 @@ def sweep(task, vary=None, *, vary_log=None, points=None, set=None, jobs=0, engi
     res = SweepResult(names, units, data)
     if check and res.failed:
         bad = [i for i, ok in enumerate(res.ok) if not ok]
-        raise SolverError(f"sweep: {res.failed} of {len(res)} points failed; first, point {bad[0]}: "
-                          f"{res.status[bad[0]]}: {res.message[bad[0]]}")
+        e = SolverError(f"sweep: {res.failed} of {len(res)} points failed; first, point {bad[0]}: "
+                        f"{res.status[bad[0]]}: {res.message[bad[0]]}")
+        e.status, e.status_code, e.t_reached, e.partial = str(res.status[bad[0]]), None, None, res
+        raise e
     return res

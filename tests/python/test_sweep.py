@@ -105,3 +105,12 @@ def test_gil_released():
     res = assert_runs_without_the_gil(
         lambda: nanopush.sweep("friction", vary={"R": "0:1e-6:400", "alpha": "0:6.28:100"}, jobs=1))
     assert len(res) == 40000 and res.failed == 0
+
+
+def test_check_attaches_the_table():
+    with pytest.raises(nanopush.SolverError) as e:
+        nanopush.sweep("friction", vary={"R": [1e-9, -1]}, check=True)
+    assert e.value.status == "bad_input" and e.value.partial.failed == 1
+    with pytest.raises(nanopush.InputError) as e:
+        nanopush.sweep("run")
+    assert e.value.field == "task" and e.value.index is None
