@@ -3,6 +3,7 @@
 #include "common.hpp"
 
 #include <limits>
+#include <type_traits>
 
 #include "f77_friction.h"
 #include "nanopush/models/friction.hpp"
@@ -50,14 +51,20 @@ py::object friction_wrench(const py::object& a, const py::object& b, const py::o
     const double ca = *pa.data(), cb = *pb.data(), cm = *pm.data();
     const int cs = sense_of(*ps.data());
     (void)rectangle_friction_wrench_checked(ca, cb, cm, 0.0, 0.0, cs);
-    return wrench_tuple(broadcast_apply<2, 3>({R, alpha}, {"R", "alpha"}, [=](const double* x, double* w) {
-      if (!(x[0] >= 0.0 && x[0] <= std::numeric_limits<double>::max() && x[1] - x[1] == 0.0))
-        (void)rectangle_friction_wrench_checked(ca, cb, cm, x[0], x[1], cs);  // throws the library's message
-      const auto f = rectangle_friction_wrench(ca, cb, cm, x[0], x[1], cs);
-      w[0] = f.fx;
-      w[1] = f.fy;
-      w[2] = f.mf;
-    }));
+    const auto kernel = [=](auto sense_c) {
+      return [=](const double* x, double* w) {
+        if (!(x[0] >= 0.0 && x[0] <= std::numeric_limits<double>::max() && x[1] - x[1] == 0.0))
+          (void)rectangle_friction_wrench_checked(ca, cb, cm, x[0], x[1], cs);  // throws the library's message
+        const auto f = rectangle_friction_wrench(ca, cb, cm, x[0], x[1], decltype(sense_c)::value);
+        w[0] = f.fx;
+        w[1] = f.fy;
+        w[2] = f.mf;
+      };
+    };
+    // The rotation sense as a compile-time constant (one branch less per iCOR).
+    if (cs > 0)
+      return wrench_tuple(broadcast_apply<2, 3>({R, alpha}, {"R", "alpha"}, kernel(std::integral_constant<int, 1>{})));
+    return wrench_tuple(broadcast_apply<2, 3>({R, alpha}, {"R", "alpha"}, kernel(std::integral_constant<int, -1>{})));
   }
   return wrench_tuple(broadcast_apply<6, 3>(in, names, [](const double* x, double* w) {
     const auto f = rectangle_friction_wrench_checked(x[0], x[1], x[5], x[2], x[3], sense_of(x[4]));
