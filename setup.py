@@ -5,7 +5,7 @@ LAPACK, toml++, SUNDIALS, python3-numpy, python3-pybind11): nothing is downloade
 pip that builds in isolation, add --no-build-isolation (setuptools and pybind11 then come
 from the system):
 
-    python3 -m venv --system-site-packages ~/venv-nanopush
+    /usr/bin/python3 -m venv --system-site-packages ~/venv-nanopush
     ~/venv-nanopush/bin/pip install --no-build-isolation .
 
 The libraries are linked statically into the extension; the wheel holds nanopush/

@@ -60,10 +60,11 @@ RunResult run(const Scene& scene, const std::string& engine, const std::string& 
   rs.allow_partial = true;  // a failure becomes nanopush.SolverError carrying the partial result
   RunResult r;
   r.scene = scene.name;
+  const Scene own = scene;  // another Python thread may set() the caller's scene meanwhile
   {
     py::gil_scoped_release release;
     const auto t0 = std::chrono::steady_clock::now();
-    r.tr = run_engine(scene, rs);
+    r.tr = run_engine(own, rs);
     r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   }
   if (!r.tr.complete) {

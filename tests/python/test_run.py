@@ -134,3 +134,11 @@ def test_solver_failure_carries_status_and_partial(cli):
     assert err.partial is not None and not err.partial.complete
     assert 0 < len(err.partial) < 401 and err.t_reached < scene.info()["solver"]["t_end"]
     assert err.partial.t[-1] <= err.t_reached
+
+
+def test_gil_released_during_a_run():
+    from conftest import assert_runs_without_the_gil
+    scene = nanopush.Scene.preset("fig3_6a")
+    scene.set({"solver.t_end": 5e-7, "solver.max_steps": 10_000_000})
+    r = assert_runs_without_the_gil(lambda: nanopush.run(scene))
+    assert r.complete and r.t[-1] == 5e-7
