@@ -46,3 +46,11 @@ set_tests_properties(cli.friction.bench PROPERTIES PASS_REGULAR_EXPRESSION "eval
 add_test(NAME cli.friction.reproduce
          COMMAND ${_np} reproduce --quick --only fig3_9_friction --only fig3_10_11_friction
                  --out ${CMAKE_CURRENT_BINARY_DIR}/reproduce_friction)
+# The friction-resultant benchmark (issue 24) with tiny budgets: it runs, writes its CSV and
+# report, and its forms agree (exit 4 otherwise). Never a timed test: no ratio is asserted.
+add_test(NAME cli.friction.bench_friction
+         COMMAND bash -c "set -e; rm -rf \"$1\"; \"$0\" bench-friction --seconds 0.01 --repeats 1 --no-plot --quiet \
+--out \"$1\" > /dev/null; test -s \"$1/friction_bench.csv\"; test -s \"$1/friction_bench.schema.json\"; \
+grep -q 'new and old agree.*| yes |' \"$1/report.md\"; echo bench-friction: ok" ${_np} ${CMAKE_CURRENT_BINARY_DIR}/bench_friction)
+set_tests_properties(cli.friction.bench_friction PROPERTIES ENVIRONMENT "NANOPUSH_SCENES=${NANOPUSH_SCENES}"
+                     PASS_REGULAR_EXPRESSION "bench-friction: ok")

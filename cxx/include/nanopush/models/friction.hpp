@@ -41,6 +41,9 @@
 
 #include <cassert>
 #include <cmath>
+#if defined(__GNUC__) && defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #ifndef NANOPUSH_FRICTION_ASSERT
 #define NANOPUSH_FRICTION_ASSERT(cond) assert(cond)
@@ -102,6 +105,39 @@ inline double hypot_portable(double x, double y) noexcept {
   return ax * std::sqrt(1.0 + t * t);
 }
 
+/// Two doubles evaluated together (the two long-side ends of form 1, two node pairs of form 2):
+/// GCC/Clang vector extensions, SSE2 square roots on x86-64 (correctly rounded, like
+/// std::sqrt, so the lanes round as scalar code would); elsewhere lane by lane.
+#if defined(__GNUC__)
+typedef double Lane2 __attribute__((vector_size(2 * sizeof(double))));
+inline Lane2 lane_sqrt(Lane2 x) noexcept {
+#if defined(__SSE2__)
+  return reinterpret_cast<Lane2>(_mm_sqrt_pd(reinterpret_cast<__m128d>(x)));
+#else
+  return Lane2{std::sqrt(x[0]), std::sqrt(x[1])};
+#endif
+}
+#else
+struct Lane2 {
+  double v[2];
+  double operator[](int i) const noexcept { return v[i]; }
+  double& operator[](int i) noexcept { return v[i]; }
+};
+inline Lane2 operator+(Lane2 p, Lane2 q) noexcept { return {p[0] + q[0], p[1] + q[1]}; }
+inline Lane2 operator-(Lane2 p, Lane2 q) noexcept { return {p[0] - q[0], p[1] - q[1]}; }
+inline Lane2 operator*(Lane2 p, Lane2 q) noexcept { return {p[0] * q[0], p[1] * q[1]}; }
+inline Lane2 operator/(Lane2 p, Lane2 q) noexcept { return {p[0] / q[0], p[1] / q[1]}; }
+inline Lane2 operator+(Lane2 p, double q) noexcept { return {p[0] + q, p[1] + q}; }
+inline Lane2 operator-(Lane2 p, double q) noexcept { return {p[0] - q, p[1] - q}; }
+inline Lane2 operator*(Lane2 p, double q) noexcept { return {p[0] * q, p[1] * q}; }
+inline Lane2 operator/(Lane2 p, double q) noexcept { return {p[0] / q, p[1] / q}; }
+inline Lane2 operator+(double p, Lane2 q) noexcept { return {p + q[0], p + q[1]}; }
+inline Lane2 operator-(double p, Lane2 q) noexcept { return {p - q[0], p - q[1]}; }
+inline Lane2 operator*(double p, Lane2 q) noexcept { return {p * q[0], p * q[1]}; }
+inline Lane2 operator/(double p, Lane2 q) noexcept { return {p / q[0], p / q[1]}; }
+inline Lane2 lane_sqrt(Lane2 x) noexcept { return {std::sqrt(x[0]), std::sqrt(x[1])}; }
+#endif
+
 /// u^2 asinh(v/|u|), continuous with value 0 at u = 0; never NaN for finite u, v.
 inline double sq_asinh(double u, double v) noexcept {
   const double au = std::fabs(u);
@@ -153,10 +189,12 @@ inline YDifference y_difference(double X, double yc, double b) noexcept {
   return {0.5 * (dyr + x2da), 0.5 * (X * dr + dy2b), X * dyr / 3.0 + (X * x2da + dy3b) / 6.0};
 }
 
-/// Form 1: corner-term closed form, Delta_x Delta_y F with the y difference taken across the
-/// thinner side (transposing x and y when a < b) by y_difference, so a thin contact loses no
-/// digits; the x difference cancels like (R/max(a,b))^2 only. Lengths in units of max(a, b).
-inline MeanIntegrals closed_form(double a, double b, double xc, double yc) noexcept {
+/// Form 1 as it was before issue 24 (kept for the tests and the benchmark, and as the fallback
+/// of closed_form for coordinates below 1e-100 max(a, b)): corner-term closed form,
+/// Delta_x Delta_y F with the y difference taken across the thinner side (transposing x and y
+/// when a < b) by y_difference, so a thin contact loses no digits; the x difference cancels
+/// like (R/max(a,b))^2 only. 21 log/sqrt calls. Lengths in units of max(a, b).
+inline MeanIntegrals closed_form_reference(double a, double b, double xc, double yc) noexcept {
   const bool transpose = a < b;
   const double ta = transpose ? b : a, tb = transpose ? a : b;
   const double txc = transpose ? yc : xc, tyc = transpose ? xc : yc;
@@ -193,6 +231,103 @@ inline MeanIntegrals closed_form_corner_sum(double a, double b, double xc, doubl
   return {ix, iy, sr / area - xc * ix - yc * iy};
 }
 
+/// Form 1: the corner-term closed form of closed_form_reference (same antiderivatives, same
+/// thin-side difference without cancellation), with 4 logarithms and 4 square roots instead of
+/// 21 log/sqrt calls (issue 24). In the frame where y is the thinner side (transposed when
+/// a < b) and, by the symmetry y -> -y, yc = w >= 0 (<Y/r> changes sign, the rest does not),
+/// the two long-side ends X0,1 = xc -+ a are evaluated together (Lane2) with
+/// y0,1 = w -+ b, r_i = sqrt(X^2 + y_i^2):
+///   X^2 [asinh(y1/|X|) - asinh(y0/|X|)] = X^2 log1p((2b + r1 - r0)/(y0 + r0)),
+///   asinh(X/|y|) = sign(X) ln((|X| + r)/|y|),
+/// and the terms of Delta_y (Y^n asinh(X/|Y|)) whose coefficients do not depend on X are
+/// differenced across x inside one logarithm each. For y0 > y1/2 (w > 3b, the thin-side
+/// difference):
+///   Delta_x [asinh(X/y1) + asinh(X/y0)] = ln of a ratio (or product) of (|X| + r0)(|X| + r1),
+///   Delta_x [asinh(X/y1) - asinh(X/y0)] = Delta_x asinh(z), z = -4 b w X/(y0 y1 (r0 + r1)),
+/// the last with zeta = |z|, C = sqrt(1 + z^2) = (X^2 (y0^2 + y1^2) + y0^2 y1^2)/((r0 r1 + X^2) y0 y1)
+/// (no square root), E = zeta + C: for X of one sign ln(E1/E0), or near E1 = E0
+/// log1p((zeta1 - zeta0)(1 + (zeta1 + zeta0)/(C1 + C0))/E0); for X0 < 0 < X1 the sum
+/// log1p(u0 + u1 + u0 u1), u = zeta + zeta^2/(1 + C). For y0 <= y1/2 (nothing to cancel
+/// across y) asinh(X/|y_i|) is differenced across x at each y_i. Coordinates other than 0
+/// below 1e-100 (in units of max(a, b)) go to closed_form_reference, where these quotients
+/// would underflow.
+inline MeanIntegrals closed_form(double a, double b, double xc, double yc) noexcept {
+  const bool transpose = a < b;
+  const double ta = transpose ? b : a, tb = transpose ? a : b;
+  const double txc = transpose ? yc : xc, tyc = transpose ? xc : yc;
+  const double w = std::fabs(tyc);
+  const double y0 = w - tb, y1 = w + tb;
+  const double X0 = txc - ta, X1 = txc + ta;
+  constexpr double tiny = 1e-100;
+  const auto tiny_nonzero = [](double v) { return v != 0.0 && std::fabs(v) < tiny; };
+  if (tiny_nonzero(X0) || tiny_nonzero(X1) || tiny_nonzero(y0)) return closed_form_reference(a, b, xc, yc);
+  const Lane2 X = {X0, X1}, AX = {std::fabs(X0), std::fabs(X1)};
+  const Lane2 XX = X * X;
+  const Lane2 r0 = lane_sqrt(XX + y0 * y0), r1 = lane_sqrt(XX + y1 * y1);
+  const Lane2 rs = r0 + r1;                 // >= y1 > 0
+  const double bw4 = 4.0 * tb * w;
+  const Lane2 dr = bw4 / rs;                // r1 - r0
+  const Lane2 dyr = tb * rs + w * dr;       // y1 r1 - y0 r0
+  // X^2 Delta_y asinh(Y/|X|) = X^2 log1p(delta), delta = (2b + dr)/(y0 + r0) >= 0, with
+  // y0 + r0 = X^2/(r0 - y0) for y0 < 0; zero at X = 0. log1p as log1p_kahan, lane-wise.
+  // (2b + dr = (2b rs + 4bw)/rs: one division on the way to the logarithm.)
+  const Lane2 delta = y0 > 0.0 ? (2.0 * tb * rs + bw4) / (rs * (y0 + r0)) : (2.0 * tb * rs + bw4) * (r0 - y0) / (rs * XX);
+  const Lane2 u1p = 1.0 + delta;
+  const Lane2 kahan = delta / (u1p - 1.0);
+  Lane2 x2da;
+  for (int i = 0; i < 2; ++i)
+    x2da[i] = XX[i] == 0.0 ? 0.0 : XX[i] * (u1p[i] == 1.0 ? delta[i] : std::log(u1p[i]) * kahan[i]);
+  // Delta_x of a sum of asinh(X/|y|) = sign(X) ln(N/yy): ln(Q1/Q0), Q = (N/yy)^sign(X), from
+  // N0 = N(X0), N1 = N(X1) (X1 > X0, so X1 < 0 <= X0 cannot occur; N = yy at X = 0).
+  const auto log_dx = [X0, X1](double N0, double N1, double yy) {
+    if (X0 >= 0.0) return std::log(N1 / N0);
+    if (X1 <= 0.0) return std::log(N0 / N1);
+    return std::log(N1 * N0 / (yy * yy));
+  };
+  double dy2b, dy3b;  // Delta_x Delta_y of Y^2 asinh(X/|Y|) and Y^3 asinh(X/|Y|)
+  if (y0 > 0.5 * y1) {  // w > 3b: the thin-side difference
+    const double y01 = y0 * y1;
+    const Lane2 N = (AX + r0) * (AX + r1);
+    const double S = log_dx(N[0], N[1], y01);  // Delta_x [asinh(X/y1) + asinh(X/y0)]
+    // Delta_x [asinh(X/y1) - asinh(X/y0)] = Delta_x asinh(z), z = -sign(X) zeta.
+    const Lane2 zeta = bw4 * AX / (y01 * rs);
+    const Lane2 C = (XX * (y0 * y0 + y1 * y1) + y01 * y01) / ((r0 * r1 + XX) * y01);
+    const Lane2 E = zeta + C;  // exp(asinh zeta)
+    double D;
+    if (X0 < 0.0 && X1 > 0.0) {
+      const Lane2 u = zeta + zeta * zeta / (1.0 + C);  // E - 1
+      D = -log1p_kahan(u[0] + u[1] + u[0] * u[1]);      // -(asinh zeta1 + asinh zeta0)
+    } else {
+      const double cs = C[0] + C[1];
+      const double t = bw4 * (AX[1] * rs[0] - AX[0] * rs[1]) * (cs + zeta[0] + zeta[1]) /
+                       (y01 * rs[0] * rs[1] * cs * E[0]);  // E1/E0 - 1
+      const double dd = std::fabs(t) < 0.5 ? log1p_kahan(t) : std::log(E[1] / E[0]);
+      D = X0 >= 0.0 ? -dd : dd;  // z = -zeta for X >= 0, +zeta for X <= 0
+    }
+    dy2b = 2.0 * tb * w * S + 0.5 * (y1 * y1 + y0 * y0) * D;
+    dy3b = tb * (y1 * y1 + y1 * y0 + y0 * y0) * S + 0.5 * (y1 * y1 * y1 + y0 * y0 * y0) * D;
+  } else {
+    // |y0| <= y1/2: nothing to cancel across y (the sum/difference form above would cancel
+    // instead, its asinh(X/|y0|) growing as y0 -> 0). Delta_x asinh(X/|y|) at each y != 0.
+    const Lane2 N1 = AX + r1;
+    const double B1 = log_dx(N1[0], N1[1], y1);
+    double B0 = 0.0;
+    if (y0 != 0.0) {
+      const Lane2 N0 = AX + r0;
+      B0 = log_dx(N0[0], N0[1], -y0);
+    }
+    dy2b = y1 * y1 * B1 - y0 * y0 * B0;
+    dy3b = y1 * y1 * y1 * B1 - y0 * y0 * y0 * B0;
+  }
+  const double inv2 = 1.0 / (8.0 * a * b), inv6 = inv2 * (1.0 / 3.0);  // 1/(2 area), 1/(6 area)
+  const double tix = ((dyr[1] - dyr[0]) + (x2da[1] - x2da[0])) * inv2;
+  const double tiw = ((X1 * dr[1] - X0 * dr[0]) + dy2b) * inv2;
+  const double gr = (2.0 * (X1 * dyr[1] - X0 * dyr[0]) + ((X1 * x2da[1] - X0 * x2da[0]) + dy3b)) * inv6;
+  const double km = gr - txc * tix - w * tiw;
+  const double tiy = tyc < 0.0 ? -tiw : tiw;
+  return transpose ? MeanIntegrals{tiy, tix, km} : MeanIntegrals{tix, tiy, km};
+}
+
 /// Gauss-Legendre rules on [-1, 1] with 4, 6, 8 and 12 points: positive nodes and weights.
 inline constexpr double kGl4x[2] = {0.3399810435848562648026658, 0.8611363115940525752239465};
 inline constexpr double kGl4w[2] = {0.6521451548625461426269361, 0.3478548451374538573730639};
@@ -218,8 +353,10 @@ inline constexpr double kGl12w[6] = {0.2491470458134027850005624, 0.233492536538
 /// a sum of non-negative terms (the O(R) odd part of h cancels analytically).
 /// Requires the rectangle well away from the iCOR (rho >= kFrictionFarField).
 /// gx, gw: the h positive nodes and weights of a 2h-point Gauss-Legendre rule.
-inline MeanIntegrals far_field(double a, double b, double xc, double yc, const double* gx, const double* gw,
-                               int h) noexcept {
+/// As it was before issue 24 (three square roots and three divisions per pair; kept for the
+/// tests and the benchmark); far_field is the production form.
+inline MeanIntegrals far_field_reference(double a, double b, double xc, double yc, const double* gx,
+                                         const double* gw, int h) noexcept {
   const double r = std::sqrt(xc * xc + yc * yc), inv_r2 = 1.0 / (r * r);
   double sx = 0.0, sy = 0.0, sk = 0.0;
   for (int i = 0; i < h; ++i) {
@@ -250,6 +387,56 @@ inline MeanIntegrals far_field(double a, double b, double xc, double yc, const d
   return {0.25 * sx, 0.25 * sy, 0.25 * sk};
 }
 
+/// Form 2 (production): the integrands of far_field_reference, two node pairs at a time (the
+/// y nodes +-y_j in the two lanes), the rule's size a compile-time constant (H positive
+/// nodes). The moment's uses q = R^2 - rho^2 (>= 7 L^2 here, no cancellation) for
+/// (R - rho)(R + rho), and 1/R^2 once at the end. For the 12- and 8-point rules (R < 24 L) one
+/// division serves both pairs' terms: with s = r+ + r-, P = s (r+ r- + q), v = w_j/(r+ r- P),
+///   w_j (X+/r+ + X-/r-) = (X+ r- + X- r+) P v,
+///   w_j R^2 (h(+) + h(-)) = e^2 (s P + 8 d^2) v   (still a sum of non-negative terms),
+/// two two-lane square roots and one two-lane division per two pairs where far_field_reference
+/// takes six scalar square roots and six divisions. For the 6- and 4-point rules (R >= 24 L)
+/// the force terms are X+/r+ + X-/r- as there (three two-lane divisions): with the unit
+/// vectors nearly parallel the fused form's two extra roundings of w_j/(r+ r-) no longer
+/// average out, and |f| would be 2 eps from muN where the test allows 4e-16.
+template <int H>
+inline MeanIntegrals far_field(double a, double b, double xc, double yc, const double (&gx)[H],
+                               const double (&gw)[H]) noexcept {
+  const double r2 = xc * xc + yc * yc;
+  Lane2 sx = {0.0, 0.0}, sy = {0.0, 0.0}, sk = {0.0, 0.0};
+  for (int i = 0; i < H; ++i) {
+    const double x = a * gx[i];
+    const double xp = xc + x, xm = xc - x;
+    Lane2 tx = {0.0, 0.0}, ty = {0.0, 0.0}, tk = {0.0, 0.0};
+    for (int j = 0; j < H; ++j) {
+      const double yj = b * gx[j];
+      const Lane2 y = {yj, -yj};
+      const Lane2 yp = yc + y, ym = yc - y;
+      const Lane2 rp = lane_sqrt(xp * xp + yp * yp), rm = lane_sqrt(xm * xm + ym * ym);
+      const Lane2 d = x * xc + y * yc, e = x * yc - y * xc;  // rho.c and rho x c
+      const Lane2 q = r2 - (x * x + y * y);                  // R^2 - rho^2
+      const Lane2 rr = rp * rm, s = rp + rm;
+      if constexpr (H >= 4) {
+        const Lane2 P = s * (rr + q);
+        const Lane2 v = gw[j] / (rr * P);
+        const Lane2 Pv = P * v;
+        tx += (xp * rm + xm * rp) * Pv;
+        ty += (yp * rm + ym * rp) * Pv;
+        tk += (e * e) * (s * P + 8.0 * (d * d)) * v;
+      } else {
+        const Lane2 ip = 1.0 / rp, im = 1.0 / rm;
+        tx += gw[j] * (xp * ip + xm * im);
+        ty += gw[j] * (yp * ip + ym * im);
+        tk += gw[j] * (e * e) * ((ip + im) + 8.0 * (d * d) / (rr * s * (rr + q)));
+      }
+    }
+    sx += gw[i] * tx;
+    sy += gw[i] * ty;
+    sk += gw[i] * tk;
+  }
+  return {0.25 * (sx[0] + sx[1]), 0.25 * (sy[0] + sy[1]), 0.25 * (sk[0] + sk[1]) / r2};
+}
+
 /// Form dispatcher in units of L = max(a, b): a, b <= 1, rho = R/L, (c, s) = (cos, sin) alpha.
 /// Returns the mean integrals except in the asymptotic regime, where it sets `asym` and
 /// returns ix = c, iy = s, km = (a^2 s^2 + b^2 c^2)/(3 rho) (exact to O(rho^-2)).
@@ -259,15 +446,80 @@ inline MeanIntegrals mean_integrals(double a, double b, double rho, double c, do
   }
   const double xc = rho * c, yc = rho * s;
   if (rho < kFrictionFarField) return closed_form(a, b, xc, yc);
-  if (rho < kFrictionGl8From) return far_field(a, b, xc, yc, kGl12x, kGl12w, 6);
-  if (rho < kFrictionGl6From) return far_field(a, b, xc, yc, kGl8x, kGl8w, 4);
-  if (rho < kFrictionGl4From) return far_field(a, b, xc, yc, kGl6x, kGl6w, 3);
-  return far_field(a, b, xc, yc, kGl4x, kGl4w, 2);
+  if (rho < kFrictionGl8From) return far_field(a, b, xc, yc, kGl12x, kGl12w);
+  if (rho < kFrictionGl6From) return far_field(a, b, xc, yc, kGl8x, kGl8w);
+  if (rho < kFrictionGl4From) return far_field(a, b, xc, yc, kGl6x, kGl6w);
+  return far_field(a, b, xc, yc, kGl4x, kGl4w);
+}
+
+/// mean_integrals with the forms as they were before issue 24 (closed_form_reference,
+/// far_field_reference): for the tests and the benchmark only.
+inline MeanIntegrals mean_integrals_reference(double a, double b, double rho, double c, double s) noexcept {
+  if (!(rho < kFrictionAsymptotic)) return {c, s, (a * a * s * s + b * b * c * c) / (3.0 * rho)};
+  const double xc = rho * c, yc = rho * s;
+  if (rho < kFrictionFarField) return closed_form_reference(a, b, xc, yc);
+  if (rho < kFrictionGl8From) return far_field_reference(a, b, xc, yc, kGl12x, kGl12w, 6);
+  if (rho < kFrictionGl6From) return far_field_reference(a, b, xc, yc, kGl8x, kGl8w, 4);
+  if (rho < kFrictionGl4From) return far_field_reference(a, b, xc, yc, kGl6x, kGl6w, 3);
+  return far_field_reference(a, b, xc, yc, kGl4x, kGl4w, 2);
 }
 
 inline FrictionWrench wrench_from_means(const MeanIntegrals& m, double muN, double sense,
                                         double length) noexcept {
   return {muN * sense * m.iy, -muN * sense * m.ix, -muN * sense * m.km * length};
+}
+
+}  // namespace friction_detail
+
+/// Pure translation with body-axis CM velocity (vx, vy) [m/s]: f = -muN v/|v|, mf = 0;
+/// the zero wrench when v = 0.
+inline FrictionWrench rectangle_friction_translation(double muN, double vx, double vy) noexcept {
+  const double v = friction_detail::hypot_portable(vx, vy);
+  if (!(v > 0.0)) return {0.0, 0.0, 0.0};
+  return {-muN * (vx / v), -muN * (vy / v), 0.0};
+}
+
+namespace friction_detail {
+
+using MeansFn = MeanIntegrals (*)(double, double, double, double, double) noexcept;
+
+/// rectangle_friction_wrench and rectangle_friction_from_velocity with a choice of the mean
+/// integrals: mean_integrals (production) or mean_integrals_reference (the forms before
+/// issue 24, for the tests and the benchmark).
+template <MeansFn Means>
+inline FrictionWrench wrench_with(double a, double b, double muN, double R, double alpha, int sense) noexcept {
+  NANOPUSH_FRICTION_ASSERT(a > 0.0 && b > 0.0 && R >= 0.0 && (sense == 1 || sense == -1));
+  const double L = a > b ? a : b;
+  const auto m = Means(a / L, b / L, R / L, std::cos(alpha), std::sin(alpha));
+  return wrench_from_means(m, muN, sense < 0 ? -1.0 : 1.0, L);
+}
+
+template <MeansFn Means>
+inline FrictionWrench from_velocity_with(double a, double b, double muN, double vx, double vy,
+                                         double omega) noexcept {
+  NANOPUSH_FRICTION_ASSERT(a > 0.0 && b > 0.0);
+  const double L = a > b ? a : b;
+  const double v = hypot_portable(vx, vy);
+  if (omega == 0.0) return rectangle_friction_translation(muN, vx, vy);
+  const double sense = omega > 0.0 ? 1.0 : -1.0;
+  // CM seen from the iCOR: -c = (vy, -vx)/omega = R (cos alpha, sin alpha).
+  double c = 1.0, s = 0.0;  // any direction at R = 0
+  if (v > 0.0) {
+    c = sense * vy / v;
+    s = -sense * vx / v;
+  }
+  const double rho = (v / std::fabs(omega)) / L;  // may be +inf: asymptotic form
+  return wrench_from_means(Means(a / L, b / L, rho, c, s), muN, sense, L);
+}
+
+/// The public entry points as they were before issue 24 (tests and benchmark only).
+inline FrictionWrench rectangle_friction_wrench_reference(double a, double b, double muN, double R, double alpha,
+                                                          int sense) noexcept {
+  return wrench_with<mean_integrals_reference>(a, b, muN, R, alpha, sense);
+}
+inline FrictionWrench rectangle_friction_from_velocity_reference(double a, double b, double muN, double vx,
+                                                                 double vy, double omega) noexcept {
+  return from_velocity_with<mean_integrals_reference>(a, b, muN, vx, vy, omega);
 }
 
 }  // namespace friction_detail
@@ -279,18 +531,7 @@ inline FrictionWrench wrench_from_means(const MeanIntegrals& m, double muN, doub
 /// Unchecked hot path (preconditions in the header comment); see *_checked.
 inline FrictionWrench rectangle_friction_wrench(double a, double b, double muN, double R, double alpha,
                                                 int sense) noexcept {
-  NANOPUSH_FRICTION_ASSERT(a > 0.0 && b > 0.0 && R >= 0.0 && (sense == 1 || sense == -1));
-  const double L = a > b ? a : b;
-  const auto m = friction_detail::mean_integrals(a / L, b / L, R / L, std::cos(alpha), std::sin(alpha));
-  return friction_detail::wrench_from_means(m, muN, sense < 0 ? -1.0 : 1.0, L);
-}
-
-/// Pure translation with body-axis CM velocity (vx, vy) [m/s]: f = -muN v/|v|, mf = 0;
-/// the zero wrench when v = 0.
-inline FrictionWrench rectangle_friction_translation(double muN, double vx, double vy) noexcept {
-  const double v = friction_detail::hypot_portable(vx, vy);
-  if (!(v > 0.0)) return {0.0, 0.0, 0.0};
-  return {-muN * (vx / v), -muN * (vy / v), 0.0};
+  return friction_detail::wrench_with<friction_detail::mean_integrals>(a, b, muN, R, alpha, sense);
 }
 
 /// Friction wrench from the body-axis rigid velocity: CM velocity (vx, vy) [m/s] and angular
@@ -299,20 +540,7 @@ inline FrictionWrench rectangle_friction_translation(double muN, double vx, doub
 /// zero wrench at rest. Sense = sign(omega).
 inline FrictionWrench rectangle_friction_from_velocity(double a, double b, double muN, double vx, double vy,
                                                        double omega) noexcept {
-  NANOPUSH_FRICTION_ASSERT(a > 0.0 && b > 0.0);
-  const double L = a > b ? a : b;
-  const double v = friction_detail::hypot_portable(vx, vy);
-  if (omega == 0.0) return rectangle_friction_translation(muN, vx, vy);
-  const double sense = omega > 0.0 ? 1.0 : -1.0;
-  // CM seen from the iCOR: -c = (vy, -vx)/omega = R (cos alpha, sin alpha).
-  double c = 1.0, s = 0.0;  // any direction at R = 0
-  if (v > 0.0) {
-    c = sense * vy / v;
-    s = -sense * vx / v;
-  }
-  const double rho = (v / std::fabs(omega)) / L;  // may be +inf: asymptotic form
-  const auto m = friction_detail::mean_integrals(a / L, b / L, rho, c, s);
-  return friction_detail::wrench_from_means(m, muN, sense, L);
+  return friction_detail::from_velocity_with<friction_detail::mean_integrals>(a, b, muN, vx, vy, omega);
 }
 
 /// Checked entry points: throw nanopush::InputError naming the field, value and allowed range
