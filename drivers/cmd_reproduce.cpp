@@ -1,11 +1,15 @@
 // nanopush reproduce: every thesis table and figure the project reproduces, both engines,
 // into one directory with a Markdown report. Steps are registered by the cmd_*.cpp files.
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <iostream>
+#include <mutex>
+#include <thread>
 
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/outputs/io.hpp"
+#include "cli_checks.hpp"
 #include "interrupt.hpp"
 #include "registry.hpp"
 
@@ -18,6 +22,7 @@ struct Options {
   bool quick = false;
   bool list = false;
   bool no_bench = false;  ///< thesis content only: skip the work-precision benchmarks (bench_*)
+  int jobs = 0;           ///< steps run at once (0: the machine's cores)
 };
 
 bool is_benchmark(const std::string& step) { return step.rfind("bench_", 0) == 0; }
@@ -54,27 +59,58 @@ int run_reproduce(const Options& o) {
              << "repository (C++ engine and FORTRAN 77 engine); nothing is pasted from the thesis except\n"
              << "the printed values we compare against, which are labelled as such.\n\n";
   const auto t_all = std::chrono::steady_clock::now();
-  std::size_t i = 0, n = 0;
   const auto selected = [&](const std::string& name) {
     if (o.no_bench && is_benchmark(name)) return false;
     return o.only.empty() || std::find(o.only.begin(), o.only.end(), name) != o.only.end();
   };
+  std::vector<const ReproduceStep*> run;
   for (auto& s : steps)
-    if (selected(s.name)) ++n;
-  for (auto& s : steps) {
-    if (!selected(s.name)) continue;
-    ++i;
-    std::cerr << "[" << i << "/" << n << "] " << s.name << ": " << s.description << " ..." << std::flush;
-    const auto t0 = std::chrono::steady_clock::now();
-    const std::size_t fails_before = ctx.failures.size();
-    try {
-      s.run(ctx);
-    } catch (const std::exception& e) {
-      ctx.failures.push_back(s.name + ": " + e.what());
-      ctx.report << "\n**Step `" << s.name << "` failed:** " << e.what() << "\n";
+    if (selected(s.name)) run.push_back(&s);
+  // Independent steps run at once, each into its own context (report section, files,
+  // failures); the report joins them in step order, so it reads the same for any --jobs.
+  // The benchmarks (single-threaded, the longest) start first; with --jobs at most the
+  // machine's cores no two steps share a core, but a benchmark's wall times are then taken
+  // beside other work (--jobs 1 measures on an otherwise idle process).
+  const std::size_t n = run.size();
+  std::vector<ReproduceContext> parts(n);
+  std::vector<std::size_t> order(n);
+  for (std::size_t k = 0; k < n; ++k) order[k] = k;
+  std::stable_partition(order.begin(), order.end(), [&](std::size_t k) { return is_benchmark(run[k]->name); });
+  std::atomic<std::size_t> next{0};
+  std::mutex print;
+  std::size_t done = 0;
+  const auto worker = [&] {
+    for (std::size_t q; (q = next.fetch_add(1)) < n;) {
+      const std::size_t k = order[q];
+      const ReproduceStep& s = *run[k];
+      ReproduceContext& part = parts[k];
+      part.out = ctx.out;
+      part.quick = ctx.quick;
+      const auto t0 = std::chrono::steady_clock::now();
+      try {
+        s.run(part);
+      } catch (const std::exception& e) {
+        part.failures.push_back(s.name + ": " + e.what());
+        part.report << "\n**Step `" << s.name << "` failed:** " << e.what() << "\n";
+      }
+      const double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      std::lock_guard<std::mutex> lock(print);
+      std::cerr << "[" << ++done << "/" << n << "] " << s.name << ": " << s.description
+                << (part.failures.empty() ? " done" : " FAILED") << " (" << dt << " s)\n";
     }
-    const double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    std::cerr << (ctx.failures.size() > fails_before ? " FAILED" : " done") << " (" << dt << " s)\n";
+  };
+  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  const std::size_t jobs = std::min<std::size_t>(n, o.jobs > 0 ? static_cast<std::size_t>(o.jobs) : cores);
+  std::cerr << "reproduce: " << n << " steps, " << std::max<std::size_t>(jobs, 1) << " at a time\n";
+  {
+    std::vector<std::jthread> pool;
+    for (std::size_t j = 1; j < jobs; ++j) pool.emplace_back(worker);
+    worker();
+  }
+  for (auto& part : parts) {
+    ctx.report << part.report.str();
+    ctx.files.insert(ctx.files.end(), part.files.begin(), part.files.end());
+    ctx.failures.insert(ctx.failures.end(), part.failures.begin(), part.failures.end());
   }
   const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_all).count();
   ctx.report << "\n## Files\n\n";
@@ -105,6 +141,11 @@ RegisterCommand reg{{"reproduce",
                        app.add_option("--only", o->only, "run only these steps (see --list)");
                        app.add_flag("--quick", o->quick, "fewer samples per figure (for tests)");
                        app.add_flag("--list", o->list, "list the steps and exit");
+                       app.add_option("--jobs,-j", o->jobs,
+                                      "steps run at once (default 0: the machine's cores; 1 times the benchmarks "
+                                      "on an otherwise idle process)")
+                           ->check(count(0, 1024))
+                           ->capture_default_str();
                        app.add_flag("--no-bench", o->no_bench,
                                     "thesis content only: skip the work-precision benchmarks (the bench_* steps, most "
                                     "of the run time)");
