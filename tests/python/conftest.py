@@ -68,8 +68,11 @@ def column(header, rows, name, empty=float("nan")):
 
 def assert_runs_without_the_gil(fn, min_seconds=0.05):
     """Call fn() on a second thread while this thread keeps running Python code, and check
-    that this thread ran through the call: in at least half of its 10 ms intervals. A call
-    holding the GIL lets it run in one or two intervals at most (the switch interval is 5 ms)."""
+    that this thread ran during the call: in at least 3 of its 10 ms intervals and a fifth of
+    them. A call holding the GIL lets it run in one or two intervals at most (the switch
+    interval is 5 ms); a call releasing it, in nearly all of them on an idle machine but in
+    fewer on a loaded one (CTest runs two tests at once on two cores, beside other work), so
+    the bound is set by the held case, not by an idle machine's timing."""
     state = {}
 
     def worker():
@@ -88,6 +91,6 @@ def assert_runs_without_the_gil(fn, min_seconds=0.05):
     assert end - start >= min_seconds, f"call too short to tell ({end - start:.3f} s)"
     inside = {b for b in seen if start * 100 <= b < end * 100 - 1}
     intervals = int((end - start) * 100) - 1
-    assert len(inside) >= 0.5 * intervals, (
+    assert len(inside) >= max(3, 0.2 * intervals), (
         f"this thread ran in {len(inside)} of {intervals} 10-ms intervals of the call: GIL held?")
     return state["result"]
