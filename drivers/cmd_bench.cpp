@@ -38,7 +38,26 @@ struct BenchOptions {
   std::int64_t rhs_budget = 0;  // stick-slip: RHS evaluations per solve for engines without event location
   bool quick = false, no_plot = false, quiet = false;
   bool replay = false;  // also time the integrators alone (RHS values replayed)
+  /// Options the user gave (the others take the scene's budgets: stick_slip_budgets).
+  bool given_kmax = false, given_kstep = false, given_repeats = false, given_rhs_budget = false;
 };
+
+/// A scene whose friction law is coulomb (stick-slip)? Its engines without event location
+/// chatter through every rest (minutes per solve without a limit).
+bool stick_slip(const Scene& scene) { return scene.rough() && scene.surface.law == "coulomb"; }
+
+/// The budgets `reproduce` gives a stick-slip scene, and the defaults of `nanopush bench` on
+/// one (options the user gave are kept): each solve of an engine without event location may
+/// spend 2e5 RHS evaluations (100 x what event location needs); the sweep stops at rtol 1e-9,
+/// where the two double-precision reference runs (agreeing to ~1e-12) still resolve the
+/// smallest error by the acceptance rule; every third tolerance, one timed solve per point
+/// (the criterion is on RHS counts).
+void stick_slip_budgets(BenchOptions& o) {
+  if (!o.given_kmax) o.kmax = 18;
+  if (!o.given_kstep) o.kstep = 3;
+  if (!o.given_repeats) o.repeats = 1;
+  if (!o.given_rhs_budget) o.rhs_budget = 200000;
+}
 
 // ------------------------------------------------------------------ the ratios
 /// Cheapest run of (engine, precision) whose error is <= target: {nfcn, wall_s}; NaN if none.
@@ -469,6 +488,7 @@ int bench_cmd(BenchOptions o) {
     require_range("--samples", o.samples, 2, 1e7);
     scene.solver.samples = o.samples;
   }
+  if (stick_slip(scene)) stick_slip_budgets(o);
   if (o.quick) {
     o.kstep = 6;
     o.repeats = 1;
@@ -564,17 +584,24 @@ RegisterCommand reg{
                       "113-bit); default double")
            ->check(CLI::IsMember({"double", "long", "quad"}));
        app.add_option("--kmin", o->kmin, "first k of rtol = 10^(-k/2)")->check(count(0, 64))->capture_default_str();
-       app.add_option("--kmax", o->kmax, "last k in double precision (28: rtol 1e-14; each engine stops at its tightest meaningful rtol: C++ BS 1e-14, others 1e-13)")->check(count(0, 64))->capture_default_str();
+       auto* kmax = app.add_option("--kmax", o->kmax,
+                                   "last k in double precision (28: rtol 1e-14, stick-slip scenes 18: rtol 1e-9; each "
+                                   "engine stops at its tightest meaningful rtol: C++ BS 1e-14, others 1e-13)")
+                        ->check(count(0, 64))
+                        ->capture_default_str();
        app.add_option("--kmax-extended", o->kmax_extended, "last k in long/quad precision (56: rtol 1e-28)")
            ->check(count(0, 64))
            ->capture_default_str();
-       app.add_option("--kstep", o->kstep, "step in k")->check(count(1, 64))->capture_default_str();
+       auto* kstep = app.add_option("--kstep", o->kstep, "step in k (stick-slip scenes: 3)")
+                         ->check(count(1, 64))
+                         ->capture_default_str();
        app.add_option("--kstep-extended", o->kstep_extended, "step in k for long/quad engines (0 = --kstep)")
            ->check(count(0, 64))
            ->capture_default_str();
-       app.add_option("--repeats", o->repeats, "timed solves per point; the median is reported")
-           ->check(count(1, 1000))
-           ->capture_default_str();
+       auto* repeats = app.add_option("--repeats", o->repeats,
+                                      "timed solves per point; the median is reported (stick-slip scenes: 1)")
+                           ->check(count(1, 1000))
+                           ->capture_default_str();
        app.add_option("--repeats-extended", o->repeats_extended,
                       "timed solves per point for long/quad engines (0 = --repeats)")
            ->check(count(0, 1000))
@@ -587,12 +614,18 @@ RegisterCommand reg{
                     "also time every double engine with the RHS values of the same solve replayed instead of "
                     "evaluated: the integrator alone, without the RHS (CSV column own_ns_per_rhs; --repeats more "
                     "solves per point)");
-       app.add_option("--rhs-budget", o->rhs_budget,
-                      "stick-slip scenes: RHS evaluations allowed per solve to the engines without event location "
-                      "(0 = only their step budgets)")
-           ->check(count(0, 1000000000000))
-           ->capture_default_str();
-       return [o] { return bench_cmd(*o); };
+       auto* budget = app.add_option("--rhs-budget", o->rhs_budget,
+                                     "stick-slip scenes: RHS evaluations allowed per solve to the engines without "
+                                     "event location (default there 200000; 0 = only their step budgets)")
+                          ->check(count(0, 1000000000000))
+                          ->capture_default_str();
+       return [o, kmax, kstep, repeats, budget] {
+         o->given_kmax = kmax->count() > 0;
+         o->given_kstep = kstep->count() > 0;
+         o->given_repeats = repeats->count() > 0;
+         o->given_rhs_budget = budget->count() > 0;
+         return bench_cmd(*o);
+       };
      }}};
 
 RegisterReproduce step{{"bench_smooth",
@@ -608,11 +641,7 @@ RegisterReproduce step_rough{
                              "mu = 0.05");
      }}};
 // The stick-slip scene (mu = 0.15, coulomb law): the event-locating integrators against every
-// engine without event location. Those chatter through the rest (minutes per sweep without a
-// limit: `nanopush bench stick_mu015`), so here each of their solves may spend 2e5 RHS
-// evaluations (100 x what event location needs); the sweep stops at rtol 1e-9, where the
-// two double-precision reference runs (agreeing to ~1e-12) still resolve the smallest error
-// by the acceptance rule; one timed solve per point (the criterion is on RHS counts).
+// engine without event location, with the budgets of stick_slip_budgets.
 RegisterReproduce step_stick{
     {"bench_stick",
      "work-precision on the rough nanobar with stick-slip (mu = 0.15, coulomb law): event location against engines "
@@ -622,11 +651,8 @@ RegisterReproduce step_stick{
                              "Work-precision: stick-slip, mu = 0.15, coulomb law (event location)", "mu = 0.15 stick-slip",
                              [&c](BenchOptions& o) {
                                o.precisions = {"double"};
-                               o.kmin = 6;
-                               o.kmax = 18;
-                               o.kstep = c.quick ? 6 : 3;
-                               o.repeats = 1;
-                               o.rhs_budget = 200000;
+                               stick_slip_budgets(o);
+                               if (c.quick) o.kstep = 6;
                              });
      }}};
 

@@ -105,3 +105,13 @@ add_test(NAME cli.bench.odex_comparison COMMAND ${_np} bench fig3_6a --quick --q
          --out ${CMAKE_CURRENT_BINARY_DIR}/bench-odex/bench.csv)
 set_tests_properties(cli.bench.odex_comparison PROPERTIES ENVIRONMENT "${_env}"
   PASS_REGULAR_EXPRESSION "cxx-modern \\(dense_accept 1\\) vs cxx-modern-odex \\(ODEX's 10\\)")
+
+# Stick-slip scenes take reproduce's budgets by default (rtol 1e-3..1e-9, every third k: 5
+# rows per engine); an option the user gives is kept (--kstep 6 --kmax 12: 2 rows).
+add_test(NAME cli.bench.stick_slip_defaults
+         COMMAND bash -c "set -e; \"$0\" bench stick_mu015 --engines cxx-events --quiet --no-plot --out \"$1/d.csv\" \
+> /dev/null; test $(grep -c '^cxx-events' \"$1/d.csv\") -eq 5; grep -q '^cxx-events,double,1e-09,' \"$1/d.csv\"; \
+\"$0\" bench stick_mu015 --engines cxx-events --kstep 6 --kmax 12 --quiet --no-plot --out \"$1/g.csv\" > /dev/null; \
+test $(grep -c '^cxx-events' \"$1/g.csv\") -eq 2; echo stick-slip defaults: ok" ${_np} ${CMAKE_CURRENT_BINARY_DIR}/bench-stick-defaults)
+set_tests_properties(cli.bench.stick_slip_defaults PROPERTIES ENVIRONMENT "${_env}"
+  PASS_REGULAR_EXPRESSION "stick-slip defaults: ok")
