@@ -97,10 +97,10 @@ struct Workload {
 FrictionWrench eval(const Workload& w, const Input& in, bool reference) {
   if (w.velocity)
     return reference ? friction_detail::rectangle_friction_from_velocity_reference(w.a, w.b, 1.0, in.p, in.q, in.r)
-                     : rectangle_friction_from_velocity(w.a, w.b, 1.0, in.p, in.q, in.r);
+                     : friction_detail::rectangle_friction_from_velocity_fast(w.a, w.b, 1.0, in.p, in.q, in.r);
   const int sense = in.r < 0 ? -1 : 1;
   return reference ? friction_detail::rectangle_friction_wrench_reference(w.a, w.b, 1.0, in.p, in.q, sense)
-                   : rectangle_friction_wrench(w.a, w.b, 1.0, in.p, in.q, sense);
+                   : friction_detail::rectangle_friction_wrench_fast(w.a, w.b, 1.0, in.p, in.q, sense);
 }
 
 /// Time `passes` sweeps over the inputs: ns per wrench. The sum of the results goes to a
@@ -142,14 +142,14 @@ void check_agreement(Workload& w) {
   }
 }
 
-/// The thesis-law right-hand side with the friction of before issue 24 (RoughBarThesisRhs
-/// and RoughBarModel::friction_cs, the wrench through the reference forms).
-struct ReferenceRoughRhs {
+/// The thesis-law right-hand side (RoughBarThesisRhs and RoughBarModel::friction_cs) with the
+/// wrench through the forms of issue 24 (friction_detail::*_fast).
+struct FastRoughRhs {
   RoughBarModel model;
   [[nodiscard]] WorldWrench friction_cs(double c, double s, double vx, double vy, double omega) const noexcept {
     if (model.muN == 0.0) return {};
     const double vbx = c * vx + s * vy, vby = -s * vx + c * vy;
-    const FrictionWrench fb = friction_detail::rectangle_friction_from_velocity_reference(
+    const FrictionWrench fb = friction_detail::rectangle_friction_from_velocity_fast(
         model.geometry.a, model.geometry.b, model.muN, vbx, vby, omega);
     return {c * fb.fx - s * fb.fy, s * fb.fx + c * fb.fy, fb.mf};
   }
@@ -308,8 +308,8 @@ int bench_friction(const BenchFrictionOptions& o) {
   }
 
   // ---- the rough scene integrated with each right-hand side, interleaved
-  const ReferenceRoughRhs old_rhs{model};
-  const RoughBarThesisRhs new_rhs{model};
+  const RoughBarThesisRhs old_rhs{model};
+  const FastRoughRhs new_rhs{model};
   RunResult ro = integrate(sc, rs, old_rhs), rn = integrate(sc, rs, new_rhs);  // warm-up and the check
   std::vector<double> run_old, run_new, run_ratio;
   for (int r = 0; r < o.repeats; ++r) {

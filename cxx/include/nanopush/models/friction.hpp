@@ -452,8 +452,8 @@ inline MeanIntegrals mean_integrals(double a, double b, double rho, double c, do
   return far_field(a, b, xc, yc, kGl4x, kGl4w);
 }
 
-/// mean_integrals with the forms as they were before issue 24 (closed_form_reference,
-/// far_field_reference): for the tests and the benchmark only.
+/// mean_integrals with the forms before issue 24 (closed_form_reference, far_field_reference):
+/// the production path of the public entry points (see rectangle_friction_from_velocity_fast).
 inline MeanIntegrals mean_integrals_reference(double a, double b, double rho, double c, double s) noexcept {
   if (!(rho < kFrictionAsymptotic)) return {c, s, (a * a * s * s + b * b * c * c) / (3.0 * rho)};
   const double xc = rho * c, yc = rho * s;
@@ -512,7 +512,8 @@ inline FrictionWrench from_velocity_with(double a, double b, double muN, double 
   return wrench_from_means(Means(a / L, b / L, rho, c, s), muN, sense, L);
 }
 
-/// The public entry points as they were before issue 24 (tests and benchmark only).
+/// The public entry points' forms (the corner-by-corner closed form and three divisions per
+/// far-field pair), by name: what the F77 routine evaluates too.
 inline FrictionWrench rectangle_friction_wrench_reference(double a, double b, double muN, double R, double alpha,
                                                           int sense) noexcept {
   return wrench_with<mean_integrals_reference>(a, b, muN, R, alpha, sense);
@@ -520,6 +521,20 @@ inline FrictionWrench rectangle_friction_wrench_reference(double a, double b, do
 inline FrictionWrench rectangle_friction_from_velocity_reference(double a, double b, double muN, double vx,
                                                                  double vy, double omega) noexcept {
   return from_velocity_with<mean_integrals_reference>(a, b, muN, vx, vy, omega);
+}
+
+/// The entry points through the forms of issue 24 (closed_form, far_field): as accurate as the
+/// public ones (tests/test_friction_fast.cpp) and 0.4-0.5 x their cost per wrench on a rough
+/// run (`nanopush bench-friction`), but not yet the production path: with them the CVODE
+/// cross-check of the coulomb law, which starts its BDF iteration from rest on a discontinuous
+/// right-hand side, lands 4e-5 rad away on fig3_23 (docs/friction.md, "Evaluation").
+inline FrictionWrench rectangle_friction_wrench_fast(double a, double b, double muN, double R, double alpha,
+                                                     int sense) noexcept {
+  return wrench_with<mean_integrals>(a, b, muN, R, alpha, sense);
+}
+inline FrictionWrench rectangle_friction_from_velocity_fast(double a, double b, double muN, double vx, double vy,
+                                                            double omega) noexcept {
+  return from_velocity_with<mean_integrals>(a, b, muN, vx, vy, omega);
 }
 
 }  // namespace friction_detail
@@ -531,7 +546,7 @@ inline FrictionWrench rectangle_friction_from_velocity_reference(double a, doubl
 /// Unchecked hot path (preconditions in the header comment); see *_checked.
 inline FrictionWrench rectangle_friction_wrench(double a, double b, double muN, double R, double alpha,
                                                 int sense) noexcept {
-  return friction_detail::wrench_with<friction_detail::mean_integrals>(a, b, muN, R, alpha, sense);
+  return friction_detail::wrench_with<friction_detail::mean_integrals_reference>(a, b, muN, R, alpha, sense);
 }
 
 /// Friction wrench from the body-axis rigid velocity: CM velocity (vx, vy) [m/s] and angular
@@ -540,7 +555,7 @@ inline FrictionWrench rectangle_friction_wrench(double a, double b, double muN, 
 /// zero wrench at rest. Sense = sign(omega).
 inline FrictionWrench rectangle_friction_from_velocity(double a, double b, double muN, double vx, double vy,
                                                        double omega) noexcept {
-  return friction_detail::from_velocity_with<friction_detail::mean_integrals>(a, b, muN, vx, vy, omega);
+  return friction_detail::from_velocity_with<friction_detail::mean_integrals_reference>(a, b, muN, vx, vy, omega);
 }
 
 /// Checked entry points: throw nanopush::InputError naming the field, value and allowed range
