@@ -541,8 +541,9 @@ contains
 
   !> Integrate a scene as `nanopush run` does. traj(NANOPUSH_TRAJECTORY_COLUMNS, nrows) is
   !> allocated: traj(:, i) = (t, x, y, theta, vx, vy, omega, fx, fy, mf) at output time i.
-  !>   engine "cxx" or "f77", method "faithful" or "modern" (or "cvode": rough scenes, coulomb
-  !>   law, engine cxx) (default: the scene's); law, for rough scenes, "thesis" or "coulomb"
+  !>   engine "cxx" or "f77", method "faithful", "modern" or "dop853" (Dormand-Prince 8(5,3),
+  !>   double, not under the coulomb law) (or "cvode": rough scenes, coulomb law, engine cxx)
+  !>   (default: the scene's); law, for rough scenes, "thesis" or "coulomb"
   !>   (default: the scene's [surface] law);
   !>   rtol (default or 0: the scene's); atol (default or < 0: the scene's; 0 = automatic);
   !>   counts(3) = (RHS evaluations, accepted steps, rejected steps);

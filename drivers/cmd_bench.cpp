@@ -577,7 +577,7 @@ RegisterCommand reg{
        app.add_flag("--no-plot", o->no_plot, "write the CSV only");
        app.add_option("--engines", o->engines,
                       "engines to run (default all but cxx-modern-odex, which runs only when named): cxx-faithful, cxx-modern, "
-                      "cxx-modern-odex, f77-callback, f77-native, cvode-adams, "
+                      "cxx-modern-odex, cxx-dop853, f77-callback, f77-native, cvode-adams, "
                       "cvode-bdf, arkode-erk8, odeint-bs, odeint-bs-dense");
        app.add_option("--precision", o->precisions,
                       "scalar of the C++ BS, repeatable: double (53-bit), long (x87 64-bit), quad (__float128, "

@@ -166,9 +166,11 @@ RegisterCommand reg_run{{"run", "Integrate a scene and write its trajectory as C
                            app.add_option("--engine", o->engine, "cxx (modern C++) or f77 (FORTRAN 77); default: the scene's")
                                ->check(CLI::IsMember({"cxx", "f77"}));
                            app.add_option("--method", o->method,
-                                          "C++ configuration: faithful (steps identical to F77), modern, or cvode (SUNDIALS "
-                                          "cross-check of the coulomb law); default: the scene's")
-                               ->check(CLI::IsMember({"faithful", "modern", "cvode"}));
+                                          "C++ integrator: faithful (steps identical to F77), modern (Bulirsch-Stoer with dense "
+                                          "output), dop853 (Dormand-Prince 8(5,3), double; smooth scenes and the thesis law: "
+                                          "docs/dop853.md), cvode (SUNDIALS cross-check of the coulomb law), or auto (dop853 for "
+                                          "rtol >= 1e-11 where it runs, else modern); default: the scene's")
+                               ->check(CLI::IsMember({"faithful", "modern", "dop853", "cvode", "auto"}));
                            app.add_option("--law", o->law,
                                           "rough scenes: friction law, thesis (sign law of eq 3.40) or coulomb (event-located "
                                           "stick-slip); default: the scene's")

@@ -197,8 +197,8 @@ RegisterCommand reg{
            ->check(CLI::IsMember({"run", "friction", "icor", "estimate-mu"}));
        app.add_option("--engine", o->engine, "task run: cxx or f77 (default: the scene's)")
            ->check(CLI::IsMember({"cxx", "f77"}));
-       app.add_option("--method", o->method, "task run: faithful, modern or cvode (default: the scene's)")
-           ->check(CLI::IsMember({"faithful", "modern", "cvode"}));
+       app.add_option("--method", o->method, "task run: faithful, modern, dop853, cvode or auto (default: the scene's)")
+           ->check(CLI::IsMember({"faithful", "modern", "dop853", "cvode", "auto"}));
        app.add_option("--law", o->law, "task run, rough scenes: thesis or coulomb (default: the scene's)")
            ->check(CLI::IsMember({"thesis", "coulomb"}));
        app.add_option("--out", o->out, "the table (CSV; default <scene>_sweep.csv); its journal is OUT.journal");

@@ -156,6 +156,9 @@ std::string extended_precision_obstacle(bool rough, const std::string& engine, c
   const std::string need = "long and quad need engine = cxx, method faithful or modern, on a smooth scene (smooth surface)";
   if (rough) return need + " (the rough-surface friction is computed in double)";
   if (engine != "cxx") return need + " (the F77 engine is REAL*8)";
+  if (method == "dop853")
+    return need + " (dop853 is double only: its coefficients are tabulated to long double, so its order conditions "
+                  "hold to ~1e-19)";
   if (method != "faithful" && method != "modern") return need + " (CVODE is double)";
   return "";
 }
@@ -353,7 +356,7 @@ Scene scene_from_document(const toml::table& root, const std::string& source_nam
     sc.solver.engine = opt_string(t, "solver", "engine").value_or("cxx");
     require_one_of("solver.engine", sc.solver.engine, {"cxx", "f77"});
     sc.solver.method = opt_string(t, "solver", "method").value_or("faithful");
-    require_one_of("solver.method", sc.solver.method, {"faithful", "modern", "cvode"});
+    require_one_of("solver.method", sc.solver.method, {"faithful", "modern", "dop853", "cvode", "auto"});
     if (sc.solver.engine == "f77" && sc.solver.method != "faithful")
       throw InputError("solver.method", "\"" + sc.solver.method + "\"",
                        "with solver.engine = \"f77\" there is one method (the F77 Bulirsch-Stoer): leave "

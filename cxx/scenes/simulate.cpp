@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <type_traits>
 
+#include "nanopush/numerics/dop853.hpp"
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/models/rigid_body.hpp"
 #include "nanopush/models/rough_bar.hpp"
@@ -29,16 +30,35 @@ RunSettings resolve_settings(const Scene& scene, RunSettings s) {
                      "the f77 engine has one method (its Bulirsch-Stoer, which faithful reproduces in C++): drop the "
                      "method or use engine cxx");
   if (s.engine == "f77") s.method = "faithful";
+  // The field named is the one the value came from (the settings or the scene), as below.
+  const std::string mfield = s.method.empty() ? "solver.method" : "method";
   if (s.method.empty()) s.method = scene.solver.method;
-  if (s.method != "faithful" && s.method != "modern" && s.method != "cvode")
-    throw InputError("method", s.method, "must be faithful, modern or cvode");
+  if (s.method != "faithful" && s.method != "modern" && s.method != "cvode" && s.method != "dop853" &&
+      s.method != "auto")
+    throw InputError(mfield, s.method, "must be faithful, modern, dop853, cvode or auto");
   if (s.law.empty()) s.law = scene.surface.law;
   if (s.law != "thesis" && s.law != "coulomb") throw InputError("law", s.law, "must be thesis or coulomb");
   if (s.rtol == 0) s.rtol = scene.solver.rtol;
   require_range("rtol", s.rtol, 1e-30, 0.1);
+  if (s.method == "auto") {
+    // The method that reached the error asked for with the least wall time in the measured
+    // work-precision (docs/dop853.md, "Choosing a method"): dop853 down to rtol 1e-11 where it
+    // runs (double, smooth scenes and the thesis law), the modern Bulirsch-Stoer below that,
+    // in extended precision and under the coulomb law (its rest events).
+    const std::string prec = s.precision.empty() ? scene.solver.precision : s.precision;
+    const bool dop853_runs = prec == "double" && !(scene.rough() && s.law == "coulomb");
+    s.method = dop853_runs && s.rtol >= kAutoDop853RtolMin ? "dop853" : "modern";
+  }
   if (s.atol < 0) s.atol = scene.solver.atol;
   if (s.method == "cvode" && !(scene.rough() && s.law == "coulomb" && s.engine == "cxx"))
     throw InputError("method", "cvode", "the CVODE cross-check exists for rough scenes under the coulomb law only");
+  // dop853 (docs/dop853.md) integrates a smooth ODE: the smooth scenes, and the rough ones
+  // under the thesis law. The coulomb law needs the rest events located and the stick held,
+  // which only the Bulirsch-Stoer engine (and the CVODE cross-check) do.
+  if (s.method == "dop853" && scene.rough() && s.law == "coulomb")
+    throw InputError(mfield, "dop853",
+                     "the coulomb law needs its rest events located, which dop853 does not do: use faithful, modern "
+                     "or cvode, or law thesis");
   if (s.engine == "f77" && scene.rough() && s.law == "coulomb")
     throw InputError("engine", "f77", "the F77 engine implements the thesis friction law only (use --engine cxx)");
   // Precision: the field named is the one the value came from (the settings or the scene).
@@ -50,6 +70,11 @@ RunSettings resolve_settings(const Scene& scene, RunSettings s) {
     const std::string why = extended_precision_obstacle(scene.rough(), s.engine, s.method);
     if (!why.empty()) throw InputError(pfield, s.precision, why);
   }
+  if (s.method == "dop853" && s.rtol < dop853_rtol_min<double>())
+    throw InputError("rtol", fmt(s.rtol),
+                     "must be >= " + fmt_short(dop853_rtol_min<double>()) + " (" + fmt(kDop853RtolEps) +
+                         " eps of double) with the dop853 method; use --method faithful, or modern with --precision "
+                         "long or quad");
   if (s.method == "modern" && s.engine == "cxx") {
     const double floor = s.precision == "quad"   ? dense_rtol_min<num::quad>()
                          : s.precision == "long" ? dense_rtol_min<long double>()
@@ -88,6 +113,18 @@ BsOptions<S> options_for(const Scene& sc, const RunSettings& s, const std::vecto
   return opt;
 }
 
+/// A dop853 run (docs/dop853.md) in double with the scene's step settings.
+template <int NS, class Rhs, class Observer>
+BsResult run_dop853(const Scene& sc, const RunSettings& s, const std::vector<double>& atol, const Rhs& rhs, double* y,
+                    const std::vector<double>& tout, Observer&& observer) {
+  auto opt = Dop853Options<double>::make(s.rtol, atol);
+  opt.h0 = sc.solver.h0;
+  opt.hmax = sc.solver.hmax;
+  opt.maxstp = sc.solver.max_steps;
+  Dop853<double, NS> dp(std::move(opt));
+  return dp.integrate(rhs, 0.0, y, std::span<const double>(tout), std::forward<Observer>(observer));
+}
+
 /// The smooth bar in the C++ engine, integrated in scalar S (double, long double or
 /// __float128): initial state, output times, rtol and atol converted to S; the rows are the
 /// states rounded back to double. In double this is the plain double run.
@@ -101,7 +138,6 @@ Trajectory run_cxx_smooth(const Scene& sc, const RunSettings& s) {
   tr.rtol = s.rtol;
   tr.atol = sc.atol_vector(s.rtol, s.atol);
   const std::vector<S> atol(tr.atol.begin(), tr.atol.end());
-  BulirschStoer<S, kStateSize> bs(options_for<S>(sc, s, atol));
   const SmoothBarRhs rhs{sc.mass, sc.inertia, sc.push};
   const auto tout_d = sc.output_times();
   const std::vector<S> tout(tout_d.begin(), tout_d.end());
@@ -110,7 +146,7 @@ Trajectory run_cxx_smooth(const Scene& sc, const RunSettings& s) {
   tr.rows.reserve(tout.size());
   if constexpr (extended) tr.extended.reserve(tout.size());
   const double n = static_cast<double>(tout.size());
-  tr.stats = bs.integrate(rhs, S(0), y.data(), std::span<const S>(tout), [&](std::size_t i, S t, const S* yy) {
+  auto observer = [&](std::size_t i, S t, const S* yy) {
     if constexpr (extended) {
       double yd[kStateSize];
       std::array<num::quad, kStateSize> yq;
@@ -124,7 +160,15 @@ Trajectory run_cxx_smooth(const Scene& sc, const RunSettings& s) {
       tr.rows.push_back(make_row(t, yy));
     }
     if (s.progress) s.progress(static_cast<double>(i + 1) / n);
-  });
+  };
+  if constexpr (!extended) {
+    if (s.method == "dop853") {  // double only (resolve_settings)
+      tr.stats = run_dop853<kStateSize>(sc, s, tr.atol, rhs, y.data(), tout_d, observer);
+      return tr;
+    }
+  }
+  BulirschStoer<S, kStateSize> bs(options_for<S>(sc, s, atol));
+  tr.stats = bs.integrate(rhs, S(0), y.data(), std::span<const S>(tout), observer);
   return tr;
 }
 
@@ -150,11 +194,16 @@ Trajectory run_cxx_rough(const Scene& sc, const RunSettings& s) {
     if (s.progress) s.progress(static_cast<double>(tr.rows.size()) / n);
   };
   if (s.law == "thesis") {
-    BulirschStoer<double, kRoughStateSize> bs(options_for(sc, s, tr.atol));
     const RoughBarThesisRhs rhs{model};
-    tr.stats = bs.integrate(rhs, 0.0, y.data(), std::span<const double>(tout), [&](std::size_t, double t, const double* yy) {
+    auto observer = [&](std::size_t, double t, const double* yy) {
       record(t, yy, model.friction(yy[kTheta], yy[kVx], yy[kVy], yy[kOmega]));
-    });
+    };
+    if (s.method == "dop853") {
+      tr.stats = run_dop853<kRoughStateSize>(sc, s, tr.atol, rhs, y.data(), tout, observer);
+      return tr;
+    }
+    BulirschStoer<double, kRoughStateSize> bs(options_for(sc, s, tr.atol));
+    tr.stats = bs.integrate(rhs, 0.0, y.data(), std::span<const double>(tout), observer);
     return tr;
   }
   StickSlipResult r;

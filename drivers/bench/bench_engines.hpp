@@ -12,6 +12,8 @@
 //                              in double, long double or __float128 (precision column)
 //   cxx-modern-odex            cxx-modern with ODEX's interpolation acceptance (dense_accept = 10);
 //                              run only when named in --engines (docs/bulirsch_stoer.md)
+//   cxx-dop853                 the C++ Dormand-Prince 8(5,3) (dop853.hpp: the method of Hairer's
+//                              DOP853, dense output of order 7), double; RHS inlined
 //   f77-callback               fortran/bsint.f through np_f77_bsint_fcn: the same C++ RHS as its FCN
 //   cvode-adams, cvode-bdf     SUNDIALS CVODE: Adams-Moulton (orders 1-12) with the fixed-point
 //                              nonlinear solver; BDF (orders 1-5) with Newton and the dense direct
@@ -37,6 +39,7 @@
 #include "f77_bsint.h"
 #include "bench/bench.hpp"
 #include "nanopush/numerics/bulirsch_stoer.hpp"
+#include "nanopush/numerics/dop853.hpp"
 
 #ifdef NANOPUSH_HAVE_SUNDIALS
 #include <arkode/arkode_erkstep.h>
@@ -71,8 +74,9 @@ struct EngineConfig {
 
 /// Names of every generic engine, in CSV order (the scene may add more).
 inline const std::vector<std::string>& generic_engine_names() {
-  static const std::vector<std::string> v = {"cxx-faithful", "cxx-modern",  "f77-callback", "cvode-adams",
-                                             "cvode-bdf",    "arkode-erk8", "odeint-bs",    "odeint-bs-dense"};
+  static const std::vector<std::string> v = {"cxx-faithful", "cxx-modern",  "cxx-dop853",
+                                             "f77-callback", "cvode-adams", "cvode-bdf",
+                                             "arkode-erk8",  "odeint-bs",   "odeint-bs-dense"};
   return v;
 }
 
@@ -231,6 +235,30 @@ Solve solve_cxx_bs(const Problem& p, const Rhs& rhs, double rtol, bool modern, d
   BulirschStoer<S, N> bs(std::move(opt), n);
   const BsResult r = bs.integrate(rhs, S(p.t0), y.data(), std::span<const S>(tout),
                                   [&](std::size_t k, S, const S* yy) { std::copy(yy, yy + n, &yout[k * nu]); });
+  if (seconds) *seconds = detail::seconds_since(t0);
+  Solve s;
+  s.status = static_cast<int>(r.status);
+  s.message = r.message;
+  s.nfcn = r.nfcn;
+  s.naccpt = r.naccpt;
+  s.nrejct = r.nrejct;
+  detail::store(s, yout);
+  return s;
+}
+
+// ---------------------------------------------------------------- C++ Dormand-Prince 8(5,3)
+/// One solve with the C++ dop853 (double, default options: dop853.hpp); `seconds` gets the
+/// timed region (creation of the integrator to the last output).
+template <int N, class Rhs>
+Solve solve_cxx_dop853(const Problem& p, const Rhs& rhs, double rtol, double* seconds) {
+  const int n = p.n;
+  const std::size_t nu = static_cast<std::size_t>(n);
+  std::vector<double> y = p.y0;
+  std::vector<double> yout(p.nout() * nu, 0.0);
+  const auto t0 = detail::Clock::now();
+  Dop853<double, N> dp(Dop853Options<double>::make(rtol, p.atol(rtol)), n);
+  const Dop853Result r = dp.integrate(rhs, p.t0, y.data(), std::span<const double>(p.tout),
+                                      [&](std::size_t k, double, const double* yy) { std::copy(yy, yy + n, &yout[k * nu]); });
   if (seconds) *seconds = detail::seconds_since(t0);
   Solve s;
   s.status = static_cast<int>(r.status);

@@ -73,9 +73,6 @@ std::vector<Engine> generic_engines(const Problem& p, std::shared_ptr<const Rhs>
                                     const EngineConfig& cfg) {
   if (p.n != N) throw InputError("problem.n", std::to_string(p.n), "must be " + std::to_string(N));
   std::vector<Engine> v;
-  detail::add_cxx_bs<double, N>(v, p, rhs, smp, cfg);
-  detail::add_cxx_bs<long double, N>(v, p, rhs, smp, cfg);
-  detail::add_cxx_bs<quad, N>(v, p, rhs, smp, cfg);
   auto timer = rhs_timer<double>(rhs, p.n, smp);
   // Each engine from one generic solve_with(r, rtol) (any RHS r of the contract, Solve with
   // its seconds): the solve with the scene's RHS, and its replay (Engine::replay).
@@ -89,6 +86,21 @@ std::vector<Engine> generic_engines(const Problem& p, std::shared_ptr<const Rhs>
     e.replay = replay_of<N>(rhs, solve_with);
     v.push_back(std::move(e));
   };
+  detail::add_cxx_bs<double, N>(v, p, rhs, smp, cfg);
+  if (cfg.wants_precision("double")) {
+    add("cxx-dop853", "C++ Dormand-Prince 8(5,3) (the method of Hairer's DOP853), dense output of order 7",
+        [p](const auto& r, double rtol) {
+          double sec = 0;
+          Solve s = solve_cxx_dop853<N>(p, r, rtol, &sec);
+          s.seconds = sec;
+          return s;
+        });
+    // As the C++ BS, one half-decade past the other engines: its global error is 5-60 x rtol
+    // on the nanobar (docs/dop853.md), and its rtol floor is 10 eps (2.2e-15).
+    if (!v.empty() && v.back().name == "cxx-dop853") v.back().rtol_min = rtol_floor<double>();
+  }
+  detail::add_cxx_bs<long double, N>(v, p, rhs, smp, cfg);
+  detail::add_cxx_bs<quad, N>(v, p, rhs, smp, cfg);
   add("f77-callback", "fortran/bsint.f (rational, kmax 8) via np_f77_bsint_fcn, the C++ RHS as its FCN",
       [p](const auto& r, double rtol) {
         double sec = 0;

@@ -138,7 +138,8 @@ def run(scene, engine=None, method=None, law=None, rtol=None, atol=None, precisi
     scene      a nanopush.Scene, a preset name (``"fig3_6a"``) or a scene file
     engine     ``"cxx"`` (the C++ solver) or ``"f77"`` (the FORTRAN 77 reproduction);
                default: the scene's solver.engine
-    method     C++ engine: ``"faithful"`` (the F77 engine's steps exactly), ``"modern"``, or
+    method     C++ engine: ``"faithful"`` (the F77 engine's steps exactly), ``"modern"``,
+               ``"dop853"`` (Dormand-Prince 8(5,3), double, not under the coulomb law) or
                ``"cvode"`` (rough scenes under the coulomb law); default: the scene's
     law        rough scenes: ``"thesis"`` (eq 3.40 sign law) or ``"coulomb"`` (event-located
                stick-slip); default: the scene's surface.law

@@ -25,10 +25,14 @@ inline const std::vector<std::string>& trajectory_units() {
 }
 using TrajectoryRow = std::array<double, 10>;
 
+/// method auto: dop853 for rtol >= this (where dop853 runs), modern below (docs/dop853.md).
+inline constexpr double kAutoDop853RtolMin = 1e-11;
+
 struct RunSettings {
   std::string engine = "cxx";       ///< cxx | f77
-  /// faithful | modern (C++ BS; f77 is always the thesis algorithm) | cvode (SUNDIALS CVODE
-  /// cross-check, rough scenes under the coulomb law only)
+  /// faithful | modern (C++ BS; f77 is always the thesis algorithm) | dop853 (Dormand-Prince
+  /// 8(5,3) with dense output, double; smooth scenes and the thesis law: docs/dop853.md) |
+  /// cvode (SUNDIALS CVODE cross-check, rough scenes under the coulomb law only)
   std::string method = "faithful";
   /// Rough scenes: friction law override ("" = the scene's): thesis | coulomb
   std::string law;

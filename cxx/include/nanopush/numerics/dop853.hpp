@@ -1,0 +1,638 @@
+// Dormand–Prince 8(5,3): the explicit Runge–Kutta method of E. Hairer's DOP853, with its
+// dense output of order 7 (docs/dop853.md).
+//
+// Method: Hairer, Nørsett & Wanner, Solving Ordinary Differential Equations I (2nd ed.,
+// Springer 1993), §II.5 (the Dormand–Prince pair of order 8 with the error estimators of
+// orders 5 and 3) and §II.6 (its continuous extension of order 7, three more stages);
+// §II.4 (step-size control, the starting step of "hinit"). The coefficients below are those
+// Hairer publishes with dop853.f (version of 2004, http://www.unige.ch/~hairer/software.html),
+// as transcribed with 30 digits in SciPy's scipy/integrate/_ivp/dop853_coefficients.py
+// (BSD); the code is written from the book, not from either program.
+//
+// Integrator contract (as BulirschStoer's, bulirsch_stoer.hpp):
+//   - rhs(t, y, dydt) -> int: writes dydt[0..n), returns 0, or non-zero to abort (the value
+//     is reported in Result::rhs_status; no retry).
+//   - integrate(rhs, t0, y, tout, observer): advances y from t0 through every output time in
+//     `tout` (non-decreasing, >= t0) and calls observer(i, tout[i], y) at each. Only the last
+//     output time ends a step: the steps are chosen by the error alone and the outputs inside
+//     a step come from the dense output (three more RHS evaluations in a step that holds one).
+//     The step sequence does not depend on the output times (tested).
+//   - No allocation per step: all work arrays are allocated at construction (std::array
+//     when N > 0).
+// Templated on the scalar S and the dimension N (N = Dynamic for a size chosen at run time).
+// The coefficients are long double literals (30 digits transcribed, ~19 kept): in
+// __float128 the method's order conditions hold to ~1e-19 only, so it is no extended-
+// precision integrator (the scenes refuse dop853 with precision long or quad).
+#pragma once
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <span>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include "nanopush/numerics/bulirsch_stoer.hpp"  // Dynamic, BsStatus, BsResult, to_string
+#include "nanopush/numerics/scalar.hpp"
+
+namespace nanopush {
+
+/// The smallest rtol dop853 accepts, in units of the scalar's epsilon (Hairer's dop853:
+/// "tolerances are too small" below 10 uround): below it the difference of the embedded
+/// solutions is rounding, and the step size follows it.
+inline constexpr double kDop853RtolEps = 10.0;
+template <typename S>
+double dop853_rtol_min() {
+  return kDop853RtolEps * static_cast<double>(num::epsilon<S>());
+}
+
+template <typename Scalar>
+struct Dop853Options {
+  Scalar rtol = Scalar(1e-10);  ///< > 10 eps of Scalar, < 1
+  std::vector<Scalar> atol;     ///< per component (size n) or one value for all; each > 0
+  Scalar h0 = 0;                ///< initial step; 0 = Hairer's starting-step guess (hinit, 1 RHS)
+  Scalar hmax = 0;              ///< largest step; 0 = the span tout(last) - t0
+  std::int64_t maxstp = 100000;  ///< attempted steps before giving up (too_many_steps)
+  /// Step-size control (HNW §II.4, the constants of dop853.f): h_new = h / fac with
+  /// fac = err^(1/8 - 0.2 beta) / err_old^beta / safe, clamped so that
+  /// facmin <= h_new / h <= facmax.
+  double safe = 0.9;
+  double facmin = 0.333;
+  double facmax = 6.0;
+  /// Lund stabilisation (PI control), in [0, 0.2]. dop853.f's default is 0; 0.04 (DOPRI5's
+  /// default) is ours: on the nanobar the 5th-order estimator, squared in err, swings by
+  /// factors of 10-100 from step to step, and with beta = 0 a fifth to a quarter of the
+  /// attempts were rejected (fig3_6a, rtol 1e-8..1e-12); with 0.04 3-20 %, and 4-8 % fewer
+  /// RHS evaluations at matched errors 1e-5..1e-12 summed over fig3_6a/b/c (docs/dop853.md).
+  double beta = 0.04;
+
+  static Dop853Options make(Scalar rtol, std::vector<Scalar> atol) {
+    Dop853Options o;
+    o.rtol = rtol;
+    o.atol = std::move(atol);
+    return o;
+  }
+};
+
+/// BsResult (status, rhs_status, nfcn, naccpt, nrejct, t_reached, message) and two counts of
+/// its own. nrejct counts every rejected attempt (dop853.f leaves out those before the first
+/// accepted step). A Dop853Result assigns to a BsResult (the scene's Trajectory::stats).
+struct Dop853Result : BsResult {
+  std::int64_t nstep = 0;   ///< attempted steps (naccpt + nrejct, and a step whose end RHS failed)
+  std::int64_t ndense = 0;  ///< steps whose interpolant was built (3 RHS evaluations each)
+};
+
+namespace dop853_tableau {
+// Nodes c_i, coupling a_ij, weights b_i (order 8), the error estimators of orders 5 (er_i)
+// and 3 (b_i - bhh_i on stages 1, 9, 12), the three dense-output stages 14-16 and the
+// dense-output coefficients d_{r,i} (r = 4..7). Stage numbers as in the book (1-based):
+// stage 13 is f(t + h, y_new), the next step's stage 1. Zero entries are left out.
+template <class S>
+struct T {
+  static constexpr S c2 = S(0.526001519587677318785587544488e-01L);
+  static constexpr S c3 = S(0.789002279381515978178381316732e-01L);
+  static constexpr S c4 = S(0.118350341907227396726757197510e+00L);
+  static constexpr S c5 = S(0.281649658092772603273242802490e+00L);
+  static constexpr S c6 = S(0.333333333333333333333333333333e+00L);
+  static constexpr S c7 = S(0.25e+00L);
+  static constexpr S c8 = S(0.307692307692307692307692307692e+00L);
+  static constexpr S c9 = S(0.651282051282051282051282051282e+00L);
+  static constexpr S c10 = S(0.6e+00L);
+  static constexpr S c11 = S(0.857142857142857142857142857142e+00L);
+  static constexpr S c14 = S(0.1e+00L);
+  static constexpr S c15 = S(0.2e+00L);
+  static constexpr S c16 = S(0.777777777777777777777777777778e+00L);
+
+  static constexpr S a21 = S(5.26001519587677318785587544488e-2L);
+  static constexpr S a31 = S(1.97250569845378994544595329183e-2L);
+  static constexpr S a32 = S(5.91751709536136983633785987549e-2L);
+  static constexpr S a41 = S(2.95875854768068491816892993775e-2L);
+  static constexpr S a43 = S(8.87627564304205475450678981324e-2L);
+  static constexpr S a51 = S(2.41365134159266685502369798665e-1L);
+  static constexpr S a53 = S(-8.84549479328286085344864962717e-1L);
+  static constexpr S a54 = S(9.24834003261792003115737966543e-1L);
+  static constexpr S a61 = S(3.7037037037037037037037037037e-2L);
+  static constexpr S a64 = S(1.70828608729473871279604482173e-1L);
+  static constexpr S a65 = S(1.25467687566822425016691814123e-1L);
+  static constexpr S a71 = S(3.7109375e-2L);
+  static constexpr S a74 = S(1.70252211019544039314978060272e-1L);
+  static constexpr S a75 = S(6.02165389804559606850219397283e-2L);
+  static constexpr S a76 = S(-1.7578125e-2L);
+  static constexpr S a81 = S(3.70920001185047927108779319836e-2L);
+  static constexpr S a84 = S(1.70383925712239993810214054705e-1L);
+  static constexpr S a85 = S(1.07262030446373284651809199168e-1L);
+  static constexpr S a86 = S(-1.53194377486244017527936158236e-2L);
+  static constexpr S a87 = S(8.27378916381402288758473766002e-3L);
+  static constexpr S a91 = S(6.24110958716075717114429577812e-1L);
+  static constexpr S a94 = S(-3.36089262944694129406857109825e+0L);
+  static constexpr S a95 = S(-8.68219346841726006818189891453e-1L);
+  static constexpr S a96 = S(2.75920996994467083049415600797e+1L);
+  static constexpr S a97 = S(2.01540675504778934086186788979e+1L);
+  static constexpr S a98 = S(-4.34898841810699588477366255144e+1L);
+  static constexpr S a101 = S(4.77662536438264365890433908527e-1L);
+  static constexpr S a104 = S(-2.48811461997166764192642586468e+0L);
+  static constexpr S a105 = S(-5.90290826836842996371446475743e-1L);
+  static constexpr S a106 = S(2.12300514481811942347288949897e+1L);
+  static constexpr S a107 = S(1.52792336328824235832596922938e+1L);
+  static constexpr S a108 = S(-3.32882109689848629194453265587e+1L);
+  static constexpr S a109 = S(-2.03312017085086261358222928593e-2L);
+  static constexpr S a111 = S(-9.3714243008598732571704021658e-1L);
+  static constexpr S a114 = S(5.18637242884406370830023853209e+0L);
+  static constexpr S a115 = S(1.09143734899672957818500254654e+0L);
+  static constexpr S a116 = S(-8.14978701074692612513997267357e+0L);
+  static constexpr S a117 = S(-1.85200656599969598641566180701e+1L);
+  static constexpr S a118 = S(2.27394870993505042818970056734e+1L);
+  static constexpr S a119 = S(2.49360555267965238987089396762e+0L);
+  static constexpr S a1110 = S(-3.0467644718982195003823669022e+0L);
+  static constexpr S a121 = S(2.27331014751653820792359768449e+0L);
+  static constexpr S a124 = S(-1.05344954667372501984066689879e+1L);
+  static constexpr S a125 = S(-2.00087205822486249909675718444e+0L);
+  static constexpr S a126 = S(-1.79589318631187989172765950534e+1L);
+  static constexpr S a127 = S(2.79488845294199600508499808837e+1L);
+  static constexpr S a128 = S(-2.85899827713502369474065508674e+0L);
+  static constexpr S a129 = S(-8.87285693353062954433549289258e+0L);
+  static constexpr S a1210 = S(1.23605671757943030647266201528e+1L);
+  static constexpr S a1211 = S(6.43392746015763530355970484046e-1L);
+
+  // Weights of the order-8 solution (stages 1, 6..12).
+  static constexpr S b1 = S(5.42937341165687622380535766363e-2L);
+  static constexpr S b6 = S(4.45031289275240888144113950566e+0L);
+  static constexpr S b7 = S(1.89151789931450038304281599044e+0L);
+  static constexpr S b8 = S(-5.8012039600105847814672114227e+0L);
+  static constexpr S b9 = S(3.1116436695781989440891606237e-1L);
+  static constexpr S b10 = S(-1.52160949662516078556178806805e-1L);
+  static constexpr S b11 = S(2.01365400804030348374776537501e-1L);
+  static constexpr S b12 = S(4.47106157277725905176885569043e-2L);
+
+  // The order-3 estimator: sum b_i k_i - bhh1 k1 - bhh2 k9 - bhh3 k12.
+  static constexpr S bhh1 = S(0.244094488188976377952755905512e+00L);
+  static constexpr S bhh2 = S(0.733846688281611857341361741547e+00L);
+  static constexpr S bhh3 = S(0.220588235294117647058823529412e-01L);
+
+  // The order-5 estimator (difference of the order-8 and an order-5 solution).
+  static constexpr S er1 = S(0.1312004499419488073250102996e-01L);
+  static constexpr S er6 = S(-0.1225156446376204440720569753e+01L);
+  static constexpr S er7 = S(-0.4957589496572501915214079952e+00L);
+  static constexpr S er8 = S(0.1664377182454986536961530415e+01L);
+  static constexpr S er9 = S(-0.3503288487499736816886487290e+00L);
+  static constexpr S er10 = S(0.3341791187130174790297318841e+00L);
+  static constexpr S er11 = S(0.8192320648511571246570742613e-01L);
+  static constexpr S er12 = S(-0.2235530786388629525884427845e-01L);
+
+  // Dense-output stages 14 (c = 0.1), 15 (0.2), 16 (7/9).
+  static constexpr S a141 = S(5.61675022830479523392909219681e-2L);
+  static constexpr S a147 = S(2.53500210216624811088794765333e-1L);
+  static constexpr S a148 = S(-2.46239037470802489917441475441e-1L);
+  static constexpr S a149 = S(-1.24191423263816360469010140626e-1L);
+  static constexpr S a1410 = S(1.5329179827876569731206322685e-1L);
+  static constexpr S a1411 = S(8.20105229563468988491666602057e-3L);
+  static constexpr S a1412 = S(7.56789766054569976138603589584e-3L);
+  static constexpr S a1413 = S(-8.298e-3L);
+  static constexpr S a151 = S(3.18346481635021405060768473261e-2L);
+  static constexpr S a156 = S(2.83009096723667755288322961402e-2L);
+  static constexpr S a157 = S(5.35419883074385676223797384372e-2L);
+  static constexpr S a158 = S(-5.49237485713909884646569340306e-2L);
+  static constexpr S a1511 = S(-1.08347328697249322858509316994e-4L);
+  static constexpr S a1512 = S(3.82571090835658412954920192323e-4L);
+  static constexpr S a1513 = S(-3.40465008687404560802977114492e-4L);
+  static constexpr S a1514 = S(1.41312443674632500278074618366e-1L);
+  static constexpr S a161 = S(-4.28896301583791923408573538692e-1L);
+  static constexpr S a166 = S(-4.69762141536116384314449447206e+0L);
+  static constexpr S a167 = S(7.68342119606259904184240953878e+0L);
+  static constexpr S a168 = S(4.06898981839711007970213554331e+0L);
+  static constexpr S a169 = S(3.56727187455281109270669543021e-1L);
+  static constexpr S a1613 = S(-1.39902416515901462129418009734e-3L);
+  static constexpr S a1614 = S(2.9475147891527723389556272149e+0L);
+  static constexpr S a1615 = S(-9.15095847217987001081870187138e+0L);
+
+  // Dense output: d_{r,i}, r = 4..7, on stages 1, 6..16.
+  static constexpr S d41 = S(-0.84289382761090128651353491142e+01L);
+  static constexpr S d46 = S(0.56671495351937776962531783590e+00L);
+  static constexpr S d47 = S(-0.30689499459498916912797304727e+01L);
+  static constexpr S d48 = S(0.23846676565120698287728149680e+01L);
+  static constexpr S d49 = S(0.21170345824450282767155149946e+01L);
+  static constexpr S d410 = S(-0.87139158377797299206789907490e+00L);
+  static constexpr S d411 = S(0.22404374302607882758541771650e+01L);
+  static constexpr S d412 = S(0.63157877876946881815570249290e+00L);
+  static constexpr S d413 = S(-0.88990336451333310820698117400e-01L);
+  static constexpr S d414 = S(0.18148505520854727256656404962e+02L);
+  static constexpr S d415 = S(-0.91946323924783554000451984436e+01L);
+  static constexpr S d416 = S(-0.44360363875948939664310572000e+01L);
+
+  static constexpr S d51 = S(0.10427508642579134603413151009e+02L);
+  static constexpr S d56 = S(0.24228349177525818288430175319e+03L);
+  static constexpr S d57 = S(0.16520045171727028198505394887e+03L);
+  static constexpr S d58 = S(-0.37454675472269020279518312152e+03L);
+  static constexpr S d59 = S(-0.22113666853125306036270938578e+02L);
+  static constexpr S d510 = S(0.77334326684722638389603898808e+01L);
+  static constexpr S d511 = S(-0.30674084731089398182061213626e+02L);
+  static constexpr S d512 = S(-0.93321305264302278729567221706e+01L);
+  static constexpr S d513 = S(0.15697238121770843886131091075e+02L);
+  static constexpr S d514 = S(-0.31139403219565177677282850411e+02L);
+  static constexpr S d515 = S(-0.93529243588444783865713862664e+01L);
+  static constexpr S d516 = S(0.35816841486394083752465898540e+02L);
+
+  static constexpr S d61 = S(0.19985053242002433820987653617e+02L);
+  static constexpr S d66 = S(-0.38703730874935176555105901742e+03L);
+  static constexpr S d67 = S(-0.18917813819516756882830838328e+03L);
+  static constexpr S d68 = S(0.52780815920542364900561016686e+03L);
+  static constexpr S d69 = S(-0.11573902539959630126141871134e+02L);
+  static constexpr S d610 = S(0.68812326946963000169666922661e+01L);
+  static constexpr S d611 = S(-0.10006050966910838403183860980e+01L);
+  static constexpr S d612 = S(0.77771377980534432092869265740e+00L);
+  static constexpr S d613 = S(-0.27782057523535084065932004339e+01L);
+  static constexpr S d614 = S(-0.60196695231264120758267380846e+02L);
+  static constexpr S d615 = S(0.84320405506677161018159903784e+02L);
+  static constexpr S d616 = S(0.11992291136182789328035130030e+02L);
+
+  static constexpr S d71 = S(-0.25693933462703749003312586129e+02L);
+  static constexpr S d76 = S(-0.15418974869023643374053993627e+03L);
+  static constexpr S d77 = S(-0.23152937917604549567536039109e+03L);
+  static constexpr S d78 = S(0.35763911791061412378285349910e+03L);
+  static constexpr S d79 = S(0.93405324183624310003907691704e+02L);
+  static constexpr S d710 = S(-0.37458323136451633156875139351e+02L);
+  static constexpr S d711 = S(0.10409964950896230045147246184e+03L);
+  static constexpr S d712 = S(0.29840293426660503123344363579e+02L);
+  static constexpr S d713 = S(-0.43533456590011143754432175058e+02L);
+  static constexpr S d714 = S(0.96324553959188282948394950600e+02L);
+  static constexpr S d715 = S(-0.39177261675615439165231486172e+02L);
+  static constexpr S d716 = S(-0.14972683625798562581422125276e+03L);
+};
+}  // namespace dop853_tableau
+
+template <typename Scalar, int N = Dynamic>
+class Dop853 {
+ public:
+  using Vec = std::conditional_t<N == Dynamic, std::vector<Scalar>, std::array<Scalar, (N > 0 ? N : 1)>>;
+
+  explicit Dop853(Dop853Options<Scalar> opt, int n = N) : opt_(std::move(opt)), n_(n) {
+    if constexpr (N == Dynamic) {
+      const auto sz = static_cast<std::size_t>(n_ > 0 ? n_ : 1);
+      for (Vec& v : k_) v.assign(sz, Scalar(0));
+      for (Vec& v : cont_) v.assign(sz, Scalar(0));
+      for (Vec* v : {&y_, &ynew_, &ys_, &atol_}) v->assign(sz, Scalar(0));
+    }
+  }
+
+  [[nodiscard]] int size() const { return n_; }
+  [[nodiscard]] const Dop853Options<Scalar>& options() const { return opt_; }
+
+  /// Integrate; y holds the initial state on entry and, on return, the state at t_reached
+  /// (the last output time on success; the end of the last accepted step on a failure).
+  template <class Rhs, class Observer>
+  Dop853Result integrate(Rhs&& rhs, Scalar t0, Scalar* y, std::span<const Scalar> tout, Observer&& observer) {
+    using Tb = dop853_tableau::T<Scalar>;
+    Dop853Result res;
+    res.t_reached = static_cast<double>(t0);
+    if (std::string why = validate(t0, y, tout); !why.empty()) {
+      res.status = BsStatus::bad_input;
+      res.message = std::move(why);
+      return res;
+    }
+    const int n = (N == Dynamic) ? n_ : N;  // a compile-time bound lets the loops unroll
+    for (int i = 0; i < n; ++i)
+      atol_[i] = opt_.atol.size() == 1 ? opt_.atol[0] : opt_.atol[static_cast<std::size_t>(i)];
+    for (int i = 0; i < n; ++i) y_[i] = y[i];
+    const std::size_t nout = tout.size();
+    const Scalar tend = tout[nout - 1];
+    Scalar t = t0;
+    std::size_t iout = 0;
+    while (iout < nout && tout[iout] <= t) {
+      observer(iout, tout[iout], static_cast<const Scalar*>(&y_[0]));
+      ++iout;
+    }
+    auto finish = [&] {
+      for (int i = 0; i < n; ++i) y[i] = y_[i];
+      return res;
+    };
+    if (iout == nout) return finish();
+
+    const Scalar span = tend - t0;
+    const Scalar hmax = opt_.hmax > 0 ? std::min(opt_.hmax, span) : span;
+    const Scalar rtol = opt_.rtol;
+    // k_[0] holds f(t, y) at the start of every step (stage 1; after an accepted step the
+    // f(t + h, y_new) of stage 13).
+    if (!eval_at(rhs, t, static_cast<const Scalar*>(&y_[0]), k_[0], res)) return finish();
+    Scalar h;
+    if (opt_.h0 > 0) {
+      h = std::min(opt_.h0, hmax);
+    } else {
+      h = hinit(rhs, t, span, hmax, res);
+      if (!res.ok()) return finish();
+    }
+    const double expo1 = 1.0 / 8.0 - opt_.beta * 0.2;
+    const double facc1 = 1.0 / opt_.facmin, facc2 = 1.0 / opt_.facmax;
+    double facold = 1e-4;
+    bool reject = false, last = false;
+    int nonfinite_run = 0;
+    Vec& k1 = k_[0];
+    Vec& k2 = k_[1];
+    Vec& k3 = k_[2];
+    Vec& k4 = k_[3];
+    Vec& k5 = k_[4];
+    Vec& k6 = k_[5];
+    Vec& k7 = k_[6];
+    Vec& k8 = k_[7];
+    Vec& k9 = k_[8];
+    Vec& k10 = k_[9];
+    Vec& k11 = k_[10];
+    Vec& k12 = k_[11];
+    Vec& k13 = k_[12];
+    const Scalar* ys = &ys_[0];
+
+    for (;;) {
+      if (res.nstep >= opt_.maxstp) {
+        res.status = BsStatus::too_many_steps;
+        res.message = "more than " + std::to_string(opt_.maxstp) + " steps";
+        break;
+      }
+      if (t + Scalar(1.01) * h >= tend) {
+        h = tend - t;
+        last = true;
+      }
+      if (h <= 0 || h < Scalar(1e-14) * std::max(num::abs(t), span)) {
+        res.status = BsStatus::step_underflow;
+        res.message = "step size underflow at t = " + fmt_g(static_cast<double>(t));
+        break;
+      }
+      ++res.nstep;
+      // Stages 2..12 (11 RHS evaluations).
+      auto eval = [&](Scalar c, Vec& k) { return eval_at(rhs, t + c * h, ys, k, res); };
+      for (int i = 0; i < n; ++i) ys_[i] = y_[i] + h * (Tb::a21 * k1[i]);
+      if (!eval(Tb::c2, k2)) break;
+      for (int i = 0; i < n; ++i) ys_[i] = y_[i] + h * (Tb::a31 * k1[i] + Tb::a32 * k2[i]);
+      if (!eval(Tb::c3, k3)) break;
+      for (int i = 0; i < n; ++i) ys_[i] = y_[i] + h * (Tb::a41 * k1[i] + Tb::a43 * k3[i]);
+      if (!eval(Tb::c4, k4)) break;
+      for (int i = 0; i < n; ++i) ys_[i] = y_[i] + h * (Tb::a51 * k1[i] + Tb::a53 * k3[i] + Tb::a54 * k4[i]);
+      if (!eval(Tb::c5, k5)) break;
+      for (int i = 0; i < n; ++i) ys_[i] = y_[i] + h * (Tb::a61 * k1[i] + Tb::a64 * k4[i] + Tb::a65 * k5[i]);
+      if (!eval(Tb::c6, k6)) break;
+      for (int i = 0; i < n; ++i)
+        ys_[i] = y_[i] + h * (Tb::a71 * k1[i] + Tb::a74 * k4[i] + Tb::a75 * k5[i] + Tb::a76 * k6[i]);
+      if (!eval(Tb::c7, k7)) break;
+      for (int i = 0; i < n; ++i)
+        ys_[i] = y_[i] + h * (Tb::a81 * k1[i] + Tb::a84 * k4[i] + Tb::a85 * k5[i] + Tb::a86 * k6[i] + Tb::a87 * k7[i]);
+      if (!eval(Tb::c8, k8)) break;
+      for (int i = 0; i < n; ++i)
+        ys_[i] = y_[i] + h * (Tb::a91 * k1[i] + Tb::a94 * k4[i] + Tb::a95 * k5[i] + Tb::a96 * k6[i] +
+                              Tb::a97 * k7[i] + Tb::a98 * k8[i]);
+      if (!eval(Tb::c9, k9)) break;
+      for (int i = 0; i < n; ++i)
+        ys_[i] = y_[i] + h * (Tb::a101 * k1[i] + Tb::a104 * k4[i] + Tb::a105 * k5[i] + Tb::a106 * k6[i] +
+                              Tb::a107 * k7[i] + Tb::a108 * k8[i] + Tb::a109 * k9[i]);
+      if (!eval(Tb::c10, k10)) break;
+      for (int i = 0; i < n; ++i)
+        ys_[i] = y_[i] + h * (Tb::a111 * k1[i] + Tb::a114 * k4[i] + Tb::a115 * k5[i] + Tb::a116 * k6[i] +
+                              Tb::a117 * k7[i] + Tb::a118 * k8[i] + Tb::a119 * k9[i] + Tb::a1110 * k10[i]);
+      if (!eval(Tb::c11, k11)) break;
+      for (int i = 0; i < n; ++i)
+        ys_[i] = y_[i] + h * (Tb::a121 * k1[i] + Tb::a124 * k4[i] + Tb::a125 * k5[i] + Tb::a126 * k6[i] +
+                              Tb::a127 * k7[i] + Tb::a128 * k8[i] + Tb::a129 * k9[i] + Tb::a1210 * k10[i] +
+                              Tb::a1211 * k11[i]);
+      const Scalar tph = last ? tend : t + h;
+      if (!eval_at(rhs, tph, ys, k12, res)) break;  // c12 = 1
+      // The order-8 solution and the two error estimators (HNW §II.5, eq. (10.17) of §II.10:
+      // err = h err5² / sqrt(n (err5² + 0.01 err3²)), both weighted by sk below).
+      Scalar err5 = 0, err3 = 0;
+      for (int i = 0; i < n; ++i) {
+        const Scalar bk = Tb::b1 * k1[i] + Tb::b6 * k6[i] + Tb::b7 * k7[i] + Tb::b8 * k8[i] + Tb::b9 * k9[i] +
+                          Tb::b10 * k10[i] + Tb::b11 * k11[i] + Tb::b12 * k12[i];
+        ynew_[i] = y_[i] + h * bk;
+        const Scalar sk = atol_[i] + rtol * std::max(num::abs(y_[i]), num::abs(ynew_[i]));
+        const Scalar e3 = bk - Tb::bhh1 * k1[i] - Tb::bhh2 * k9[i] - Tb::bhh3 * k12[i];
+        const Scalar e5 = Tb::er1 * k1[i] + Tb::er6 * k6[i] + Tb::er7 * k7[i] + Tb::er8 * k8[i] + Tb::er9 * k9[i] +
+                          Tb::er10 * k10[i] + Tb::er11 * k11[i] + Tb::er12 * k12[i];
+        err3 = err3 + (e3 / sk) * (e3 / sk);
+        err5 = err5 + (e5 / sk) * (e5 / sk);
+      }
+      Scalar deno = err5 + Scalar(0.01) * err3;
+      if (deno <= 0) deno = 1;
+      const double err = static_cast<double>(h * err5 * num::sqrt(Scalar(1) / (Scalar(n) * deno)));
+      if (!std::isfinite(err)) {
+        // A non-finite state or RHS value: quarter the step, as the Bulirsch-Stoer engine does.
+        ++res.nrejct;
+        reject = true;
+        last = false;
+        if (++nonfinite_run >= kMaxNonFinite) {
+          res.status = BsStatus::not_finite;
+          res.message = "non-finite error estimate at t = " + fmt_g(static_cast<double>(t));
+          break;
+        }
+        h = Scalar(0.25) * h;
+        continue;
+      }
+      nonfinite_run = 0;
+      const double fac11 = std::pow(err, expo1);
+      const double fac = std::max(facc2, std::min(facc1, fac11 / std::pow(facold, opt_.beta) / opt_.safe));
+      Scalar hnew = h / static_cast<Scalar>(fac);
+      if (err > 1) {
+        hnew = h / static_cast<Scalar>(std::min(facc1, fac11 / opt_.safe));
+        ++res.nrejct;
+        reject = true;
+        last = false;
+        h = hnew;
+        continue;
+      }
+      // Accepted.
+      facold = std::max(err, 1e-4);
+      if (!eval_at(rhs, tph, static_cast<const Scalar*>(&ynew_[0]), k13, res)) break;
+      ++res.naccpt;
+      // Outputs in (t, t + h]: the one at the end is y_new itself, the others come from the
+      // interpolant, built at the first of them (three more RHS evaluations).
+      bool have_dense = false;
+      while (iout < nout && tout[iout] <= tph) {
+        if (tout[iout] == tph) {
+          observer(iout, tout[iout], static_cast<const Scalar*>(&ynew_[0]));
+        } else {
+          if (!have_dense) {
+            if (!build_dense(rhs, t, h, res)) break;
+            have_dense = true;
+          }
+          dense_eval((tout[iout] - t) / h, &ys_[0]);
+          observer(iout, tout[iout], ys);
+        }
+        ++iout;
+      }
+      if (!res.ok()) break;
+      for (int i = 0; i < n; ++i) {
+        y_[i] = ynew_[i];
+        k1[i] = k13[i];
+      }
+      t = tph;
+      res.t_reached = static_cast<double>(t);
+      if (last) break;
+      if (hnew > hmax) hnew = hmax;
+      if (reject) hnew = std::min(hnew, h);
+      reject = false;
+      h = hnew;
+    }
+    return finish();
+  }
+
+  /// Convenience: one output time, no observer.
+  template <class Rhs>
+  Dop853Result integrate(Rhs&& rhs, Scalar t0, Scalar* y, Scalar t1) {
+    const Scalar tt[1] = {t1};
+    return integrate(std::forward<Rhs>(rhs), t0, y, std::span<const Scalar>(tt, 1),
+                     [](std::size_t, Scalar, const Scalar*) {});
+  }
+
+ private:
+  static constexpr int kMaxNonFinite = 10;
+
+  Dop853Options<Scalar> opt_;
+  int n_;
+  std::array<Vec, 16> k_{};   // stages 1..16 (k_[s-1])
+  std::array<Vec, 8> cont_{};  // dense-output coefficients of the last step
+  Vec y_{}, ynew_{}, ys_{}, atol_{};
+
+  static std::string fmt_g(double v) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.6g", v);
+    return b;
+  }
+
+  static void fail_rhs(BsResult& res, int st, Scalar t) {
+    res.status = BsStatus::rhs_failed;
+    res.rhs_status = st;
+    res.message = "right-hand side returned status " + std::to_string(st) + " at t = " + fmt_g(static_cast<double>(t));
+  }
+
+  template <class Rhs>
+  static bool eval_at(Rhs& rhs, Scalar t, const Scalar* y, Vec& k, Dop853Result& res) {
+    const int st = rhs(t, y, &k[0]);
+    ++res.nfcn;
+    if (st != 0) fail_rhs(res, st, t);
+    return st == 0;
+  }
+
+  std::string validate(Scalar t0, const Scalar* y, std::span<const Scalar> tout) const {
+    if (n_ < 1) return "n = " + std::to_string(n_) + " must be >= 1";
+    if constexpr (N != Dynamic)
+      if (n_ != N) return "n = " + std::to_string(n_) + " does not match the compile-time dimension " + std::to_string(N);
+    const double rtol = static_cast<double>(opt_.rtol);
+    const double floor = dop853_rtol_min<Scalar>();
+    if (!(num::isfinite(opt_.rtol) && rtol >= floor && rtol < 1))
+      return "rtol = " + fmt_g(rtol) + " must be in [" + fmt_g(floor) + ", 1) (" + fmt_g(kDop853RtolEps) +
+             " eps of " + num::name<Scalar>() + " and above)";
+    if (opt_.atol.empty() || (opt_.atol.size() != 1 && opt_.atol.size() != static_cast<std::size_t>(n_)))
+      return "atol has " + std::to_string(opt_.atol.size()) + " entries: must have 1 or n = " + std::to_string(n_);
+    for (std::size_t i = 0; i < opt_.atol.size(); ++i)
+      if (!(num::isfinite(opt_.atol[i]) && opt_.atol[i] > 0))
+        return "atol[" + std::to_string(i) + "] = " + fmt_g(static_cast<double>(opt_.atol[i])) + " must be > 0";
+    if (!(num::isfinite(opt_.h0) && opt_.h0 >= 0)) return "h0 = " + fmt_g(static_cast<double>(opt_.h0)) + " must be >= 0";
+    if (!(num::isfinite(opt_.hmax) && opt_.hmax >= 0))
+      return "hmax = " + fmt_g(static_cast<double>(opt_.hmax)) + " must be >= 0";
+    if (opt_.maxstp < 1) return "maxstp = " + std::to_string(opt_.maxstp) + " must be >= 1";
+    if (!(opt_.safe > 1e-4 && opt_.safe < 1)) return "safe = " + fmt_g(opt_.safe) + " must be in (1e-4, 1)";
+    if (!(opt_.facmin > 0 && opt_.facmin < 1)) return "facmin = " + fmt_g(opt_.facmin) + " must be in (0, 1)";
+    if (!(opt_.facmax > 1 && std::isfinite(opt_.facmax)))
+      return "facmax = " + fmt_g(opt_.facmax) + " must be > 1 and finite";
+    if (!(opt_.beta >= 0 && opt_.beta <= 0.2)) return "beta = " + fmt_g(opt_.beta) + " must be in [0, 0.2]";
+    if (tout.empty()) return "no output times";
+    if (!num::isfinite(t0)) return "t0 must be finite";
+    for (std::size_t i = 0; i < tout.size(); ++i) {
+      if (!num::isfinite(tout[i])) return "output times must be finite";
+      if (i > 0 && tout[i] < tout[i - 1]) return "output times must be non-decreasing";
+    }
+    if (tout[0] < t0) return "tout(1) must be >= t0";
+    for (int i = 0; i < n_; ++i)
+      if (!num::isfinite(y[i])) return "initial state must be finite";
+    return {};
+  }
+
+  // Hairer's starting step (HNW §II.4, "Starting step size", with the order 8): from the
+  // weighted norms of y0, f0 and an estimate of y'' by one explicit Euler step, the h with
+  // h^8 max(|f0|, |y''|) = 0.01. One RHS evaluation (into k_[1]). dop853.f's two absolute
+  // fallbacks (1e-6 when y0 or f0 is ~0; max(1e-6, 1e-3 h) when both derivatives are ~0)
+  // are taken relative to the span here: the nanobar's time scale is 1e-9 s.
+  template <class Rhs>
+  Scalar hinit(Rhs& rhs, Scalar t, Scalar span, Scalar hmax, Dop853Result& res) {
+    const int n = (N == Dynamic) ? n_ : N;
+    const Vec& f0 = k_[0];
+    Vec& f1 = k_[1];
+    Scalar dnf = 0, dny = 0;
+    for (int i = 0; i < n; ++i) {
+      const Scalar sk = atol_[i] + opt_.rtol * num::abs(y_[i]);
+      dnf = dnf + (f0[i] / sk) * (f0[i] / sk);
+      dny = dny + (y_[i] / sk) * (y_[i] / sk);
+    }
+    Scalar h = (dnf <= Scalar(1e-10) || dny <= Scalar(1e-10)) ? Scalar(1e-6) * span
+                                                                : num::sqrt(dny / dnf) * Scalar(0.01);
+    h = std::min(h, hmax);
+    for (int i = 0; i < n; ++i) ys_[i] = y_[i] + h * f0[i];
+    if (!eval_at(rhs, t + h, static_cast<const Scalar*>(&ys_[0]), f1, res)) return h;
+    Scalar der2 = 0;
+    for (int i = 0; i < n; ++i) {
+      const Scalar sk = atol_[i] + opt_.rtol * num::abs(y_[i]);
+      der2 = der2 + ((f1[i] - f0[i]) / sk) * ((f1[i] - f0[i]) / sk);
+    }
+    der2 = num::sqrt(der2) / h;
+    const Scalar der12 = std::max(num::abs(der2), num::sqrt(dnf));
+    const Scalar h1 = der12 <= Scalar(1e-15) ? std::max(Scalar(1e-6) * span, h * Scalar(1e-3))
+                                              : static_cast<Scalar>(std::pow(0.01 / static_cast<double>(der12), 1.0 / 8.0));
+    return std::min({Scalar(100) * h, h1, hmax});
+  }
+
+  // The dense output of the accepted step over [t, t + h] (HNW §II.6): stages 14-16 (three
+  // RHS evaluations into k_[13..15]), then the coefficients of
+  // P(s) = c0 + s (c1 + s1 (c2 + s (c3 + s1 (c4 + s (c5 + s1 (c6 + s c7)))))), s1 = 1 - s.
+  template <class Rhs>
+  bool build_dense(Rhs& rhs, Scalar t, Scalar h, Dop853Result& res) {
+    using Tb = dop853_tableau::T<Scalar>;
+    const int n = (N == Dynamic) ? n_ : N;
+    const Vec &k1 = k_[0], &k6 = k_[5], &k7 = k_[6], &k8 = k_[7], &k9 = k_[8], &k10 = k_[9], &k11 = k_[10],
+              &k12 = k_[11], &k13 = k_[12];
+    Vec &k14 = k_[13], &k15 = k_[14], &k16 = k_[15];
+    const Scalar* ys = &ys_[0];
+    for (int i = 0; i < n; ++i)
+      ys_[i] = y_[i] + h * (Tb::a141 * k1[i] + Tb::a147 * k7[i] + Tb::a148 * k8[i] + Tb::a149 * k9[i] +
+                            Tb::a1410 * k10[i] + Tb::a1411 * k11[i] + Tb::a1412 * k12[i] + Tb::a1413 * k13[i]);
+    if (!eval_at(rhs, t + Tb::c14 * h, ys, k14, res)) return false;
+    for (int i = 0; i < n; ++i)
+      ys_[i] = y_[i] + h * (Tb::a151 * k1[i] + Tb::a156 * k6[i] + Tb::a157 * k7[i] + Tb::a158 * k8[i] +
+                            Tb::a1511 * k11[i] + Tb::a1512 * k12[i] + Tb::a1513 * k13[i] + Tb::a1514 * k14[i]);
+    if (!eval_at(rhs, t + Tb::c15 * h, ys, k15, res)) return false;
+    for (int i = 0; i < n; ++i)
+      ys_[i] = y_[i] + h * (Tb::a161 * k1[i] + Tb::a166 * k6[i] + Tb::a167 * k7[i] + Tb::a168 * k8[i] +
+                            Tb::a169 * k9[i] + Tb::a1613 * k13[i] + Tb::a1614 * k14[i] + Tb::a1615 * k15[i]);
+    if (!eval_at(rhs, t + Tb::c16 * h, ys, k16, res)) return false;
+    ++res.ndense;
+    for (int i = 0; i < n; ++i) {
+      const Scalar ydiff = ynew_[i] - y_[i];
+      const Scalar bspl = h * k1[i] - ydiff;
+      cont_[0][i] = y_[i];
+      cont_[1][i] = ydiff;
+      cont_[2][i] = bspl;
+      cont_[3][i] = ydiff - h * k13[i] - bspl;
+      cont_[4][i] = h * (Tb::d41 * k1[i] + Tb::d46 * k6[i] + Tb::d47 * k7[i] + Tb::d48 * k8[i] + Tb::d49 * k9[i] +
+                         Tb::d410 * k10[i] + Tb::d411 * k11[i] + Tb::d412 * k12[i] + Tb::d413 * k13[i] +
+                         Tb::d414 * k14[i] + Tb::d415 * k15[i] + Tb::d416 * k16[i]);
+      cont_[5][i] = h * (Tb::d51 * k1[i] + Tb::d56 * k6[i] + Tb::d57 * k7[i] + Tb::d58 * k8[i] + Tb::d59 * k9[i] +
+                         Tb::d510 * k10[i] + Tb::d511 * k11[i] + Tb::d512 * k12[i] + Tb::d513 * k13[i] +
+                         Tb::d514 * k14[i] + Tb::d515 * k15[i] + Tb::d516 * k16[i]);
+      cont_[6][i] = h * (Tb::d61 * k1[i] + Tb::d66 * k6[i] + Tb::d67 * k7[i] + Tb::d68 * k8[i] + Tb::d69 * k9[i] +
+                         Tb::d610 * k10[i] + Tb::d611 * k11[i] + Tb::d612 * k12[i] + Tb::d613 * k13[i] +
+                         Tb::d614 * k14[i] + Tb::d615 * k15[i] + Tb::d616 * k16[i]);
+      cont_[7][i] = h * (Tb::d71 * k1[i] + Tb::d76 * k6[i] + Tb::d77 * k7[i] + Tb::d78 * k8[i] + Tb::d79 * k9[i] +
+                         Tb::d710 * k10[i] + Tb::d711 * k11[i] + Tb::d712 * k12[i] + Tb::d713 * k13[i] +
+                         Tb::d714 * k14[i] + Tb::d715 * k15[i] + Tb::d716 * k16[i]);
+    }
+    return true;
+  }
+
+  // The interpolant of the last step at s = (t_out - t) / h in (0, 1), into out.
+  void dense_eval(Scalar s, Scalar* out) const {
+    const int n = (N == Dynamic) ? n_ : N;
+    const Scalar s1 = Scalar(1) - s;
+    for (int i = 0; i < n; ++i) {
+      const Scalar conpar = cont_[4][i] + s * (cont_[5][i] + s1 * (cont_[6][i] + s * cont_[7][i]));
+      out[i] = cont_[0][i] + s * (cont_[1][i] + s1 * (cont_[2][i] + s * (cont_[3][i] + s1 * conpar)));
+    }
+  }
+};
+
+}  // namespace nanopush
