@@ -1,4 +1,4 @@
-// nanopush run / compare: integrate a scene with either engine; compare the two engines.
+// nanopush run: integrate a scene with either engine (compare: cmd_compare.cpp).
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -111,54 +111,6 @@ int run_cmd(const RunOptions& o) {
   return 0;
 }
 
-struct CompareOptions : RunOptions {
-  double tolerance = 0;
-};
-
-int compare_cmd(const CompareOptions& o) {
-  const Scene sc = load_scene_arg(o.scene, o.sets);
-  RunSettings a, b;
-  a.engine = "cxx";
-  a.method = o.method.empty() ? "faithful" : o.method;
-  b.engine = "f77";
-  a.law = b.law = "thesis";  // the F77 engine implements the thesis law
-  if (sc.rough() && sc.surface.law != "thesis")
-    std::cout << "note: " << sc.name << " asks for the " << sc.surface.law
-              << " law; the engines are compared under the thesis law, the one both implement\n";
-  a.rtol = b.rtol = o.rtol;
-  a.atol = b.atol = o.atol;
-  const Trajectory ta = run_engine(sc, a), tb = run_engine(sc, b);
-  const double rtol = resolve_settings(sc, a).rtol;
-  // Tolerance on the deviation, relative to each column's largest magnitude: the two
-  // engines take the same steps in the faithful configuration, so they should agree far
-  // below the integration tolerance; 100 rtol leaves room for the modern method.
-  const double tol = o.tolerance > 0 ? o.tolerance : 100 * rtol;
-  const auto& cols = trajectory_columns();
-  const auto& units = trajectory_units();
-  std::cout << "compare " << sc.name << ": " << ta.engine_label << " vs " << tb.engine_label << " (rtol " << rtol
-            << ")\n";
-  std::cout << "  RHS evaluations " << ta.stats.nfcn << " vs " << tb.stats.nfcn << ", accepted " << ta.stats.naccpt
-            << " vs " << tb.stats.naccpt << ", rejected " << ta.stats.nrejct << " vs " << tb.stats.nrejct << "\n";
-  std::cout << "  " << std::left << std::setw(8) << "column" << std::setw(16) << "max |diff|" << std::setw(10)
-            << "unit" << std::setw(16) << "max |diff|/scale"
-            << "scale = max |value|\n";
-  bool ok = ta.rows.size() == tb.rows.size();
-  for (std::size_t c = 1; c < cols.size() && ok; ++c) {
-    double maxabs = 0, scale = 0;
-    for (std::size_t i = 0; i < ta.rows.size(); ++i) {
-      maxabs = std::max(maxabs, std::fabs(ta.rows[i][c] - tb.rows[i][c]));
-      scale = std::max({scale, std::fabs(ta.rows[i][c]), std::fabs(tb.rows[i][c])});
-    }
-    const double rel = scale > 0 ? maxabs / scale : maxabs;
-    const bool col_ok = rel <= tol;
-    ok = ok && col_ok;
-    std::cout << "  " << std::left << std::setw(8) << cols[c] << std::setw(16) << std::setprecision(4) << maxabs
-              << std::setw(10) << units[c] << std::setw(16) << rel << scale << (col_ok ? "" : "   <-- exceeds") << "\n";
-  }
-  std::cout << "  tolerance on max |diff|/scale: " << tol << (ok ? "  -> engines agree\n" : "  -> ENGINES DISAGREE\n");
-  return ok ? 0 : 1;
-}
-
 RegisterCommand reg_run{{"run", "Integrate a scene and write its trajectory as CSV (t,x,y,theta,vx,vy,omega,fx,fy,mf; SI)",
                          10, [](CLI::App& app) -> std::function<int()> {
                            auto o = std::make_shared<RunOptions>();
@@ -190,19 +142,6 @@ RegisterCommand reg_run{{"run", "Integrate a scene and write its trajectory as C
                                         "OUT.partial.csv (exit status stays non-zero)");
                            return [o] { return run_cmd(*o); };
                          }}};
-
-RegisterCommand reg_compare{{"compare",
-                             "Run a scene with both engines (C++ and FORTRAN 77) and report the deviation per column",
-                             20, [](CLI::App& app) -> std::function<int()> {
-                               auto o = std::make_shared<CompareOptions>();
-                               add_common(app, *o);
-                               app.add_option("--method", o->method, "C++ configuration compared with F77 (default faithful)")
-                                   ->check(CLI::IsMember({"faithful", "modern"}));
-                               app.add_option("--tolerance", o->tolerance,
-                                              "largest allowed max|diff|/max|value| per column (default 100 rtol)")
-                                   ->check(positive());
-                               return [o] { return compare_cmd(*o); };
-                             }}};
 
 }  // namespace
 }  // namespace nanopush::cli

@@ -172,6 +172,15 @@ Trajectory run_cxx_smooth(const Scene& sc, const RunSettings& s) {
   return tr;
 }
 
+/// A body at rest that slides: friction at t = 0 in the direction it starts to move. Returns
+/// the friction evaluations the analysis took (0 when it is not at rest, or would stick).
+std::int64_t set_start_direction(RoughBarModel& m, const double* y) {
+  if (m.muN == 0.0 || y[kVx] != 0.0 || y[kVy] != 0.0 || y[kOmega] != 0.0) return 0;
+  const RestAnalysis ra = analyse_rest(m, y[kTheta]);
+  if (!ra.stuck) m.rest_direction = ra.accel;
+  return ra.evaluations;
+}
+
 std::array<double, kRoughStateSize> rough_initial(const Scene& sc) {
   std::array<double, kRoughStateSize> y{};
   std::copy(sc.initial.begin(), sc.initial.end(), y.begin());
@@ -194,16 +203,26 @@ Trajectory run_cxx_rough(const Scene& sc, const RunSettings& s) {
     if (s.progress) s.progress(static_cast<double>(tr.rows.size()) / n);
   };
   if (s.law == "thesis") {
-    const RoughBarThesisRhs rhs{model};
+    // Started from rest, eq 3.40 gives no friction direction at t = 0, so the first step sees
+    // friction jump from 0 to mu N. The faithful method keeps that value (its steps are the
+    // F77 engine's); the others take the right limit, friction in the direction the body
+    // starts to move (Gauss' principle: analyse_rest). The exact solution is the same (one
+    // instant), but without it an extrapolation or Runge-Kutta step across t = 0 misses its
+    // tolerance by 100-1000x (docs/rough.md, "Starting from rest").
+    RoughBarModel m = model;
+    std::int64_t start_evaluations = 0;
+    if (s.method != "faithful") start_evaluations = set_start_direction(m, y.data());
+    const RoughBarThesisRhs rhs{m};
     auto observer = [&](std::size_t, double t, const double* yy) {
       record(t, yy, model.friction(yy[kTheta], yy[kVx], yy[kVy], yy[kOmega]));
     };
     if (s.method == "dop853") {
       tr.stats = run_dop853<kRoughStateSize>(sc, s, tr.atol, rhs, y.data(), tout, observer);
-      return tr;
+    } else {
+      BulirschStoer<double, kRoughStateSize> bs(options_for(sc, s, tr.atol));
+      tr.stats = bs.integrate(rhs, 0.0, y.data(), std::span<const double>(tout), observer);
     }
-    BulirschStoer<double, kRoughStateSize> bs(options_for(sc, s, tr.atol));
-    tr.stats = bs.integrate(rhs, 0.0, y.data(), std::span<const double>(tout), observer);
+    tr.stats.nfcn += start_evaluations;
     return tr;
   }
   StickSlipResult r;
