@@ -9,6 +9,7 @@
 
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/outputs/io.hpp"
+#include "nanopush/outputs/plot.hpp"
 #include "cli_checks.hpp"
 #include "interrupt.hpp"
 #include "registry.hpp"
@@ -23,6 +24,7 @@ struct Options {
   bool list = false;
   bool no_bench = false;  ///< thesis content only: skip the work-precision benchmarks (bench_*)
   int jobs = 0;           ///< steps run at once (0: the machine's cores)
+  std::string format = "png";  ///< figure format: png | svg | pdf
 };
 
 bool is_benchmark(const std::string& step) { return step.rfind("bench_", 0) == 0; }
@@ -41,6 +43,7 @@ int run_reproduce(const Options& o) {
       throw InputError("--only", name, "must be one of: " + names);
     }
   }
+  plot::set_format(plot::parse_format(o.format));
   ReproduceContext ctx;
   ctx.out = o.out;
   ctx.quick = o.quick;
@@ -114,13 +117,23 @@ int run_reproduce(const Options& o) {
   }
   const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_all).count();
   ctx.report << "\n## Files\n\n";
-  for (auto& f : ctx.files) ctx.report << "- `" << std::filesystem::relative(f, ctx.out).string() << "`\n";
+  for (auto& f : ctx.files) {
+    // A step that names its figure "x.png" got figure_path("x.png") under --format svg|pdf.
+    const auto g = f.extension() == ".png" && !std::filesystem::exists(f) ? plot::figure_path(f) : f;
+    ctx.report << "- `" << std::filesystem::relative(g, ctx.out).string() << "`\n";
+  }
   ctx.report << "\nWall time of this reproduce run: " << total << " s.\n";
   if (!ctx.failures.empty()) {
     ctx.report << "\n## Checks that failed\n\n";
     for (auto& f : ctx.failures) ctx.report << "- " << f << "\n";
   }
-  write_file_atomic(ctx.out / "report.md", ctx.report.str());
+  std::string report = ctx.report.str();
+  if (plot::format() != plot::Format::png) {  // image links of steps that name "x.png"
+    const std::string to = "." + plot::extension(plot::format()) + ")";
+    for (std::size_t p = report.find(".png)"); p != std::string::npos; p = report.find(".png)", p + to.size()))
+      report.replace(p, 5, to);
+  }
+  write_file_atomic(ctx.out / "report.md", report);
   std::filesystem::remove(marker, ec);
   set_interrupt_note("");
   std::cerr << "reproduce: " << ctx.files.size() << " files and report.md in " << ctx.out.string() << " ("
@@ -145,6 +158,9 @@ RegisterCommand reg{{"reproduce",
                                       "steps run at once (default 0: the machine's cores; 1 times the benchmarks "
                                       "on an otherwise idle process)")
                            ->check(count(0, 1024))
+                           ->capture_default_str();
+                       app.add_option("--format", o->format, "figure format: png, svg or pdf (a .gp script beside "
+                                                             "each figure re-runs it)")
                            ->capture_default_str();
                        app.add_flag("--no-bench", o->no_bench,
                                     "thesis content only: skip the work-precision benchmarks (the bench_* steps, most "

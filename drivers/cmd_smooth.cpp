@@ -1,5 +1,6 @@
 // Reproduce step for thesis Fig 3.6: the smooth-surface nanobar, eight cases, both engines,
 // against the exact pendulum solution.
+#include <charconv>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -91,7 +92,11 @@ void reproduce_fig3_6(ReproduceContext& ctx) {
     summary.row(sc.name, {sc.initial[kTheta], sc.push.theta_equilibrium(), ex.k == 0 ? 0.0 : ex.period(), ec, ef, dev,
                           drift, double(tc.stats.nfcn), double(tf.stats.nfcn), double(tc.stats.naccpt),
                           double(tf.stats.naccpt), double(tc.stats.nrejct), double(tf.stats.nrejct)});
-    table << "| " << c << " | " << sc.initial[kTheta] << " | " << std::scientific << std::setprecision(2) << ec << " | "
+    // theta0 with all its digits (shortest round-trip form), not through `table`, whose
+    // precision the error columns set to 2 (that leak printed 1.25 as "1.2").
+    char th0[32];
+    const auto th0_end = std::to_chars(th0, th0 + sizeof th0, sc.initial[kTheta]).ptr;
+    table << "| " << c << " | " << std::string(th0, th0_end) << " | " << std::scientific << std::setprecision(2) << ec << " | "
           << ef << " | " << dev << " | " << std::defaultfloat << tc.stats.nfcn << " / " << tf.stats.nfcn << " | "
           << tc.stats.naccpt << " / " << tc.stats.nrejct << " |\n";
     if (ec > 1e-10) ctx.failures.push_back("fig3_6" + c + ": C++ theta error " + fmt(ec) + " > 1e-10 rad");
@@ -116,11 +121,11 @@ void reproduce_fig3_6(ReproduceContext& ctx) {
   }
   summary.commit();
   ctx.produced(dir / "summary.csv");
-  plot::render(fig, dir / "fig3_6.png");
-  ctx.produced(dir / "fig3_6.png");
+  const auto fig_path = plot::render(fig, dir / "fig3_6.png");
+  ctx.produced(fig_path);
   errfig.panels.push_back(errpanel);
-  plot::render(errfig, dir / "fig3_6_error.png");
-  ctx.produced(dir / "fig3_6_error.png");
+  const auto err_path = plot::render(errfig, dir / "fig3_6_error.png");
+  ctx.produced(err_path);
 
   ctx.report << "## Fig 3.6: nanobar on a smooth surface (docs/models.md §A)\n\n"
              << "Eight cases, push F = 5e-6 N along +X at the thesis point (xn, yn) = (27.5, 45) nm, i.e. body point\n"
@@ -129,7 +134,8 @@ void reproduce_fig3_6(ReproduceContext& ctx) {
              << std::setprecision(10) << Push::from_thesis(5e-6, 0, 27.5e-9, 45e-9).theta_equilibrium()
              << " rad (the thesis prints 1.022246, truncated),\nwith Jacobi sn computed by the AGM. Errors are the "
                 "maximum over the 401 samples in [0, 1.6 ns].\n\n"
-             << table.str() << "\n![Fig 3.6](fig3_6/fig3_6.png)\n\n![errors](fig3_6/fig3_6_error.png)\n\n"
+             << table.str() << "\n![Fig 3.6](fig3_6/" << fig_path.filename().string() << ")\n\n![errors](fig3_6/"
+             << err_path.filename().string() << ")\n\n"
              << "Case (g) starts at the printed theta0 = 1.022246 rad, 9.2e-7 rad below theta*, so it swings with that\n"
              << "amplitude instead of translating exactly; (h) is an exact translation (theta = 0 to the last bit).\n\n";
 }

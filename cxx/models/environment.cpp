@@ -254,6 +254,7 @@ LoadReport assemble_normal_load(const Environment& env, const Body& body, const 
   // Pass 1: everything evaluated. Pass 2: drop the external terms below the threshold and
   // redo the contact; the drop stands only if N and the sliding load change by less than the
   // threshold too (the contact model can amplify a change of the external load).
+  const bool load_dependent_contact = elastic && body.shape != Shape::bar;
   r.contact_half_width = contact(external_sum(false));
   const double adh_all = adh.status == TermStatus::evaluated ? adh.value : 0.0;
   const double sliding_all = external_sum(false);
@@ -265,7 +266,9 @@ LoadReport assemble_normal_load(const Environment& env, const Body& body, const 
     if (t->status == TermStatus::evaluated && std::abs(t->value) < r.drop_threshold) candidates.push_back(t);
   if (!candidates.empty()) {
     for (auto* t : candidates) t->status = TermStatus::dropped;
-    r.contact_half_width = contact(external_sum(true));
+    // Only an elastic contact depends on the external load; a bar's or a rigid body's
+    // contact (and its Derjaguin adhesion) is not evaluated again.
+    if (load_dependent_contact) r.contact_half_width = contact(external_sum(true));
     const double N_red = external_sum(true) + (adh.status == TermStatus::evaluated ? adh.value : 0.0);
     if (std::abs(N_red - N_all) < r.drop_threshold && std::abs(external_sum(true) - sliding_all) < r.drop_threshold) {
       for (auto* t : candidates) t->note = "|effect on N| < drop_fraction * rtol * N";
@@ -274,7 +277,7 @@ LoadReport assemble_normal_load(const Environment& env, const Body& body, const 
         t->status = TermStatus::evaluated;
         t->note = "below the threshold, kept: the contact model amplifies its effect on N";
       }
-      r.contact_half_width = contact(external_sum(false));
+      if (load_dependent_contact) r.contact_half_width = contact(external_sum(false));
       (void)a_all;
     }
   }

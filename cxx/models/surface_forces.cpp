@@ -132,6 +132,17 @@ double rod_plane_vdw_force(double A, double L, double d, double z0) {
   return L * A * std::sqrt(d) / (16.0 * std::pow(z0, 2.5));
 }
 
+double bar_plane_vdw_force(double A, double length, double width, double T, double D) {
+  count(Model::surface_surface_vdw);
+  need_hamaker(A);
+  require_positive("bar length", length, "m");
+  require_positive("bar width", width, "m");
+  require_positive("bar thickness T", T, "m");
+  need_gap("bar-plane gap D", D);
+  const double DT = D + T;
+  return length * width * A / (6.0 * kPi) * (1.0 / (D * D * D) - 1.0 / (DT * DT * DT));
+}
+
 double layered_vdw_pressure_symmetric(double A232, double A123, double A121, double T, double D) {
   count(Model::layered_vdw);
   require_finite("A232", A232, "J");
@@ -446,47 +457,6 @@ double capillary_force_plate(double Ac, double gammaL, double theta, double r1, 
   const double d = 2.0 * r1 * std::cos(theta);
   if (D >= d) return 0.0;
   return 2.0 * gammaL * std::cos(theta) / D * Ac;
-}
-
-// --------------------------------------------------------------------------- materials
-const std::vector<Material>& solid_materials() {
-  // The thesis prints no material constants for its bodies except the graphite density
-  // (2267 kg/m^3, nanobar captions). Other numbers are representative handbook values,
-  // recorded with their source; override them in the scene for quantitative work.
-  static const std::vector<Material> m = {
-      {"graphite", 2267.0, 2.38e-19, 36.5e9, 0.20, 2.38e-19 / kThesisHamakerPerGamma,
-       "density: thesis captions; A: representative Lifshitz value for graphite (assumed); "
-       "E: c-axis modulus C33 of graphite; gamma: thesis eq 3.9 from A"},
-      {"silicon", 2329.0, 1.865e-19, 169e9, 0.28, 1.865e-19 / kThesisHamakerPerGamma,
-       "handbook values (assumed); gamma from eq 3.9"},
-      {"silica", 2200.0, 6.5e-20, 73e9, 0.17, 6.5e-20 / kThesisHamakerPerGamma,
-       "fused silica, Israelachvili Table 13.2 order of magnitude (assumed); gamma from eq 3.9"},
-      {"mica", 2830.0, 10.0e-20, 34.5e9, 0.25, 10.0e-20 / kThesisHamakerPerGamma,
-       "muscovite, Israelachvili Table 13.2 order of magnitude (assumed); gamma from eq 3.9"},
-      {"gold", 19300.0, 45.0e-20, 79e9, 0.42, 1.5,
-       "Israelachvili: metals A ~ 25-40e-20 J (assumed 45e-20); gamma from Table 2.2 order (1.5 J/m^2)"},
-  };
-  return m;
-}
-const std::vector<Liquid>& liquids() {
-  static const std::vector<Liquid> l = {
-      {"water", 998.0, 3.7e-20, 0.072, 18.07e-6, 0.0,
-       "A: thesis Table 3.1; gamma_L = 0.072 N/m (issue 6 oracle); V = 18.07 cm^3/mol"},
-      {"ethanol", 789.0, 4.2e-20, 0.0228, 58.4e-6, 0.0, "A: thesis Table 3.1; gamma: Table 3.1 experimental"},
-      {"n-hexadecane", 770.0, 5.2e-20, 0.0275, 292.9e-6, 0.0,
-       "A: thesis Table 3.1; gamma: Table 3.1 experimental"},
-  };
-  return l;
-}
-std::optional<Material> find_material(std::string_view name) {
-  for (const auto& m : solid_materials())
-    if (m.name == name) return m;
-  return std::nullopt;
-}
-std::optional<Liquid> find_liquid(std::string_view name) {
-  for (const auto& l : liquids())
-    if (l.name == name) return l;
-  return std::nullopt;
 }
 
 const std::vector<Table31Row>& thesis_table_3_1() {

@@ -1,19 +1,23 @@
 #include "nanopush/outputs/plot.hpp"
 
+#include <atomic>
 #include <cstdlib>
-#include <vector>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <vector>
 
+#include "nanopush/numerics/error.hpp"
 #include "nanopush/outputs/io.hpp"
 #include "nanopush/outputs/process.hpp"
 
 namespace nanopush::plot {
 
 namespace {
+std::atomic<int> g_format{static_cast<int>(Format::png)};
+
 std::string quote(const std::string& s) {
   std::string r = "\"";
   for (char c : s) {
@@ -23,30 +27,141 @@ std::string quote(const std::string& s) {
   return r + "\"";
 }
 
+/// Text shown as written (noenhanced): drop the enhanced-text escapes some callers add
+/// ("\_" for a literal underscore).
+std::string plain(const std::string& s) {
+  std::string r;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    if (s[i] == '\\' && i + 1 < s.size() && std::string("_^{}@&~").find(s[i + 1]) != std::string::npos) continue;
+    r += s[i];
+  }
+  return r;
+}
+
+std::string terminal(Format f, int width, int height) {
+  std::ostringstream t;
+  switch (f) {
+    case Format::png: t << "pngcairo size " << width << "," << height << " enhanced font 'Sans,10'"; break;
+    case Format::svg:
+      t << "svg size " << width << "," << height << " dynamic enhanced font 'Sans,10' background '#ffffff'";
+      break;
+    case Format::pdf: t << "pdfcairo size " << width / 100.0 << "in," << height / 100.0 << "in enhanced font 'Sans,10'"; break;
+  }
+  return t.str();
+}
+
+/// Rewrite every quoted string of `body` that names an existing file as a path relative to
+/// `dir` (the figure's folder), keeping its quote character.
+std::string relative_paths(const std::string& body, const std::filesystem::path& dir) {
+  namespace fs = std::filesystem;
+  std::string out;
+  std::size_t i = 0;
+  while (i < body.size()) {
+    const char q = body[i];
+    if (q != '"' && q != '\'') {
+      out += body[i++];
+      continue;
+    }
+    // Find the closing quote: "..." with backslash escapes, '...' with '' for a quote.
+    std::string text;
+    std::size_t j = i + 1;
+    bool closed = false;
+    while (j < body.size()) {
+      if (q == '"' && body[j] == '\\' && j + 1 < body.size()) {
+        text += body[j + 1];
+        j += 2;
+        continue;
+      }
+      if (body[j] == q) {
+        if (q == '\'' && j + 1 < body.size() && body[j + 1] == '\'') {
+          text += '\'';
+          j += 2;
+          continue;
+        }
+        closed = true;
+        break;
+      }
+      text += body[j++];
+    }
+    if (!closed) {
+      out += body.substr(i);
+      break;
+    }
+    std::error_code ec;
+    if (!text.empty() && text.find('\n') == std::string::npos && fs::is_regular_file(text, ec)) {
+      const fs::path rel = fs::relative(fs::path(text), dir.empty() ? fs::path(".") : dir, ec);
+      if (!ec && !rel.empty()) {
+        out += quote(rel.generic_string());
+        i = j + 1;
+        continue;
+      }
+    }
+    out += body.substr(i, j + 1 - i);
+    i = j + 1;
+  }
+  return out;
+}
+
+/// First line of every kept script: change to the script's own folder (ARG0 is the script
+/// path gnuplot was given), so its relative paths hold wherever it is run from.
+constexpr const char* kCdToScript =
+    "# Paths below are relative to this file's folder; run it from anywhere: gnuplot <path>/<this file>\n"
+    "if (strstrt(ARG0, \"/\") > 0) { _d = ARG0; while (_d[strlen(_d):strlen(_d)] ne \"/\") "
+    "{ _d = _d[1:strlen(_d)-1] }; cd _d }\n";
 }  // namespace
+
+Format parse_format(const std::string& text, const std::string& field) {
+  if (text == "png") return Format::png;
+  if (text == "svg") return Format::svg;
+  if (text == "pdf") return Format::pdf;
+  throw InputError(field, text, "must be one of png, svg, pdf");
+}
+void set_format(Format f) { g_format.store(static_cast<int>(f)); }
+Format format() { return static_cast<Format>(g_format.load()); }
+std::string extension(Format f) {
+  switch (f) {
+    case Format::png: return "png";
+    case Format::svg: return "svg";
+    case Format::pdf: return "pdf";
+  }
+  return "png";
+}
+std::filesystem::path figure_path(const std::filesystem::path& p) {
+  std::string ext(1, '.');  // (not "." + ...: GCC 12 warns -Wrestrict on that)
+  ext += extension(format());
+  std::filesystem::path r = p;
+  r.replace_extension(ext);
+  return r;
+}
 
 bool available() { return run_program({"gnuplot", "--version"}) == 0; }
 
-void render_script(const std::string& body, const std::filesystem::path& png, int width, int height) {
-  if (png.has_parent_path()) std::filesystem::create_directories(png.parent_path());
+std::filesystem::path render_script(const std::string& body, const std::filesystem::path& png_in, int width,
+                                    int height) {
+  const Format f = format();
+  const std::filesystem::path png = figure_path(png_in);
+  const std::filesystem::path dir = png.parent_path();
+  if (!dir.empty()) std::filesystem::create_directories(dir);
   const std::string pid = std::to_string(::getpid());
-  TemporaryPath tmp_png(png.string() + ".tmp." + pid + ".png");
-  std::ostringstream gp;
-  gp << "set terminal pngcairo size " << width << "," << height << " enhanced font 'Sans,10'\n"
-     << "set datafile separator ','\n"
-     << "set output " << quote(tmp_png.path().string()) << "\n"
-     << body << "\nunset output\n";
+  TemporaryPath tmp_png(png.string() + ".tmp." + pid + png.extension().string());
   std::filesystem::path script = png;
   script.replace_extension(".gp");
-  // The kept script writes the final name, so re-running it by hand just works.
-  std::string kept = gp.str();
-  const auto pos = kept.find(quote(tmp_png.path().string()));
-  if (pos != std::string::npos) kept.replace(pos, quote(tmp_png.path().string()).size(), quote(png.string()));
+  const std::string rel_body = relative_paths(body, dir);
+  auto text = [&](const std::string& output) {
+    std::ostringstream gp;
+    gp << kCdToScript << "set terminal " << terminal(f, width, height) << "\n"
+       << "set datafile separator ','\n"
+       << "set output " << quote(output) << "\n"
+       << rel_body << "\nunset output\n";
+    return gp.str();
+  };
+  // The kept script writes the final name; the rendering run writes a temporary one.
+  const std::string kept = text(png.filename().string());
   TemporaryPath tmp_script(script.string() + ".tmp." + pid), tmp_err(script.string() + ".tmp." + pid + ".err");
   {
-    std::ofstream f(tmp_script.path());
-    f << gp.str();
-    if (!f.flush()) throw std::runtime_error("cannot write " + tmp_script.path().string());
+    std::ofstream fs(tmp_script.path());
+    fs << text(tmp_png.path().filename().string());
+    if (!fs.flush()) throw std::runtime_error("cannot write " + tmp_script.path().string());
   }
   const int rc = run_program({"gnuplot", tmp_script.path().string()}, "/dev/null", "/dev/null", tmp_err.path().string());
   std::string err;
@@ -61,23 +176,27 @@ void render_script(const std::string& body, const std::filesystem::path& png, in
   write_file_atomic(script, kept);
   std::filesystem::rename(tmp_png.path(), png);
   tmp_png.release();
+  return png;
 }
 
-void render(const Figure& fig, const std::filesystem::path& png) {
+std::filesystem::path render(const Figure& fig, const std::filesystem::path& png) {
   std::ostringstream b;
-  if (fig.rows * fig.cols > 1) {
+  const bool single = fig.rows * fig.cols <= 1;
+  if (!single) {
     b << "set multiplot layout " << fig.rows << "," << fig.cols;
-    if (!fig.title.empty()) b << " title " << quote(fig.title);
+    if (!fig.title.empty()) b << " title " << quote(plain(fig.title)) << " noenhanced";
     b << "\n";
   }
-  const bool single = fig.rows * fig.cols <= 1;
   for (const auto& p : fig.panels) {
-    b << "reset session\nset datafile separator ','\nset grid\nset key\n";
+    b << "reset session\nset datafile separator ','\nset grid\n";
+    // Keys off the curves: in the right margin of each plot.
+    b << "set key outside right top vertical\n";
     if (!p.title.empty())
-      b << "set title " << quote(p.title) << "\n";
+      b << "set title " << quote(plain(p.title)) << " noenhanced\n";
     else if (single && !fig.title.empty())
-      b << "set title " << quote(fig.title) << "\n";
-    b << "set xlabel " << quote(p.xlabel) << "\nset ylabel " << quote(p.ylabel) << "\n";
+      b << "set title " << quote(plain(fig.title)) << " noenhanced\n";
+    b << "set xlabel " << quote(plain(p.xlabel)) << " noenhanced\nset ylabel " << quote(plain(p.ylabel))
+      << " noenhanced\n";
     if (p.logx) b << "set logscale x\nset format x '10^{%L}'\n";
     if (p.logy) b << "set logscale y\nset format y '10^{%L}'\n";
     if (!p.extra.empty()) b << p.extra << "\n";
@@ -85,12 +204,12 @@ void render(const Figure& fig, const std::filesystem::path& png) {
     for (std::size_t i = 0; i < p.series.size(); ++i) {
       const auto& s = p.series[i];
       b << (i ? ", \\\n     " : "") << quote(s.csv.string()) << " skip 1 using " << s.x << ":" << s.y
-        << " with " << s.style << " title " << quote(s.title);
+        << " with " << s.style << " title " << quote(plain(s.title)) << " noenhanced";
     }
     b << "\n";
   }
-  if (fig.rows * fig.cols > 1) b << "unset multiplot\n";
-  render_script(b.str(), png, fig.width, fig.height);
+  if (!single) b << "unset multiplot\n";
+  return render_script(b.str(), png, fig.width, fig.height);
 }
 
 }  // namespace nanopush::plot

@@ -42,3 +42,10 @@ set_tests_properties(cli.forces.bar PROPERTIES
 add_test(NAME cli.forces.liquid COMMAND $<TARGET_FILE:nanopush> forces --medium liquid --liquid water --no-drop)
 set_tests_properties(cli.forces.liquid PROPERTIES
   PASS_REGULAR_EXPRESSION "buoyancy +-rho_liquid V g[^\n]*evaluated.*capillary[^\n]*not needed")
+
+# docs/errata.md C3: the Fig 3.4 report states the width the thesis' "about 3 nm" needs.
+set_tests_properties(cli.forces.reproduce PROPERTIES FIXTURES_SETUP cli_forces_reproduce)
+add_test(NAME cli.forces.jkr_width_report
+         COMMAND ${CMAKE_COMMAND} -E cat ${CMAKE_CURRENT_BINARY_DIR}/cli_forces_reproduce/report.md)
+set_tests_properties(cli.forces.jkr_width_report PROPERTIES FIXTURES_REQUIRED cli_forces_reproduce
+  PASS_REGULAR_EXPRESSION "half-width b = 4.77293e-09 m.*axial modulus E = 1 TPa,[^\n]*\n[^\n]*width of 2.69049e-09 m")

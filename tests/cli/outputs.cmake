@@ -39,3 +39,18 @@ set_tests_properties(cli.outputs.run_scene PROPERTIES FIXTURES_REQUIRED cli_outp
 add_test(NAME cli.outputs.run_provenance COMMAND ${CMAKE_COMMAND} -E cat ${_cmd}/run/fig3_6c.schema.json)
 set_tests_properties(cli.outputs.run_provenance PROPERTIES FIXTURES_REQUIRED cli_outputs_cmd
   PASS_REGULAR_EXPRESSION "\"command\": \"nanopush run fig3_6c --out [^\"]*/run/fig3_6c.csv --quiet\"")
+
+# Figures (issue 22 item 5): --format svg, theta0 digits in the Fig 3.6 table, plain labels,
+# the .gp beside each figure re-runs from inside the output directory.
+set(_figs ${CMAKE_CURRENT_BINARY_DIR}/outputs-figures-svg)
+add_test(NAME cli.outputs.figures_clean COMMAND ${CMAKE_COMMAND} -E rm -rf ${_figs})
+set_tests_properties(cli.outputs.figures_clean PROPERTIES FIXTURES_SETUP cli_outputs_figures_clean)
+add_test(NAME cli.outputs.figures_svg COMMAND ${_np} reproduce --quick --only fig3_6 --format svg --out ${_figs})
+set_tests_properties(cli.outputs.figures_svg PROPERTIES ENVIRONMENT "${_env}" TIMEOUT 300
+  FIXTURES_REQUIRED cli_outputs_figures_clean FIXTURES_SETUP cli_outputs_figures)
+add_test(NAME cli.outputs.figures_check COMMAND ${CMAKE_COMMAND} -DDIR=${_figs}
+         -P ${CMAKE_CURRENT_LIST_DIR}/scripts/check_figures.cmake)
+set_tests_properties(cli.outputs.figures_check PROPERTIES FIXTURES_REQUIRED cli_outputs_figures)
+add_test(NAME cli.outputs.format_bad COMMAND ${_np} reproduce --only fig3_6 --format jpg --out ${_figs}-bad)
+set_tests_properties(cli.outputs.format_bad PROPERTIES
+  PASS_REGULAR_EXPRESSION "--format = jpg: must be one of png, svg, pdf")

@@ -23,7 +23,7 @@ struct Environment {
   /// The liquid: the medium itself (liquid) or the condensate (humid_air; water by default).
   forces::Liquid liquid = *forces::find_liquid("water");
   bool adhesion = true;  ///< false: ideal non-adhesive contact, no adhesion model is evaluated
-  double gap = 0.2e-9;   ///< body-substrate separation at contact z0 [m] (thesis: 0.2 nm)
+  double gap = forces::kContactGap;  ///< body-substrate separation at contact z0 [m] (thesis: 0.2 nm)
   double gravity = forces::kGravity;  ///< [m/s^2]
   bool has_substrate = false;         ///< false: the substrate is the body's own material
   forces::Material substrate;

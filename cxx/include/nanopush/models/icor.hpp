@@ -21,14 +21,15 @@
 #include <string>
 #include <vector>
 
+#include "nanopush/models/materials.hpp"
+
 namespace nanopush::icor {
 
-/// Hamaker constant used for graphite on graphite [J]. The thesis never prints the value
-/// it used (chapter 4 only names H in the Parsegian rod-plane force); this is an assumed
-/// literature-order value for graphite (Lifshitz estimates lie around 2-5e-19 J). Only
-/// absolute forces depend on it; every iCOR location, Table 5.1, the error analysis and
-/// F/(mu W) are independent of it. Override with --hamaker on the command line.
-inline constexpr double kGraphiteHamakerAssumed = 4.7e-19;
+/// Hamaker constant used for graphite on graphite [J]: the material table's one value
+/// (materials.hpp; the thesis prints none). Only absolute forces depend on it; every iCOR
+/// location, Table 5.1, the error analysis and F/(mu W) are independent of it. Override
+/// with --hamaker on the command line.
+inline constexpr double kGraphiteHamakerAssumed = forces::kGraphiteHamaker;
 
 /// A thin rod on a plane (docs/models.md section D). SI units.
 struct Rod {

@@ -32,6 +32,8 @@
 #include <string_view>
 #include <vector>
 
+#include "nanopush/models/materials.hpp"
+
 namespace nanopush::forces {
 
 inline constexpr double kPi = 3.14159265358979323846;
@@ -107,6 +109,11 @@ double flat_flat_vdw_pressure(double A, double D);
 /// z0 [m]: attractive force L A d^(1/2) / (16 z0^(5/2)) [N] (thesis section 4.2.3, ref [82];
 /// docs/models.md section D). Valid for z0 << d << L.
 double rod_plane_vdw_force(double A, double L, double d, double z0);
+/// Van der Waals attraction of a rectangular bar (footprint length x width, thickness T) lying
+/// flat on a half-space at gap D, by pairwise summation (the thesis' section 3.4.3 route):
+/// F = (length width) A/(6 pi) [1/D^3 - 1/(D+T)^3] (the eq 2.26 pressure of a slab of
+/// finite thickness), edge effects neglected (D << width) [N].
+double bar_plane_vdw_force(double A, double length, double width, double T, double D);
 
 /// Symmetric layered surfaces (eq 2.39): half-spaces 1 coated with layers 2 of thickness
 /// T [m], across medium 3 at gap D [m]. Attractive pressure [Pa]
@@ -239,34 +246,8 @@ double capillary_force_plate(double Ac, double surface_tension, double contact_a
 // ---------------------------------------------------------------------------------------
 // Materials.
 
-/// A material for bodies and substrates. NaN = not known.
-struct Material {
-  std::string name;
-  double density = 0.0;          ///< [kg/m^3]
-  double hamaker = 0.0;          ///< A11 in vacuum [J]
-  double youngs_modulus = 0.0;   ///< E [Pa]; 0 = rigid (no contact deformation model)
-  double poisson_ratio = 0.0;    ///< nu [-]
-  double surface_energy = 0.0;   ///< gamma [J/m^2] (one surface; W11 = 2 gamma)
-  std::string source;            ///< where the numbers come from
-};
-/// A liquid (environment medium or condensate).
-struct Liquid {
-  std::string name;
-  double density = 0.0;          ///< [kg/m^3]
-  double hamaker = 0.0;          ///< A33 [J]
-  double surface_tension = 0.0;  ///< gamma_L [N/m]
-  double molar_volume = 0.0;     ///< V [m^3/mol]
-  double contact_angle = 0.0;    ///< theta on the solids of the scene [rad]
-  std::string source;
-};
-
-/// Small built-in table of solids (graphite, silicon, silica, mica, gold). Values are
-/// representative literature numbers where the thesis prints none (see docs/forces.md).
-const std::vector<Material>& solid_materials();
-/// Built-in liquids (water, ...).
-const std::vector<Liquid>& liquids();
-std::optional<Material> find_material(std::string_view name);
-std::optional<Liquid> find_liquid(std::string_view name);
+// Material and Liquid, the built-in tables and find_material/find_liquid: materials.hpp
+// (the one table of constants).
 
 /// One row of the thesis' Table 3.1 (as printed).
 struct Table31Row {
