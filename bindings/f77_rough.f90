@@ -5,7 +5,7 @@ module nanopush_f77_rough
   use, intrinsic :: iso_c_binding, only: c_int, c_double
   implicit none
   private
-  public :: np_f77_rough_bar_rhs, np_f77_bsint_rough_bar
+  public :: np_f77_rough_bar_rhs, np_f77_bsint_rough_bar, np_f77_rough_bar_rhs_law, np_f77_bsint_rough_bar_law
 
 
 contains
@@ -16,11 +16,7 @@ contains
     real(c_double), intent(in) :: y(8)
     real(c_double), intent(out) :: dydt(8)
     real(c_double), intent(in) :: params(12)
-    integer :: ipar(1), ierr
-    ipar(1) = 0
-    ierr = 0
-    call rgbar(8, t, y, dydt, params, ipar, ierr)
-    np_f77_rough_bar_rhs = int(ierr, c_int)
+    np_f77_rough_bar_rhs = np_f77_rough_bar_rhs_law(t, y, dydt, params, 0_c_int)
   end function np_f77_rough_bar_rhs
 
   !> Integrate the F77 rough-bar RHS with BSINT; arguments as np_f77_bsint_smooth_bar.
@@ -34,17 +30,46 @@ contains
     real(c_double), intent(inout) :: yout(*)
     real(c_double), intent(in) :: params(12)
     integer(c_int), intent(out) :: nstat(3)
+    np_f77_bsint_rough_bar = np_f77_bsint_rough_bar_law(n, t0, y, nout, tout, yout, rtol, atol, h0, hmax, &
+                                                        kmax, iextr, maxstp, params, 0_c_int, nstat)
+  end function np_f77_bsint_rough_bar
+
+  !> np_f77_rough_bar_rhs under a friction law: 0 thesis, 1 printed (RGBAR's IPAR(1)).
+  integer(c_int) function np_f77_rough_bar_rhs_law(t, y, dydt, params, law) bind(C, name="np_f77_rough_bar_rhs_law")
+    real(c_double), value, intent(in) :: t
+    real(c_double), intent(in) :: y(8)
+    real(c_double), intent(out) :: dydt(8)
+    real(c_double), intent(in) :: params(12)
+    integer(c_int), value, intent(in) :: law
+    integer :: ipar(1), ierr
+    ipar(1) = int(law)
+    ierr = 0
+    call rgbar(8, t, y, dydt, params, ipar, ierr)
+    np_f77_rough_bar_rhs_law = int(ierr, c_int)
+  end function np_f77_rough_bar_rhs_law
+
+  !> np_f77_bsint_rough_bar under a friction law: 0 thesis, 1 printed (RGBAR's IPAR(1)).
+  integer(c_int) function np_f77_bsint_rough_bar_law(n, t0, y, nout, tout, yout, rtol, atol, h0, &
+                                                     hmax, kmax, iextr, maxstp, params, law, nstat) &
+      bind(C, name="np_f77_bsint_rough_bar_law")
+    integer(c_int), value, intent(in) :: n, nout, kmax, iextr, maxstp, law
+    real(c_double), value, intent(in) :: t0, rtol, h0, hmax
+    real(c_double), intent(inout) :: y(*)
+    real(c_double), intent(in) :: tout(*), atol(*)
+    real(c_double), intent(inout) :: yout(*)
+    real(c_double), intent(in) :: params(12)
+    integer(c_int), intent(out) :: nstat(3)
     integer :: ipar(1), ist(3), ierr
     nstat = 0_c_int
-    if (n /= 8) then
-      np_f77_bsint_rough_bar = 1_c_int
+    if (n /= 8 .or. law < 0 .or. law > 1) then
+      np_f77_bsint_rough_bar_law = 1_c_int
       return
     end if
-    ipar(1) = 0
+    ipar(1) = int(law)
     call bsint(rgbar, int(n), t0, y, int(nout), tout, yout, rtol, atol, h0, hmax, int(kmax), &
                int(iextr), int(maxstp), params, ipar, ist, ierr)
     nstat = int(ist, c_int)
-    np_f77_bsint_rough_bar = int(ierr, c_int)
-  end function np_f77_bsint_rough_bar
+    np_f77_bsint_rough_bar_law = int(ierr, c_int)
+  end function np_f77_bsint_rough_bar_law
 
 end module nanopush_f77_rough

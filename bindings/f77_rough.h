@@ -1,4 +1,4 @@
-/* nanopush: C view of the FORTRAN 77 rough-surface nanobar (fortran/rgbar.f, the thesis
+/* nanopush: C view of the FORTRAN 77 rough-surface nanobar (fortran/rgbar.f, the thesis and printed
  * friction law) through bindings/f77_rough.f90. SI units; statuses as in f77_bsint.h. */
 #ifndef NANOPUSH_F77_ROUGH_H
 #define NANOPUSH_F77_ROUGH_H
@@ -20,6 +20,14 @@ int np_f77_rough_bar_rhs(double t, const double* y, double* dydt, const double* 
 int np_f77_bsint_rough_bar(int n, double t0, double* y, int nout, const double* tout, double* yout, double rtol,
                            const double* atol, double h0, double hmax, int kmax, int iextr, int maxstp,
                            const double* params, int* nstat);
+
+/* The same under a friction law: law = 0 the thesis law, 1 the printed law (eqs 3.45-3.48 exactly
+ * as printed, FRPRNT in fortran/rgbar.f; docs/rough.md). np_f77_bsint_rough_bar_law returns 1
+ * for a law outside 0..1. */
+int np_f77_rough_bar_rhs_law(double t, const double* y, double* dydt, const double* params, int law);
+int np_f77_bsint_rough_bar_law(int n, double t0, double* y, int nout, const double* tout, double* yout,
+                               double rtol, const double* atol, double h0, double hmax, int kmax, int iextr,
+                               int maxstp, const double* params, int law, int* nstat);
 
 #ifdef __cplusplus
 }

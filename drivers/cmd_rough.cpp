@@ -126,7 +126,7 @@ void reproduce_rough(ReproduceContext& ctx) {
            "|---|---|---|---|---|---|---|---|---|\n";
   long nfcn_ref = 0;  // coulomb law at mu = 0.05
   int chatter_from = -1;
-  std::ostringstream axes;
+  std::ostringstream axes, printed, ranges;
   for (int fig : figs) {
     const Scene sc = load_scene(scenes_dir() / "thesis" / ("fig3_" + std::to_string(fig) + ".toml"));
     const std::string base = "fig3_" + std::to_string(fig);
@@ -148,13 +148,49 @@ void reproduce_rough(ReproduceContext& ctx) {
     co_v.rtol = sc.solver.rtol / 100;
     const Trajectory tc = run_engine(sc, th_c), tf = run_engine(sc, th_f);
     const Trajectory cc = run_engine(sc, co_c), cv = run_engine(sc, co_v);
+    // The printed law (eqs 3.45-3.48 as printed, docs/rough.md), both engines.
+    RunSettings pr_c = th_c, pr_f = th_f;
+    pr_c.law = pr_f.law = "printed";
+    const Trajectory pc_ = run_engine(sc, pr_c), pf_ = run_engine(sc, pr_f);
     for (auto& [tr, tag] : {std::pair{&tc, "thesis_cxx"}, std::pair{&tf, "thesis_f77"}, std::pair{&cc, "coulomb_cxx"},
-                            std::pair{&cv, "coulomb_cvode"}}) {
+                            std::pair{&cv, "coulomb_cvode"}, std::pair{&pc_, "printed_cxx"},
+                            std::pair{&pf_, "printed_f77"}}) {
       const fs::path p = dir / (base + "_" + tag + ".csv");
       write_rough_csv(*tr, p, "thesis/" + base);
       ctx.produced(p);
     }
-    const RunStats st = stats_of(sc, tc), sco = stats_of(sc, cc);
+    const RunStats st = stats_of(sc, tc), sco = stats_of(sc, cc), spr = stats_of(sc, pc_);
+    for (auto& [tr, law] : {std::pair{&pc_, "printed"}, std::pair{&tc, "thesis"}, std::pair{&cc, "coulomb"}}) {
+      ranges << "| 3." << fig << " | " << std::fixed << std::setprecision(2) << sc.surface.mu << std::defaultfloat << " | "
+             << law << (tr->complete ? "" : " (stopped)") << " |";
+      for (std::size_t col : {1, 2, 3, 7, 8, 9}) {
+        double lo = 0, hi = 0;
+        if (!tr->rows.empty()) lo = hi = tr->rows[0][col];
+        for (const auto& r : tr->rows) {
+          lo = std::min(lo, r[col]);
+          hi = std::max(hi, r[col]);
+        }
+        ranges << " [" << sci(lo) << ", " << sci(hi) << "] |";
+      }
+      ranges << "\n";
+    }
+    {
+      bool same = pc_.rows.size() == pf_.rows.size() && pc_.stats.nfcn == pf_.stats.nfcn;
+      for (std::size_t i = 0; same && i < pc_.rows.size(); ++i) same = pc_.rows[i] == pf_.rows[i];
+      int positive = 0;
+      for (const auto& r : pc_.rows) positive += r[7] * r[4] + r[8] * r[5] + r[9] * r[6] > 0 ? 1 : 0;
+      printed << "| 3." << fig << " | " << std::fixed << std::setprecision(2) << sc.surface.mu << std::defaultfloat
+              << " | " << pc_.stats.nfcn << " / " << pf_.stats.nfcn << " | " << (same ? "yes" : "NO") << " | "
+              << (pc_.complete ? std::string("1.6 ns") : "stopped at " + sci(pc_.rows.back()[0]) + " s") << " | ["
+              << std::setprecision(3) << spr.theta_min << ", " << spr.theta_max << "] | [" << sci(spr.fx_min) << ", "
+              << sci(spr.fx_max) << "] | [" << sci(spr.mf_min) << ", " << sci(spr.mf_max) << "] | " << positive << "/"
+              << pc_.rows.size() << " |\n";
+      const std::string nm = base + " (mu " + fmt(sc.surface.mu) + ")";
+      if (!same) ctx.failures.push_back(nm + ": printed law, C++ and F77 engines differ");
+      if (!pc_.complete) ctx.failures.push_back(nm + ": printed law stopped before t_end");
+      if (sc.surface.mu > 0 && !(spr.fx_min < 0 && spr.fx_max > 0))
+        ctx.failures.push_back(nm + ": printed law, fx is not two-signed");
+    }
     const double dev_tf = max_dev(tc, tf, 3);
     const double dev_cv = max_dev(cc, cv, 3);
     double stuck_at = -1;
@@ -179,7 +215,10 @@ void reproduce_rough(ReproduceContext& ctx) {
            << ", " << sci(sco.fx_max) << "] | [" << sci(sco.f_min) << ", " << sci(sco.f_max) << "] |\n"
            << "| " << sc.surface.mu << " | thesis law (ours) | [" << st.theta_min << ", " << st.theta_max << "] | ["
            << sci(st.mf_min) << ", " << sci(st.mf_max) << "] | [" << sci(st.fx_min) << ", " << sci(st.fx_max) << "] | ["
-           << sci(st.f_min) << ", " << sci(st.f_max) << "] |\n";
+           << sci(st.f_min) << ", " << sci(st.f_max) << "] |\n"
+           << "| " << sc.surface.mu << " | printed law (ours) | [" << spr.theta_min << ", " << spr.theta_max << "] | ["
+           << sci(spr.mf_min) << ", " << sci(spr.mf_max) << "] | [" << sci(spr.fx_min) << ", " << sci(spr.fx_max)
+           << "] | [" << sci(spr.f_min) << ", " << sci(spr.f_max) << "] |\n";
 
     // Checks.
     const std::string name = base + " (mu " + fmt(sc.surface.mu) + ")";
@@ -199,13 +238,16 @@ void reproduce_rough(ReproduceContext& ctx) {
     // The six panels of the thesis figure, both laws.
     plot::Figure f;
     f.title = "Fig 3." + std::to_string(fig) + ": rough surface, mu = " + fmt(sc.surface.mu) +
-              " (thesis law: solid; coulomb law: dashed" + (tc.complete ? "" : "; the thesis law stops where it chatters") + ")";
+              " (thesis law: solid; coulomb law: dashed; printed law: dotted" +
+              (tc.complete ? "" : "; the thesis law stops where it chatters") + ")";
     f.rows = 3;
     f.cols = 2;
     f.width = 1200;
     f.height = 1100;
     const fs::path pt = dir / (base + "_thesis_cxx.csv"), pc = dir / (base + "_coulomb_cxx.csv");
+    const fs::path pp = dir / (base + "_printed_cxx.csv");
     const std::string ts = "lines lw 2 lc rgb '#1f77b4'", cs = "lines lw 2 dt 2 lc rgb '#d62728'";
+    const std::string ps = "lines lw 1.5 dt 3 lc rgb '#2ca02c'";
     auto panel = [&](const std::string& title, const std::string& ylabel, const std::string& col) {
       plot::Panel p;
       p.title = title;
@@ -213,6 +255,7 @@ void reproduce_rough(ReproduceContext& ctx) {
       p.ylabel = ylabel;
       p.series.push_back({pt, "($1*1e9)", col, "thesis law", ts});
       p.series.push_back({pc, "($1*1e9)", col, "coulomb law", cs});
+      p.series.push_back({pp, "($1*1e9)", col, "printed law", ps});
       return p;
     };
     f.panels.push_back(panel("(a) orientation", "theta [rad]", "4"));
@@ -250,6 +293,14 @@ void reproduce_rough(ReproduceContext& ctx) {
                << "step size collapses: the integrator stops at `solver.max_steps` (20 000 steps) at the time shown.\n"
                << "The coulomb law locates the instant the bar comes to rest, finds the applied wrench inside the\n"
                << "limit surface and holds the bar stuck: no chattering, a few thousand RHS evaluations.\n\n";
+  ctx.report << "**The printed law** (eqs 3.45-3.48 exactly as printed, lengths in nm; docs/rough.md): both engines,\n"
+             << "and the samples where friction does positive work (f.v + mf omega > 0):\n\n"
+             << "| Fig | mu | RHS evals C++ / F77 | identical | reached | theta [rad] | fx [N] | mf [N m] | friction power > 0 |\n"
+             << "|---|---|---|---|---|---|---|---|---|\n"
+             << printed.str() << "\n";
+  ctx.report << "**Ranges per figure and law** (min and max over the run; x, y [m], theta [rad], fx, fy [N], mf [N m]):\n\n"
+             << "| Fig | mu | law | x | y | theta | fx | fy | mf |\n|---|---|---|---|---|---|---|---|---|\n"
+             << ranges.str() << "\n";
   if (!axes.str().empty())
     ctx.report << "**Against the thesis' figure axes** (docs/models.md §C): mu = 0.06 (Fig 3.18): theta in [-1, 2.5], mf in\n"
                << "[-7e-14, 2e-14] N m, fx in [-3e-6, 3e-6] N, |f| in [1.2e-6, 3e-6] N; mu = 0.17 (Fig 3.29): mf in\n"
@@ -262,7 +313,7 @@ void reproduce_rough(ReproduceContext& ctx) {
                << "see docs/errata.md (rough surface).\n\n";
 }
 
-RegisterReproduce step{{"fig3_12-32", "rough-surface nanobar, mu = 0 ... 0.20, thesis and coulomb laws, both engines",
+RegisterReproduce step{{"fig3_12-32", "rough-surface nanobar, mu = 0 ... 0.20, thesis, printed and coulomb laws, both engines",
                         20, reproduce_rough}};
 
 }  // namespace

@@ -1,4 +1,5 @@
 // nanopush run: integrate a scene with either engine (compare: cmd_compare.cpp).
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -70,7 +71,7 @@ int run_cmd(const RunOptions& o) {
   rs.atol = o.atol;
   rs.law = o.law;
   rs.precision = o.precision;  // "" = the scene's solver.precision
-  rs.allow_partial = o.keep_partial;
+  rs.allow_partial = true;  // a failure is reported below (and its samples kept with --keep-partial)
   rs.progress = progress_printer(sc.name);
   const auto t0 = std::chrono::steady_clock::now();
   const Trajectory tr = run_engine(sc, rs);
@@ -78,12 +79,18 @@ int run_cmd(const RunOptions& o) {
   std::string out = o.out.empty() ? sc.name + "." + tr.engine_label + ".csv" : o.out;
   if (!tr.complete) {
     // Never presented as a result: a distinct name, a message, a non-zero exit.
-    if (out == "-") out = sc.name + "." + tr.engine_label + ".csv";
-    const std::string partial = out + ".partial.csv";
-    write_trajectory_csv(tr, partial);
     std::cerr << "nanopush: solver failure: " << sc.name << " (" << tr.engine_label << "): " << to_string(tr.stats.status)
-              << ": " << tr.stats.message << "\n  the " << tr.rows.size() << " samples computed before the failure are in "
-              << partial << " (incomplete)\n";
+              << ": " << tr.stats.message << "\n";
+    print_rest_diagnosis(sc, o.law.empty() ? sc.surface.law : o.law, tr, std::cerr);
+    if (o.keep_partial) {
+      if (out == "-") out = sc.name + "." + tr.engine_label + ".csv";
+      const std::string partial = out + ".partial.csv";
+      write_trajectory_csv(tr, partial);
+      std::cerr << "  the " << tr.rows.size() << " samples computed before the failure are in " << partial
+                << " (incomplete)\n";
+    } else {
+      std::cerr << "  nothing written (--keep-partial keeps the " << tr.rows.size() << " samples computed)\n";
+    }
     return 3;
   }
   if (out == "-") {
@@ -124,9 +131,10 @@ RegisterCommand reg_run{{"run", "Integrate a scene and write its trajectory as C
                                           "rtol >= 1e-11 where it runs, else modern); default: the scene's")
                                ->check(CLI::IsMember({"faithful", "modern", "dop853", "cvode", "auto"}));
                            app.add_option("--law", o->law,
-                                          "rough scenes: friction law, thesis (sign law of eq 3.40) or coulomb (event-located "
+                                          "rough scenes: friction law, thesis (sign law of eq 3.40), printed (the same with "
+                                          "eqs 3.45-3.48 exactly as printed, docs/rough.md) or coulomb (event-located "
                                           "stick-slip); default: the scene's")
-                               ->check(CLI::IsMember({"thesis", "coulomb"}));
+                               ->check(CLI::IsMember({"thesis", "printed", "coulomb"}));
                            app.add_option("--precision", o->precision,
                                           "scalar of the integration: double, long (x87 80-bit) or quad (__float128); "
                                           "long and quad need --engine cxx, --method faithful or modern, a smooth scene. "

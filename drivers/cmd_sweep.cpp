@@ -199,8 +199,8 @@ RegisterCommand reg{
            ->check(CLI::IsMember({"cxx", "f77"}));
        app.add_option("--method", o->method, "task run: faithful, modern, dop853, cvode or auto (default: the scene's)")
            ->check(CLI::IsMember({"faithful", "modern", "dop853", "cvode", "auto"}));
-       app.add_option("--law", o->law, "task run, rough scenes: thesis or coulomb (default: the scene's)")
-           ->check(CLI::IsMember({"thesis", "coulomb"}));
+       app.add_option("--law", o->law, "task run, rough scenes: thesis, printed or coulomb (default: the scene's)")
+           ->check(CLI::IsMember({"thesis", "printed", "coulomb"}));
        app.add_option("--out", o->out, "the table (CSV; default <scene>_sweep.csv); its journal is OUT.journal");
        app.add_option("--trajectories", o->trajectories, "task run: also keep each point's trajectory, DIR/point_<i>.csv");
        app.add_option("--jobs", o->jobs, "threads (default: every core; under MPI, the cores per rank)")

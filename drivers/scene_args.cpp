@@ -1,5 +1,9 @@
 #include "scene_args.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+
 #include "nanopush/numerics/error.hpp"
 #include "registry.hpp"
 
@@ -28,6 +32,32 @@ Scene load_scene_arg(const std::string& scene, const std::vector<std::string>& s
   Scene sc = load_scene(resolve_scene(scene));
   if (!sets.empty()) sc.set(parse_settings(sets));
   return sc;
+}
+
+/// Why a rough run under the thesis (or printed) law gave up, when the bar came to rest: the sign
+/// law of eq 3.40 has no direction at zero velocity, so once friction can hold the push
+/// (mu N > F) the integrator chatters about rest until its step budget is spent
+/// (docs/rough.md). Says where it came to rest and what continues honestly.
+void print_rest_diagnosis(const Scene& sc, const std::string& law, const Trajectory& tr, std::ostream& os) {
+  if (!sc.rough() || law == "coulomb" || tr.rows.size() < 2 || tr.stats.status != BsStatus::too_many_steps) return;
+  const double muN = sc.surface.mu * sc.normal_load();
+  if (!(muN > sc.push.force)) return;
+  // The first sample from which the speed stays below 1e-3 of the largest speed of the run.
+  const auto speed = [&](const TrajectoryRow& r) {
+    const double L = std::max(sc.geometry.a, sc.geometry.b);
+    return std::hypot(r[4], r[5]) + std::fabs(r[6]) * L;
+  };
+  double vmax = 0;
+  for (const auto& r : tr.rows) vmax = std::max(vmax, speed(r));
+  std::size_t rest = tr.rows.size() - 1;
+  while (rest > 0 && speed(tr.rows[rest - 1]) <= 1e-3 * vmax) --rest;
+  const auto& r = tr.rows[rest];
+  os << std::setprecision(6) << "  the bar came to rest near t = " << r[0] << " s at x = " << r[1] << " m, y = " << r[2]
+     << " m, theta = " << r[3] << " rad (last sample t = " << tr.rows.back()[0] << " s): mu N = " << muN
+     << " N exceeds the push F = " << sc.push.force
+     << " N, and the sign law of eq 3.40 has no direction at rest, so the integrator chatters there\n"
+     << "  to continue: --law coulomb (event-located stick-slip: the bar stays stuck or slides off honestly; "
+        "docs/rough.md)\n";
 }
 
 }  // namespace nanopush::cli

@@ -6,7 +6,10 @@
 #include <string>
 #include <vector>
 
+#include <ostream>
+
 #include "nanopush/scenes/scene.hpp"
+#include "nanopush/scenes/simulate.hpp"
 
 namespace nanopush::cli {
 
@@ -18,5 +21,9 @@ std::vector<SceneSetting> parse_settings(const std::vector<std::string>& sets, c
 
 /// Load SCENE (resolve_scene) and apply the --set values.
 Scene load_scene_arg(const std::string& scene, const std::vector<std::string>& sets);
+
+/// After a failed rough run under the thesis or printed law that stopped at rest: where the
+/// bar came to rest and that --law coulomb continues honestly (nothing for other failures).
+void print_rest_diagnosis(const Scene& sc, const std::string& law, const Trajectory& tr, std::ostream& os);
 
 }  // namespace nanopush::cli

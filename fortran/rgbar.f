@@ -4,7 +4,9 @@ C     surface (docs/models.md section C; thesis eqs 3.51-3.56 with errata
 C     1-3): the smooth-surface equations plus the Coulomb friction
 C     resultant over the 2A x 2B contact (RECTFV, fortran/rectfr.f)
 C     at the iCOR implied by the rigid velocity, rotated to world axes.
-C     This is the 'thesis' friction law: no stick handling.
+C     This is the 'thesis' friction law: no stick handling. IPAR(1) = 1
+C     selects the 'printed' law instead: the wrench of eqs 3.45-3.48
+C     exactly as printed (FRPRNT below; docs/rough.md).
 C
 C     State Y (N = 8): X, Y, THETA, VX, VY, OMEGA (world axes, SI),
 C     WPUSH and WFRIC, the work done by the push and by friction [J].
@@ -53,8 +55,13 @@ C=======================================================================
             VBY = -S*Y(4) + C*Y(5)
             OM = Y(6)
          END IF
-         CALL RECTFV(RPAR(7), RPAR(8), RPAR(9), VBX, VBY, OM,
-     &               FBX, FBY, FM, IERR)
+         IF (IPAR(1) .EQ. 1) THEN
+            CALL FRPRNT(RPAR(7), RPAR(8), RPAR(9), VBX, VBY, OM,
+     &                  FBX, FBY, FM)
+         ELSE
+            CALL RECTFV(RPAR(7), RPAR(8), RPAR(9), VBX, VBY, OM,
+     &                  FBX, FBY, FM, IERR)
+         END IF
          IF (IERR .NE. 0) RETURN
          FWX = C*FBX - S*FBY
          FWY = S*FBX + C*FBY
@@ -67,5 +74,95 @@ C=======================================================================
       DYDT(6) = (TAU + FM)/RPAR(2)
       DYDT(7) = FX*Y(4) + FY*Y(5) + TAU*Y(6)
       DYDT(8) = FWX*Y(4) + FWY*Y(5) + FM*Y(6)
+      RETURN
+      END
+C=======================================================================
+C     FRPRNT -- the 'printed' friction law: the wrench of eqs 3.45-3.48
+C     exactly as the thesis prints them (errata F1-F3 of docs/errata.md
+C     left in: fy' with the printed sign, mf without sign(theta-dot) and
+C     with squares in C4), at the iCOR implied by the body-axis velocity
+C     (VX, VY, OM), SI in and out. C4 with squares is not dimensionally
+C     consistent: the forms are evaluated with lengths in UL = 1 nm (the
+C     unit of the thesis' captions; in metres the moment is ~1e6 times
+C     too large and no run leaves t = 0). A term H**2 LN(U/V) whose
+C     logarithm is undefined (an edge line of the contact) is taken as
+C     its limit 0 (FRPTRM); at OM = 0 pure translation, F = -FMUN V/|V|,
+C     FM = 0; zero at rest. Operation for operation as
+C     nanopush::thesis_printed_friction_from_velocity (cxx/models/
+C     friction.cpp), so both engines round identically.
+C=======================================================================
+      SUBROUTINE FRPRNT(A, B, FMUN, VX, VY, OM, FX, FY, FM)
+      DOUBLE PRECISION A, B, FMUN, VX, VY, OM, FX, FY, FM
+      DOUBLE PRECISION UL, AN, BN
+      PARAMETER (UL = 1D-9)
+      DOUBLE PRECISION V, SG, C, S, R, XC, YC, H1, H2, H3, H4
+      DOUBLE PRECISION S12, S23, S34, S14, B45, B46, C3, C4, AB
+      DOUBLE PRECISION FRHYPT, FRPTRM
+      EXTERNAL FRHYPT, FRPTRM
+      V = FRHYPT(VX, VY)
+      IF (OM .EQ. 0D0) THEN
+         IF (.NOT. (V .GT. 0D0)) THEN
+            FX = 0D0
+            FY = 0D0
+         ELSE
+            FX = -FMUN*(VX/V)
+            FY = -FMUN*(VY/V)
+         END IF
+         FM = 0D0
+         RETURN
+      END IF
+      IF (OM .GT. 0D0) THEN
+         SG = 1D0
+      ELSE
+         SG = -1D0
+      END IF
+      C = 1D0
+      S = 0D0
+      IF (V .GT. 0D0) THEN
+         C = SG*VY/V
+         S = -SG*VX/V
+      END IF
+      AN = A/UL
+      BN = B/UL
+      R = V/ABS(OM)/UL
+      XC = R*C
+      YC = R*S
+      H1 = YC - BN
+      H2 = XC + AN
+      H3 = YC + BN
+      H4 = XC - AN
+      S12 = SQRT(H1*H1 + H2*H2)
+      S23 = SQRT(H2*H2 + H3*H3)
+      S34 = SQRT(H3*H3 + H4*H4)
+      S14 = SQRT(H1*H1 + H4*H4)
+      B45 = H2*(S23 - S12) + H4*(S14 - S34)
+     &      - FRPTRM(H1, S14 - H4, S12 - H2)
+     &      + FRPTRM(H3, S34 - H4, S23 - H2)
+      B46 = H1*(S14 - S12) + H3*(S23 - S34)
+     &      + FRPTRM(H2, S23 + H3, S12 + H1)
+     &      - FRPTRM(H4, S34 + H3, S14 + H1)
+      C3 = -H1*H2*S12 + H2*H3*S23 - H3*H4*S34 + H1*H4*S14
+      C4 = FRPTRM(H1, S12 - H2, S14 - H4)
+     &     + FRPTRM(H2, S23 + H3, S12 + H1)
+     &     + FRPTRM(H3, S34 - H4, S23 - H2)
+     &     + FRPTRM(H4, S14 + H1, S34 + H3)
+      AB = AN*BN
+      FX = FMUN*SG*B45/(8D0*AB)
+      FY = FMUN*SG*B46/(8D0*AB)
+      FM = UL*FMUN*(XC*B46/2D0 + YC*B45/2D0 - C3/3D0 - C4/6D0)
+     &     /(4D0*AB)
+      RETURN
+      END
+
+C     FRPTRM -- H**2 LN(U/V), or 0 where the logarithm is undefined
+C     (only on an edge line, where H -> 0 and the term's limit is 0).
+      DOUBLE PRECISION FUNCTION FRPTRM(H, U, V)
+      DOUBLE PRECISION H, U, V
+      IF (H .EQ. 0D0 .OR. .NOT. (U .GT. 0D0)
+     &    .OR. .NOT. (V .GT. 0D0)) THEN
+         FRPTRM = 0D0
+      ELSE
+         FRPTRM = H*H*LOG(U/V)
+      END IF
       RETURN
       END

@@ -111,7 +111,7 @@ TEST_CASE("scene set: bad keys and values are refused with key, value and range;
   CHECK(error_of([&] { s.set("surface.mu", -1.0); }) == "surface.mu = -1: must be in [0, 10]");
   CHECK(error_of([&] { s.set("surface.mu", "high"); }).rfind("surface.mu = \"high\": must be a number", 0) == 0);
   CHECK(error_of([&] { s.set("surface.law", "stick"); }) ==
-        "surface.law = \"stick\": must be one of: thesis, coulomb");
+        "surface.law = \"stick\": must be one of: thesis, printed, coulomb");
   CHECK(error_of([&] { s.set("solver.samples", 10.5); }).rfind("solver.samples = 10.5: must be a whole number", 0) ==
         0);
   CHECK(error_of([&] { s.set("push.yn", 60e-9); }).find("push.yn = 6e-08: the push point must lie on the body") == 0);

@@ -14,7 +14,8 @@ namespace nanopush {
 
 Trajectory run_f77(const Scene& sc, const RunSettings& s) {
   Trajectory tr;
-  tr.engine_label = sc.rough() ? "f77-thesis" : "f77";
+  const bool printed = sc.rough() && s.law == "printed";
+  tr.engine_label = sc.rough() ? (printed ? "f77-printed" : "f77-thesis") : "f77";
   const int n = sc.rough() ? kRoughStateSize : kStateSize;
   tr.rtol = s.rtol;
   tr.atol = sc.atol_vector(s.rtol, s.atol, n);
@@ -29,8 +30,9 @@ Trajectory run_f77(const Scene& sc, const RunSettings& s) {
     const double params[12] = {sc.mass,       sc.inertia,    sc.push.force, sc.push.beta,
                                sc.push.pbx,   sc.push.pby,   sc.geometry.a, sc.geometry.b,
                                sc.surface.mu * sc.normal_load(), 0.0, 0.0, 0.0};
-    st = np_f77_bsint_rough_bar(n, 0.0, y.data(), static_cast<int>(tout.size()), tout.data(), yout.data(), s.rtol,
-                                tr.atol.data(), sc.solver.h0, sc.solver.hmax, 8, 1, maxstp, params, nstat);
+    st = np_f77_bsint_rough_bar_law(n, 0.0, y.data(), static_cast<int>(tout.size()), tout.data(), yout.data(),
+                                    s.rtol, tr.atol.data(), sc.solver.h0, sc.solver.hmax, 8, 1, maxstp, params,
+                                    printed ? 1 : 0, nstat);
   } else {
     const double params[6] = {sc.mass, sc.inertia, sc.push.force, sc.push.beta, sc.push.pbx, sc.push.pby};
     st = np_f77_bsint_smooth_bar(n, 0.0, y.data(), static_cast<int>(tout.size()), tout.data(), yout.data(), s.rtol,
@@ -40,7 +42,8 @@ Trajectory run_f77(const Scene& sc, const RunSettings& s) {
   tr.stats.nfcn = nstat[0];
   tr.stats.naccpt = nstat[1];
   tr.stats.nrejct = nstat[2];
-  const RoughBarModel model = rough_model(sc);
+  RoughBarModel model = rough_model(sc);
+  model.printed = printed;
   // Outputs reached: on failure BSINT leaves later columns untouched; y holds the state at the
   // last output reached, so count the columns by comparing times reached.
   std::size_t reached = tout.size();

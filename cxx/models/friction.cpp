@@ -95,4 +95,60 @@ FrictionWrench thesis_corrected_friction(double a, double b, double R, double al
   return thesis_form(a, b, R, alpha, true, sense);
 }
 
+
+// ---------------------------------------------------------------------------------------------
+// The `printed` friction law (docs/rough.md): eqs (3.45)-(3.48) as printed, evaluated at the
+// iCOR implied by the velocity. Operation for operation the same as FRPRNT in fortran/rgbar.f,
+// so the C++ and F77 engines round identically.
+
+namespace {
+
+/// h^2 ln(u/v), one corner term of the printed forms, taken as 0 where the printed logarithm is
+/// undefined: that happens only on an edge line of the contact (or within rounding of it),
+/// where h -> 0 and the term's limit is 0 (the thesis' "lim h ln(1/h) = 0", errata F4).
+double printed_term(double h, double u, double v) noexcept {
+  if (h == 0.0 || !(u > 0.0) || !(v > 0.0)) return 0.0;
+  return h * h * std::log(u / v);
+}
+
+}  // namespace
+
+FrictionWrench thesis_printed_friction_from_velocity(double a, double b, double muN, double vx, double vy,
+                                                     double omega) noexcept {
+  const double v = friction_detail::hypot_portable(vx, vy);
+  if (omega == 0.0) {  // R = infinity: pure translation, the limit the thesis states (§3.4.3.3)
+    if (!(v > 0.0)) return {0.0, 0.0, 0.0};
+    return {-muN * (vx / v), -muN * (vy / v), 0.0};
+  }
+  const double sg = omega > 0.0 ? 1.0 : -1.0;
+  double c = 1.0, s = 0.0;  // any direction at R = 0
+  if (v > 0.0) {
+    c = sg * vy / v;
+    s = -sg * vx / v;
+  }
+  // Lengths in nanometres (kPrintedLengthUnit): C4 with squares is not dimensionally consistent,
+  // and in metres its moment is ~1e6 times too large (no integrator leaves t = 0: docs/rough.md).
+  const double U = kPrintedLengthUnit;
+  a /= U;
+  b /= U;
+  const double r = v / std::fabs(omega) / U;
+  const double xc = r * c, yc = r * s;  // R cos(alpha), R sin(alpha)
+  const double h1 = yc - b, h2 = xc + a, h3 = yc + b, h4 = xc - a;
+  const double s12 = std::sqrt(h1 * h1 + h2 * h2), s23 = std::sqrt(h2 * h2 + h3 * h3);
+  const double s34 = std::sqrt(h3 * h3 + h4 * h4), s14 = std::sqrt(h1 * h1 + h4 * h4);
+  const double b45 = h2 * (s23 - s12) + h4 * (s14 - s34) - printed_term(h1, s14 - h4, s12 - h2) +
+                     printed_term(h3, s34 - h4, s23 - h2);
+  const double b46 = h1 * (s14 - s12) + h3 * (s23 - s34) + printed_term(h2, s23 + h3, s12 + h1) -
+                     printed_term(h4, s34 + h3, s14 + h1);
+  const double c3 = -h1 * h2 * s12 + h2 * h3 * s23 - h3 * h4 * s34 + h1 * h4 * s14;
+  const double c4 = printed_term(h1, s12 - h2, s14 - h4) + printed_term(h2, s23 + h3, s12 + h1) +
+                    printed_term(h3, s34 - h4, s23 - h2) + printed_term(h4, s14 + h1, s34 + h3);
+  const double ab = a * b;
+  const double fxb = muN * sg * b45 / (8.0 * ab);  // (3.45)
+  const double fyb = muN * sg * b46 / (8.0 * ab);  // (3.46), printed sign (F1)
+  // (3.47) with (3.48): no sign(theta-dot) (F3), C4 with squares (F2); C1 = [3.46], C2 = [3.45].
+  const double mf = U * muN * (xc * b46 / 2.0 + yc * b45 / 2.0 - c3 / 3.0 - c4 / 6.0) / (4.0 * ab);
+  return {fxb, fyb, mf};
+}
+
 }  // namespace nanopush

@@ -325,7 +325,7 @@ Scene scene_from_document(const toml::table& root, const std::string& source_nam
         sc.surface.normal_load = *nl;
       }
       sc.surface.law = opt_string(t, "surface", "law").value_or("thesis");
-      require_one_of("surface.law", sc.surface.law, {"thesis", "coulomb"});
+      require_one_of("surface.law", sc.surface.law, {"thesis", "printed", "coulomb"});
     }
   }
 

@@ -58,8 +58,9 @@ const std::vector<SceneKey>& scene_keys() {
       {"surface.f_vdw", K::number, "N", "0", ">= 0", "rough", "adhesion (van der Waals) load added to m g"},
       {"surface.g", K::number, "m/s^2", "9.81", ">= 0", "rough", "gravity"},
       {"surface.normal_load", K::number, "N", "m g + f_vdw", "> 0", "rough", "normal load N, given directly"},
-      {"surface.law", K::string, "", "thesis", "thesis, coulomb", "rough",
-       "friction law: the eq 3.40 sign law, or event-located stick-slip"},
+      {"surface.law", K::string, "", "thesis", "thesis, printed, coulomb", "rough",
+       "friction law: the eq 3.40 sign law, the same with eqs 3.45-3.48 as printed, or event-located "
+       "stick-slip"},
 
       {"solver.t_end", K::number, "s", "required", "> 0", "all", "end time"},
       {"solver.samples", K::integer, "1", "401", "[2, 10000000]", "all",

@@ -37,7 +37,8 @@ RunSettings resolve_settings(const Scene& scene, RunSettings s) {
       s.method != "auto")
     throw InputError(mfield, s.method, "must be faithful, modern, dop853, cvode or auto");
   if (s.law.empty()) s.law = scene.surface.law;
-  if (s.law != "thesis" && s.law != "coulomb") throw InputError("law", s.law, "must be thesis or coulomb");
+  if (s.law != "thesis" && s.law != "coulomb" && s.law != "printed")
+    throw InputError("law", s.law, "must be thesis, printed or coulomb");
   if (s.rtol == 0) s.rtol = scene.solver.rtol;
   require_range("rtol", s.rtol, 1e-30, 0.1);
   if (s.method == "auto") {
@@ -192,7 +193,8 @@ Trajectory run_cxx_rough(const Scene& sc, const RunSettings& s) {
   tr.engine_label = "cxx-" + s.method + "-" + s.law;
   tr.rtol = s.rtol;
   tr.atol = sc.atol_vector(s.rtol, s.atol, kRoughStateSize);
-  const RoughBarModel model = rough_model(sc);
+  RoughBarModel model = rough_model(sc);
+  model.printed = s.law == "printed";
   const auto tout = sc.output_times();
   auto y = rough_initial(sc);
   const double n = static_cast<double>(tout.size());
@@ -202,7 +204,7 @@ Trajectory run_cxx_rough(const Scene& sc, const RunSettings& s) {
     tr.work_fric.push_back(yy[kWorkFric]);
     if (s.progress) s.progress(static_cast<double>(tr.rows.size()) / n);
   };
-  if (s.law == "thesis") {
+  if (s.law == "thesis" || s.law == "printed") {
     // Started from rest, eq 3.40 gives no friction direction at t = 0, so the first step sees
     // friction jump from 0 to mu N. The faithful method keeps that value (its steps are the
     // F77 engine's); the others take the right limit, friction in the direction the body
@@ -211,7 +213,9 @@ Trajectory run_cxx_rough(const Scene& sc, const RunSettings& s) {
     // tolerance by 100-1000x (docs/rough.md, "Starting from rest").
     RoughBarModel m = model;
     std::int64_t start_evaluations = 0;
-    if (s.method != "faithful") start_evaluations = set_start_direction(m, y.data());
+    // The printed law keeps zero friction at rest with every method (its wrench has no
+    // right limit to take from the coulomb analysis: the printed forms are not a limit surface).
+    if (s.method != "faithful" && !m.printed) start_evaluations = set_start_direction(m, y.data());
     const RoughBarThesisRhs rhs{m};
     auto observer = [&](std::size_t, double t, const double* yy) {
       record(t, yy, model.friction(yy[kTheta], yy[kVx], yy[kVy], yy[kOmega]));

@@ -263,7 +263,7 @@ int main(int argc, char** argv) {
     nanopush_trajectory t = nanopush_run_scene_ex(err, sc, "cxx", NULL, "sticky", 0, -1);
     CHECK(sc != NULL && t == NULL && nanopush_check_error(err) == NANOPUSH_BAD_INPUT);
     nanopush_get_error(err, msg, (int)sizeof msg);
-    CHECK(strstr(msg, "law = sticky: must be thesis or coulomb") != NULL);
+    CHECK(strstr(msg, "law = sticky: must be thesis, printed or coulomb") != NULL);
     nanopush_clear_error(err);
     nanopush_delete_scene(&sc);
   }

@@ -94,7 +94,7 @@ int main(int argc, char** argv) {
   CHECK(message_starts(err, "surface.mu = 11: must be in [0, 10]"));
   nanopush_clear_error(err);
   CHECK(nanopush_scene_set_string(err, set, "surface.law", "stick") == NANOPUSH_BAD_INPUT);
-  CHECK(message_starts(err, "surface.law = \"stick\": must be one of: thesis, coulomb"));
+  CHECK(message_starts(err, "surface.law = \"stick\": must be one of: thesis, printed, coulomb"));
   nanopush_clear_error(err);
   CHECK(nanopush_scene_set_string(err, set, "surface.mu", "abc") == NANOPUSH_BAD_INPUT);
   CHECK(message_starts(err, "surface.mu = abc: must be a number"));

@@ -22,7 +22,7 @@ program test_fortran_rough
   call nanopush_run(scene, traj, engine="cxx", law=law)
   call nanopush_run(scene, other, law="sticky", stat=stat, errmsg=msg)
   print '(a,i0,2a)', "law = sticky: stat = ", stat, ", errmsg = ", msg
-  if (stat /= NANOPUSH_BAD_INPUT .or. index(msg, "law = sticky: must be thesis or coulomb") == 0) &
+  if (stat /= NANOPUSH_BAD_INPUT .or. index(msg, "law = sticky: must be thesis, printed or coulomb") == 0) &
     error stop "test_fortran_rough: a bad law should come back as stat + errmsg"
   call nanopush_run(scene, other, engine="cxx", law=other_law)
   call nanopush_destroy(scene)

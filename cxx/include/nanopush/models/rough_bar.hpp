@@ -30,6 +30,10 @@ struct RoughBarModel {
   /// World velocity direction (vx, vy, omega) whose friction acts when the body is exactly at
   /// rest; all zero (the thesis law) gives no friction at rest, where eq 3.40 has no direction.
   std::array<double, 3> rest_direction{0.0, 0.0, 0.0};
+  /// The `printed` friction law (docs/rough.md): eqs 3.45-3.48 exactly as printed
+  /// (thesis_printed_friction_from_velocity) instead of the corrected wrench; false for the
+  /// `thesis` and `coulomb` laws.
+  bool printed = false;
 
   /// Friction from the world velocity (vx, vy) and omega at orientation theta: body-axis
   /// velocity v' = R(-theta) v, friction wrench at the implied iCOR, rotated back
@@ -42,7 +46,9 @@ struct RoughBarModel {
   [[nodiscard]] WorldWrench friction_cs(double c, double s, double vx, double vy, double omega) const noexcept {
     if (muN == 0.0) return {};
     const double vbx = c * vx + s * vy, vby = -s * vx + c * vy;
-    const FrictionWrench fb = rectangle_friction_from_velocity(geometry.a, geometry.b, muN, vbx, vby, omega);
+    const FrictionWrench fb = printed
+                                  ? thesis_printed_friction_from_velocity(geometry.a, geometry.b, muN, vbx, vby, omega)
+                                  : rectangle_friction_from_velocity(geometry.a, geometry.b, muN, vbx, vby, omega);
     return {c * fb.fx - s * fb.fy, s * fb.fx + c * fb.fy, fb.mf};
   }
 
@@ -76,6 +82,7 @@ struct RoughBarModel {
 /// rotation sign(theta-dot) (eq 3.40), integrated as one smooth ODE. Where the velocity
 /// passes through zero the friction direction flips discontinuously: the integrator
 /// chatters there (that is the point of keeping this law: the original runs).
+/// With model.printed set it is the `printed` law: the same ODE with the printed wrench.
 struct RoughBarThesisRhs {
   RoughBarModel model;
   int operator()(double, const double* y, double* d) const noexcept {

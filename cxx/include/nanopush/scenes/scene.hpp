@@ -23,7 +23,7 @@ struct SurfaceSettings {
   double f_vdw = 0;             ///< adhesion (Van der Waals) load [N]
   double g = 9.81;              ///< gravity [m/s^2]
   double normal_load = 0;       ///< N [N]; 0 = m g + f_vdw
-  std::string law = "thesis";   ///< thesis | coulomb
+  std::string law = "thesis";   ///< thesis | printed | coulomb
 };
 
 struct SolverSettings {
