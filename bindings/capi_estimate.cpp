@@ -13,18 +13,6 @@ namespace icor = nanopush::icor;
 
 namespace {
 
-icor::Rod rod_from(const double* r) {
-  require_handle(r, "rod");
-  icor::Rod rod;
-  rod.length = r[0];
-  rod.radius = r[1];
-  rod.density = r[2];
-  rod.hamaker = r[3];
-  rod.z0 = r[4];
-  rod.gravity = r[5];
-  rod.validate();
-  return rod;
-}
 
 /// d mu / d input of the contribution named `input` (the library names them "F", "yn", "R", "L",
 /// "H"); mapped by name so the C order never depends on the order of the C++ vector.

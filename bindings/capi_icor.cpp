@@ -21,17 +21,6 @@ int scalar(nanopush_error error, double* out, F&& f) {
   });
 }
 
-icor::Rod rod_from(const double* r) {
-  icor::Rod rod;
-  rod.length = r[0];
-  rod.radius = r[1];
-  rod.density = r[2];
-  rod.hamaker = r[3];
-  rod.z0 = r[4];
-  rod.gravity = r[5];
-  rod.validate();
-  return rod;
-}
 }  // namespace
 
 extern "C" {

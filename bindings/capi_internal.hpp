@@ -16,6 +16,7 @@
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/scenes/scene.hpp"
 #include "nanopush/engines/engines.hpp"
+#include "nanopush/models/icor.hpp"
 
 struct nanopush_error_s {
   int status = NANOPUSH_OK;
@@ -109,5 +110,20 @@ inline int copy_string(const std::string& s, char* buffer, int size) {
 
 /// Optional C string: NULL -> "".
 inline std::string opt_string(const char* s) { return s ? std::string(s) : std::string(); }
+
+/// The rod of the iCOR functions from its C array: length, radius, density, hamaker, z0,
+/// gravity (nanopush.h), validated.
+inline icor::Rod rod_from(const double* r) {
+  require_handle(r, "rod");
+  icor::Rod rod;
+  rod.length = r[0];
+  rod.radius = r[1];
+  rod.density = r[2];
+  rod.hamaker = r[3];
+  rod.z0 = r[4];
+  rod.gravity = r[5];
+  rod.validate();
+  return rod;
+}
 
 }  // namespace nanopush::capi

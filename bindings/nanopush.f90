@@ -16,7 +16,7 @@
 !> traj(NANOPUSH_TRAJECTORY_COLUMNS, nrows), one output time per column; rows of traj are
 !> t, x, y, theta, vx, vy, omega, fx, fy, mf (s, m, m, rad, m/s, m/s, rad/s, N, N, N m).
 !>
-!> Rough-surface scenes: nanopush_run(..., law="thesis"|"coulomb") chooses the friction law.
+!> Rough-surface scenes: nanopush_run(..., law="thesis"|"printed"|"coulomb") chooses the friction law.
 !> Extended precision (smooth scenes): nanopush_run(..., precision="long"|"quad", state_ext=q)
 !> integrates in long double or __float128 and returns the state in q(6, nrows), kind nanopush_qp.
 !>
@@ -26,7 +26,9 @@
 !> returning the value, NaN on failure) and nanopush_icor_cubic_roots (eq 5.4, Brent or Eigen).
 !> Friction coefficient from measurements, with its propagated uncertainty (the numbers of
 !> `nanopush icor estimate-mu`): nanopush_estimate_mu_from_force (Fig 4.4) and
-!> nanopush_estimate_mu_from_icor (Fig 4.5).
+!> nanopush_estimate_mu_from_icor (Fig 4.5); N observations combined, with a chi^2 consistency
+!> check (the numbers of `nanopush fit-icor`): nanopush_estimate_mu_batch.
+!> Scene keys fitted to observed motion (the numbers of `nanopush fit`): nanopush_fit.
 !>
 !> Your own ODE with the C++ Bulirsch-Stoer (nanopush_integrate): write a subroutine with the
 !> interface nanopush_rhs_fn,
@@ -76,6 +78,9 @@ module nanopush
   !> Solvers of the constrained cubic (eq 5.4) for nanopush_icor_cubic_roots.
   integer, parameter, public :: NANOPUSH_CUBIC_BRENT = 1, NANOPUSH_CUBIC_EIGEN = 2
 
+  !> Pressure distributions of nanopush_estimate_mu_batch (thesis 4.2.3.1 and 4.2.3.2).
+  integer, parameter, public :: NANOPUSH_PRESSURE_KNOWN = 0, NANOPUSH_PRESSURE_UNKNOWN = 1
+
   !> A scene (object, push, initial state, solver settings): opaque C handle.
   type, public :: nanopush_scene
     private
@@ -111,6 +116,7 @@ module nanopush
             nanopush_icor_constrained_force, nanopush_icor_impulsive, nanopush_icor_cubic_roots, &
             nanopush_icor_nanorod, nanopush_icor_rod_properties
   public :: nanopush_estimate_mu_from_force, nanopush_estimate_mu_from_icor
+  public :: nanopush_estimate_mu_batch, nanopush_fit
 
   !> Set a scene key after loading, validated as in the file (docs/scenes.md):
   !> call nanopush_scene_set(scene, "surface.mu", 0.1_dp, stat=stat); a value may be real(dp),
@@ -402,6 +408,28 @@ module nanopush
       real(c_double), value, intent(in) :: force, sigma_force, R, sigma_R, sigma_L, sigma_H
       real(c_double), intent(inout) :: mu, sigma, load, derivatives(4)
     end function c_estimate_mu_from_icor
+    integer(c_int) function c_estimate_mu_batch(error, rod, n, force, sigma_force, yn, sigma_yn, R, sigma_R, &
+        pressure, sigma_L, sigma_H, alpha, result, dof, consistent, rows, equations) &
+        bind(C, name="nanopush_estimate_mu_batch")
+      import :: c_int, c_ptr, c_double
+      type(c_ptr), value, intent(in) :: error
+      real(c_double), intent(in) :: rod(6)
+      integer(c_int), value, intent(in) :: n, pressure
+      real(c_double), intent(in) :: force(*), sigma_force(*), yn(*), sigma_yn(*), R(*), sigma_R(*)
+      real(c_double), value, intent(in) :: sigma_L, sigma_H, alpha
+      real(c_double), intent(inout) :: result(11), rows(*)
+      integer(c_int), intent(inout) :: dof, consistent, equations(*)
+    end function c_estimate_mu_batch
+    integer(c_int) function c_fit_trajectory(error, scene, data_path, free_keys, law, sigma, nfree, values, &
+        stderrs, summary, converged, json, json_size, json_length) bind(C, name="nanopush_fit_trajectory")
+      import :: c_int, c_ptr, c_double, c_char
+      type(c_ptr), value, intent(in) :: error, scene
+      character(kind=c_char), intent(in) :: data_path(*), free_keys(*), law(*), sigma(*)
+      integer(c_int), value, intent(in) :: nfree, json_size
+      real(c_double), intent(inout) :: values(*), stderrs(*), summary(6)
+      integer(c_int), intent(inout) :: converged, json_length
+      character(kind=c_char), intent(inout) :: json(*)
+    end function c_fit_trajectory
     integer(c_int) function c_strlen(s) bind(C, name="strlen")
       import :: c_int, c_ptr
       type(c_ptr), value, intent(in) :: s
@@ -543,7 +571,7 @@ contains
   !> allocated: traj(:, i) = (t, x, y, theta, vx, vy, omega, fx, fy, mf) at output time i.
   !>   engine "cxx" or "f77", method "faithful", "modern" or "dop853" (Dormand-Prince 8(5,3),
   !>   double, not under the coulomb law) (or "cvode": rough scenes, coulomb law, engine cxx)
-  !>   (default: the scene's); law, for rough scenes, "thesis" or "coulomb"
+  !>   (default: the scene's); law, for rough scenes, "thesis", "printed" or "coulomb"
   !>   (default: the scene's [surface] law);
   !>   rtol (default or 0: the scene's); atol (default or < 0: the scene's; 0 = automatic);
   !>   counts(3) = (RHS evaluations, accepted steps, rejected steps);
@@ -1016,6 +1044,179 @@ contains
     call finish(err, "nanopush_estimate_mu_from_icor", msg, stat)
     if (present(errmsg)) errmsg = msg
   end subroutine nanopush_estimate_mu_from_icor
+
+  !> N observations combined (C: nanopush_estimate_mu_batch; docs/fitting.md, `nanopush fit-icor`).
+  !> force(n), sigma_force(n) [N]; yn, sigma_yn and R, sigma_R [m] optional arrays of size n (a NaN
+  !> in yn or R: not observed in that row; each row needs one of them); pressure
+  !> NANOPUSH_PRESSURE_KNOWN or NANOPUSH_PRESSURE_UNKNOWN; sigma_L [m], sigma_H [J] systematic
+  !> (default 0); alpha the consistency check's significance level (default 0.01).
+  !> Outputs: mu and sigma = sqrt(sigma_stat^2 + sigma_syst^2); optional sigma_stat, sigma_syst,
+  !> sigma_scaled (Birge-scaled), chi2_dof and p_value (NaN for n = 1), consistent, and per row
+  !> (allocated to n) row_mu, row_sigma, row_weight, row_pull and equations (8: eq 4.8, 10: eq 4.10,
+  !> 11: eq 4.11). On failure every real output is NaN (arrays allocated to 0).
+  subroutine nanopush_estimate_mu_batch(rod, force, sigma_force, pressure, mu, sigma, yn, sigma_yn, R, sigma_R, &
+                                        sigma_L, sigma_H, alpha, sigma_stat, sigma_syst, sigma_scaled, chi2_dof, &
+                                        p_value, consistent, row_mu, row_sigma, row_weight, row_pull, equations, &
+                                        stat, errmsg)
+    real(dp), intent(in) :: rod(6), force(:), sigma_force(:)
+    integer, intent(in) :: pressure
+    real(dp), intent(out) :: mu, sigma
+    real(dp), intent(in), optional :: yn(:), sigma_yn(:), R(:), sigma_R(:), sigma_L, sigma_H, alpha
+    real(dp), intent(out), optional :: sigma_stat, sigma_syst, sigma_scaled, chi2_dof, p_value
+    logical, intent(out), optional :: consistent
+    real(dp), allocatable, intent(out), optional :: row_mu(:), row_sigma(:), row_weight(:), row_pull(:)
+    integer, allocatable, intent(out), optional :: equations(:)
+    integer, intent(out), optional :: stat
+    character(len=:), allocatable, intent(out), optional :: errmsg
+    type(c_ptr) :: err
+    character(len=:), allocatable :: msg
+    real(c_double) :: res(11)
+    real(c_double), allocatable :: y(:), sy(:), rr(:), sr(:), rows(:)
+    integer(c_int), allocatable :: eq(:)
+    integer(c_int) :: d, c
+    integer :: n, m, st
+    character(len=12) :: nbuf
+    n = size(force)
+    res = nan()
+    d = 0
+    c = 0
+    m = 0
+    msg = ""
+    st = NANOPUSH_OK
+    ! Array sizes are checked here (C reads n of each); a mismatch is bad input.
+    if (size(sigma_force) /= n) msg = "sigma_force"
+    if (present(yn) .neqv. present(sigma_yn)) msg = "yn/sigma_yn (give both or neither)"
+    if (present(R) .neqv. present(sigma_R)) msg = "R/sigma_R (give both or neither)"
+    if (present(yn)) then
+      if (size(yn) /= n) msg = "yn"
+    end if
+    if (present(sigma_yn)) then
+      if (size(sigma_yn) /= n) msg = "sigma_yn"
+    end if
+    if (present(R)) then
+      if (size(R) /= n) msg = "R"
+    end if
+    if (present(sigma_R)) then
+      if (size(sigma_R) /= n) msg = "sigma_R"
+    end if
+    allocate (y(n), sy(n), rr(n), sr(n), rows(4 * n), eq(n))
+    y = nan()
+    sy = 0.0_dp
+    rr = nan()
+    sr = 0.0_dp
+    rows = nan()
+    eq = 0
+    if (present(yn) .and. present(sigma_yn) .and. len(msg) == 0) then
+      y = yn
+      sy = sigma_yn
+    end if
+    if (present(R) .and. present(sigma_R) .and. len(msg) == 0) then
+      rr = R
+      sr = sigma_R
+    end if
+    if (len(msg) > 0) then
+      st = NANOPUSH_BAD_INPUT
+      write (nbuf, '(i0)') n
+      msg = msg // ": size does not match size(force) = " // trim(nbuf)
+      if (present(stat)) then
+        stat = st
+      else
+        error stop "nanopush: nanopush_estimate_mu_batch: " // msg
+      end if
+    else
+      err = c_new_error()
+      if (c_estimate_mu_batch(err, rod, int(n, c_int), force, sigma_force, y, sy, rr, sr, int(pressure, c_int), &
+                              opt_real(sigma_L, 0.0_dp), opt_real(sigma_H, 0.0_dp), opt_real(alpha, 0.01_dp), res, &
+                              d, c, rows, eq) /= 0) continue  ! the status is in err
+      call finish(err, "nanopush_estimate_mu_batch", msg, st)
+      if (present(stat)) then
+        stat = st
+      else if (st /= NANOPUSH_OK) then
+        error stop "nanopush: nanopush_estimate_mu_batch: " // msg
+      end if
+    end if
+    if (st == NANOPUSH_OK) m = n
+    mu = res(1)
+    sigma = res(2)
+    if (present(sigma_stat)) sigma_stat = res(3)
+    if (present(sigma_syst)) sigma_syst = res(4)
+    if (present(sigma_scaled)) sigma_scaled = res(5)
+    if (present(chi2_dof)) chi2_dof = res(7)
+    if (present(p_value)) p_value = res(8)
+    if (present(consistent)) consistent = st == NANOPUSH_OK .and. c /= 0
+    if (present(row_mu)) row_mu = rows(1:m)
+    if (present(row_sigma)) row_sigma = rows(n + 1:n + m)
+    if (present(row_weight)) row_weight = rows(2 * n + 1:2 * n + m)
+    if (present(row_pull)) row_pull = rows(3 * n + 1:3 * n + m)
+    if (present(equations)) equations = int(eq(1:m))
+    if (present(errmsg)) errmsg = msg
+  end subroutine nanopush_estimate_mu_batch
+
+  ! ---- Trajectory fit (C: nanopush_fit_trajectory; docs/fitting.md, `nanopush fit`) ----------
+
+  !> Fit the comma-separated scene keys `free` ("surface.mu" or "surface.mu,surface.f_vdw") to the
+  !> observations in the CSV file `data` (t and any of x, y, theta with sigma_ columns), starting
+  !> from the scene's values; law ("thesis" | "coulomb", rough scenes) and sigma ("x=2e-9,theta=0.01",
+  !> for columns without a sigma column) as `nanopush fit`. values(:) and stderrs(:) are allocated
+  !> to the number of free keys; a stderr is NaN where the data do not determine that key
+  !> separately (the JSON names the combination they do determine) or the fit did not converge.
+  !> Optional: chi2_dof, converged (a non-converged fit is not an error: its last state is
+  !> returned), summary(6) = (chi2, chi2/dof, dof, iterations, forward solves, identifiable 1/0),
+  !> json (the summary of `nanopush fit --json`, at most 1 MiB). On failure values and stderrs
+  !> are allocated to size 0 and the real outputs are NaN.
+  subroutine nanopush_fit(scene, data, free, values, stderrs, law, sigma, chi2_dof, converged, summary, json, &
+                          stat, errmsg)
+    type(nanopush_scene), intent(in) :: scene
+    character(len=*), intent(in) :: data, free
+    real(dp), allocatable, intent(out) :: values(:), stderrs(:)
+    character(len=*), intent(in), optional :: law, sigma
+    real(dp), intent(out), optional :: chi2_dof, summary(6)
+    logical, intent(out), optional :: converged
+    character(len=:), allocatable, intent(out), optional :: json
+    integer, intent(out), optional :: stat
+    character(len=:), allocatable, intent(out), optional :: errmsg
+    type(c_ptr) :: err
+    character(len=:), allocatable :: msg
+    real(c_double), allocatable :: v(:), e(:)
+    real(c_double) :: s(6)
+    integer(c_int) :: conv, jlen, jsize
+    character(kind=c_char), allocatable :: buf(:)
+    integer :: nfree, i, st
+    nfree = 1
+    do i = 1, len(free)
+      if (free(i:i) == ",") nfree = nfree + 1
+    end do
+    allocate (v(nfree), e(nfree))
+    v = nan()
+    e = nan()
+    s = nan()
+    conv = 0
+    jlen = 0
+    jsize = 0
+    if (present(json)) jsize = 1048576
+    allocate (buf(max(jsize, 1)))
+    buf(1) = c_null_char
+    err = c_new_error()
+    if (c_fit_trajectory(err, scene%ptr, to_c(data), to_c(free), to_c(opt(law)), to_c(opt(sigma)), &
+                         int(nfree, c_int), v, e, s, conv, buf, jsize, jlen) /= 0) continue  ! the status is in err
+    call finish(err, "nanopush_fit", msg, st)
+    if (present(stat)) then
+      stat = st
+    else if (st /= NANOPUSH_OK) then
+      error stop "nanopush: nanopush_fit: " // msg
+    end if
+    if (st == NANOPUSH_OK) then
+      values = v
+      stderrs = e
+    else
+      allocate (values(0), stderrs(0))
+    end if
+    if (present(chi2_dof)) chi2_dof = s(2)
+    if (present(summary)) summary = s
+    if (present(converged)) converged = st == NANOPUSH_OK .and. conv /= 0
+    if (present(json)) json = from_c(buf, int(min(jlen, max(jsize - 1, 0))))
+    if (present(errmsg)) errmsg = msg
+  end subroutine nanopush_fit
 
   ! ---- helpers --------------------------------------------------------------------------
 

@@ -30,7 +30,7 @@ extern "C" {
 #endif
 
 /* Version of this interface: major * 10000 + minor * 100 + patch. */
-#define NANOPUSH_API_VERSION 500
+#define NANOPUSH_API_VERSION 600
 int nanopush_get_api_version(void);
 
 /* ---- Status codes ---------------------------------------------------------------------- */
@@ -181,8 +181,9 @@ int nanopush_integrate(nanopush_error error, nanopush_integrator integrator, nan
                        double t0, double* y, int nout, const double* tout, double* yout, int64_t* counts);
 
 /* Run with every setting, as `nanopush run` does: nanopush_run_scene plus
- *   law: friction law of rough scenes ([surface] kind = "rough"): "thesis" (eq 3.40 sign law) or
- *        "coulomb" (event-located stick-slip); NULL or "" = the scene's. Ignored by smooth scenes.
+ *   law: friction law of rough scenes ([surface] kind = "rough"): "thesis" (eq 3.40 sign law),
+ *        "printed" (the same with eqs 3.45-3.48 as printed) or "coulomb" (event-located
+ *        stick-slip); NULL or "" = the scene's. Ignored by smooth scenes.
  *   method may also be "cvode" (SUNDIALS cross-check: rough scenes, coulomb law, engine cxx). */
 nanopush_trajectory nanopush_run_scene_ex(nanopush_error error, nanopush_scene scene, const char* engine,
                                           const char* method, const char* law, double rtol, double atol);
@@ -312,6 +313,70 @@ int nanopush_estimate_mu_from_force(nanopush_error error, const double* rod, dou
 int nanopush_estimate_mu_from_icor(nanopush_error error, const double* rod, double force, double sigma_force,
                                    double R, double sigma_R, double sigma_L, double sigma_H,
                                    double* mu, double* sigma, double* load, double* derivatives);
+
+/* ---- Friction coefficient from N observations in batch (docs/fitting.md, `nanopush fit-icor`) ---- */
+#define NANOPUSH_PRESSURE_KNOWN 0   /* thesis 4.2.3.1: eq 4.10 where R is observed, else eq 4.8 */
+#define NANOPUSH_PRESSURE_UNKNOWN 1 /* thesis 4.2.3.2: eq 4.11 (needs yn), eq 4.8 where R is not observed */
+#define NANOPUSH_BATCH_RESULT_SIZE 11
+/* mu of every observation for one pressure distribution, combined by inverse-variance weighting,
+ * with a chi^2 consistency check; the numbers of `nanopush fit-icor` (docs/fitting.md says what
+ * the combined sigma means and when observations are inconsistent).
+ *   rod[6]        as nanopush_estimate_mu_from_force
+ *   n             number of observations, >= 1
+ *   force[n], sigma_force[n]  push forces [N] (> 0) and their standard uncertainties [N]
+ *   yn[n], sigma_yn[n]        push offsets from the centre of mass [m] (0..L/2); NaN in yn: not
+ *                 observed in that row; yn = NULL: none observed (then sigma_yn may be NULL)
+ *   R[n], sigma_R[n]          observed iCOR distances [m] (> 0), NaN / NULL as for yn
+ *                 Each row needs yn or R; each row's propagated sigma of mu must be > 0.
+ *   pressure      NANOPUSH_PRESSURE_KNOWN or NANOPUSH_PRESSURE_UNKNOWN
+ *   sigma_L [m], sigma_H [J]  rod length and Hamaker constant uncertainties (>= 0), systematic:
+ *                 added after the combination, never divided by sqrt(n)
+ *   alpha         significance level of the consistency check, in (0, 1) (the CLI's 0.01)
+ *   result[NANOPUSH_BATCH_RESULT_SIZE] out: (mu, sigma = sqrt(stat^2 + syst^2), sigma_stat,
+ *                 sigma_syst, sigma_scaled (Birge: sigma_stat sqrt(max(1, chi2/dof)) with syst.),
+ *                 chi2, chi2/dof (NaN for n = 1), p-value (NaN for n = 1), load W [N],
+ *                 dmu/dL [1/m], dmu/dH [1/J])
+ *   dof           out: n - 1;  consistent out: 1 if p-value >= alpha (or n = 1), else 0
+ *   rows          out: column-major (n, 4): per observation mu, its sigma, its normalised weight,
+ *                 its pull (mu_i - mu) / sigma_i
+ *   equations[n]  out: the thesis equation each row used: 8 (eq 4.8), 10 (4.10) or 11 (4.11)
+ * Any output pointer may be NULL. Bad input: NANOPUSH_BAD_INPUT, the message naming the row from 1
+ * ("row 2: yn = 4e-07: must be in [0, 2.95e-07] ..."); NULL rod, force or sigma_force (or a
+ * sigma array missing beside its values): NANOPUSH_NULL_HANDLE. A failed call writes no output. */
+int nanopush_estimate_mu_batch(nanopush_error error, const double* rod, int n, const double* force,
+                               const double* sigma_force, const double* yn, const double* sigma_yn,
+                               const double* R, const double* sigma_R, int pressure, double sigma_L,
+                               double sigma_H, double alpha, double* result, int* dof, int* consistent,
+                               double* rows, int* equations);
+
+/* ---- Trajectory fit (docs/fitting.md, `nanopush fit`) ---------------------------------------- */
+#define NANOPUSH_FIT_SUMMARY_SIZE 6
+/* Fit scene keys to observed motion: weighted least squares over the forward model, starting
+ * from the scene's values (the scene itself is not changed); the numbers of `nanopush fit`.
+ *   scene        the model (law and keys as loaded or set)
+ *   data_path    CSV file: t [s] and any of x, y [m], theta [rad], with sigma_x, sigma_y,
+ *                sigma_theta columns (docs/fitting.md)
+ *   free_keys    comma-separated scene keys to fit, e.g. "surface.mu" or "surface.mu,surface.f_vdw"
+ *   law          rough scenes: "thesis", "printed" or "coulomb"; NULL or "" = the scene's
+ *   sigma        per-column standard deviations for columns without a sigma column,
+ *                "x=2e-9,theta=0.01"; NULL or "" = none (as `--sigma`)
+ *   nfree        size of values and stderrs (>= number of free keys, else NANOPUSH_BUFFER_TOO_SMALL)
+ *   values       out: the estimates, in the order of free_keys (SI)
+ *   stderrs      out: their standard errors; NaN where the data do not determine the key
+ *                separately (identifiability: the JSON names the combination they determine)
+ *                or the fit did not converge
+ *   summary[NANOPUSH_FIT_SUMMARY_SIZE] out: (chi2, chi2/dof, dof, iterations, forward solves,
+ *                identifiable 1/0)
+ *   converged    out: 1 if the optimiser converged, else 0 (the estimates are then its last state;
+ *                a non-converged fit is not an error)
+ *   json[json_size] out: the JSON summary of `nanopush fit --json` (truncated, NUL-terminated);
+ *                json_length out: its full length (query with json = NULL, json_size = 0)
+ * Any output pointer may be NULL. Bad data or options: NANOPUSH_BAD_INPUT naming the row and
+ * column or the key; NULL scene, data_path or free_keys: NANOPUSH_NULL_HANDLE. A failed call
+ * writes no output. */
+int nanopush_fit_trajectory(nanopush_error error, nanopush_scene scene, const char* data_path, const char* free_keys,
+                            const char* law, const char* sigma, int nfree, double* values, double* stderrs,
+                            double* summary, int* converged, char* json, int json_size, int* json_length);
 
 #ifdef __cplusplus
 }

@@ -97,6 +97,10 @@ if(BUILD_SHARED_LIBS)
 else()
   # Our libraries in link order (each needs only those after it), then the dependencies.
   set(_ours capi engines scenes models numerics bridge f77)
+  # The C API's trajectory fit (capi_fit.cpp) needs the fitting layer and the outputs below it.
+  if(TARGET nanopush_fitting)
+    set(_ours capi fitting outputs engines scenes models numerics bridge f77)
+  endif()
   set(_external "")
   set(_seen "")
   foreach(_t tomlplusplus::tomlplusplus)

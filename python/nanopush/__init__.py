@@ -18,6 +18,8 @@ run, compare, Result             a scene integrated by the C++ or the F77 engine
 friction_wrench, friction_from_velocity   closed-form friction over a rectangle
 icor                             iCOR formulas of thesis ch. 4-5, the cubic, dynamic iCOR
 estimate_mu                      mu from measurements, with its uncertainty
+estimate_mu_batch, MuBatch       mu from N observations combined, chi^2 check (fit-icor)
+fit, FitResult, synthesize       scene keys fitted to observed motion (docs/fitting.md)
 sweep                            many points on C++ threads (docs/sweeps.md)
 InputError (a ValueError), SolverError (a RuntimeError)   the library's errors
 
@@ -28,7 +30,9 @@ import os as _os
 import pathlib as _pathlib
 
 from ._nanopush import (  # noqa: F401  (re-exported)
+    FitResult,
     InputError,
+    MuBatch,
     MuEstimate,
     Result,
     Scene,
@@ -36,9 +40,12 @@ from ._nanopush import (  # noqa: F401  (re-exported)
     Wrench,
     __version__,
     estimate_mu,
+    estimate_mu_batch,
+    fit,
     friction_from_velocity,
     friction_wrench,
     scene_keys,
+    synthesize,
 )
 from . import _nanopush
 from . import icor  # noqa: F401
@@ -46,6 +53,7 @@ from . import icor  # noqa: F401
 __all__ = [
     "Scene", "presets", "scenes_dir", "scene_keys", "run", "compare", "Result", "Comparison",
     "friction_wrench", "friction_from_velocity", "Wrench", "icor", "estimate_mu", "MuEstimate",
+    "estimate_mu_batch", "MuBatch", "fit", "FitResult", "synthesize",
     "sweep", "SweepResult", "InputError", "SolverError", "__version__",
 ]
 
@@ -160,44 +168,84 @@ def run(scene, engine=None, method=None, law=None, rtol=None, atol=None, precisi
 
 class Comparison:
     """The two engines side by side (nanopush.compare): ``cxx`` and ``f77`` (Results),
-    ``columns`` (per trajectory column except t: max_abs_diff, unit, relative = max |diff| /
-    scale, scale = max |value|, ok), ``tolerance`` and ``agree`` (every column within it)."""
+    ``columns`` (per trajectory column except t), ``kind``, ``tolerance`` and ``agree``.
 
-    def __init__(self, cxx, f77, columns, tolerance):
-        self.cxx, self.f77, self.columns, self.tolerance = cxx, f77, columns, tolerance
+    kind "same-steps" (method faithful, or a ``tolerance`` given): per column max_abs_diff,
+    unit, relative = max |diff| / scale, scale = max |value|, ok (relative <= tolerance).
+    kind "convergence" (modern, dop853): per column error_cxx and error_f77 (each engine
+    against itself at rtol 1e-14), diff and diff_tight (the engines apart at rtol and at
+    1e-14), scale (largest norm of the column's vector), ok (diff_tight <= error_cxx +
+    error_f77 + 1e-13), all relative to scale; tolerance is None. docs/rough.md."""
+
+    def __init__(self, cxx, f77, columns, tolerance, kind="same-steps"):
+        self.cxx, self.f77, self.columns, self.tolerance, self.kind = cxx, f77, columns, tolerance, kind
         self.agree = len(cxx) == len(f77) and all(c["ok"] for c in columns.values())
 
     def __bool__(self):
         return self.agree
 
     def __repr__(self):
+        verdict = "agree" if self.agree else "DISAGREE"
+        if self.kind == "convergence":
+            worst = max((c["diff_tight"] for c in self.columns.values()), default=0.0)
+            return (f"<nanopush.Comparison {self.cxx.engine} vs {self.f77.engine}: by convergence, tight runs "
+                    f"{worst:.3g} apart -> {verdict}>")
         worst = max((c["relative"] for c in self.columns.values()), default=0.0)
         return (f"<nanopush.Comparison {self.cxx.engine} vs {self.f77.engine}: worst relative deviation "
-                f"{worst:.3g}, tolerance {self.tolerance:.3g} -> {'agree' if self.agree else 'DISAGREE'}>")
+                f"{worst:.3g}, tolerance {self.tolerance:.3g} -> {verdict}>")
 
 
-def compare(scene, method="faithful", rtol=None, atol=None, tolerance=None):
-    """Run a scene with both engines, the C++ (``method``, faithful or modern) and the F77,
-    under the thesis friction law (the one both implement), and compare them column by
-    column as ``nanopush compare`` does: the largest deviation relative to the column's
-    largest magnitude must be within ``tolerance`` (default 100 rtol). Returns a Comparison
-    (true when the engines agree)."""
+# The reference rtol of a convergence comparison and the column groups that share a scale
+# (as nanopush compare: drivers/cmd_compare.cpp).
+_TIGHTEST = 1e-14
+_GROUPS = [["x", "y"], ["theta"], ["vx", "vy"], ["omega"], ["fx", "fy"], ["mf"]]
+
+
+def compare(scene, method="faithful", rtol=None, atol=None, tolerance=None, law=None):
+    """Run a scene with both engines, the C++ (``method``: faithful, modern or dop853) and
+    the F77, under ``law`` (thesis or printed, the laws both implement; default the scene's,
+    thesis for a coulomb scene), and judge them as ``nanopush compare`` does: faithful takes
+    the F77 steps, so every column must agree within ``tolerance`` (default 100 rtol);
+    modern and dop853 are judged by convergence (see Comparison). Returns a Comparison (true
+    when the engines agree)."""
     import numpy as np
 
     sc = _as_scene(scene)
-    a = run(sc, engine="cxx", method=method, law="thesis", rtol=rtol, atol=atol)
-    b = run(sc, engine="f77", law="thesis", rtol=rtol, atol=atol)
-    tol = tolerance if tolerance is not None and tolerance > 0 else 100 * a.rtol
+    if law is None:
+        law = sc.info()["surface"]["law"] if "surface" in sc.info() else "thesis"
+        if law == "coulomb":
+            law = "thesis"
+    if law == "coulomb":
+        raise _input_error("law = coulomb: must be thesis or printed: the F77 engine implements only those. "
+                           "The coulomb law's independent check is its CVODE cross-check: "
+                           "run(scene, law='coulomb', method='cvode') (docs/rough.md)", "law")
+    a = run(sc, engine="cxx", method=method, law=law, rtol=rtol, atol=atol)
+    b = run(sc, engine="f77", law=law, rtol=rtol, atol=atol)
     cols = {}
+    if method == "faithful" or (tolerance is not None and tolerance > 0) or a.rtol < 10 * _TIGHTEST:
+        tol = tolerance if tolerance is not None and tolerance > 0 else 100 * a.rtol
+        if len(a) == len(b):
+            for name in Result.columns[1:]:
+                x, y = getattr(a, name), getattr(b, name)
+                maxabs = float(np.max(np.abs(x - y))) if len(x) else 0.0
+                scale = float(max(np.max(np.abs(x)), np.max(np.abs(y)))) if len(x) else 0.0
+                rel = maxabs / scale if scale > 0 else maxabs
+                cols[name] = {"max_abs_diff": maxabs, "unit": Result.units[name], "relative": rel,
+                              "scale": scale, "ok": rel <= tol}
+        return Comparison(a, b, cols, tol)
+    tight_atol = atol * (_TIGHTEST / a.rtol) if atol is not None and atol > 0 else atol
+    a2 = run(sc, engine="cxx", method=method, law=law, rtol=_TIGHTEST, atol=tight_atol)
+    b2 = run(sc, engine="f77", law=law, rtol=_TIGHTEST, atol=tight_atol)
     if len(a) == len(b):
-        for name in Result.columns[1:]:
-            x, y = getattr(a, name), getattr(b, name)
-            maxabs = float(np.max(np.abs(x - y))) if len(x) else 0.0
-            scale = float(max(np.max(np.abs(x)), np.max(np.abs(y)))) if len(x) else 0.0
-            rel = maxabs / scale if scale > 0 else maxabs
-            cols[name] = {"max_abs_diff": maxabs, "unit": Result.units[name], "relative": rel,
-                          "scale": scale, "ok": rel <= tol}
-    return Comparison(a, b, cols, tol)
+        for group in _GROUPS:
+            scale = max(float(np.max(np.sqrt(sum(getattr(r, c) ** 2 for c in group)))) for r in (b, b2))
+            s = scale if scale > 0 else 1.0
+            for c in group:
+                d = lambda p, q: float(np.max(np.abs(getattr(p, c) - getattr(q, c)))) / s
+                ea, eb, diff, diff2 = d(a, a2), d(b, b2), d(a, b), d(a2, b2)
+                cols[c] = {"error_cxx": ea, "error_f77": eb, "diff": diff, "diff_tight": diff2,
+                           "unit": Result.units[c], "scale": scale, "ok": diff2 <= ea + eb + 1e-13}
+    return Comparison(a, b, cols, None, kind="convergence")
 
 
 # ---- sweeps ---------------------------------------------------------------------------

@@ -44,6 +44,8 @@ PyObject* g_solver_error = nullptr;
 }  // namespace
 
 py::object make_result(const Trajectory& tr);  // run.cpp
+void register_fit_icor(py::module_& m);     // fit_icor.cpp
+void register_fit(py::module_& m);          // fit.cpp
 
 void register_errors(py::module_& m) {
   // nanopush.InputError(ValueError): bad input, the library's "field = value: requirement".
@@ -112,6 +114,8 @@ PYBIND11_MODULE(_nanopush, m) {
   register_friction(m);
   register_icor(m);
   register_estimate_mu(m);
+  register_fit_icor(m);
+  register_fit(m);
   register_sweep(m);
   m.attr("__version__") = NANOPUSH_VERSION;
 }

@@ -135,7 +135,7 @@ program test_fortran_errors
 
   ! Status names.
   call check(nanopush_status_name(NANOPUSH_BAD_INPUT) == "bad input", "status name")
-  call check(nanopush_api_version() == 500, "API version 0.5.0")
+  call check(nanopush_api_version() == 600, "API version 0.6.0")
 
   if (failures > 0) error stop "test_fortran_errors: failures above"
   print '(a)', "all checks hold"

@@ -32,11 +32,12 @@ class Cli:
     def error(self, *args, expect=2, input=None):
         """The message of a failing command: stderr without the 'nanopush: error: ' prefix."""
         p = self(*args, expect=expect, input=input)
-        line = p.stderr.strip().splitlines()[-1]
-        for prefix in ("nanopush: error: ", "nanopush: solver failure: "):
-            if line.startswith(prefix):
-                return line[len(prefix):]
-        return line
+        lines = p.stderr.strip().splitlines()
+        for line in lines:  # the message line; diagnosis lines may follow it
+            for prefix in ("nanopush: error: ", "nanopush: solver failure: "):
+                if line.startswith(prefix):
+                    return line[len(prefix):]
+        return lines[-1]
 
 
 @pytest.fixture(scope="session")

@@ -83,23 +83,41 @@ def test_result_arrays_and_dict():
     assert r.status == "success" and r.complete and r.wall_time > 0
 
 
-@pytest.mark.parametrize("method", ["faithful", "modern"])
-def test_compare_matches_cli(cli, method):
-    p = cli("compare", "fig3_6c", "--method", method)
-    c = nanopush.compare("fig3_6c", method=method)
-    assert c.agree and bool(c)
+@pytest.mark.parametrize("method", ["faithful", "modern", "dop853"])
+@pytest.mark.parametrize("scene,law", [("fig3_6c", None), ("fig3_18", "printed")])
+def test_compare_matches_cli(cli, method, scene, law):
+    args = ("compare", scene, "--method", method) + (("--law", law) if law else ())
+    p = cli(*args)
+    c = nanopush.compare(scene, method=method, law=law)
+    assert c.agree and bool(c) and "engines agree" in p.stdout
     m = re.search(r"RHS evaluations (\d+) vs (\d+)", p.stdout)
     assert (c.cxx.nfcn, c.f77.nfcn) == (int(m.group(1)), int(m.group(2)))
     lines = {ln[2:10].strip(): ln for ln in p.stdout.splitlines() if ln.startswith("  ") and len(ln) > 52}
     assert set(c.columns) <= set(lines)
+    if method == "faithful":
+        assert c.kind == "same-steps"
+        for name, col in c.columns.items():
+            ln = lines[name]  # fixed-width columns: name, max |diff|, unit, max |diff|/scale, scale
+            assert f"{col['max_abs_diff']:.4g}" == f"{float(ln[10:26]):.4g}", name
+            assert ln[26:36].strip() == col["unit"]
+            assert f"{col['relative']:.4g}" == f"{float(ln[36:54]):.4g}", name
+            assert f"{col['scale']:.4g}" == f"{float(ln[54:].split()[0]):.4g}", name
+        tol = re.search(r"tolerance on max \|diff\|/scale: (\S+)", p.stdout).group(1)
+        assert c.tolerance == pytest.approx(float(tol), rel=1e-4)
+        return
+    assert c.kind == "convergence" and c.tolerance is None
     for name, col in c.columns.items():
-        ln = lines[name]  # fixed-width columns: name, max |diff|, unit, max |diff|/scale, scale
-        assert f"{col['max_abs_diff']:.4g}" == f"{float(ln[10:26]):.4g}", name
-        assert ln[26:36].strip() == col["unit"]
-        assert f"{col['relative']:.4g}" == f"{float(ln[36:52]):.4g}", name
-        assert f"{col['scale']:.4g}" == f"{float(ln[52:].split()[0]):.4g}", name
-    tol = re.search(r"tolerance on max \|diff\|/scale: (\S+)", p.stdout).group(1)
-    assert c.tolerance == pytest.approx(float(tol), rel=1e-4)
+        ln = lines[name]  # fixed-width: name, error cxx, error f77, |cxx - f77|, the same tight, scale
+        for key, lo, hi in (("error_cxx", 10, 24), ("error_f77", 24, 38), ("diff", 38, 54), ("diff_tight", 54, 72)):
+            assert f"{col[key]:.3g}" == f"{float(ln[lo:hi]):.3g}", (name, key)
+        assert f"{col['scale']:.3g}" == f"{float(ln[72:].split()[0]):.3g}", name
+
+
+def test_compare_refuses_the_coulomb_law(cli):
+    msg = cli.error("compare", "fig3_18", "--law", "coulomb")
+    with pytest.raises(nanopush.InputError, match="CVODE cross-check"):
+        nanopush.compare("fig3_18", law="coulomb")
+    assert "--method cvode" in msg
 
 
 def test_bad_settings_are_input_errors(cli):

@@ -12,10 +12,11 @@ allowed() {  # the layers a layer may include
     engines)  echo "numerics models scenes engines" ;;
     outputs)  echo "numerics models scenes outputs" ;;
     sweeps)   echo "numerics models scenes engines outputs sweeps" ;;
+    fitting)  echo "numerics models scenes engines outputs fitting" ;;
   esac
 }
 bad=0 checked=0
-for layer in numerics models scenes engines outputs sweeps; do
+for layer in numerics models scenes engines outputs sweeps fitting; do
   ok=$(allowed $layer)
   for f in $(find "$layer" "include/nanopush/$layer" -name '*.cpp' -o -name '*.hpp' 2>/dev/null); do
     checked=$((checked + 1))
@@ -34,7 +35,7 @@ for layer in numerics models scenes engines outputs sweeps; do
   done
 done
 # Every file under cxx/ belongs to a layer.
-stray=$(find . -name '*.cpp' -o -name '*.hpp' | grep -vE '^\./(include/nanopush/)?(numerics|models|scenes|engines|outputs|sweeps)/' || true)
+stray=$(find . -name '*.cpp' -o -name '*.hpp' | grep -vE '^\./(include/nanopush/)?(numerics|models|scenes|engines|outputs|sweeps|fitting)/' || true)
 [ -z "$stray" ] || { echo "files outside the layers: $stray"; bad=$((bad + 1)); }
 echo "checked $checked files, $bad violations"
 [ $bad -eq 0 ] && echo "layers: ok"

@@ -1,0 +1,232 @@
+// Observations: the data CSV (t, any of x, y, theta, their sigmas), its checks, synthetic
+// data from the forward model.
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <system_error>
+
+#include "nanopush/fitting/fit.hpp"
+#include "nanopush/numerics/error.hpp"
+#include "nanopush/outputs/io.hpp"
+
+namespace nanopush::fit {
+
+std::size_t Observations::count() const {
+  std::size_t n = 0;
+  for (int c = 0; c < 3; ++c)
+    if (has[static_cast<std::size_t>(c)]) n += t.size();
+  return n;
+}
+
+namespace {
+
+std::string trim(std::string_view s) {
+  std::size_t a = 0, b = s.size();
+  while (a < b && (s[a] == ' ' || s[a] == '\t' || s[a] == '\r')) ++a;
+  while (b > a && (s[b - 1] == ' ' || s[b - 1] == '\t' || s[b - 1] == '\r')) --b;
+  return std::string(s.substr(a, b - a));
+}
+
+std::vector<std::string> split(std::string_view line) {
+  std::vector<std::string> out;
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t comma = line.find(',', start);
+    out.push_back(trim(line.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start)));
+    if (comma == std::string_view::npos) break;
+    start = comma + 1;
+  }
+  return out;
+}
+
+int pose_index(std::string_view name) {
+  for (int c = 0; c < 3; ++c)
+    if (name == kPoseColumns[static_cast<std::size_t>(c)]) return c;
+  return -1;
+}
+
+std::string where(const std::string& source, std::size_t row, std::size_t line, const std::string& column) {
+  return source + " row " + std::to_string(row) + " (line " + std::to_string(line) + "), column " + column;
+}
+
+}  // namespace
+
+Observations parse_observations(std::string_view text, const std::string& source, const SigmaOverrides& overrides) {
+  Observations obs;
+  obs.source = source;
+  for (const auto& [col, s] : overrides) {
+    if (pose_index(col) < 0) throw InputError("--sigma", col + "=" + fmt(s), "the column must be x, y or theta");
+    require_positive("--sigma " + col, s, col == "theta" ? "rad" : "m");
+  }
+  // Lines; '#' comments and blank lines are skipped (their numbers still count).
+  std::vector<std::pair<std::size_t, std::string_view>> lines;
+  {
+    std::size_t start = 0, number = 0;
+    while (start <= text.size()) {
+      const std::size_t nl = text.find('\n', start);
+      const std::string_view line = text.substr(start, nl == std::string_view::npos ? std::string_view::npos : nl - start);
+      ++number;
+      const std::string tl = trim(line);
+      if (!tl.empty() && tl[0] != '#') lines.emplace_back(number, line);
+      if (nl == std::string_view::npos) break;
+      start = nl + 1;
+    }
+  }
+  if (lines.empty()) throw InputError(source, "(empty)", "needs a header line: t and any of x, y, theta, sigma_x, ...");
+  const auto header = split(lines[0].second);
+  const std::size_t hline = lines[0].first;
+  int col_t = -1;
+  std::array<int, 3> col_v{-1, -1, -1}, col_s{-1, -1, -1};
+  for (std::size_t j = 0; j < header.size(); ++j) {
+    const std::string& h = header[j];
+    const std::string here = source + " line " + std::to_string(hline) + ", column " + std::to_string(j + 1);
+    int* slot = nullptr;
+    if (h == "t") {
+      slot = &col_t;
+    } else if (const int c = pose_index(h); c >= 0) {
+      slot = &col_v[static_cast<std::size_t>(c)];
+    } else if (h.rfind("sigma_", 0) == 0 && pose_index(h.substr(6)) >= 0) {
+      slot = &col_s[static_cast<std::size_t>(pose_index(h.substr(6)))];
+    } else {
+      throw InputError(here, "\"" + h + "\"", "allowed columns: t, x, y, theta, sigma_x, sigma_y, sigma_theta");
+    }
+    if (*slot >= 0) throw InputError(here, "\"" + h + "\"", "the column appears twice");
+    *slot = static_cast<int>(j);
+  }
+  if (col_t < 0) throw InputError(source + " header", "(no t)", "needs a time column t [s]");
+  for (int c = 0; c < 3; ++c) {
+    const auto cu = static_cast<std::size_t>(c);
+    const std::string name = kPoseColumns[cu];
+    obs.has[cu] = col_v[cu] >= 0;
+    if (col_s[cu] >= 0 && !obs.has[cu])
+      throw InputError(source + " header", "sigma_" + name, "a sigma column needs its value column " + name);
+    const bool over = overrides.count(name) > 0;
+    if (over && !obs.has[cu])
+      throw InputError("--sigma", name, "the data have no column " + name);
+    if (over && col_s[cu] >= 0)
+      throw InputError("--sigma", name, "the data already give sigma_" + name + ": use one or the other");
+    if (obs.has[cu] && !over && col_s[cu] < 0)
+      throw InputError(source + " column " + name, "(no sigma)",
+                       "needs its standard deviation: a column sigma_" + name + " or --sigma " + name + "=VALUE");
+  }
+  if (!obs.has[0] && !obs.has[1] && !obs.has[2])
+    throw InputError(source + " header", "(no pose column)", "needs at least one of the columns x, y, theta");
+  if (lines.size() < 2) throw InputError(source, "(no rows)", "needs at least one data row");
+
+  for (std::size_t r = 1; r < lines.size(); ++r) {
+    const auto cells = split(lines[r].second);
+    const std::size_t line = lines[r].first;
+    if (cells.size() != header.size())
+      throw InputError(source + " row " + std::to_string(r) + " (line " + std::to_string(line) + ")",
+                       std::to_string(cells.size()) + " cells", "the header has " + std::to_string(header.size()));
+    auto number = [&](int j) {
+      const std::string& cell = cells[static_cast<std::size_t>(j)];
+      const std::string col = header[static_cast<std::size_t>(j)];
+      if (cell.empty()) throw InputError(where(source, r, line, col), "(empty)", "missing value: every cell needs a number");
+      double v = 0;
+      const char* b = cell.data();
+      const char* e = b + cell.size();
+      if (*b == '+') ++b;
+      const auto res = std::from_chars(b, e, v);
+      if (res.ec != std::errc() || res.ptr != e)
+        throw InputError(where(source, r, line, col), cell, "not a number");
+      if (!std::isfinite(v)) throw InputError(where(source, r, line, col), cell, "must be a finite number");
+      return v;
+    };
+    const double t = number(col_t);
+    if (!obs.t.empty() && !(t > obs.t.back()))
+      throw InputError(where(source, r, line, "t"), fmt(t),
+                       t == obs.t.back() ? "duplicate time (row " + std::to_string(r - 1) + " has the same): times must be strictly increasing"
+                                         : "unsorted: before row " + std::to_string(r - 1) + "'s t = " + fmt(obs.t.back()) +
+                                               "; times must be strictly increasing");
+    obs.t.push_back(t);
+    for (int c = 0; c < 3; ++c) {
+      const auto cu = static_cast<std::size_t>(c);
+      if (!obs.has[cu]) continue;
+      obs.value[cu].push_back(number(col_v[cu]));
+      double s = 0;
+      if (col_s[cu] >= 0) {
+        s = number(col_s[cu]);
+        if (!(s > 0))
+          throw InputError(where(source, r, line, "sigma_" + std::string(kPoseColumns[cu])), fmt(s),
+                           "a standard deviation must be > 0");
+      } else {
+        s = overrides.at(kPoseColumns[cu]);
+      }
+      obs.sigma[cu].push_back(s);
+    }
+  }
+  return obs;
+}
+
+Observations read_observations(const std::filesystem::path& path, const SigmaOverrides& sigma) {
+  std::error_code ec;
+  const auto st = std::filesystem::status(path, ec);
+  if (ec || !std::filesystem::exists(st)) throw InputError("DATA", path.string(), "no such file");
+  if (!std::filesystem::is_regular_file(st)) throw InputError("DATA", path.string(), "must be a regular file");
+  const auto size = std::filesystem::file_size(path, ec);
+  if (ec || size > (64u << 20)) throw InputError("DATA", path.string(), "must be a file of at most 64 MiB");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot read " + path.string());
+  std::ostringstream s;
+  s << in.rdbuf();
+  return parse_observations(s.str(), path.filename().string(), sigma);
+}
+
+void check_observations(const Observations& obs, const Scene& scene, std::size_t n_free) {
+  const double tend = scene.solver.t_end;
+  for (std::size_t i = 0; i < obs.t.size(); ++i)
+    if (obs.t[i] < 0 || obs.t[i] > tend)
+      throw InputError(obs.source + " row " + std::to_string(i + 1) + ", column t", fmt(obs.t[i]),
+                       "outside the scene's time span [0, " + fmt(tend) + "] s (solver.t_end)");
+  if (obs.count() <= n_free)
+    throw InputError(obs.source, std::to_string(obs.count()) + " observed values",
+                     "too few for " + std::to_string(n_free) + " free parameter" + (n_free == 1 ? "" : "s") +
+                         ": need more values than free parameters");
+}
+
+Observations synthesize(const Scene& scene, const std::array<double, 3>& sigma, std::uint64_t seed,
+                        const std::string& law, const std::vector<double>& times_in, double rtol) {
+  Observations obs;
+  obs.source = "synthetic";
+  obs.t = times_in.empty() ? scene.output_times() : times_in;
+  const ModelPoses m = model_poses(scene, {}, {}, obs.t, law, rtol, false);
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  for (int c = 0; c < 3; ++c) {
+    const auto cu = static_cast<std::size_t>(c);
+    obs.has[cu] = sigma[cu] > 0;
+    if (!obs.has[cu]) continue;
+    require_finite(std::string("sigma_") + kPoseColumns[cu], sigma[cu]);
+  }
+  for (std::size_t i = 0; i < obs.t.size(); ++i)
+    for (int c = 0; c < 3; ++c) {
+      const auto cu = static_cast<std::size_t>(c);
+      if (!obs.has[cu]) continue;
+      obs.value[cu].push_back(m.pose[i][cu] + sigma[cu] * normal(rng));
+      obs.sigma[cu].push_back(sigma[cu]);
+    }
+  return obs;
+}
+
+std::string observations_csv(const Observations& obs) {
+  std::ostringstream s;
+  s << "t";
+  for (int c = 0; c < 3; ++c)
+    if (obs.has[static_cast<std::size_t>(c)]) s << ',' << kPoseColumns[static_cast<std::size_t>(c)] << ",sigma_" << kPoseColumns[static_cast<std::size_t>(c)];
+  s << '\n';
+  for (std::size_t i = 0; i < obs.t.size(); ++i) {
+    s << csv_number(obs.t[i]);
+    for (int c = 0; c < 3; ++c) {
+      const auto cu = static_cast<std::size_t>(c);
+      if (obs.has[cu]) s << ',' << csv_number(obs.value[cu][i]) << ',' << csv_number(obs.sigma[cu][i]);
+    }
+    s << '\n';
+  }
+  return s.str();
+}
+
+}  // namespace nanopush::fit

@@ -1,0 +1,78 @@
+!> nanopush_fit through `use nanopush`: noise-free observations of x from nanopush_run at the true
+!> push force, the fit started 30 % away returns the truth (within 3 standard errors and 1e-5
+!> relative); the JSON summary; bad input as stat + errmsg naming the key.
+!> Usage: capi_test_fit_fortran SCENE.toml WORK_DIR
+program test_fortran_fit
+  use nanopush
+  implicit none
+  integer :: failures = 0, checks = 0, stat, i, u
+  type(nanopush_scene) :: scene
+  real(dp), allocatable :: traj(:, :), values(:), stderrs(:)
+  real(dp) :: truth, chi, summary(6)
+  logical :: conv
+  character(len=:), allocatable :: path, dir, data, json, msg
+  character(len=4096) :: arg
+
+  if (command_argument_count() /= 2) error stop "usage: capi_test_fit_fortran SCENE.toml WORK_DIR"
+  call get_command_argument(1, arg)
+  path = trim(arg)
+  call get_command_argument(2, arg)
+  dir = trim(arg)
+  data = dir // "/fortran_fit_data.csv"
+
+  call nanopush_load_scene(scene, path)
+  call nanopush_scene_set(scene, "solver.t_end", 0.4e-9_dp)
+  call nanopush_scene_set(scene, "solver.samples", 21)
+  call nanopush_run(scene, traj, engine="cxx")
+  open (newunit=u, file=data, status="replace", action="write")
+  write (u, '(a)') "t,x,sigma_x"
+  do i = 1, size(traj, 2)
+    write (u, '(es24.16e3,",",es24.16e3,",2e-9")') traj(NANOPUSH_T, i), traj(NANOPUSH_X, i)
+  end do
+  close (u)
+
+  truth = push_force(scene)
+  call nanopush_scene_set(scene, "push.force", 1.3_dp * truth)
+  call nanopush_fit(scene, data, "push.force", values, stderrs, chi2_dof=chi, converged=conv, summary=summary, &
+                    json=json, stat=stat, errmsg=msg)
+  call check(stat == NANOPUSH_OK, "fit: stat " // msg)
+  call check(size(values) == 1 .and. size(stderrs) == 1, "fit: one estimate")
+  if (size(values) == 1) then
+    call check(abs(values(1) - truth) < 3 * stderrs(1) .and. abs(values(1) / truth - 1) < 1e-5_dp, &
+               "fit: the truth back")
+  end if
+  call check(conv .and. chi < 1e-3_dp .and. summary(5) >= 2 .and. summary(6) == 1, "fit: converged, chi2/dof ~ 0")
+  call check(index(json, '"parameters": {') > 0 .and. index(json, '"converged": true') > 0, "fit: JSON")
+
+  call nanopush_fit(scene, data, "push.nonsense", values, stderrs, stat=stat, errmsg=msg)
+  call check(stat == NANOPUSH_BAD_INPUT .and. index(msg, "push.nonsense") > 0 .and. size(values) == 0, &
+             "bad key: " // msg)
+  call nanopush_fit(scene, dir // "/absent.csv", "push.force", values, stderrs, stat=stat, errmsg=msg)
+  call check(stat == NANOPUSH_BAD_INPUT .and. size(stderrs) == 0, "absent data: " // msg)
+  call nanopush_destroy(scene)
+
+  print '(i0,a,i0,a)', checks, " checks, ", failures, " failures"
+  if (failures > 0) error stop "test_fortran_fit: failures above"
+  print '(a)', "fortran fit: all checks hold"
+
+contains
+
+  !> The scene's push force [N] (push(1) of nanopush_scene_info).
+  real(dp) function push_force(s)
+    type(nanopush_scene), intent(in) :: s
+    real(dp) :: p(4)
+    call nanopush_scene_info(s, push=p)
+    push_force = p(1)
+  end function push_force
+
+  subroutine check(cond, what)
+    logical, intent(in) :: cond
+    character(len=*), intent(in) :: what
+    checks = checks + 1
+    if (.not. cond) then
+      failures = failures + 1
+      print '(a)', "FAIL: " // what
+    end if
+  end subroutine check
+
+end program test_fortran_fit
