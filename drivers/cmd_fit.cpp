@@ -23,7 +23,7 @@ namespace {
 namespace fs = std::filesystem;
 
 struct FitCliOptions {
-  std::string scene, data, law, json, out = ".", synthesize, gradients = "auto";
+  std::string scene, data, law, json, out = ".", synthesize, gradients = "auto", format = "png";
   std::vector<std::string> sets, free, sigma;
   double rtol = 1e-10;
   int max_evaluations = 100;
@@ -116,9 +116,7 @@ void write_outputs(const fit::FitResult& r, const fit::Observations& obs, const 
   f.cols = static_cast<int>(f.panels.size());
   f.width = 500 * f.cols;
   f.height = 450;
-  const fs::path png = dir / (base + ".fit.png");
-  plot::render(f, png);
-  produced.push_back(png);
+  produced.push_back(plot::render(f, dir / (base + ".fit.png")));
 }
 
 std::string summary_text(const fit::FitResult& r, const fit::Observations& obs, const std::string& name) {
@@ -149,6 +147,7 @@ std::string summary_text(const fit::FitResult& r, const fit::Observations& obs, 
 }
 
 int run_fit(const FitCliOptions& o) {
+  plot::set_format(plot::parse_format(o.format));
   const Scene sc = load_scene_arg(o.scene, o.sets);
   set_provenance_scene(o.scene);
   const auto sigma = parse_sigma(o.sigma);
@@ -234,7 +233,8 @@ RegisterCommand reg_fit{{"fit", "Fit scene keys (e.g. surface.mu) to an observed
                                           "write synthetic data instead of fitting: the scene's model at its output times "
                                           "plus Gaussian noise of --sigma (seeded)");
                            app.add_option("--seed", o->seed, "seed of --synthesize (default 1)")->check(count(0, 1LL << 62));
-                           app.add_flag("--no-plot", o->no_plot, "no PNG");
+                           app.add_option("--format", o->format, "figure format: png, svg or pdf (default png)");
+                           app.add_flag("--no-plot", o->no_plot, "no figure");
                            app.add_flag("--quiet", o->quiet, "no file list on stderr");
                            return [o] { return run_fit(*o); };
                          }}};

@@ -39,7 +39,7 @@ struct Options {
   icor::Rod rod;
   double length_sigma = 0.0, hamaker_sigma = 0.0;
   double alpha = 0.01;
-  std::string json, out;
+  std::string json, out, format = "png";
 };
 
 // ---- reading the data ----------------------------------------------------------------------
@@ -288,6 +288,7 @@ void write_outputs(const Options& o, const Data& d, const std::vector<icor::Batc
 }
 
 int run(const Options& o) {
+  plot::set_format(plot::parse_format(o.format));
   o.rod.validate();
   std::vector<icor::Pressure> which;
   if (o.pressure == "both") which = {icor::Pressure::Known, icor::Pressure::Unknown};
@@ -367,6 +368,7 @@ RegisterCommand reg{{"fit-icor",
                        app.add_option("--json", o->json, "write the JSON summary to this file");
                        app.add_option("--out", o->out,
                                       "directory for fit_icor.csv (+ .schema.json), fit_icor.json and fit_icor.png");
+                       app.add_option("--format", o->format, "figure format of fit_icor: png, svg or pdf (default png)");
                        return [o] { return run(*o); };
                      }}};
 

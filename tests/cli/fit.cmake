@@ -61,3 +61,15 @@ set_tests_properties(cli.fit.not_converged PROPERTIES FIXTURES_REQUIRED fit_data
 
 add_test(NAME cli.fit.reproduce
          COMMAND $<TARGET_FILE:nanopush> reproduce --quick --out ${_fit_dir}/reproduce --only fit_synthetic)
+
+# --format: the figure in SVG (and the .gp beside it), a bad format refused before any output.
+add_test(NAME cli.fit.format_svg
+         COMMAND $<TARGET_FILE:nanopush> fit fig3_20 ${_fit_dir}/data.csv ${_fit_span}
+                 --set surface.mu=0.1 --free surface.mu --out ${_fit_dir}/svg --format svg)
+set_tests_properties(cli.fit.format_svg PROPERTIES FIXTURES_REQUIRED fit_data FIXTURES_SETUP fit_svg)
+add_test(NAME cli.fit.format_svg_written COMMAND ${CMAKE_COMMAND} -E cat ${_fit_dir}/svg/fig3_20.fit.svg)
+set_tests_properties(cli.fit.format_svg_written PROPERTIES FIXTURES_REQUIRED fit_svg PASS_REGULAR_EXPRESSION "<svg")
+add_test(NAME cli.fit.format_bad
+         COMMAND $<TARGET_FILE:nanopush> fit fig3_20 ${_fit_dir}/data.csv --free surface.mu --out ${_fit_dir}/gif --format gif)
+set_tests_properties(cli.fit.format_bad PROPERTIES FIXTURES_REQUIRED fit_data PASS_REGULAR_EXPRESSION
+  "--format = gif: must be")

@@ -105,3 +105,9 @@ target_link_libraries(capi_test_fit_fortran PRIVATE nanopush_fortran nanopush_wa
 set_target_properties(capi_test_fit_fortran PROPERTIES Fortran_MODULE_DIRECTORY ${NANOPUSH_MODDIR}/capi_test_fit_fortran)
 add_test(NAME capi.fit_fortran COMMAND capi_test_fit_fortran ${_fit_scene} ${CMAKE_CURRENT_BINARY_DIR})
 set_tests_properties(capi.fit_fortran PROPERTIES PASS_REGULAR_EXPRESSION "fortran fit: all checks hold")
+
+# --format svg draws fit_icor.svg.
+add_test(NAME cli.fit_icor.format_svg COMMAND ${_np} fit-icor ${_d}/good.csv --out ${_d}/svg --format svg)
+set_tests_properties(cli.fit_icor.format_svg PROPERTIES FIXTURES_SETUP fit_icor_svg)
+add_test(NAME cli.fit_icor.format_svg_written COMMAND ${CMAKE_COMMAND} -E cat ${_d}/svg/fit_icor.svg)
+set_tests_properties(cli.fit_icor.format_svg_written PROPERTIES FIXTURES_REQUIRED fit_icor_svg PASS_REGULAR_EXPRESSION "<svg")
