@@ -43,10 +43,12 @@ std::string node_text(const toml::node& n) {
     s << "{table}";
   } else if (n.is_array()) {
     s << "[array]";
-  } else if (auto b = n.value<bool>(); b && n.is_boolean()) {
-    s << (*b ? "true" : "false");
-  } else if (auto i = n.value<std::int64_t>(); i && n.is_integer()) {
-    s << *i;
+  } else if (n.is_boolean()) {
+    s << (n.value<bool>().value_or(false) ? "true" : "false");
+  } else if (n.is_integer()) {
+    // Typed access only: toml++'s value<int64_t>() on a float casts before its range check
+    // (undefined for 5.5e40; found by the fuzz target).
+    s << n.as_integer()->get();
   } else if (auto d = n.value<double>()) {
     s << sfmt(*d);
   } else {
