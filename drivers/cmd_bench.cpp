@@ -22,6 +22,7 @@
 
 namespace nanopush::cli {
 namespace {
+namespace NANOPUSH_UNITY_ID {
 
 using bench::Row;
 
@@ -656,5 +657,6 @@ RegisterReproduce step_stick{
                              });
      }}};
 
+}  // namespace NANOPUSH_UNITY_ID
 }  // namespace
 }  // namespace nanopush::cli

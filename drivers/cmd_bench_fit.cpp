@@ -27,6 +27,7 @@
 
 namespace nanopush::cli {
 namespace {
+namespace NANOPUSH_UNITY_ID {
 
 namespace fs = std::filesystem;
 
@@ -267,5 +268,6 @@ RegisterCommand reg{{"bench-fit",
                        return [o] { return run_bench_fit(*o); };
                      }}};
 
+}  // namespace NANOPUSH_UNITY_ID
 }  // namespace
 }  // namespace nanopush::cli

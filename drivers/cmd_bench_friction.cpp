@@ -30,6 +30,7 @@
 
 namespace nanopush::cli {
 namespace {
+namespace NANOPUSH_UNITY_ID {
 
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
@@ -488,5 +489,6 @@ RegisterCommand reg{
        return [o] { return bench_friction(*o); };
      }}};
 
+}  // namespace NANOPUSH_UNITY_ID
 }  // namespace
 }  // namespace nanopush::cli

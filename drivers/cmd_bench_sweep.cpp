@@ -36,6 +36,7 @@ extern char** environ;
 
 namespace nanopush::cli {
 namespace {
+namespace NANOPUSH_UNITY_ID {
 
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
@@ -578,5 +579,6 @@ RegisterCommand reg{
        return [o] { return bench_sweep(*o); };
      }}};
 
+}  // namespace NANOPUSH_UNITY_ID
 }  // namespace
 }  // namespace nanopush::cli

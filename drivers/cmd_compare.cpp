@@ -12,6 +12,7 @@
 
 namespace nanopush::cli {
 namespace {
+namespace NANOPUSH_UNITY_ID {
 
 struct CompareOptions {
   std::string scene, method, law;
@@ -192,5 +193,6 @@ RegisterCommand reg_compare{{"compare",
                                return [o] { return compare_cmd(*o); };
                              }}};
 
+}  // namespace NANOPUSH_UNITY_ID
 }  // namespace
 }  // namespace nanopush::cli

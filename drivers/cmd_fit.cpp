@@ -19,6 +19,7 @@
 
 namespace nanopush::cli {
 namespace {
+namespace NANOPUSH_UNITY_ID {
 
 namespace fs = std::filesystem;
 
@@ -276,5 +277,6 @@ void reproduce_fit(ReproduceContext& ctx) {
 
 RegisterReproduce step_fit{{"fit_synthetic", "a synthetic trajectory fit: truth, estimate, interval, plot", 70, reproduce_fit}};
 
+}  // namespace NANOPUSH_UNITY_ID
 }  // namespace
 }  // namespace nanopush::cli

@@ -29,6 +29,7 @@
 
 namespace nanopush::cli {
 namespace {
+namespace NANOPUSH_UNITY_ID {
 
 namespace fs = std::filesystem;
 
@@ -372,5 +373,6 @@ RegisterCommand reg{{"fit-icor",
                        return [o] { return run(*o); };
                      }}};
 
+}  // namespace NANOPUSH_UNITY_ID
 }  // namespace
 }  // namespace nanopush::cli

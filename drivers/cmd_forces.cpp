@@ -18,6 +18,7 @@
 
 namespace nanopush::cli {
 namespace {
+namespace NANOPUSH_UNITY_ID {
 
 namespace nf = nanopush::forces;
 
@@ -466,5 +467,6 @@ RegisterReproduce reg_f33{{"fig3_3", "Fig 3.3: static friction fs(h) for pure ro
 RegisterReproduce reg_f34{{"fig3_4", "Fig 3.4: rolling resistance curves with the JKR line-contact width", 34,
                            step_fig34}};
 
+}  // namespace NANOPUSH_UNITY_ID
 }  // namespace
 }  // namespace nanopush::cli

@@ -25,6 +25,7 @@
 
 namespace nanopush::cli {
 namespace {
+namespace NANOPUSH_UNITY_ID {
 
 constexpr double kPi = 3.14159265358979323846;
 // The thesis nanobar (docs/models.md §A): width 55 nm, length 100 nm -> a = 27.5 nm, b = 50 nm.
@@ -502,5 +503,6 @@ RegisterReproduce rep9{{"fig3_9_friction", "Fig 3.9: normalised friction force a
 RegisterReproduce rep10{{"fig3_10_11_friction", "Figs 3.10-3.11: friction force and moment maps over iCOR positions",
                          32, fig3_10_11}};
 
+}  // namespace NANOPUSH_UNITY_ID
 }  // namespace
 }  // namespace nanopush::cli

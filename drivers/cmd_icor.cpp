@@ -25,6 +25,7 @@
 
 namespace nanopush::cli {
 namespace {
+namespace NANOPUSH_UNITY_ID {
 
 using namespace icor_cli;
 
@@ -417,5 +418,6 @@ RegisterCommand reg{{"icor",
                      }}};
 
 
+}  // namespace NANOPUSH_UNITY_ID
 }  // namespace
 }  // namespace nanopush::cli

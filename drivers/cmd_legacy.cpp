@@ -20,6 +20,7 @@
 
 namespace nanopush::cli {
 namespace {
+namespace NANOPUSH_UNITY_ID {
 
 void check_deck_scene(const Scene& sc) {
   if (sc.rough() && sc.surface.normal_load > 0)
@@ -147,5 +148,6 @@ RegisterCommand reg_legacy{{"legacy",
                               return [o] { return legacy_cmd(*o); };
                             }}};
 
+}  // namespace NANOPUSH_UNITY_ID
 }  // namespace
 }  // namespace nanopush::cli

@@ -13,6 +13,7 @@
 
 namespace nanopush::cli {
 namespace {
+namespace NANOPUSH_UNITY_ID {
 
 struct Preset {
   std::string name;   ///< path under scenes_dir() without .toml, e.g. thesis/fig3_6a
@@ -82,5 +83,6 @@ RegisterCommand reg_presets{
        return [] { return presets_cmd(); };
      }}};
 
+}  // namespace NANOPUSH_UNITY_ID
 }  // namespace
 }  // namespace nanopush::cli

@@ -16,6 +16,7 @@
 
 namespace nanopush::cli {
 namespace {
+namespace NANOPUSH_UNITY_ID {
 
 struct Options {
   std::string out = "out";
@@ -168,5 +169,6 @@ RegisterCommand reg{{"reproduce",
                        return [o] { return run_reproduce(*o); };
                      }}};
 
+}  // namespace NANOPUSH_UNITY_ID
 }  // namespace
 }  // namespace nanopush::cli

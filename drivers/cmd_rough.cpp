@@ -15,6 +15,7 @@
 
 namespace nanopush::cli {
 namespace {
+namespace NANOPUSH_UNITY_ID {
 
 struct RunStats {
   double energy_rel = 0;      // max |dKE - W_push - W_fric| / max |W_push|
@@ -316,5 +317,6 @@ void reproduce_rough(ReproduceContext& ctx) {
 RegisterReproduce step{{"fig3_12-32", "rough-surface nanobar, mu = 0 ... 0.20, thesis, printed and coulomb laws, both engines",
                         20, reproduce_rough}};
 
+}  // namespace NANOPUSH_UNITY_ID
 }  // namespace
 }  // namespace nanopush::cli

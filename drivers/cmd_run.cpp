@@ -16,6 +16,7 @@
 
 namespace nanopush::cli {
 namespace {
+namespace NANOPUSH_UNITY_ID {
 
 struct RunOptions {
   std::string scene, engine, method, out, law, precision;
@@ -151,5 +152,6 @@ RegisterCommand reg_run{{"run", "Integrate a scene and write its trajectory as C
                            return [o] { return run_cmd(*o); };
                          }}};
 
+}  // namespace NANOPUSH_UNITY_ID
 }  // namespace
 }  // namespace nanopush::cli

@@ -8,6 +8,7 @@
 
 namespace nanopush::cli {
 namespace {
+namespace NANOPUSH_UNITY_ID {
 
 int keys_cmd(bool markdown) {
   if (markdown) {
@@ -30,5 +31,6 @@ RegisterCommand reg{{"scene-keys", "List every scene key: type, unit, default, a
                        return [md] { return keys_cmd(*md); };
                      }}};
 
+}  // namespace NANOPUSH_UNITY_ID
 }  // namespace
 }  // namespace nanopush::cli

@@ -15,6 +15,7 @@
 
 namespace nanopush::cli {
 namespace {
+namespace NANOPUSH_UNITY_ID {
 
 void reproduce_fig3_6(ReproduceContext& ctx) {
   namespace fs = std::filesystem;
@@ -143,5 +144,6 @@ void reproduce_fig3_6(ReproduceContext& ctx) {
 RegisterReproduce step{{"fig3_6", "smooth-surface nanobar, eight cases, both engines vs the exact pendulum", 10,
                         reproduce_fig3_6}};
 
+}  // namespace NANOPUSH_UNITY_ID
 }  // namespace
 }  // namespace nanopush::cli

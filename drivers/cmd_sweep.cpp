@@ -18,6 +18,7 @@
 
 namespace nanopush::cli {
 namespace {
+namespace NANOPUSH_UNITY_ID {
 
 std::atomic<bool> g_stop{false};
 volatile std::sig_atomic_t g_signal = 0;
@@ -211,5 +212,6 @@ RegisterCommand reg{
        return [o] { return sweep_cmd(*o); };
      }}};
 
+}  // namespace NANOPUSH_UNITY_ID
 }  // namespace
 }  // namespace nanopush::cli

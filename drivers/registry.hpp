@@ -2,6 +2,12 @@
 // (and the reproduce steps for the figures it can make) and registers them with a
 // static object, so adding a model never edits the main program.
 #pragma once
+// Each command's file-local names live in `namespace { namespace NANOPUSH_UNITY_ID { ... } }`:
+// the unity build (drivers/CMakeLists.txt) defines the macro per source file, so names such as
+// `reg` or `Options` do not collide when several commands share one translation unit.
+#ifndef NANOPUSH_UNITY_ID
+#define NANOPUSH_UNITY_ID
+#endif
 #include <CLI/CLI.hpp>
 
 #include <filesystem>

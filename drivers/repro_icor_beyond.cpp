@@ -18,6 +18,7 @@
 
 namespace nanopush::cli {
 namespace {
+namespace NANOPUSH_UNITY_ID {
 
 using namespace icor_cli;
 
@@ -273,5 +274,6 @@ void step_icor_rectangle(ReproduceContext& ctx) {
 RegisterReproduce r8{{"fig5_3", "Fig 5.3: quasi-static, dynamic (rough-surface nanorod) and impulsive iCOR", 57, step_fig5_3}};
 RegisterReproduce r9{{"icor_rectangle", "Quasi-static iCOR of a finite rectangle beside eq 4.13", 58, step_icor_rectangle}};
 
+}  // namespace NANOPUSH_UNITY_ID
 }  // namespace
 }  // namespace nanopush::cli

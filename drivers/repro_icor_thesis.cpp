@@ -19,6 +19,7 @@
 
 namespace nanopush::cli {
 namespace {
+namespace NANOPUSH_UNITY_ID {
 
 using namespace icor_cli;
 
@@ -398,5 +399,6 @@ RegisterReproduce r5{{"fig4_4", "Fig 4.4: minimum push force (eq 4.8)", 54, step
 RegisterReproduce r6{{"fig4_5", "Fig 4.5: push force vs iCOR (eq 4.10)", 55, step_fig4_5}};
 RegisterReproduce r7{{"fig5_2", "Fig 5.2: iCOR with (5.4) and without (4.13) constraints", 56, step_fig5_2}};
 
+}  // namespace NANOPUSH_UNITY_ID
 }  // namespace
 }  // namespace nanopush::cli

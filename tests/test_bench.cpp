@@ -18,6 +18,9 @@
 using namespace nanopush;
 using namespace nanopush::bench;
 
+// File-local: its own namespace in the unity build (tests/CMakeLists.txt).
+namespace {
+namespace NANOPUSH_UNITY_ID {
 namespace {
 
 Scene smooth_scene(const std::string& c = "a") {
@@ -598,3 +601,6 @@ TEST_CASE("bench: stick-slip RHS budget stops the engines without event location
     CHECK(e.solve(1e-3).nfcn == ok.nfcn);
   }
 }
+
+}  // namespace NANOPUSH_UNITY_ID
+}  // namespace

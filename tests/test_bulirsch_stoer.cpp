@@ -39,6 +39,9 @@ void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
 void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
 void operator delete[](void* p, const std::nothrow_t&) noexcept { std::free(p); }
 
+// File-local: its own namespace in the unity build (tests/CMakeLists.txt).
+namespace {
+namespace NANOPUSH_UNITY_ID {
 namespace {
 
 // y1' = y2, y2' = -y1: exact (cos t, -sin t) from (1, 0).
@@ -228,3 +231,6 @@ TEST_CASE("BS: failures come back as statuses", "[bs][unit]") {
     CHECK(y[0] == 1.0);
   }
 }
+
+}  // namespace NANOPUSH_UNITY_ID
+}  // namespace

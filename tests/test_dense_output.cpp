@@ -15,6 +15,9 @@
 
 using namespace nanopush;
 
+// File-local: its own namespace in the unity build (tests/CMakeLists.txt).
+namespace {
+namespace NANOPUSH_UNITY_ID {
 namespace {
 
 struct Oscillator {
@@ -287,3 +290,6 @@ TEST_CASE("dense output: the interpolant is held to the steps' tolerance (per st
     CHECK(odex > 2 * strict);
   }
 }
+
+}  // namespace NANOPUSH_UNITY_ID
+}  // namespace

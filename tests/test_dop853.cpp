@@ -17,6 +17,9 @@
 
 using namespace nanopush;
 
+// File-local: its own namespace in the unity build (tests/CMakeLists.txt).
+namespace {
+namespace NANOPUSH_UNITY_ID {
 namespace {
 
 // y1' = -2 t y1², y2' = y1 y2, y(0) = (1, 1): y1 = 1/(1+t²), y2 = exp(atan t). Nonlinear,
@@ -527,3 +530,6 @@ TEST_CASE("dop853: long double and __float128 instantiate and integrate", "[dop8
   REQUIRE(rq.ok());
   CHECK(std::fabs(static_cast<double>(yq[0] - num::quad(1) / 10)) <= 1e-16);
 }
+
+}  // namespace NANOPUSH_UNITY_ID
+}  // namespace

@@ -13,6 +13,9 @@
 
 using namespace nanopush;
 
+// File-local: its own namespace in the unity build (tests/CMakeLists.txt).
+namespace {
+namespace NANOPUSH_UNITY_ID {
 namespace {
 
 struct Counts {
@@ -137,3 +140,6 @@ TEST_CASE("Fig 3.6, F77 engine: exact pendulum at rtol 1e-12", "[smooth][numeric
     CHECK(xr <= 1e-12);
   }
 }
+
+}  // namespace NANOPUSH_UNITY_ID
+}  // namespace

@@ -14,6 +14,9 @@
 
 #include "f77_bsint.h"
 
+// File-local: its own namespace in the unity build (tests/CMakeLists.txt).
+namespace {
+namespace NANOPUSH_UNITY_ID {
 namespace {
 
 // A C callback that forwards to any callable F(int n, double t, const double* y, double* dydt)
@@ -494,3 +497,6 @@ TEST_CASE("F77 BS reference counts (docs/bulirsch_stoer.md)", "[f77][bsint][regr
     }
   }
 }
+
+}  // namespace NANOPUSH_UNITY_ID
+}  // namespace

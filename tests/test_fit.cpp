@@ -16,6 +16,9 @@
 using namespace nanopush;
 using namespace nanopush::fit;
 
+// File-local: its own namespace in the unity build (tests/CMakeLists.txt).
+namespace {
+namespace NANOPUSH_UNITY_ID {
 namespace {
 
 template <class F>
@@ -309,3 +312,6 @@ TEST_CASE("fit identifiability: push force and density enter only as F/m on a sm
   CHECK(std::abs(r.parameters[2].value - s.initial[kTheta]) < 3 * r.parameters[2].stderr_);
   CHECK(r.chi2_dof < 1.5);
 }
+
+}  // namespace NANOPUSH_UNITY_ID
+}  // namespace

@@ -13,6 +13,9 @@
 using namespace nanopush;
 using namespace nanopush::forces;
 
+// File-local: its own namespace in the unity build (tests/CMakeLists.txt).
+namespace {
+namespace NANOPUSH_UNITY_ID {
 namespace {
 constexpr double eps = std::numeric_limits<double>::epsilon();
 /// |value/unit - printed| <= half a unit in the last printed digit: "to all given digits".
@@ -234,3 +237,6 @@ TEST_CASE("Bad input is rejected with the field, the value and the allowed range
   CHECK_THROWS_AS(sphere_flat_vdw_force(1e-19, std::numeric_limits<double>::quiet_NaN(), 1e-9), InputError);
   CHECK_THROWS_AS(metallic_adhesion_pressure(1.0, 0.1e-9, 0.2e-9, 0.05e-9), InputError);  // D < D0
 }
+
+}  // namespace NANOPUSH_UNITY_ID
+}  // namespace

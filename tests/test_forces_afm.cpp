@@ -10,6 +10,9 @@
 using namespace nanopush;
 using namespace nanopush::afm;
 
+// File-local: its own namespace in the unity build (tests/CMakeLists.txt).
+namespace {
+namespace NANOPUSH_UNITY_ID {
 namespace {
 constexpr double eps = std::numeric_limits<double>::epsilon();
 bool rel_close(double a, double b, double tol) { return std::abs(a - b) <= tol * std::max(std::abs(a), std::abs(b)); }
@@ -66,3 +69,6 @@ TEST_CASE("Nanosphere motion modes: stick, slide, roll, spin (text after eq 2.10
   bad.thickness = 0.0;
   CHECK_THROWS_AS(spring_constants(bad), InputError);
 }
+
+}  // namespace NANOPUSH_UNITY_ID
+}  // namespace

@@ -16,6 +16,9 @@
 using namespace nanopush;
 using namespace nanopush::forces;
 
+// File-local: its own namespace in the unity build (tests/CMakeLists.txt).
+namespace {
+namespace NANOPUSH_UNITY_ID {
 namespace {
 constexpr double eps = std::numeric_limits<double>::epsilon();
 bool rel_close(double a, double b, double tol) { return std::abs(a - b) <= tol * std::abs(b); }
@@ -149,3 +152,6 @@ TEST_CASE("Nanobar F_vdw from the chapter 2-3 formulas against the printed 0.400
   // The former chapter 3 value does not reproduce it either: 8.681e-6 N.
   CHECK(rounded(bar_plane_vdw_force(2.38e-19, L, Wd, T, z0), 1e-6, 3) == 8.681);
 }
+
+}  // namespace NANOPUSH_UNITY_ID
+}  // namespace

@@ -16,6 +16,9 @@
 using namespace nanopush;
 using namespace nanopush::forces;
 
+// File-local: its own namespace in the unity build (tests/CMakeLists.txt).
+namespace {
+namespace NANOPUSH_UNITY_ID {
 namespace {
 constexpr double eps = std::numeric_limits<double>::epsilon();
 bool rel_close(double a, double b, double tol) { return std::abs(a - b) <= tol * std::abs(b); }
@@ -159,3 +162,6 @@ TEST_CASE("Tables 2.2-2.3: the data files scenes use are the tables in code", "[
   CHECK(thesis_table_2_2()[5].material == "silicon");
   CHECK(thesis_table_2_2()[5].gamma_300K == 1.4);
 }
+
+}  // namespace NANOPUSH_UNITY_ID
+}  // namespace

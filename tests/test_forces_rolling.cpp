@@ -12,6 +12,9 @@
 
 using namespace nanopush;
 
+// File-local: its own namespace in the unity build (tests/CMakeLists.txt).
+namespace {
+namespace NANOPUSH_UNITY_ID {
 namespace {
 constexpr double eps = std::numeric_limits<double>::epsilon();
 }
@@ -124,3 +127,6 @@ TEST_CASE("Rolling formulas reject bad input; F77 returns IERR, never stops", "[
   CHECK(np_f77_jkr_line_half_width(r, 19e9, 0.25, -1e3, &out) == 2);  // below the line pull-off
   CHECK(np_f77_jkr_line_half_width(r, -1.0, 0.25, 1.0, &out) == 1);
 }
+
+}  // namespace NANOPUSH_UNITY_ID
+}  // namespace

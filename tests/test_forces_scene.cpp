@@ -13,6 +13,9 @@
 using namespace nanopush;
 namespace nf = nanopush::forces;
 
+// File-local: its own namespace in the unity build (tests/CMakeLists.txt).
+namespace {
+namespace NANOPUSH_UNITY_ID {
 namespace {
 toml::table parse(std::string_view text) { return toml::parse(text); }
 Environment env_of(std::string_view text) { return parse_environment(parse(text)); }
@@ -209,3 +212,6 @@ TEST_CASE("A bar evaluates no contact-adhesion model; a rigid sphere uses Derjag
   CHECK(r.term("contact_adhesion").value == Approx(2 * nf::kPi * 10e-9 * 0.1).epsilon(1e-15));
   CHECK(r.contact_half_width == 0.0);
 }
+
+}  // namespace NANOPUSH_UNITY_ID
+}  // namespace

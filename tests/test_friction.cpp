@@ -15,6 +15,9 @@
 
 using namespace nanopush;
 
+// File-local: its own namespace in the unity build (tests/CMakeLists.txt).
+namespace {
+namespace NANOPUSH_UNITY_ID {
 namespace {
 struct Precision {
   Precision() { Catch::StringMaker<double>::precision = 17; }
@@ -539,3 +542,6 @@ TEST_CASE("friction: C^1 but log-singular second derivative where the iCOR cross
     }
   }
 }
+
+}  // namespace NANOPUSH_UNITY_ID
+}  // namespace

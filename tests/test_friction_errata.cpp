@@ -10,6 +10,9 @@
 
 using namespace nanopush;
 
+// File-local: its own namespace in the unity build (tests/CMakeLists.txt).
+namespace {
+namespace NANOPUSH_UNITY_ID {
 namespace {
 constexpr double kPi = 3.14159265358979323846;
 struct Pt {
@@ -100,3 +103,6 @@ TEST_CASE("errata: the printed closed forms cancel catastrophically as R -> infi
   CHECK(worst_printed > 1e-3);  // the printed (even corrected) form has lost the moment
   CHECK(worst_ours <= 1e-14);
 }
+
+}  // namespace NANOPUSH_UNITY_ID
+}  // namespace

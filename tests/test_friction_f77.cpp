@@ -13,6 +13,9 @@
 
 using namespace nanopush;
 
+// File-local: its own namespace in the unity build (tests/CMakeLists.txt).
+namespace {
+namespace NANOPUSH_UNITY_ID {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
@@ -117,3 +120,6 @@ TEST_CASE("friction: F77 bad input returns a status and a message, never stops",
   CHECK(len > 4);
   CHECK(std::string(small) == "R: ");
 }
+
+}  // namespace NANOPUSH_UNITY_ID
+}  // namespace

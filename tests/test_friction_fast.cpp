@@ -18,6 +18,9 @@
 using namespace nanopush;
 using friction_detail::MeanIntegrals;
 
+// File-local: its own namespace in the unity build (tests/CMakeLists.txt).
+namespace {
+namespace NANOPUSH_UNITY_ID {
 namespace {
 
 using Q = __float128;
@@ -349,3 +352,6 @@ TEST_CASE("friction fast: the hand-over below 1e-100 max(a, b) is continuous", "
     }
   }
 }
+
+}  // namespace NANOPUSH_UNITY_ID
+}  // namespace

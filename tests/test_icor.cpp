@@ -17,6 +17,9 @@ using namespace nanopush;
 using icor::CubicMethod;
 using icor::CubicSolution;
 
+// File-local: its own namespace in the unity build (tests/CMakeLists.txt).
+namespace {
+namespace NANOPUSH_UNITY_ID {
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
@@ -468,3 +471,6 @@ TEST_CASE("Errata evidence: at Table 5.1's root, F of eq 5.2 is positive and a l
   CHECK(icor::constrained_force(mu, W, -b / 3, 0.0, kL, kK2) == Approx(mu * W / 9).epsilon(1e-14));
   CHECK(icor::constrained_force(mu, W, b / 3, 0.0, kL, kK2) == Approx(-mu * W / 9).epsilon(1e-14));
 }
+
+}  // namespace NANOPUSH_UNITY_ID
+}  // namespace

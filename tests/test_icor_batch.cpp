@@ -18,6 +18,9 @@ using icor::Measured;
 using icor::Observation;
 using icor::Pressure;
 
+// File-local: its own namespace in the unity build (tests/CMakeLists.txt).
+namespace {
+namespace NANOPUSH_UNITY_ID {
 namespace {
 
 double sample_std(const std::vector<double>& v) { return icor::sample_std(v); }
@@ -224,3 +227,6 @@ TEST_CASE("icor_batch.chi2_survival_against_tables", "[icor_batch]") {
   CHECK(icor::chi2_survival(1e4, 7) == 0.0);
   CHECK(icor::chi2_survival(2000.0, 2000) == Approx(0.4958).margin(1e-3));
 }
+
+}  // namespace NANOPUSH_UNITY_ID
+}  // namespace

@@ -12,6 +12,9 @@
 
 using namespace nanopush;
 
+// File-local: its own namespace in the unity build (tests/CMakeLists.txt).
+namespace {
+namespace NANOPUSH_UNITY_ID {
 namespace {
 
 const icor::Rod kRod = icor::nanorod();
@@ -273,3 +276,6 @@ TEST_CASE("Dynamic iCOR: bad input is rejected", "[icor][dynamic][unit]") {
   CHECK_THROWS_AS(run(1e-7, muW, {2e-10, 1e-10}), InputError);
   CHECK_THROWS_AS(run(1e-7, muW, {0.0}), InputError);
 }
+
+}  // namespace NANOPUSH_UNITY_ID
+}  // namespace

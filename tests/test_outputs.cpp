@@ -17,6 +17,9 @@
 
 using nanopush::csv_number;
 
+// File-local: its own namespace in the unity build (tests/CMakeLists.txt).
+namespace {
+namespace NANOPUSH_UNITY_ID {
 namespace {
 bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 double read_back(const std::string& s) { return std::strtod(s.c_str(), nullptr); }
@@ -145,3 +148,6 @@ TEST_CASE("join_command_line quotes what a shell would split", "[outputs]") {
   const char* argv[] = {"/usr/bin/nanopush", "run", "my scene.toml", "--out", "-"};
   CHECK(nanopush::join_command_line(5, argv) == "nanopush run 'my scene.toml' --out -");
 }
+
+}  // namespace NANOPUSH_UNITY_ID
+}  // namespace

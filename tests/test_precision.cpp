@@ -16,6 +16,9 @@ using namespace nanopush;
 using Catch::Matchers::Contains;
 using num::quad;
 
+// File-local: its own namespace in the unity build (tests/CMakeLists.txt).
+namespace {
+namespace NANOPUSH_UNITY_ID {
 namespace {
 
 std::string preset(const std::string& name) {
@@ -225,3 +228,6 @@ samples = 5
   from_scene.engine = "f77";
   CHECK_THROWS_WITH(run_engine(sc, from_scene), Contains("solver.precision = long"));
 }
+
+}  // namespace NANOPUSH_UNITY_ID
+}  // namespace

@@ -15,6 +15,9 @@
 
 using namespace nanopush;
 
+// File-local: its own namespace in the unity build (tests/CMakeLists.txt).
+namespace {
+namespace NANOPUSH_UNITY_ID {
 namespace {
 
 Scene preset(int fig) {
@@ -208,3 +211,6 @@ TEST_CASE("Printed law adds energy: friction does positive work", "[printed][num
   const auto& last = tr.rows.back();
   CHECK(std::fabs(ke(last) - (tr.work_push.back() + tr.work_fric.back())) <= 1e-7 * tr.work_push.back());
 }
+
+}  // namespace NANOPUSH_UNITY_ID
+}  // namespace

@@ -13,6 +13,9 @@
 using namespace nanopush;
 using Catch::Matchers::Contains;
 
+// File-local: its own namespace in the unity build (tests/CMakeLists.txt).
+namespace {
+namespace NANOPUSH_UNITY_ID {
 namespace {
 
 Scene preset(int fig) {
@@ -291,3 +294,6 @@ t_end = 1e-9
   CHECK_THROWS_WITH(parse_scene(base + "[environment]\nmedium = \"humid_air\"\nhumidity = 1.5\n[body]\nshape = \"bar\"\nlength = 1e-7\nwidth = 5.5e-8\nheight = 5e-8\nmaterial = \"graphite\"\n", "s"),
                     Contains("environment.humidity = 1.5"));
 }
+
+}  // namespace NANOPUSH_UNITY_ID
+}  // namespace

@@ -13,6 +13,9 @@
 
 using namespace nanopush;
 
+// File-local: its own namespace in the unity build (tests/CMakeLists.txt).
+namespace {
+namespace NANOPUSH_UNITY_ID {
 namespace {
 
 Scene preset(int fig) {
@@ -66,3 +69,6 @@ TEST_CASE("Thesis law from rest: the faithful method keeps the F77 engine's star
   for (std::size_t i = 0; i < a.rows.size(); ++i) d = std::max(d, std::fabs(a.rows[i][3] - b.rows[i][3]));
   CHECK(d <= 1e-12);
 }
+
+}  // namespace NANOPUSH_UNITY_ID
+}  // namespace

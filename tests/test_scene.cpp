@@ -9,6 +9,9 @@
 using namespace nanopush;
 using Catch::Matchers::Contains;
 
+// File-local: its own namespace in the unity build (tests/CMakeLists.txt).
+namespace {
+namespace NANOPUSH_UNITY_ID {
 namespace {
 const std::string kGood = R"(
 [object]
@@ -64,3 +67,6 @@ TEST_CASE("Bad scenes are rejected with field, value and range", "[scene][unit]"
                     Contains("surface.kind = \"icy\""));
   CHECK_THROWS_WITH(parse_scene(with("t_end = 1.6e-9", "t_end = nan"), "s"), Contains("solver.t_end = nan"));
 }
+
+}  // namespace NANOPUSH_UNITY_ID
+}  // namespace

@@ -9,6 +9,9 @@
 
 using namespace nanopush;
 
+// File-local: its own namespace in the unity build (tests/CMakeLists.txt).
+namespace {
+namespace NANOPUSH_UNITY_ID {
 namespace {
 
 std::string preset(const std::string& name) {
@@ -159,3 +162,6 @@ TEST_CASE("Exact pendulum oracle is self-consistent", "[smooth][unit]") {
   Pendulum<q> bq(q(1), q(-0.5), q(2), q(0.5));
   CHECK(static_cast<double>(bq.theta(q(3.7))) == Approx(big.theta(3.7)).epsilon(1e-14));
 }
+
+}  // namespace NANOPUSH_UNITY_ID
+}  // namespace

@@ -13,6 +13,9 @@
 
 using namespace nanopush;
 
+// File-local: its own namespace in the unity build (tests/CMakeLists.txt).
+namespace {
+namespace NANOPUSH_UNITY_ID {
 namespace {
 
 /// The message of the InputError `f` throws ("" when it throws none).
@@ -150,3 +153,6 @@ TEST_CASE("sweep: the icor task gives both branches of eq 5.4 from the chosen cu
   CHECK_NOTHROW(sweep::table_columns(sweep::cartesian({sweep::parse_axis("cubic=brent,eigen")}), *task));
   CHECK_THROWS_AS(sweep::parse_axis("yn=0:abc:3"), InputError);
 }
+
+}  // namespace NANOPUSH_UNITY_ID
+}  // namespace
