@@ -571,7 +571,7 @@ contains
   !> allocated: traj(:, i) = (t, x, y, theta, vx, vy, omega, fx, fy, mf) at output time i.
   !>   engine "cxx" or "f77", method "faithful", "modern" or "dop853" (Dormand-Prince 8(5,3),
   !>   double, not under the coulomb law) (or "cvode": rough scenes, coulomb law, engine cxx)
-  !>   (default: the scene's); law, for rough scenes, "thesis", "printed" or "coulomb"
+  !>   or "auto" (by rtol) (default: the scene's; auto unless it states one); law, for rough scenes, "thesis", "printed" or "coulomb"
   !>   (default: the scene's [surface] law);
   !>   rtol (default or 0: the scene's); atol (default or < 0: the scene's; 0 = automatic);
   !>   counts(3) = (RHS evaluations, accepted steps, rejected steps);

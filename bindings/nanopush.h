@@ -107,7 +107,8 @@ typedef struct nanopush_trajectory_s* nanopush_trajectory;
 /* Integrate the scene, as `nanopush run` does.
  *   engine: "cxx" (modern C++ Bulirsch-Stoer) or "f77" (FORTRAN 77 BSINT); NULL or "" = scene's
  *   method: "faithful" (steps identical to f77), "modern" or "dop853" (C++ only; dop853: Dormand-Prince
- *           8(5,3), double, not under the coulomb law); NULL or "" = scene's
+ *           8(5,3), double, not under the coulomb law), "auto" (by rtol, docs/dop853.md); NULL or "" =
+ *           scene's (auto unless the scene states one; the thesis presets state faithful)
  *   rtol:   relative tolerance in [1e-30, 0.1]; 0 = scene's
  *   atol:   absolute tolerance for every component; < 0 = scene's; 0 = rtol times each
  *           component's natural scale

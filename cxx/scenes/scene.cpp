@@ -159,7 +159,8 @@ std::string extended_precision_obstacle(bool rough, const std::string& engine, c
   if (method == "dop853")
     return need + " (dop853 is double only: its coefficients are tabulated to long double, so its order conditions "
                   "hold to ~1e-19)";
-  if (method != "faithful" && method != "modern") return need + " (CVODE is double)";
+  // auto picks modern in extended precision (resolve_settings).
+  if (method != "faithful" && method != "modern" && method != "auto") return need + " (CVODE is double)";
   return "";
 }
 
@@ -355,7 +356,9 @@ Scene scene_from_document(const toml::table& root, const std::string& source_nam
     }
     sc.solver.engine = opt_string(t, "solver", "engine").value_or("cxx");
     require_one_of("solver.engine", sc.solver.engine, {"cxx", "f77"});
-    sc.solver.method = opt_string(t, "solver", "method").value_or("faithful");
+    // Default: auto (the fastest method for the rtol asked, docs/dop853.md); a scene on the F77
+    // engine has its one method.
+    sc.solver.method = opt_string(t, "solver", "method").value_or(sc.solver.engine == "f77" ? "faithful" : "auto");
     require_one_of("solver.method", sc.solver.method, {"faithful", "modern", "dop853", "cvode", "auto"});
     if (sc.solver.engine == "f77" && sc.solver.method != "faithful")
       throw InputError("solver.method", "\"" + sc.solver.method + "\"",

@@ -69,10 +69,10 @@ const std::vector<SceneKey>& scene_keys() {
       {"solver.atol", K::number, "SI of each state", "0", ">= 0", "all",
        "absolute tolerance of every component; 0 = rtol x each component's natural scale"},
       {"solver.engine", K::string, "", "cxx", "cxx, f77", "all", "the C++ solver or the FORTRAN 77 reproduction"},
-      {"solver.method", K::string, "", "faithful", "faithful, modern, dop853, cvode, auto", "all",
+      {"solver.method", K::string, "", "auto", "faithful, modern, dop853, cvode, auto", "all",
        "C++ integrator: Bulirsch-Stoer configuration (docs/bulirsch_stoer.md), dop853 (Dormand-Prince 8(5,3), "
-       "docs/dop853.md: double, not the coulomb law); cvode: rough scenes, coulomb law; auto: dop853 for "
-       "rtol >= 1e-11 where it runs, else modern"},
+       "docs/dop853.md: double, not the coulomb law); cvode: rough scenes, coulomb law; auto (default; faithful "
+       "with engine f77): dop853 for rtol >= 1e-11 where it runs, else modern"},
       {"solver.precision", K::string, "", "double", "double, long, quad", "all",
        "scalar of the integration; long and quad: engine cxx, faithful or modern, smooth surface"},
       {"solver.h0", K::number, "s", "0 (1% of t_end)", ">= 0", "all", "initial step"},

@@ -147,8 +147,10 @@ def run(scene, engine=None, method=None, law=None, rtol=None, atol=None, precisi
     engine     ``"cxx"`` (the C++ solver) or ``"f77"`` (the FORTRAN 77 reproduction);
                default: the scene's solver.engine
     method     C++ engine: ``"faithful"`` (the F77 engine's steps exactly), ``"modern"``,
-               ``"dop853"`` (Dormand-Prince 8(5,3), double, not under the coulomb law) or
-               ``"cvode"`` (rough scenes under the coulomb law); default: the scene's
+               ``"dop853"`` (Dormand-Prince 8(5,3), double, not under the coulomb law),
+               ``"cvode"`` (rough scenes under the coulomb law) or ``"auto"`` (by rtol);
+               default: the scene's (``"auto"`` unless it states one; the thesis
+               presets state ``"faithful"``)
     law        rough scenes: ``"thesis"`` (eq 3.40 sign law) or ``"coulomb"`` (event-located
                stick-slip); default: the scene's surface.law
     rtol       relative tolerance (> 0); default: the scene's solver.rtol

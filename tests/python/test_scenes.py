@@ -46,7 +46,7 @@ def test_scene_from_file_toml_and_set(source_dir):
     e.set("solver.method", "modern")
     assert e.info()["solver"]["method"] == "modern"
     e.unset("solver.method")
-    assert e.info()["solver"]["method"] == "faithful"
+    assert e.info()["solver"]["method"] == "auto"  # the default of a scene that does not state it
     r = nanopush.Scene.preset("fig3_18")
     r.set("surface.law", "coulomb")
     r.set("surface.mu", "0.15")  # text is read as the key's type, as --set does

@@ -32,7 +32,7 @@ struct SolverSettings {
   double rtol = 1e-10;
   double atol = 0;             ///< 0 = automatic: rtol times each state's natural scale
   std::string engine = "cxx";  ///< cxx | f77
-  std::string method = "faithful";  ///< faithful | modern | dop853 | cvode (C++ engine)
+  std::string method = "auto";  ///< auto | faithful | modern | dop853 | cvode (C++ engine)
   std::string precision = "double";  ///< double | long | quad (long, quad: C++ engine, smooth surface)
   double h0 = 0;               ///< initial step [s]; 0 = 1% of t_end
   double hmax = 0;             ///< largest step [s]; 0 = none
