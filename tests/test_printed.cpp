@@ -24,7 +24,10 @@ Scene preset(int fig) {
   return load_scene(std::string(NANOPUSH_SOURCE_DIR) + "/drivers/scenes/thesis/fig3_" + std::to_string(fig) + ".toml");
 }
 
-Trajectory run(const Scene& sc, const std::string& engine, const std::string& law, const std::string& method = "") {
+// Faithful unless asked: these tests compare the two engines step for step (the presets' own
+// method is auto).
+Trajectory run(const Scene& sc, const std::string& engine, const std::string& law,
+               const std::string& method = "faithful") {
   RunSettings s;
   s.engine = engine;
   s.law = law;

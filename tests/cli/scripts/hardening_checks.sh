@@ -65,7 +65,7 @@ scene)  # scene files and --set: names, file kinds, sizes, magnitudes
 programs)  # external programs: a failure is said on stderr with a decoded status
   expect 3 'the legacy program /bin/false exited with status 1' "$np" legacy fig3_17 --program /bin/false
   # A coulomb-law failure carries the integrator's status (it said "non-finite state").
-  expect 3 'too many steps: coulomb law: more than 20000 steps' "$np" run fig3_29 --law coulomb --set solver.samples=2000000 --out x.csv --quiet ;;
+  expect 3 'too many steps: coulomb law: more than 20000 steps' "$np" run fig3_29 --law coulomb --method faithful --set solver.samples=2000000 --out x.csv --quiet ;;
 interrupt)  # SIGTERM/SIGINT: temporaries removed, 143/130, a line on stderr
   for sig in TERM INT; do
     "$np" run fig3_6a --set solver.samples=1000000 --set solver.max_steps=10000000 --method modern --out big.csv --quiet 2> err.txt &
