@@ -150,6 +150,41 @@ TEST_CASE("Coulomb law: the CVODE cross-check agrees to 1e-8", "[rough][coulomb]
   }
 }
 
+TEST_CASE("Coulomb law: CVODE lands on the converged solution at every rtol and rounding of the push",
+          "[rough][coulomb][crosscheck]") {
+  // The solution of a Coulomb slide from rest is unique (the friction is the gradient of a
+  // convex dissipation), so rounding-level changes must move the result by the integration
+  // error only. With a Jacobian kept over many steps, CVODE's Newton iteration held the
+  // velocity's direction still near rest and chose between two results 4.4e-5 rad apart on
+  // fig3_23 by rounding (stick_slip_cvode.cpp); the reference is the event-locating BS 1000
+  // times tighter than the loosest CVODE run here.
+  for (int fig : {23, 31}) {
+    for (int ulps : {0, 1, 2, 4}) {
+      Scene sc = preset(fig);
+      double f = sc.push.force;
+      for (int k = 0; k < ulps; ++k) f = std::nextafter(f, 1.0);
+      sc.set("push.force", f);
+      RunSettings ref;
+      ref.law = "coulomb";
+      ref.method = "modern";
+      ref.rtol = 1e-14;
+      const Trajectory tr = run_engine(sc, ref);
+      for (double rtol : {1e-11, 3e-12, 1e-12, 3e-13, 1e-13}) {
+        RunSettings cv;
+        cv.law = "coulomb";
+        cv.method = "cvode";
+        cv.rtol = rtol;
+        const Trajectory tc = run_engine(sc, cv);
+        REQUIRE(tc.rows.size() == tr.rows.size());
+        double dth = 0;
+        for (std::size_t i = 0; i < tr.rows.size(); ++i) dth = std::max(dth, std::fabs(tc.rows[i][3] - tr.rows[i][3]));
+        INFO("fig3_" << fig << ", push + " << ulps << " ulp, CVODE rtol " << rtol << ": max |dtheta| " << dth);
+        CHECK(dth <= 1e-8);
+      }
+    }
+  }
+}
+
 TEST_CASE("At rest: stick inside the limit surface, slide by Gauss' principle outside", "[rough][unit][coulomb]") {
   const Scene sc = preset(27);  // mu = 0.15
   RoughBarModel m;
