@@ -108,6 +108,7 @@ std::string read_file(const fs::path& p) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
+#ifdef NANOPUSH_HAVE_MPI
 /// An executable `name` on PATH, or empty.
 fs::path find_on_path(const std::string& name) {
   const char* path = std::getenv("PATH");
@@ -121,6 +122,7 @@ fs::path find_on_path(const std::string& name) {
   }
   return {};
 }
+#endif
 
 /// Run argv[0] (a full path) with `extra_env` added, stdin from /dev/null, stdout and stderr
 /// into `log`; wait for it. Returns the exit status (128 + signal when killed).
