@@ -525,9 +525,9 @@ inline FrictionWrench rectangle_friction_from_velocity_reference(double a, doubl
 
 /// The entry points through the forms of issue 24 (closed_form, far_field): as accurate as the
 /// public ones (tests/test_friction_fast.cpp) and 0.4-0.5 x their cost per wrench on a rough
-/// run (`nanopush bench-friction`), but not yet the production path: with them the BS run of
-/// the coulomb law on fig3_31 leaves rest 4e-8 rad off the converged solution, as the old forms
-/// do at other roundings of the push (docs/friction.md, "Evaluation").
+/// run (`nanopush bench-friction`), but not yet the production path: the coulomb law's event
+/// location at rtol 1e-14 and the faithful path's bit-for-bit agreement with the F77 routine
+/// still depend on the old forms' rounding (docs/friction.md, "Evaluation").
 inline FrictionWrench rectangle_friction_wrench_fast(double a, double b, double muN, double R, double alpha,
                                                      int sense) noexcept {
   return wrench_with<mean_integrals>(a, b, muN, R, alpha, sense);
