@@ -1,6 +1,6 @@
-// nanopush bench-friction: nanoseconds per friction wrench of the closed form and far-field
-// forms of issue 24 (friction.hpp: closed_form, far_field) against the forms they replaced
-// (the *_reference functions), in one binary, interleaved; and a rough scene integrated with
+// nanopush bench-friction: nanoseconds per friction wrench of the production closed form and
+// far-field forms (friction.hpp: closed_form, far_field) against the F77 routine's forms, which
+// the faithful method keeps (the *_reference functions), in one binary, interleaved; and a rough scene integrated with
 // each. A benchmark, never a timed test: the two must agree (the bounds of
 // tests/test_friction_fast.cpp, else exit 4); the 0.5x target is reported, not asserted.
 // docs/performance.md ("Friction resultant") and docs/friction.md document the results.
@@ -98,10 +98,10 @@ struct Workload {
 FrictionWrench eval(const Workload& w, const Input& in, bool reference) {
   if (w.velocity)
     return reference ? friction_detail::rectangle_friction_from_velocity_reference(w.a, w.b, 1.0, in.p, in.q, in.r)
-                     : friction_detail::rectangle_friction_from_velocity_fast(w.a, w.b, 1.0, in.p, in.q, in.r);
+                     : rectangle_friction_from_velocity(w.a, w.b, 1.0, in.p, in.q, in.r);
   const int sense = in.r < 0 ? -1 : 1;
   return reference ? friction_detail::rectangle_friction_wrench_reference(w.a, w.b, 1.0, in.p, in.q, sense)
-                   : friction_detail::rectangle_friction_wrench_fast(w.a, w.b, 1.0, in.p, in.q, sense);
+                   : rectangle_friction_wrench(w.a, w.b, 1.0, in.p, in.q, sense);
 }
 
 /// Time `passes` sweeps over the inputs: ns per wrench. The sum of the results goes to a
@@ -142,29 +142,6 @@ void check_agreement(Workload& w) {
     if (!ok) w.agree = false;
   }
 }
-
-/// The thesis-law right-hand side (RoughBarThesisRhs and RoughBarModel::friction_cs) with the
-/// wrench through the forms of issue 24 (friction_detail::*_fast).
-struct FastRoughRhs {
-  RoughBarModel model;
-  [[nodiscard]] WorldWrench friction_cs(double c, double s, double vx, double vy, double omega) const noexcept {
-    if (model.muN == 0.0) return {};
-    const double vbx = c * vx + s * vy, vby = -s * vx + c * vy;
-    const FrictionWrench fb = friction_detail::rectangle_friction_from_velocity_fast(
-        model.geometry.a, model.geometry.b, model.muN, vbx, vby, omega);
-    return {c * fb.fx - s * fb.fy, s * fb.fx + c * fb.fy, fb.mf};
-  }
-  int operator()(double, const double* y, double* d) const noexcept {
-    const double c = std::cos(y[kTheta]), s = std::sin(y[kTheta]);
-    const WorldWrench ap = model.applied_cs(c, s);
-    const bool at_rest = y[kVx] == 0.0 && y[kVy] == 0.0 && y[kOmega] == 0.0;
-    const WorldWrench fr = at_rest ? friction_cs(c, s, model.rest_direction[0], model.rest_direction[1],
-                                                 model.rest_direction[2])
-                                   : friction_cs(c, s, y[kVx], y[kVy], y[kOmega]);
-    RoughBarModel::rhs_with(model, y, ap, fr, d);
-    return 0;
-  }
-};
 
 /// The production right-hand side, recording the body velocity of every evaluation.
 struct RecordingRhs {
@@ -309,8 +286,10 @@ int bench_friction(const BenchFrictionOptions& o) {
   }
 
   // ---- the rough scene integrated with each right-hand side, interleaved
-  const RoughBarThesisRhs old_rhs{model};
-  const FastRoughRhs new_rhs{model};
+  RoughBarModel f77_model = model;
+  f77_model.f77_forms = true;
+  const RoughBarThesisRhs old_rhs{f77_model};
+  const RoughBarThesisRhs new_rhs{model};
   RunResult ro = integrate(sc, rs, old_rhs), rn = integrate(sc, rs, new_rhs);  // warm-up and the check
   std::vector<double> run_old, run_new, run_ratio;
   for (int r = 0; r < o.repeats; ++r) {
@@ -351,8 +330,8 @@ int bench_friction(const BenchFrictionOptions& o) {
                               "every RHS evaluation of one run of the scene; integrate_<scene>: the whole run"),
       count_column("inputs", "wrenches per pass (workloads), RHS evaluations of the new run (integrate)"),
       count_column("repeats", "timed pairs (old, new), alternating which goes first"),
-      {"time_old_ns", "ns", "median time of one wrench (or one run, integrate row) with the forms before issue 24"},
-      {"time_new_ns", "ns", "median time of one wrench (or one run) with the forms of issue 24"},
+      {"time_old_ns", "ns", "median time of one wrench (or one run, integrate row) with the F77 routine's forms (the faithful method's)"},
+      {"time_new_ns", "ns", "median time of one wrench (or one run) with the production forms"},
       {"ratio", "1", "median over the pairs of new / old, each pair timed back to back"},
       {"ratio_min", "1", "smallest pair ratio"},
       {"ratio_max", "1", "largest pair ratio"},
@@ -388,14 +367,14 @@ int bench_friction(const BenchFrictionOptions& o) {
     plot_note = "no plot: gnuplot is not on PATH";
   } else {
     std::ostringstream b;
-    b << "set title 'friction wrench: ns per call, before and after issue 24 (median of " << o.repeats
+    b << "set title 'friction wrench: ns per call, F77 forms and production forms (median of " << o.repeats
       << " interleaved pairs)' noenhanced\n"
       << "set datafile separator ','\nset style data histograms\nset style histogram clustered gap 1\n"
       << "set style fill solid 0.8 border -1\nset boxwidth 0.9\nset logscale y\nset ylabel 'ns per wrench'\n"
       << "set grid ytics\nset key left top\nset xtics rotate by -25 noenhanced\n"
       << "plot '" << csv.string() << "' every ::0::" << work.size() - 1
-      << " skip 1 using 4:xtic(1) title 'before (reference forms)' lc rgb '#999999', '' every ::0::"
-      << work.size() - 1 << " skip 1 using 5 title 'issue 24' lc rgb '#1f77b4'\n";
+      << " skip 1 using 4:xtic(1) title 'F77 forms (faithful)' lc rgb '#999999', '' every ::0::"
+      << work.size() - 1 << " skip 1 using 5 title 'production forms' lc rgb '#1f77b4'\n";
     plot::render_script(b.str(), png, 900, 550);
   }
 
@@ -405,8 +384,9 @@ int bench_friction(const BenchFrictionOptions& o) {
   const auto met = [](bool ok) { return ok ? std::string("met") : std::string("**NOT met**"); };
   std::ostringstream md;
   md << "# Friction wrench benchmark\n\n"
-     << "`nanopush bench-friction`: ns per friction wrench, the forms of issue 24 (`friction.hpp`: `closed_form`, "
-        "`far_field`) against the forms before it (`closed_form_reference`, `far_field_reference`), in one binary. "
+     << "`nanopush bench-friction`: ns per friction wrench, the production forms (`friction.hpp`: `closed_form`, "
+        "`far_field`; \"after\") against the F77 routine's forms, which the faithful method keeps "
+        "(`closed_form_reference`, `far_field_reference`; \"before\"), in one binary. "
         "Contact a = 27.5 nm, b = 50 nm (the thesis nanobar); 4096 inputs per workload; per workload "
      << o.repeats << " timed pairs (old, new) back to back, alternating which goes first, about "
      << fixed(1e3 * o.seconds / (2.0 * o.repeats), 0)
@@ -467,7 +447,7 @@ int bench_friction(const BenchFrictionOptions& o) {
 
 RegisterCommand reg{
     {"bench-friction",
-     "Benchmark of the friction wrench: ns per call of the forms of issue 24 against the forms before it (same "
+     "Benchmark of the friction wrench: ns per call of the production forms against the F77 routine's forms (same "
      "binary, interleaved), by evaluation form and at a rough scene's own RHS evaluations, and the scene's run "
      "with each; CSV, PNG and report.md (docs/performance.md)",
      92, [](CLI::App& app) -> std::function<int()> {

@@ -34,8 +34,8 @@ void require_agree(const FrictionWrench& c, const double* f, double tol, const s
 
 }  // namespace
 
-// The F77 routine evaluates the corner sum of the closed form as the C++ did before issue 24
-// (friction_detail::*_reference): the two agree to 1e-13 relative in the moment too, where the
+// The F77 routine evaluates the corner sum of the closed form as the faithful method's C++ forms
+// do (friction_detail::*_reference): the two agree to 1e-13 relative in the moment too, where the
 // moment is small and both are 1e-12 relative from the exact value (an absolute error of a few
 // eps (R/L)^2 of muN L, docs/friction.md). The production C++ form rounds differently within the
 // same bound; it is checked against an exact quad-precision oracle in test_friction_fast.cpp.

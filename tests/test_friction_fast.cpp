@@ -1,8 +1,8 @@
-// The friction resultant of issue 24 (friction.hpp: closed_form with 4 logarithms and 4 square
+// The production friction resultant (friction.hpp: closed_form with 4 logarithms and 4 square
 // roots, far_field with one division per node pair, two lanes at a time) against exact
-// oracles evaluated in __float128, and against the forms it replaced (the *_reference
-// functions, kept for this test and the benchmark `nanopush bench-friction`). The cubature
-// tests of test_friction.cpp run on the new forms unchanged.
+// oracles evaluated in __float128, and against the F77 routine's forms (the *_reference
+// functions, which the faithful method evaluates, and the benchmark `nanopush bench-friction`
+// compares). The cubature tests of test_friction.cpp run on the production forms.
 #include <catch2/catch.hpp>
 
 #include <quadmath.h>
@@ -235,7 +235,7 @@ TEST_CASE("friction fast: far field vs the same Gauss-Legendre sum in quad preci
   }
 }
 
-// Against the forms before issue 24 through the public entry points, every form, R/L from 0 to
+// The public entry points against the F77 routine's forms, every form, R/L from 0 to
 // 1e15 and both senses. Bounds: far field -- both forms within 4 eps (force, units of muN) and
 // 8 eps (moment, relative) of the same sum (test above), so 8 eps and 16 eps; measured 5.9e-16
 // and 8.8e-16. Asymptotic form: unchanged, identical. Closed form -- each within its own
@@ -243,7 +243,7 @@ TEST_CASE("friction fast: far field vs the same Gauss-Legendre sum in quad preci
 // of muN and muN max(a, b); measured 1.1e-15 and 2.7e-15 here, 7e-15 in larger scans, all of
 // it the older form's error near edge lines. (Identical to 1e-15 relative, as issue 24 asks,
 // holds in the far field; in form 1 the older form is itself farther than that from exact.)
-TEST_CASE("friction fast: the _fast entry points agree with the public ones (the forms before issue 24)", "[friction][numeric]") {
+TEST_CASE("friction fast: the public entry points agree with the F77 routine's forms (the faithful method's)", "[friction][numeric]") {
   std::mt19937_64 rng(24);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   double worst[6][2] = {};
@@ -258,7 +258,7 @@ TEST_CASE("friction fast: the _fast entry points agree with the public ones (the
     const int sense = (i % 5 == 0) ? -1 : 1;
     const double R = rho * L;
     const int form = rectangle_friction_form(a, b, R);
-    const FrictionWrench n = friction_detail::rectangle_friction_wrench_fast(a, b, muN, R, alpha, sense);
+    const FrictionWrench n = rectangle_friction_wrench(a, b, muN, R, alpha, sense);
     const FrictionWrench o = friction_detail::rectangle_friction_wrench_reference(a, b, muN, R, alpha, sense);
     const double df = std::hypot(n.fx - o.fx, n.fy - o.fy) / muN;
     const double dm = std::fabs(n.mf - o.mf) / (form == 0 ? muN * L : std::fabs(o.mf));
@@ -276,7 +276,7 @@ TEST_CASE("friction fast: the _fast entry points agree with the public ones (the
     worst[form][1] = std::max(worst[form][1], dm);
   }
   for (int f = 0; f < 6; ++f)
-    WARN("form " << f << ": new vs before issue 24, force " << worst[f][0] << ", moment " << worst[f][1]
+    WARN("form " << f << ": production vs F77 forms, force " << worst[f][0] << ", moment " << worst[f][1]
                  << (f == 0 ? " (units of muN max(a,b))" : " (relative)"));
 
   // The velocity interface (the rough-surface right-hand side), the same bounds.
@@ -285,7 +285,7 @@ TEST_CASE("friction fast: the _fast entry points agree with the public ones (the
     const double v = std::pow(10.0, -3.0 + 6.0 * u(rng)), th = 2 * kPi * u(rng);
     const double vx = v * std::cos(th), vy = v * std::sin(th);
     const double omega = (u(rng) < 0.5 ? -1 : 1) * v / (L * std::pow(10.0, -1.0 + 10.0 * u(rng)));
-    const FrictionWrench n = friction_detail::rectangle_friction_from_velocity_fast(a, b, 2e-6, vx, vy, omega);
+    const FrictionWrench n = rectangle_friction_from_velocity(a, b, 2e-6, vx, vy, omega);
     const FrictionWrench o = friction_detail::rectangle_friction_from_velocity_reference(a, b, 2e-6, vx, vy, omega);
     const double rho = v / std::fabs(omega) / L;
     INFO("vx=" << vx << " vy=" << vy << " omega=" << omega << " R/L=" << rho);

@@ -44,6 +44,7 @@ Trajectory run_f77(const Scene& sc, const RunSettings& s) {
   tr.stats.nrejct = nstat[2];
   RoughBarModel model = rough_model(sc);
   model.printed = printed;
+  model.f77_forms = true;  // the friction columns as the F77 routine evaluates them
   // Outputs reached: on failure BSINT leaves later columns untouched; y holds the state at the
   // last output reached, so count the columns by comparing times reached.
   std::size_t reached = tout.size();

@@ -195,6 +195,7 @@ Trajectory run_cxx_rough(const Scene& sc, const RunSettings& s) {
   tr.atol = sc.atol_vector(s.rtol, s.atol, kRoughStateSize);
   RoughBarModel model = rough_model(sc);
   model.printed = s.law == "printed";
+  model.f77_forms = s.method == "faithful";
   const auto tout = sc.output_times();
   auto y = rough_initial(sc);
   const double n = static_cast<double>(tout.size());

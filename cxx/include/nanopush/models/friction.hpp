@@ -189,8 +189,8 @@ inline YDifference y_difference(double X, double yc, double b) noexcept {
   return {0.5 * (dyr + x2da), 0.5 * (X * dr + dy2b), X * dyr / 3.0 + (X * x2da + dy3b) / 6.0};
 }
 
-/// Form 1 as it was before issue 24 (kept for the tests and the benchmark, and as the fallback
-/// of closed_form for coordinates below 1e-100 max(a, b)): corner-term closed form,
+/// Form 1 as the F77 routine evaluates it (the faithful method's form, kept for the tests and
+/// the benchmark, and the fallback of closed_form for coordinates below 1e-100 max(a, b)): corner-term closed form,
 /// Delta_x Delta_y F with the y difference taken across the thinner side (transposing x and y
 /// when a < b) by y_difference, so a thin contact loses no digits; the x difference cancels
 /// like (R/max(a,b))^2 only. 21 log/sqrt calls. Lengths in units of max(a, b).
@@ -353,8 +353,8 @@ inline constexpr double kGl12w[6] = {0.2491470458134027850005624, 0.233492536538
 /// a sum of non-negative terms (the O(R) odd part of h cancels analytically).
 /// Requires the rectangle well away from the iCOR (rho >= kFrictionFarField).
 /// gx, gw: the h positive nodes and weights of a 2h-point Gauss-Legendre rule.
-/// As it was before issue 24 (three square roots and three divisions per pair; kept for the
-/// tests and the benchmark); far_field is the production form.
+/// As the F77 routine evaluates it (three square roots and three divisions per pair: the
+/// faithful method's form); far_field is the production form.
 inline MeanIntegrals far_field_reference(double a, double b, double xc, double yc, const double* gx,
                                          const double* gw, int h) noexcept {
   const double r = std::sqrt(xc * xc + yc * yc), inv_r2 = 1.0 / (r * r);
@@ -452,8 +452,8 @@ inline MeanIntegrals mean_integrals(double a, double b, double rho, double c, do
   return far_field(a, b, xc, yc, kGl4x, kGl4w);
 }
 
-/// mean_integrals with the forms before issue 24 (closed_form_reference, far_field_reference):
-/// the production path of the public entry points (see rectangle_friction_from_velocity_fast).
+/// mean_integrals with the F77 routine's forms (closed_form_reference, far_field_reference):
+/// the faithful method's path (see rectangle_friction_from_velocity_reference).
 inline MeanIntegrals mean_integrals_reference(double a, double b, double rho, double c, double s) noexcept {
   if (!(rho < kFrictionAsymptotic)) return {c, s, (a * a * s * s + b * b * c * c) / (3.0 * rho)};
   const double xc = rho * c, yc = rho * s;
@@ -484,8 +484,8 @@ namespace friction_detail {
 using MeansFn = MeanIntegrals (*)(double, double, double, double, double) noexcept;
 
 /// rectangle_friction_wrench and rectangle_friction_from_velocity with a choice of the mean
-/// integrals: mean_integrals (production) or mean_integrals_reference (the forms before
-/// issue 24, for the tests and the benchmark).
+/// integrals: mean_integrals (production) or mean_integrals_reference (the F77 routine's forms,
+/// for the faithful method, the tests and the benchmark).
 template <MeansFn Means>
 inline FrictionWrench wrench_with(double a, double b, double muN, double R, double alpha, int sense) noexcept {
   NANOPUSH_FRICTION_ASSERT(a > 0.0 && b > 0.0 && R >= 0.0 && (sense == 1 || sense == -1));
@@ -512,8 +512,10 @@ inline FrictionWrench from_velocity_with(double a, double b, double muN, double 
   return wrench_from_means(Means(a / L, b / L, rho, c, s), muN, sense, L);
 }
 
-/// The public entry points' forms (the corner-by-corner closed form and three divisions per
-/// far-field pair), by name: what the F77 routine evaluates too.
+/// The entry points through the F77 routine's forms (the corner-by-corner closed form and three
+/// divisions per far-field pair; mean_integrals_reference): the same wrench within a few ulps
+/// at 2-2.5 x the cost. The faithful method evaluates these, so that its steps are the F77
+/// engine's to the last bit (RoughBarModel::f77_forms).
 inline FrictionWrench rectangle_friction_wrench_reference(double a, double b, double muN, double R, double alpha,
                                                           int sense) noexcept {
   return wrench_with<mean_integrals_reference>(a, b, muN, R, alpha, sense);
@@ -521,20 +523,6 @@ inline FrictionWrench rectangle_friction_wrench_reference(double a, double b, do
 inline FrictionWrench rectangle_friction_from_velocity_reference(double a, double b, double muN, double vx,
                                                                  double vy, double omega) noexcept {
   return from_velocity_with<mean_integrals_reference>(a, b, muN, vx, vy, omega);
-}
-
-/// The entry points through the forms of issue 24 (closed_form, far_field): as accurate as the
-/// public ones (tests/test_friction_fast.cpp) and 0.4-0.5 x their cost per wrench on a rough
-/// run (`nanopush bench-friction`), but not yet the production path: the coulomb law's event
-/// location at rtol 1e-14 and the faithful path's bit-for-bit agreement with the F77 routine
-/// still depend on the old forms' rounding (docs/friction.md, "Evaluation").
-inline FrictionWrench rectangle_friction_wrench_fast(double a, double b, double muN, double R, double alpha,
-                                                     int sense) noexcept {
-  return wrench_with<mean_integrals>(a, b, muN, R, alpha, sense);
-}
-inline FrictionWrench rectangle_friction_from_velocity_fast(double a, double b, double muN, double vx, double vy,
-                                                            double omega) noexcept {
-  return from_velocity_with<mean_integrals>(a, b, muN, vx, vy, omega);
 }
 
 }  // namespace friction_detail
@@ -546,7 +534,7 @@ inline FrictionWrench rectangle_friction_from_velocity_fast(double a, double b, 
 /// Unchecked hot path (preconditions in the header comment); see *_checked.
 inline FrictionWrench rectangle_friction_wrench(double a, double b, double muN, double R, double alpha,
                                                 int sense) noexcept {
-  return friction_detail::wrench_with<friction_detail::mean_integrals_reference>(a, b, muN, R, alpha, sense);
+  return friction_detail::wrench_with<friction_detail::mean_integrals>(a, b, muN, R, alpha, sense);
 }
 
 /// Friction wrench from the body-axis rigid velocity: CM velocity (vx, vy) [m/s] and angular
@@ -555,7 +543,7 @@ inline FrictionWrench rectangle_friction_wrench(double a, double b, double muN, 
 /// zero wrench at rest. Sense = sign(omega).
 inline FrictionWrench rectangle_friction_from_velocity(double a, double b, double muN, double vx, double vy,
                                                        double omega) noexcept {
-  return friction_detail::from_velocity_with<friction_detail::mean_integrals_reference>(a, b, muN, vx, vy, omega);
+  return friction_detail::from_velocity_with<friction_detail::mean_integrals>(a, b, muN, vx, vy, omega);
 }
 
 /// Checked entry points: throw nanopush::InputError naming the field, value and allowed range
