@@ -27,9 +27,22 @@ struct PowerMargin {
   }
 };
 
+double norm3(const std::array<double, 3>& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+
 std::array<double, 3> normalised(std::array<double, 3> v) {
-  const double n = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  const double n = norm3(v);
   return {v[0] / n, v[1] / n, v[2] / n};
+}
+
+/// The gradient of h at the unit vector xi split into its normal part gr (returned through
+/// the reference) and its tangent part (returned); h(xi) through *h when asked.
+std::array<double, 3> tangent_gradient(const PowerMargin& pm, const std::array<double, 3>& xi, double& gr,
+                                       double* h = nullptr) {
+  std::array<double, 3> g;
+  const double hv = pm.eval(xi, &g);
+  if (h) *h = hv;
+  gr = g[0] * xi[0] + g[1] * xi[1] + g[2] * xi[2];
+  return {g[0] - gr * xi[0], g[1] - gr * xi[1], g[2] - gr * xi[2]};
 }
 
 }  // namespace
@@ -39,7 +52,7 @@ RestAnalysis analyse_rest(const RoughBarModel& model, double theta) {
   const WorldWrench ap = model.applied(theta);
   const double sm = std::sqrt(model.mass), si = std::sqrt(model.inertia);
   PowerMargin pm{model, theta, {ap.fx / sm, ap.fy / sm, ap.mf / si}, sm, si};
-  const double wn = std::sqrt(pm.w[0] * pm.w[0] + pm.w[1] * pm.w[1] + pm.w[2] * pm.w[2]);
+  const double wn = norm3(pm.w);
   if (wn == 0.0) return r;  // nothing pushes: stuck
   if (model.muN == 0.0) {   // frictionless: A = M^{-1} W
     r.stuck = false;
@@ -66,11 +79,9 @@ RestAnalysis analyse_rest(const RoughBarModel& model, double theta) {
   // 2. Projected gradient ascent on the sphere with backtracking.
   double step = 0.5;
   for (int it = 0; it < 500 && step > 1e-14; ++it) {
-    std::array<double, 3> g;
-    const double h = pm.eval(best, &g);
-    const double gr = g[0] * best[0] + g[1] * best[1] + g[2] * best[2];
-    std::array<double, 3> tg = {g[0] - gr * best[0], g[1] - gr * best[1], g[2] - gr * best[2]};
-    const double tn = std::sqrt(tg[0] * tg[0] + tg[1] * tg[1] + tg[2] * tg[2]);
+    double h = 0, gr = 0;
+    const std::array<double, 3> tg = tangent_gradient(pm, best, gr, &h);
+    const double tn = norm3(tg);
     if (tn <= 1e-13 * wn) break;
     bool improved = false;
     while (step > 1e-14) {
@@ -94,21 +105,14 @@ RestAnalysis analyse_rest(const RoughBarModel& model, double theta) {
   //    the converged solution, depending on the rounding of the push. Barzilai-Borwein steps
   //    on the tangent gradient itself (not on h) take it to rounding (~5e-16).
   {
-    const auto norm3 = [](const std::array<double, 3>& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); };
-    const auto tangent = [&](const std::array<double, 3>& xi, double& gr) {
-      std::array<double, 3> g;
-      pm.eval(xi, &g);
-      gr = g[0] * xi[0] + g[1] * xi[1] + g[2] * xi[2];
-      return std::array<double, 3>{g[0] - gr * xi[0], g[1] - gr * xi[1], g[2] - gr * xi[2]};
-    };
     double gr = 0;
-    std::array<double, 3> x = best, t = tangent(best, gr);
+    std::array<double, 3> x = best, t = tangent_gradient(pm, best, gr);
     double tn = norm3(t);
     double alpha = 1e-3 / std::max(tn, 1e-300);
     for (int it = 0; it < 60 && tn > 1e-15 * std::fabs(gr); ++it) {
       const auto xn = normalised({x[0] + alpha * t[0], x[1] + alpha * t[1], x[2] + alpha * t[2]});
       double grn = 0;
-      const auto tnv = tangent(xn, grn);
+      const auto tnv = tangent_gradient(pm, xn, grn);
       const std::array<double, 3> sv = {xn[0] - x[0], xn[1] - x[1], xn[2] - x[2]};
       const std::array<double, 3> yv = {tnv[0] - t[0], tnv[1] - t[1], tnv[2] - t[2]};
       const double sy = sv[0] * yv[0] + sv[1] * yv[1] + sv[2] * yv[2];
