@@ -634,7 +634,7 @@ RegisterCommand reg{
 
 RegisterReproduce step{{"bench_smooth",
                         "work-precision of every engine on the smooth nanobar (fig3_6a) against the exact solution",
-                        70, reproduce_bench_smooth}};
+                        70, reproduce_bench_smooth, 9.0}};
 
 RegisterReproduce step_rough{
     {"bench_rough",
@@ -643,7 +643,8 @@ RegisterReproduce step_rough{
      71, [](ReproduceContext& c) {
        reproduce_bench_scene(c, "bench_rough", "fig3_17", "rough_mu005", "Work-precision: rough surface, mu = 0.05",
                              "mu = 0.05");
-     }}};
+     },
+     7.0}};
 // The stick-slip scene (mu = 0.15, coulomb law): the event-locating integrators against every
 // engine without event location, with the budgets of stick_slip_budgets.
 RegisterReproduce step_stick{
@@ -658,7 +659,8 @@ RegisterReproduce step_stick{
                                stick_slip_budgets(o);
                                if (c.quick) o.kstep = 6;
                              });
-     }}};
+     },
+     7.0}};
 
 }  // namespace NANOPUSH_UNITY_ID
 }  // namespace

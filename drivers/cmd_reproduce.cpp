@@ -1,12 +1,10 @@
 // nanopush reproduce: every thesis table and figure the project reproduces, both engines,
 // into one directory with a Markdown report. Steps are registered by the cmd_*.cpp files.
 #include <algorithm>
-#include <array>
 #include <atomic>
 #include <chrono>
 #include <iostream>
 #include <mutex>
-#include <string_view>
 #include <thread>
 
 #include "nanopush/numerics/error.hpp"
@@ -81,15 +79,11 @@ int run_reproduce(const Options& o) {
   std::vector<ReproduceContext> parts(n);
   std::vector<std::size_t> order(n);
   for (std::size_t k = 0; k < n; ++k) order[k] = k;
-  // Longest first (measured on a 2-core machine: bench_stick 11.5 s, bench_rough and
-  // bench_smooth ~10 s, the rough figures 7.5 s, every other step < 1 s), so no long step
-  // starts last beside an idle core.
-  const auto rank = [&](std::size_t k) {
-    static const std::array<std::string_view, 4> longest{"bench_stick", "bench_rough", "bench_smooth", "fig3_12-32"};
-    const auto it = std::find(longest.begin(), longest.end(), run[k]->name);
-    return it != longest.end() ? static_cast<int>(it - longest.begin()) : is_benchmark(run[k]->name) ? 4 : 5;
-  };
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return rank(i) < rank(j); });
+  // Longest first (ReproduceStep::cost_s), then in step order.
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) {
+    if (run[i]->cost_s != run[j]->cost_s) return run[i]->cost_s > run[j]->cost_s;
+    return run[i]->order < run[j]->order;
+  });
   std::atomic<std::size_t> next{0};
   std::mutex print;
   std::size_t done = 0;

@@ -315,7 +315,7 @@ void reproduce_rough(ReproduceContext& ctx) {
 }
 
 RegisterReproduce step{{"fig3_12-32", "rough-surface nanobar, mu = 0 ... 0.20, thesis, printed and coulomb laws, both engines",
-                        20, reproduce_rough}};
+                        20, reproduce_rough, 7.0}};
 
 }  // namespace NANOPUSH_UNITY_ID
 }  // namespace

@@ -41,6 +41,9 @@ struct ReproduceStep {
   std::string name, description;
   int order;
   std::function<void(ReproduceContext&)> run;
+  /// Typical wall time [s] on a 2-core machine: steps start longest first, so no long step
+  /// starts last beside an idle core (0: under a second).
+  double cost_s = 0;
 };
 
 std::vector<Command>& commands();
