@@ -1,8 +1,9 @@
 # The installed package works for other projects and users, wherever it is (issue 8):
 # tests/export/run_export_test.cmake, one CTest per check, for two install configurations:
 #   export.static.*  `cmake --install` of this build tree (static libraries)
-#   export.shared.*  nanopush configured and built again inside the test with -DBUILD_SHARED_LIBS=ON
-#                    -DNANOPUSH_TESTS=OFF (same build type and flags), then installed
+#   export.shared.*  nanopush configured again inside the test with -DBUILD_SHARED_LIBS=ON
+#                    -DNANOPUSH_TESTS=OFF, linking this build tree's objects into shared libraries
+#                    (cmake/ObjectReuse.cmake: no second compile), then installed
 # Each mode's install step is a fixture of its checks:
 #   cmake_consumers  C++ (no CMAKE_CXX_STANDARD), Fortran, and a C++-only project (no Fortran)
 #   pkgconfig_c      a C program built with `pkg-config --cflags --libs nanopush` only
@@ -54,8 +55,3 @@ foreach(_mode IN LISTS _export_modes)
       PASS_REGULAR_EXPRESSION "export ${_mode} ${_step}: all checks hold")
   endforeach()
 endforeach()
-# The shared build compiles the whole project once more: let it start early (ctest -j runs
-# the longest-known tests first; this is the hint before any timing is recorded).
-if(TARGET nanopush AND "shared" IN_LIST _export_modes)
-  set_tests_properties(export.shared.install PROPERTIES COST 1000)
-endif()

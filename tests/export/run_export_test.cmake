@@ -1,8 +1,10 @@
 # The installed package, checked as other projects and users meet it (issue 8, "install and link
 # from anywhere"). One step per CTest (tests/cli/export.cmake), against a fresh install:
-#   install          static: `cmake --install BUILD_DIR`; shared: configure and build nanopush with
-#                    -DBUILD_SHARED_LIBS=ON -DNANOPUSH_TESTS=OFF -DNANOPUSH_PYTHON=OFF in WORK_DIR/nanopush,
-#                    then install
+#   install          static: `cmake --install BUILD_DIR`; shared: configure nanopush with
+#                    -DBUILD_SHARED_LIBS=ON -DNANOPUSH_TESTS=OFF -DNANOPUSH_PYTHON=OFF
+#                    -DNANOPUSH_OBJECTS_FROM=BUILD_DIR in WORK_DIR/nanopush (it links BUILD_DIR's
+#                    position-independent objects into shared libraries: cmake/ObjectReuse.cmake),
+#                    build, then install
 #   cmake_consumers  tests/export (C, C++ and Fortran; no CMAKE_CXX_STANDARD) and tests/export/cxx_only
 #                    (C++ only: no Fortran enabled) built against the prefix; same numbers as
 #                    `nanopush run` / `nanopush friction`
@@ -64,19 +66,21 @@ endfunction()
 # -------------------------------------------------------------------------------------------
 if(STEP STREQUAL "install")
   if(MODE STREQUAL "shared")
-    # The same build type and flags as the build tree (the numbers must be the same), shared
-    # libraries, no tests: the libraries, the command line and the legacy programs (not the
+    # The build tree's objects (compiled once, position-independent) linked into shared
+    # libraries, with the same build type and flags: the same machine code, so the same
+    # numbers. No tests: the libraries, the command line and the legacy programs (not the
     # Python extension: no check here uses it, and python.install covers its install).
     string(TIMESTAMP t0 "%s")
     run(${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${install_from} -G ${GENERATOR}
         -DCMAKE_MAKE_PROGRAM=${MAKE_PROGRAM} -DCMAKE_BUILD_TYPE=${BUILD_TYPE} ${CONFIG_FLAGS}
         -DCMAKE_C_COMPILER=${C_COMPILER} -DCMAKE_CXX_COMPILER=${CXX_COMPILER}
         -DCMAKE_Fortran_COMPILER=${Fortran_COMPILER}
-        -DBUILD_SHARED_LIBS=ON -DNANOPUSH_TESTS=OFF -DNANOPUSH_PYTHON=OFF)
+        -DBUILD_SHARED_LIBS=ON -DNANOPUSH_TESTS=OFF -DNANOPUSH_PYTHON=OFF
+        -DNANOPUSH_OBJECTS_FROM=${BUILD_DIR})
     run(${CMAKE_COMMAND} --build ${install_from})
     string(TIMESTAMP t1 "%s")
     math(EXPR dt "${t1} - ${t0}")
-    message(STATUS "shared nanopush configured and built in ${dt} s")
+    message(STATUS "shared nanopush configured and linked in ${dt} s")
   endif()
   fresh_install(${prefix})
   file(GLOB libs ${prefix}/lib/libnanopush_*)
