@@ -273,6 +273,16 @@ StickSlipResult integrate_coulomb(const RoughBarModel& model, const BsOptions<do
                         "the start direction to be resolved (near the minimum force; the CVODE path copes)");
   };
   int n_events = 0;
+  // A rest reached at time t (the state's velocity still to be zeroed): stick, or choose the
+  // direction in which it slides on; recorded as an event.
+  auto rest_event = [&] {
+    if (++n_events > kMaxEvents)
+      throw CoulombError(BsStatus::too_many_steps, "coulomb law: more than " + std::to_string(kMaxEvents) + " rest events");
+    check_progress();
+    const bool s = at_rest();
+    steps_in_slide = 0;
+    out.events.push_back({t, s});
+  };
   // Speed below which a sign change of g is taken as "came to rest" (not a rotation of V by
   // more than 90 degrees within one step, which the error control makes implausible anyway).
   double peak_speed = speed_scaled(model, y.data());
@@ -332,11 +342,7 @@ StickSlipResult integrate_coulomb(const RoughBarModel& model, const BsOptions<do
       // kinetic energy left is dissipated by friction in the remaining motion: book it there
       // (the push's work over that motion is below F times the position tolerance).
       y[kWorkFric] -= model.kinetic_energy(y.data());
-      if (++n_events > kMaxEvents) throw CoulombError(BsStatus::too_many_steps, "coulomb law: more than " + std::to_string(kMaxEvents) + " rest events");
-      check_progress();
-      const bool s = at_rest();
-      steps_in_slide = 0;
-      out.events.push_back({t, s});
+      rest_event();
       continue;
     }
     // An event lies in (t, t1]: the velocity passed through zero. Locate g(t*) = 0 by the
@@ -404,11 +410,7 @@ StickSlipResult integrate_coulomb(const RoughBarModel& model, const BsOptions<do
       t = t_rest;
       y = y_rest;
       y[kWorkFric] -= model.kinetic_energy(y.data());
-      if (++n_events > kMaxEvents) throw CoulombError(BsStatus::too_many_steps, "coulomb law: more than " + std::to_string(kMaxEvents) + " rest events");
-      check_progress();
-      const bool s = at_rest();
-      steps_in_slide = 0;
-      out.events.push_back({t, s});
+      rest_event();
       continue;
     }
     // The rest instant: the end of the bracket on the g >= 0 side, velocity set to zero.
@@ -420,11 +422,7 @@ StickSlipResult integrate_coulomb(const RoughBarModel& model, const BsOptions<do
       mode = mode_of(model, y[kVx], y[kVy], y[kOmega]);
       continue;
     }
-    if (++n_events > kMaxEvents) throw CoulombError(BsStatus::too_many_steps, "coulomb law: more than " + std::to_string(kMaxEvents) + " rest events");
-    check_progress();
-    const bool s = at_rest();
-    steps_in_slide = 0;
-    out.events.push_back({t, s});
+    rest_event();
   }
   out.stuck_at_end = stuck;
   return out;
