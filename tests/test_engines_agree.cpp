@@ -10,8 +10,10 @@
 #include "nanopush/numerics/elliptic.hpp"
 #include "nanopush/models/rigid_body.hpp"
 #include "nanopush/engines/engines.hpp"
+#include "trajectory_checks.hpp"
 
 using namespace nanopush;
+using nanopush::test::max_dtheta;
 
 // File-local: its own namespace in the unity build (tests/CMakeLists.txt).
 namespace {
@@ -114,9 +116,7 @@ TEST_CASE("Every Fig 3.6 preset: identical counts and theta to 1e-12, C++ faithf
     CHECK(ta.stats.nfcn == tb.stats.nfcn);
     CHECK(ta.stats.naccpt == tb.stats.naccpt);
     CHECK(ta.stats.nrejct == tb.stats.nrejct);
-    REQUIRE(ta.rows.size() == tb.rows.size());
-    double dev = 0;
-    for (std::size_t i = 0; i < ta.rows.size(); ++i) dev = std::max(dev, std::fabs(ta.rows[i][3] - tb.rows[i][3]));
+    const double dev = max_dtheta(ta, tb);
     CHECK(dev <= 1e-12);
   }
 }

@@ -9,9 +9,11 @@
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/engines/engines.hpp"
 #include "nanopush/models/stick_slip.hpp"
+#include "trajectory_checks.hpp"
 
 using namespace nanopush;
 using Catch::Matchers::Contains;
+using nanopush::test::max_dtheta;
 
 // File-local: its own namespace in the unity build (tests/CMakeLists.txt).
 namespace {
@@ -38,14 +40,6 @@ Trajectory coulomb_reference(const Scene& sc) {
   ref.method = "modern";
   ref.rtol = 1e-14;
   return run_engine(sc, ref);
-}
-
-/// max |theta_a - theta_b| over the outputs [rad] (the same output times).
-double max_dtheta(const Trajectory& a, const Trajectory& b) {
-  REQUIRE(a.rows.size() == b.rows.size());
-  double d = 0;
-  for (std::size_t i = 0; i < a.rows.size(); ++i) d = std::max(d, std::fabs(a.rows[i][3] - b.rows[i][3]));
-  return d;
 }
 
 struct Balance {

@@ -10,8 +10,10 @@
 #include <string>
 
 #include "nanopush/engines/engines.hpp"
+#include "trajectory_checks.hpp"
 
 using namespace nanopush;
+using nanopush::test::max_dtheta;
 
 // File-local: its own namespace in the unity build (tests/CMakeLists.txt).
 namespace {
@@ -30,14 +32,6 @@ Trajectory run(const Scene& sc, const std::string& method, double rtol) {
   return run_engine(sc, rs);
 }
 
-/// Largest |theta - theta_ref| over the samples [rad].
-double theta_error(const Trajectory& a, const Trajectory& ref) {
-  REQUIRE(a.rows.size() == ref.rows.size());
-  double e = 0;
-  for (std::size_t i = 0; i < a.rows.size(); ++i) e = std::max(e, std::fabs(a.rows[i][3] - ref.rows[i][3]));
-  return e;
-}
-
 }  // namespace
 
 TEST_CASE("Thesis law from rest: modern and dop853 reach the faithful method's accuracy", "[rough][numeric][start]") {
@@ -45,9 +39,9 @@ TEST_CASE("Thesis law from rest: modern and dop853 reach the faithful method's a
     const Scene sc = preset(fig);
     const Trajectory ref = run(sc, "faithful", 1e-14);
     for (double rtol : {1e-8, 1e-10}) {
-      const double e_faithful = theta_error(run(sc, "faithful", rtol), ref);
+      const double e_faithful = max_dtheta(run(sc, "faithful", rtol), ref);
       for (const char* m : {"modern", "dop853"}) {
-        const double e = theta_error(run(sc, m, rtol), ref);
+        const double e = max_dtheta(run(sc, m, rtol), ref);
         INFO("fig3_" << fig << " " << m << " rtol " << rtol << ": theta error " << e << " rad, faithful " << e_faithful);
         // Started with zero friction, modern was 8x (both scenes at 1e-8), 26x (fig3_17 at
         // 1e-10) and 196x (fig3_24 at 1e-10) the faithful method's error.
@@ -63,11 +57,8 @@ TEST_CASE("Thesis law from rest: the faithful method keeps the F77 engine's star
   c.method = "faithful";
   f.engine = "f77";
   const Trajectory a = run_engine(sc, c), b = run_engine(sc, f);
-  REQUIRE(a.rows.size() == b.rows.size());
   CHECK(a.stats.nfcn == b.stats.nfcn);
-  double d = 0;
-  for (std::size_t i = 0; i < a.rows.size(); ++i) d = std::max(d, std::fabs(a.rows[i][3] - b.rows[i][3]));
-  CHECK(d <= 1e-12);
+  CHECK(max_dtheta(a, b) <= 1e-12);
 }
 
 }  // namespace NANOPUSH_UNITY_ID
