@@ -48,7 +48,7 @@ endif()
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/cxx/include/nanopush DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
         FILES_MATCHING PATTERN "*.hpp")
 install(FILES ${PROJECT_SOURCE_DIR}/bindings/nanopush.h DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
-file(GLOB _bridge_headers ${PROJECT_SOURCE_DIR}/bindings/f77_*.h)
+file(GLOB _bridge_headers ${PROJECT_SOURCE_DIR}/fortran/bridge/f77_*.h)
 install(FILES ${_bridge_headers} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/nanopush)
 install(DIRECTORY ${NANOPUSH_MODDIR}/nanopush/ ${NANOPUSH_MODDIR}/bridge/
         DESTINATION ${NANOPUSH_INSTALL_MODDIR} FILES_MATCHING PATTERN "*.mod")

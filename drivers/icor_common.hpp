@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "f77_icor.hpp"
+#include "nanopush/engines/f77_icor.hpp"
 #include "nanopush/models/icor.hpp"
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/outputs/io.hpp"

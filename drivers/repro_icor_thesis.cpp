@@ -7,7 +7,7 @@
 #include <optional>
 #include <sstream>
 
-#include "f77_icor.hpp"
+#include "nanopush/engines/f77_icor.hpp"
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/models/icor.hpp"
 #include "nanopush/models/icor_dynamic.hpp"

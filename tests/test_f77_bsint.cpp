@@ -1,4 +1,4 @@
-// The FORTRAN 77 Bulirsch-Stoer engine through its C bridge (bindings/f77_bsint.h):
+// The FORTRAN 77 Bulirsch-Stoer engine through its C bridge (fortran/bridge/f77_bsint.h):
 // C++ callbacks via udata, accuracy against exact solutions, counts, errors, re-entrancy,
 // and the F77 smooth nanobar (Fig 3.6, theta0 = 0.5) against the exact pendulum.
 #include <catch2/catch.hpp>

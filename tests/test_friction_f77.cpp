@@ -1,4 +1,4 @@
-// Cross-language: the FORTRAN 77 friction wrench (fortran/rectfr.f via bindings/f77_friction.f90)
+// Cross-language: the FORTRAN 77 friction wrench (fortran/rectfr.f via fortran/bridge/f77_friction.f90)
 // against the C++ one, at every point of the random set, the far-field sweep and the edge cases.
 #include <catch2/catch.hpp>
 

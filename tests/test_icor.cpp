@@ -8,7 +8,7 @@
 #include <random>
 #include <vector>
 
-#include "f77_icor.hpp"
+#include "nanopush/engines/f77_icor.hpp"
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/models/icor.hpp"
 #include "nanopush/numerics/roots.hpp"

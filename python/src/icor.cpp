@@ -7,7 +7,7 @@
 #include <limits>
 #include <utility>
 
-#include "f77_icor.hpp"
+#include "nanopush/engines/f77_icor.hpp"
 #include "nanopush/models/icor.hpp"
 #include "nanopush/models/icor_dynamic.hpp"
 

@@ -4,7 +4,7 @@
 //
 // Forces follow surface_forces.hpp: SI, attractive magnitudes positive, W = 2 gamma.
 // The FORTRAN 77 versions of these formulas live in fortran/rolling.f (bridge:
-// bindings/f77_rolling.h); tests/test_forces_rolling.cpp compares the two.
+// fortran/bridge/f77_rolling.h); tests/test_forces_rolling.cpp compares the two.
 #pragma once
 #include <string>
 #include <string_view>

@@ -1,4 +1,4 @@
-/* nanopush: C view of the FORTRAN 77 engine (bind(C) shims in bindings/f77_*.f90).
+/* nanopush: C view of the FORTRAN 77 engine (bind(C) shims in fortran/bridge/f77_*.f90).
  * Every name starts with np_f77_. All quantities SI. Arrays are contiguous doubles;
  * shapes are given beside each argument. Functions return 0 on success, a positive
  * status otherwise; they never stop the program. */

@@ -1,5 +1,5 @@
-// C++ view of the FORTRAN 77 iCOR solvers (f77_icor.h): status codes become exceptions
-// (InputError for bad input, SolverError for numerical failures) and results the same
+// C++ view of the FORTRAN 77 iCOR solvers (the bridge's f77_icor.h; engines layer): status
+// codes become exceptions (InputError for bad input, SolverError for numerical failures) and results the same
 // CubicSolution the C++ solvers return, so drivers and tests compare like with like.
 #pragma once
 #include <string>

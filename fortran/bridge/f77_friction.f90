@@ -1,24 +1,11 @@
 !> Bridge to the FORTRAN 77 rectangle friction wrench (fortran/rectfr.f).
-!> C prototypes, units and status codes: bindings/f77_friction.h.
+!> C prototypes, units and status codes: fortran/bridge/f77_friction.h.
 module nanopush_f77_friction
   use, intrinsic :: iso_c_binding, only: c_int, c_double, c_char, c_null_char
+  use nanopush_f77_interfaces, only: rectfr, rectfv
   implicit none
   private
   public :: np_f77_rectangle_friction, np_f77_rectangle_friction_velocity, np_f77_friction_message
-
-  interface
-    subroutine rectfr(a, b, fmun, r, alpha, isense, fx, fy, fm, ierr)
-      double precision, intent(in) :: a, b, fmun, r, alpha
-      integer, intent(in) :: isense
-      double precision, intent(out) :: fx, fy, fm
-      integer, intent(out) :: ierr
-    end subroutine rectfr
-    subroutine rectfv(a, b, fmun, vx, vy, omega, fx, fy, fm, ierr)
-      double precision, intent(in) :: a, b, fmun, vx, vy, omega
-      double precision, intent(out) :: fx, fy, fm
-      integer, intent(out) :: ierr
-    end subroutine rectfv
-  end interface
 
 contains
 

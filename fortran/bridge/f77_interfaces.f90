@@ -93,6 +93,81 @@ module nanopush_f77_interfaces
       double precision, intent(out) :: b
       integer, intent(out) :: ierr
     end subroutine rljkrl
+
+    !> FORTRAN 77 rectangle friction wrench (fortran/rectfr.f): by iCOR and by velocity.
+    subroutine rectfr(a, b, fmun, r, alpha, isense, fx, fy, fm, ierr)
+      double precision, intent(in) :: a, b, fmun, r, alpha
+      integer, intent(in) :: isense
+      double precision, intent(out) :: fx, fy, fm
+      integer, intent(out) :: ierr
+    end subroutine rectfr
+    subroutine rectfv(a, b, fmun, vx, vy, omega, fx, fy, fm, ierr)
+      double precision, intent(in) :: a, b, fmun, vx, vy, omega
+      double precision, intent(out) :: fx, fy, fm
+      integer, intent(out) :: ierr
+    end subroutine rectfv
+
+    !> FORTRAN 77 iCOR formulas and cubics (fortran/icor.f, fortran/brent.f).
+    subroutine icr401(yn, rl, r, ierr)
+      double precision, intent(in) :: yn, rl
+      double precision, intent(out) :: r
+      integer, intent(out) :: ierr
+    end subroutine icr401
+    subroutine icr402(yn, rl, r, ierr)
+      double precision, intent(in) :: yn, rl
+      double precision, intent(out) :: r
+      integer, intent(out) :: ierr
+    end subroutine icr402
+    subroutine icr403(yn, rl, r, ierr)
+      double precision, intent(in) :: yn, rl
+      double precision, intent(out) :: r
+      integer, intent(out) :: ierr
+    end subroutine icr403
+    subroutine icr413(yn, rl, r, ierr)
+      double precision, intent(in) :: yn, rl
+      double precision, intent(out) :: r
+      integer, intent(out) :: ierr
+    end subroutine icr413
+    subroutine icr505(yn, rk2, r, ierr)
+      double precision, intent(in) :: yn, rk2
+      double precision, intent(out) :: r
+      integer, intent(out) :: ierr
+    end subroutine icr505
+    subroutine icr407(rmu, w, yn, f, rl, r, ierr)
+      double precision, intent(in) :: rmu, w, yn, f, rl
+      double precision, intent(out) :: r
+      integer, intent(out) :: ierr
+    end subroutine icr407
+    subroutine icr408(rmu, w, yn, rl, f, ierr)
+      double precision, intent(in) :: rmu, w, yn, rl
+      double precision, intent(out) :: f
+      integer, intent(out) :: ierr
+    end subroutine icr408
+    subroutine icr410(rmu, w, r, rl, f, ierr)
+      double precision, intent(in) :: rmu, w, r, rl
+      double precision, intent(out) :: f
+      integer, intent(out) :: ierr
+    end subroutine icr410
+    subroutine icr411(rmu, w, r, yn, rl, f, ierr)
+      double precision, intent(in) :: rmu, w, r, yn, rl
+      double precision, intent(out) :: f
+      integer, intent(out) :: ierr
+    end subroutine icr411
+    subroutine icr502(rmu, w, r, yn, rl, rk2, f, ierr)
+      double precision, intent(in) :: rmu, w, r, yn, rl, rk2
+      double precision, intent(out) :: f
+      integer, intent(out) :: ierr
+    end subroutine icr502
+    subroutine icrlap(yn, rl, rk2, roots, nreal, ncplx, ninf, resmax, ierr)
+      double precision, intent(in) :: yn, rl, rk2
+      double precision, intent(out) :: roots(3), resmax
+      integer, intent(out) :: nreal, ncplx, ninf, ierr
+    end subroutine icrlap
+    subroutine icrbrt(yn, rl, rk2, roots, nreal, ncplx, ninf, resmax, niter, ierr)
+      double precision, intent(in) :: yn, rl, rk2
+      double precision, intent(out) :: roots(3), resmax
+      integer, intent(out) :: nreal, ncplx, ninf, niter, ierr
+    end subroutine icrbrt
   end interface
 
 end module nanopush_f77_interfaces

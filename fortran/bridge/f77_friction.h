@@ -1,5 +1,5 @@
 /* nanopush: C view of the FORTRAN 77 rectangle friction wrench (fortran/rectfr.f, bridged by
- * bindings/f77_friction.f90). Same conventions and algorithm as nanopush::rectangle_friction_*
+ * fortran/bridge/f77_friction.f90). Same conventions and algorithm as nanopush::rectangle_friction_*
  * (cxx/include/nanopush/models/friction.hpp): body axes at the centre of mass, x' across the width,
  * y' along the length, iCOR at -R (cos alpha, sin alpha). SI units. Functions return 0 on
  * success and a positive status otherwise (wrench set to zero); they never stop the program.

@@ -5,6 +5,8 @@
 module nanopush_f77_icor
   use, intrinsic :: iso_c_binding, only: c_int, c_double
   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf
+  use nanopush_f77_interfaces, only: icr401, icr402, icr403, icr413, icr505, icr407, icr408, icr410, icr411, &
+                                     icr502, icrlap, icrbrt
   implicit none
   private
   public :: np_f77_icor_formula, np_f77_icor_force, np_f77_icor_cubic_lapack, np_f77_icor_cubic_brent
@@ -13,69 +15,6 @@ module nanopush_f77_icor
 
   !> Formula selectors for np_f77_icor_formula (keep in step with f77_icor.h).
   integer(c_int), parameter :: eq_4_1 = 1, eq_4_2 = 2, eq_4_3 = 3, eq_4_13 = 13, eq_5_5 = 55
-
-  interface
-    subroutine icr401(yn, rl, r, ierr)
-      double precision, intent(in) :: yn, rl
-      double precision, intent(out) :: r
-      integer, intent(out) :: ierr
-    end subroutine icr401
-    subroutine icr402(yn, rl, r, ierr)
-      double precision, intent(in) :: yn, rl
-      double precision, intent(out) :: r
-      integer, intent(out) :: ierr
-    end subroutine icr402
-    subroutine icr403(yn, rl, r, ierr)
-      double precision, intent(in) :: yn, rl
-      double precision, intent(out) :: r
-      integer, intent(out) :: ierr
-    end subroutine icr403
-    subroutine icr413(yn, rl, r, ierr)
-      double precision, intent(in) :: yn, rl
-      double precision, intent(out) :: r
-      integer, intent(out) :: ierr
-    end subroutine icr413
-    subroutine icr505(yn, rk2, r, ierr)
-      double precision, intent(in) :: yn, rk2
-      double precision, intent(out) :: r
-      integer, intent(out) :: ierr
-    end subroutine icr505
-    subroutine icr407(rmu, w, yn, f, rl, r, ierr)
-      double precision, intent(in) :: rmu, w, yn, f, rl
-      double precision, intent(out) :: r
-      integer, intent(out) :: ierr
-    end subroutine icr407
-    subroutine icr408(rmu, w, yn, rl, f, ierr)
-      double precision, intent(in) :: rmu, w, yn, rl
-      double precision, intent(out) :: f
-      integer, intent(out) :: ierr
-    end subroutine icr408
-    subroutine icr410(rmu, w, r, rl, f, ierr)
-      double precision, intent(in) :: rmu, w, r, rl
-      double precision, intent(out) :: f
-      integer, intent(out) :: ierr
-    end subroutine icr410
-    subroutine icr411(rmu, w, r, yn, rl, f, ierr)
-      double precision, intent(in) :: rmu, w, r, yn, rl
-      double precision, intent(out) :: f
-      integer, intent(out) :: ierr
-    end subroutine icr411
-    subroutine icr502(rmu, w, r, yn, rl, rk2, f, ierr)
-      double precision, intent(in) :: rmu, w, r, yn, rl, rk2
-      double precision, intent(out) :: f
-      integer, intent(out) :: ierr
-    end subroutine icr502
-    subroutine icrlap(yn, rl, rk2, roots, nreal, ncplx, ninf, resmax, ierr)
-      double precision, intent(in) :: yn, rl, rk2
-      double precision, intent(out) :: roots(3), resmax
-      integer, intent(out) :: nreal, ncplx, ninf, ierr
-    end subroutine icrlap
-    subroutine icrbrt(yn, rl, rk2, roots, nreal, ncplx, ninf, resmax, niter, ierr)
-      double precision, intent(in) :: yn, rl, rk2
-      double precision, intent(out) :: roots(3), resmax
-      integer, intent(out) :: nreal, ncplx, ninf, niter, ierr
-    end subroutine icrbrt
-  end interface
 
 contains
 

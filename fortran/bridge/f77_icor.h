@@ -1,5 +1,5 @@
 /* nanopush: C view of the FORTRAN 77 iCOR routines (fortran/icor.f, fortran/brent.f)
- * through the bind(C) shim bindings/f77_icor.f90. Every name starts with np_f77_icor_.
+ * through the bind(C) shim fortran/bridge/f77_icor.f90. Every name starts with np_f77_icor_.
  * All quantities SI. Each function returns a status (below); none stops the program.
  * Infinite results (eq 5.5 at yn = 0, the pole of eq 5.2) are IEEE infinities with
  * status 0; no function returns NaN for finite input. */

@@ -2,7 +2,7 @@
 !>
 !> np_f77_bsint integrates a right-hand side written in C or C++ (a C function pointer plus an
 !> opaque udata pointer); np_f77_bsint_smooth_bar integrates the F77 smooth-nanobar RHS
-!> (fortran/smbar.f). C prototypes, units and shapes: bindings/f77_bsint.h.
+!> (fortran/smbar.f). C prototypes, units and shapes: fortran/bridge/f77_bsint.h.
 !>
 !> Re-entrancy: the C function pointer and udata travel to the trampoline inside the IPAR
 !> integer array that BSINT hands unchanged to its EXTERNAL derivative routine (bit copies made
@@ -68,7 +68,7 @@ contains
   end subroutine bsint_trampoline
 
   !> Integrate y' = rhs(t, y) from t0 through the output times tout(1:nout) with the F77
-  !> Bulirsch-Stoer engine. Arguments and status: see bindings/f77_bsint.h.
+  !> Bulirsch-Stoer engine. Arguments and status: see fortran/bridge/f77_bsint.h.
   integer(c_int) function np_f77_bsint(n, t0, y, nout, tout, yout, rtol, atol, h0, hmax, kmax, &
                                        iextr, maxstp, rhs, udata, nstat) &
       bind(C, name="np_f77_bsint")
@@ -94,7 +94,7 @@ contains
   end function np_f77_bsint
 
   !> As np_f77_bsint, with the derivative routine handed to BSINT itself (F77 calling
-  !> convention, bindings/f77_bsint.h np_f77_bsint_fcn): no trampoline and one call per RHS
+  !> convention, fortran/bridge/f77_bsint.h np_f77_bsint_fcn): no trampoline and one call per RHS
   !> evaluation instead of three. udata travels in ipar(1:nw), which fcn receives.
   integer(c_int) function np_f77_bsint_fcn(n, t0, y, nout, tout, yout, rtol, atol, h0, hmax, kmax, &
                                            iextr, maxstp, fcn, udata, nstat) &

@@ -1,5 +1,5 @@
 /* nanopush: C view of the FORTRAN 77 rolling formulas (fortran/rolling.f) through the
- * bind(C) shims of bindings/f77_rolling.f90. All quantities SI; scalars only.
+ * bind(C) shims of fortran/bridge/f77_rolling.f90. All quantities SI; scalars only.
  * Return value: 0 = ok, 1 = invalid argument, 2 = load below the pull-off load,
  * 3 = no convergence. Outputs are written through the pointers (never NULL). */
 #ifndef NANOPUSH_F77_ROLLING_H

@@ -1,24 +1,10 @@
 !> Bridge to the FORTRAN 77 smooth-nanobar right-hand side (fortran/smbar.f).
 module nanopush_f77_smooth_bar
   use, intrinsic :: iso_c_binding, only: c_int, c_double
+  use nanopush_f77_interfaces, only: smbar, smbarp
   implicit none
   private
   public :: np_f77_smooth_bar_rhs
-
-  interface
-    subroutine smbar(n, t, y, dydt, rpar, ipar, ierr)
-      integer, intent(in) :: n
-      double precision, intent(in) :: t
-      double precision, intent(in) :: y(n)
-      double precision, intent(out) :: dydt(n)
-      double precision, intent(in) :: rpar(*)
-      integer, intent(in) :: ipar(*)
-      integer, intent(out) :: ierr
-    end subroutine smbar
-    subroutine smbarp(rpar)
-      double precision, intent(inout) :: rpar(8)
-    end subroutine smbarp
-  end interface
 
 contains
 

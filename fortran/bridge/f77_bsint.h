@@ -1,5 +1,5 @@
 /* nanopush: C view of the FORTRAN 77 Bulirsch-Stoer integrator (fortran/bsint.f) through the
- * bind(C) shim bindings/f77_bsint.f90. Algorithm: docs/bulirsch_stoer.md.
+ * bind(C) shim fortran/bridge/f77_bsint.f90. Algorithm: docs/bulirsch_stoer.md.
  *
  * Units: whatever the right-hand side uses (SI throughout nanopush): t in s, y in the state's
  * units, tolerances in the units of each component. Arrays are contiguous doubles, shapes

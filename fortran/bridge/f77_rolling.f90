@@ -1,5 +1,5 @@
 !> Bridge to the FORTRAN 77 rolling formulas (fortran/rolling.f). C prototypes with units:
-!> bindings/f77_rolling.h. Every function returns the F77 IERR (0 = ok, 1 = invalid
+!> fortran/bridge/f77_rolling.h. Every function returns the F77 IERR (0 = ok, 1 = invalid
 !> argument, 2 = load below pull-off, 3 = no convergence); none stops the program.
 module nanopush_f77_rolling
   use nanopush_f77_interfaces, only: rlfs, rlres, rlmin, rldec, rlvdw, rljkrl

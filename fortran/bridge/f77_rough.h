@@ -1,5 +1,5 @@
 /* nanopush: C view of the FORTRAN 77 rough-surface nanobar (fortran/rgbar.f, the thesis and printed
- * friction law) through bindings/f77_rough.f90. SI units; statuses as in f77_bsint.h. */
+ * friction law) through fortran/bridge/f77_rough.f90. SI units; statuses as in f77_bsint.h. */
 #ifndef NANOPUSH_F77_ROUGH_H
 #define NANOPUSH_F77_ROUGH_H
 
