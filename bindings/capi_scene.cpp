@@ -1,8 +1,11 @@
-// C API: scenes and runs (bindings/nanopush.h) over nanopush::load_scene / parse_scene / run_scene.
+// C API: scenes, runs and the engine comparison (bindings/nanopush.h) over nanopush::load_scene /
+// parse_scene / run_engine / compare_engines.
 #include <algorithm>
+#include <limits>
 #include <memory>
 
 #include "capi_internal.hpp"
+#include "nanopush/engines/compare.hpp"
 
 using namespace nanopush::capi;
 
@@ -146,6 +149,36 @@ nanopush_trajectory nanopush_run_scene_precision(nanopush_error error, nanopush_
     return NANOPUSH_OK;
   });
   return out;
+}
+
+int nanopush_compare(nanopush_error error, nanopush_scene scene, const char* method, const char* law, double rtol,
+                     double atol, double tolerance, int* agree, int* kind, double* figures) {
+  return guarded(error, [&] {
+    require_handle(scene, "scene");
+    require_handle(agree, "agree");
+    nanopush::CompareSettings cs;
+    if (!opt_string(method).empty()) cs.method = opt_string(method);
+    cs.law = opt_string(law);
+    nanopush::require_finite("rtol", rtol);
+    nanopush::require_finite("atol", atol);
+    nanopush::require_finite("tolerance", tolerance);
+    cs.rtol = rtol;
+    cs.atol = atol;
+    cs.tolerance = tolerance;
+    const nanopush::EngineComparison r = nanopush::compare_engines(scene->scene, cs);
+    if (const nanopush::Trajectory* t = r.failed())
+      throw nanopush::SolverError(scene->scene.name + " (" + t->engine_label +
+                                  (r.failed_run >= 2 ? ", reference run" : "") + "): " + to_string(t->stats.status) +
+                                  (t->stats.message.empty() ? "" : ": " + t->stats.message));
+    *agree = r.agree ? 1 : 0;
+    const bool same = r.kind == nanopush::CompareKind::same_steps;
+    if (kind) *kind = same ? 0 : 1;
+    if (figures)
+      for (std::size_t c = 0; c < 9; ++c)
+        figures[c] = c < r.columns.size() ? (same ? r.columns[c].relative : r.columns[c].diff_tight)
+                                          : std::numeric_limits<double>::quiet_NaN();
+    return NANOPUSH_OK;
+  });
 }
 
 void nanopush_delete_trajectory(nanopush_trajectory* trajectory) {

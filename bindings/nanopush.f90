@@ -108,7 +108,7 @@ module nanopush
   public :: nanopush_api_version, nanopush_status_name
   public :: nanopush_load_scene, nanopush_parse_scene, nanopush_destroy, nanopush_scene_info
   public :: nanopush_scene_set
-  public :: nanopush_run, nanopush_integrate
+  public :: nanopush_run, nanopush_integrate, nanopush_compare
   public :: nanopush_friction_wrench, nanopush_friction_from_velocity
   public :: nanopush_icor_experimental_fit, nanopush_icor_falvo, nanopush_icor_li, &
             nanopush_icor_unknown_pressure, nanopush_icor_known_pressure, nanopush_icor_minimum_force, &
@@ -206,6 +206,15 @@ module nanopush
       type(c_ptr), value, intent(in) :: error, scene
       real(c_double), intent(out) :: push(4)
     end function c_scene_get_push
+    integer(c_int) function c_compare(error, scene, method, law, rtol, atol, tolerance, agree, kind, figures) &
+        bind(C, name="nanopush_compare")
+      import :: c_int, c_ptr, c_char, c_double
+      type(c_ptr), value, intent(in) :: error, scene
+      character(kind=c_char), intent(in) :: method(*), law(*)
+      real(c_double), value, intent(in) :: rtol, atol, tolerance
+      integer(c_int), intent(out) :: agree, kind
+      real(c_double), intent(out) :: figures(9)
+    end function c_compare
     type(c_ptr) function c_run_scene_ex(error, scene, engine, method, law, rtol, atol) &
         bind(C, name="nanopush_run_scene_ex")
       import :: c_ptr, c_char, c_double
@@ -629,6 +638,44 @@ contains
     call finish(err, "nanopush_run", msg, stat)
     if (present(errmsg)) errmsg = msg
   end subroutine nanopush_run
+
+  !> Both engines on one scene, judged column by column as `nanopush compare` does
+  !> (nanopush_compare in nanopush.h): method "faithful" (default; same steps, judged against
+  !> tolerance, default 100 rtol), "modern" or "dop853" (judged by convergence against both
+  !> engines at rtol 1e-14); law "thesis" or "printed" (default the scene's). agree: .true.
+  !> when the engines agree; convergence: .true. for a convergence verdict; figures(9): per
+  !> column x .. mf the figure judged (relative to the column's scale).
+  subroutine nanopush_compare(scene, agree, method, law, rtol, atol, tolerance, convergence, figures, &
+                              stat, errmsg)
+    type(nanopush_scene), intent(in) :: scene
+    logical, intent(out) :: agree
+    character(len=*), intent(in), optional :: method, law
+    real(dp), intent(in), optional :: rtol, atol, tolerance
+    logical, intent(out), optional :: convergence
+    real(dp), intent(out), optional :: figures(9)
+    integer, intent(out), optional :: stat
+    character(len=:), allocatable, intent(out), optional :: errmsg
+    type(c_ptr) :: err
+    character(len=:), allocatable :: msg
+    real(c_double) :: r, a, tol, fig(9)
+    integer(c_int) :: ag, kd, st
+    r = 0
+    a = -1
+    tol = 0
+    if (present(rtol)) r = rtol
+    if (present(atol)) a = atol
+    if (present(tolerance)) tol = tolerance
+    ag = 0
+    kd = 0
+    fig = 0
+    err = c_new_error()
+    st = c_compare(err, scene%ptr, to_c(opt(method)), to_c(opt(law)), r, a, tol, ag, kd, fig)
+    agree = st == 0 .and. ag /= 0
+    if (present(convergence)) convergence = kd /= 0
+    if (present(figures)) figures = fig
+    call finish(err, "nanopush_compare", msg, stat)
+    if (present(errmsg)) errmsg = msg
+  end subroutine nanopush_compare
 
   !> Integrate y' = rhs(t, y, ctx) with the C++ Bulirsch-Stoer engine (dimension size(y)).
   !>   t0 initial time; y in: state at t0, out: state at the last output time reached;

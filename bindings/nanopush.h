@@ -132,6 +132,21 @@ int nanopush_trajectory_get_counts(nanopush_error error, nanopush_trajectory tra
 int nanopush_trajectory_get_engine(nanopush_error error, nanopush_trajectory trajectory, char* buffer,
                                    int size);
 
+/* Both engines on one scene, judged column by column as `nanopush compare` does (one rule,
+ * compare_engines in the engines layer; docs/rough.md, "Comparing the engines").
+ *   method:    "faithful" (NULL or "": the same steps as f77, judged per column against
+ *              tolerance), "modern" or "dop853" (judged by convergence: both engines run again
+ *              at rtol 1e-14)
+ *   law:       "thesis" or "printed"; NULL or "" = the scene's (thesis for a coulomb scene)
+ *   rtol:      0 = scene's; atol: < 0 = scene's; tolerance: > 0 judges by same steps against
+ *              it; 0 = by the method (100 rtol for faithful)
+ * Out: *agree 1 or 0; *kind (may be NULL) 0 same steps, 1 convergence; figures (may be NULL)
+ * [9]: per column x, y, theta, vx, vy, omega, fx, fy, mf the figure judged (same steps:
+ * max |diff| / scale; convergence: the tight runs' difference / scale). A run that does not
+ * complete (a reference run included) is a solver failure (NANOPUSH_TOO_MANY_STEPS..). */
+int nanopush_compare(nanopush_error error, nanopush_scene scene, const char* method, const char* law,
+                     double rtol, double atol, double tolerance, int* agree, int* kind, double* figures);
+
 /* ---- Integrating a user's right-hand side with the C++ Bulirsch-Stoer ------------------ */
 /* dydt[n] = f(t, y[n]); udata is passed through unchanged (it is how the callback reaches its
  * own data: never use globals). Return 0 on success, non-zero to stop the integration

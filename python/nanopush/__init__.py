@@ -170,18 +170,20 @@ def run(scene, engine=None, method=None, law=None, rtol=None, atol=None, precisi
 
 class Comparison:
     """The two engines side by side (nanopush.compare): ``cxx`` and ``f77`` (Results),
-    ``columns`` (per trajectory column except t), ``kind``, ``tolerance`` and ``agree``.
+    ``columns`` (per trajectory column except t), ``kind``, ``tolerance``, ``law`` and ``agree``.
 
     kind "same-steps" (method faithful, or a ``tolerance`` given): per column max_abs_diff,
     unit, relative = max |diff| / scale, scale = max |value|, ok (relative <= tolerance).
     kind "convergence" (modern, dop853): per column error_cxx and error_f77 (each engine
     against itself at rtol 1e-14), diff and diff_tight (the engines apart at rtol and at
     1e-14), scale (largest norm of the column's vector), ok (diff_tight <= error_cxx +
-    error_f77 + 1e-13), all relative to scale; tolerance is None. docs/rough.md."""
+    error_f77 + 1e-13), all relative to scale; tolerance is None. docs/rough.md. The verdict
+    is the library's (the same function as ``nanopush compare``)."""
 
-    def __init__(self, cxx, f77, columns, tolerance, kind="same-steps"):
-        self.cxx, self.f77, self.columns, self.tolerance, self.kind = cxx, f77, columns, tolerance, kind
-        self.agree = len(cxx) == len(f77) and all(c["ok"] for c in columns.values())
+    def __init__(self, verdict):
+        self.cxx, self.f77 = verdict["cxx"], verdict["f77"]
+        self.columns, self.tolerance = verdict["columns"], verdict["tolerance"]
+        self.kind, self.law, self.agree = verdict["kind"], verdict["law"], verdict["agree"]
 
     def __bool__(self):
         return self.agree
@@ -197,57 +199,15 @@ class Comparison:
                 f"{worst:.3g}, tolerance {self.tolerance:.3g} -> {verdict}>")
 
 
-# The reference rtol of a convergence comparison and the column groups that share a scale
-# (as nanopush compare: drivers/cmd_compare.cpp).
-_TIGHTEST = 1e-14
-_GROUPS = [["x", "y"], ["theta"], ["vx", "vy"], ["omega"], ["fx", "fy"], ["mf"]]
-
-
 def compare(scene, method="faithful", rtol=None, atol=None, tolerance=None, law=None):
     """Run a scene with both engines, the C++ (``method``: faithful, modern or dop853) and
     the F77, under ``law`` (thesis or printed, the laws both implement; default the scene's,
     thesis for a coulomb scene), and judge them as ``nanopush compare`` does: faithful takes
     the F77 steps, so every column must agree within ``tolerance`` (default 100 rtol);
     modern and dop853 are judged by convergence (see Comparison). Returns a Comparison (true
-    when the engines agree)."""
-    import numpy as np
-
-    sc = _as_scene(scene)
-    if law is None:
-        law = sc.info()["surface"]["law"] if "surface" in sc.info() else "thesis"
-        if law == "coulomb":
-            law = "thesis"
-    if law == "coulomb":
-        raise _input_error("law = coulomb: must be thesis or printed: the F77 engine implements only those. "
-                           "The coulomb law's independent check is its CVODE cross-check: "
-                           "run(scene, law='coulomb', method='cvode') (docs/rough.md)", "law")
-    a = run(sc, engine="cxx", method=method, law=law, rtol=rtol, atol=atol)
-    b = run(sc, engine="f77", law=law, rtol=rtol, atol=atol)
-    cols = {}
-    if method == "faithful" or (tolerance is not None and tolerance > 0) or a.rtol < 10 * _TIGHTEST:
-        tol = tolerance if tolerance is not None and tolerance > 0 else 100 * a.rtol
-        if len(a) == len(b):
-            for name in Result.columns[1:]:
-                x, y = getattr(a, name), getattr(b, name)
-                maxabs = float(np.max(np.abs(x - y))) if len(x) else 0.0
-                scale = float(max(np.max(np.abs(x)), np.max(np.abs(y)))) if len(x) else 0.0
-                rel = maxabs / scale if scale > 0 else maxabs
-                cols[name] = {"max_abs_diff": maxabs, "unit": Result.units[name], "relative": rel,
-                              "scale": scale, "ok": rel <= tol}
-        return Comparison(a, b, cols, tol)
-    tight_atol = atol * (_TIGHTEST / a.rtol) if atol is not None and atol > 0 else atol
-    a2 = run(sc, engine="cxx", method=method, law=law, rtol=_TIGHTEST, atol=tight_atol)
-    b2 = run(sc, engine="f77", law=law, rtol=_TIGHTEST, atol=tight_atol)
-    if len(a) == len(b):
-        for group in _GROUPS:
-            scale = max(float(np.max(np.sqrt(sum(getattr(r, c) ** 2 for c in group)))) for r in (b, b2))
-            s = scale if scale > 0 else 1.0
-            for c in group:
-                d = lambda p, q: float(np.max(np.abs(getattr(p, c) - getattr(q, c)))) / s
-                ea, eb, diff, diff2 = d(a, a2), d(b, b2), d(a, b), d(a2, b2)
-                cols[c] = {"error_cxx": ea, "error_f77": eb, "diff": diff, "diff_tight": diff2,
-                           "unit": Result.units[c], "scale": scale, "ok": diff2 <= ea + eb + 1e-13}
-    return Comparison(a, b, cols, None, kind="convergence")
+    when the engines agree). Raises nanopush.SolverError when a run, or a reference run,
+    does not complete (nothing to compare), InputError for bad settings."""
+    return Comparison(_nanopush._compare(_as_scene(scene), method or "faithful", law or "", rtol, atol, tolerance))
 
 
 # ---- sweeps ---------------------------------------------------------------------------

@@ -1,5 +1,5 @@
 // nanopush.run: a scene integrated by the C++ or the F77 engine (run_engine), the trajectory
-// as NumPy arrays; nanopush.Result. (compare is in Python, over two runs.)
+// as NumPy arrays; nanopush.Result; and the two engines compared (compare_engines).
 #include "common.hpp"
 
 #include <chrono>
@@ -7,6 +7,7 @@
 
 #include <pybind11/stl/filesystem.h>
 
+#include "nanopush/engines/compare.hpp"
 #include "nanopush/engines/engines.hpp"
 #include "nanopush/outputs/io.hpp"
 #include "nanopush/outputs/trajectory_csv.hpp"
@@ -74,6 +75,68 @@ RunResult run(const Scene& scene, const std::string& engine, const std::string& 
                      r.tr);
   }
   return r;
+}
+
+/// nanopush.compare's work: compare_engines, its verdicts as a dict (Comparison wraps it).
+py::dict compare(const Scene& scene, const std::string& method, const std::string& law, const py::object& rtol,
+                 const py::object& atol, const py::object& tolerance) {
+  CompareSettings cs;
+  cs.method = method.empty() ? "faithful" : method;
+  cs.law = law;
+  if (!rtol.is_none()) {
+    cs.rtol = rtol.cast<double>();
+    require_positive("rtol", cs.rtol);
+  }
+  if (!atol.is_none()) {
+    cs.atol = atol.cast<double>();
+    require_nonnegative("atol", cs.atol);
+  }
+  if (!tolerance.is_none()) cs.tolerance = tolerance.cast<double>();
+  EngineComparison r;
+  const Scene own = scene;
+  {
+    py::gil_scoped_release release;
+    r = compare_engines(own, cs);
+  }
+  if (const Trajectory* t = r.failed()) {
+    const auto& st = t->stats;
+    throw RunFailure(scene.name + " (" + t->engine_label + (r.failed_run >= 2 ? ", reference run" : "") +
+                         "): " + to_string(st.status) + (st.message.empty() ? "" : ": " + st.message),
+                     *t);
+  }
+  auto result = [&](Trajectory& tr) {
+    RunResult rr;
+    rr.tr = std::move(tr);
+    rr.scene = scene.name;
+    return py::cast(std::move(rr));
+  };
+  const bool same = r.kind == CompareKind::same_steps;
+  py::dict d;
+  d["kind"] = same ? "same-steps" : "convergence";
+  d["tolerance"] = same ? py::object(py::float_(r.tolerance)) : py::object(py::none());
+  d["agree"] = r.agree;
+  d["law"] = r.law;
+  d["cxx"] = result(r.cxx);
+  d["f77"] = result(r.f77);
+  py::dict cols;
+  for (const ColumnVerdict& v : r.columns) {
+    py::dict c;
+    if (same) {
+      c["max_abs_diff"] = v.max_abs_diff;
+      c["relative"] = v.relative;
+    } else {
+      c["error_cxx"] = v.error_cxx;
+      c["error_f77"] = v.error_f77;
+      c["diff"] = v.diff;
+      c["diff_tight"] = v.diff_tight;
+    }
+    c["unit"] = v.unit;
+    c["scale"] = v.scale;
+    c["ok"] = v.ok;
+    cols[py::str(v.name)] = c;
+  }
+  d["columns"] = cols;
+  return d;
 }
 
 }  // namespace
@@ -176,6 +239,9 @@ dict of arrays (pandas.DataFrame(result.to_dict())); to_csv(path) writes the CSV
   m.def("_run", &run, py::arg("scene"), py::arg("engine") = "", py::arg("method") = "", py::arg("law") = "",
         py::arg("rtol") = py::none(), py::arg("atol") = py::none(), py::arg("precision") = "",
         "Integrate a scene (nanopush.run is the documented entry point).");
+  m.def("_compare", &compare, py::arg("scene"), py::arg("method") = "faithful", py::arg("law") = "",
+        py::arg("rtol") = py::none(), py::arg("atol") = py::none(), py::arg("tolerance") = py::none(),
+        "Both engines judged column by column (nanopush.compare is the documented entry point).");
 }
 
 }  // namespace nanopush::python
