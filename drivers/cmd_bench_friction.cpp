@@ -195,8 +195,6 @@ int bench_friction(const BenchFrictionOptions& o) {
   if (!sc.rough()) throw InputError("--scene", o.scene, "must be a rough scene (surface.kind = \"rough\")");
   set_provenance_scene(o.scene);
   RunSettings rs;
-  rs.law = "";
-  rs.precision = "";
   rs = resolve_settings(sc, rs);
   if (rs.law != "thesis")
     throw InputError("surface.law", rs.law, "bench-friction integrates the thesis law (the RHS is the friction)");

@@ -206,10 +206,6 @@ int bench_sweep(const BenchSweepOptions& o) {
   Scene sc = load_scene_arg(kScene, {kLaw});
   set_provenance_scene(kScene);
   RunSettings rs;
-  rs.engine = "";
-  rs.method = "";
-  rs.law = "";
-  rs.precision = "";
   (void)resolve_settings(sc, rs);
   const auto task = sweep::make_run_task(sc, rs);
   std::vector<sweep::Axis> axes;

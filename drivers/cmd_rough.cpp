@@ -32,7 +32,7 @@ RunStats stats_of(const Scene& sc, const Trajectory& tr) {
   };
   double wmax = 0;
   for (double w : tr.work_push) wmax = std::max(wmax, std::fabs(w));
-  const double muN = sc.surface.mu * sc.normal_load();
+  const double muN = sc.friction_limit();
   s.theta_min = s.theta_max = tr.rows[0][3];
   s.mf_min = s.mf_max = tr.rows[0][9];
   s.fx_min = s.fx_max = tr.rows[0][7];

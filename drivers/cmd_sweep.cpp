@@ -126,7 +126,6 @@ int sweep_cmd(SweepOptions o) {
     rs.engine = o.engine;
     rs.method = o.method;
     rs.law = o.law;
-    rs.precision = "";
     (void)resolve_settings(sc, rs);  // bad engine/method/law combinations before any work
     if (!o.trajectories.empty()) std::filesystem::create_directories(o.trajectories);
     task = sweep::make_run_task(sc, rs, o.trajectories);

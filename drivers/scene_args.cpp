@@ -40,7 +40,7 @@ Scene load_scene_arg(const std::string& scene, const std::vector<std::string>& s
 /// (docs/rough.md). Says where it came to rest and what continues honestly.
 void print_rest_diagnosis(const Scene& sc, const std::string& law, const Trajectory& tr, std::ostream& os) {
   if (!sc.rough() || law == "coulomb" || tr.rows.size() < 2 || tr.stats.status != BsStatus::too_many_steps) return;
-  const double muN = sc.surface.mu * sc.normal_load();
+  const double muN = sc.friction_limit();
   if (!(muN > sc.push.force)) return;
   // The first sample from which the speed stays below 1e-3 of the largest speed of the run.
   const auto speed = [&](const TrajectoryRow& r) {

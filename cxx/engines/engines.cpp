@@ -29,7 +29,7 @@ Trajectory run_f77(const Scene& sc, const RunSettings& s) {
   if (sc.rough()) {
     const double params[12] = {sc.mass,       sc.inertia,    sc.push.force, sc.push.beta,
                                sc.push.pbx,   sc.push.pby,   sc.geometry.a, sc.geometry.b,
-                               sc.surface.mu * sc.normal_load(), 0.0, 0.0, 0.0};
+                               sc.friction_limit(), 0.0, 0.0, 0.0};
     st = np_f77_bsint_rough_bar_law(n, 0.0, y.data(), static_cast<int>(tout.size()), tout.data(), yout.data(),
                                     s.rtol, tr.atol.data(), sc.solver.h0, sc.solver.hmax, 8, 1, maxstp, params,
                                     printed ? 1 : 0, nstat);

@@ -48,12 +48,12 @@ struct Quantity {
 const std::vector<Quantity>& quantities() {
   static const std::vector<Quantity> q = {
       {"mu*N", "N", "friction force scale: surface.mu times the normal load N",
-       [](const Scene& s) { return s.rough() ? s.surface.mu * s.normal_load() : 0.0; }},
+       [](const Scene& s) { return s.rough() ? s.friction_limit() : 0.0; }},
       {"F/m", "m/s^2", "push acceleration: push.force over the mass", [](const Scene& s) { return s.push.force / s.mass; }},
       {"mu*N/m", "m/s^2", "friction deceleration: mu N over the mass",
-       [](const Scene& s) { return s.rough() ? s.surface.mu * s.normal_load() / s.mass : 0.0; }},
+       [](const Scene& s) { return s.rough() ? s.friction_limit() / s.mass : 0.0; }},
       {"F/mu*N", "1", "push over friction: push.force / (mu N)",
-       [](const Scene& s) { return s.rough() && s.surface.mu > 0 ? s.push.force / (s.surface.mu * s.normal_load()) : 0.0; }},
+       [](const Scene& s) { return s.rough() && s.surface.mu > 0 ? s.push.force / (s.friction_limit()) : 0.0; }},
   };
   return q;
 }

@@ -134,7 +134,7 @@ void check_representable(const Scene& sc) {
     require_representable("surface.f_vdw", sc.surface.f_vdw, "N");
     require_representable("surface.g", sc.surface.g, "m/s^2");
     require_representable("surface.normal_load", sc.normal_load(), "N", "the normal load N");
-    require_representable("surface.mu, normal load, object.mass", sc.surface.mu * sc.normal_load() / sc.mass, "m/s^2",
+    require_representable("surface.mu, normal load, object.mass", sc.friction_limit() / sc.mass, "m/s^2",
                           "the friction deceleration mu N / m");
   }
   require_representable("solver.t_end", sc.solver.t_end, "s");
@@ -419,7 +419,7 @@ Scene scene_from_document(const toml::table& root, const std::string& source_nam
         << "  adhesion F_vdw = " << sc.surface.f_vdw << " N (" << (N > 0 ? sc.surface.f_vdw / N : 0)
         << " of N, given)\n";
     }
-    r << "friction limit mu N = " << sc.surface.mu * N << " N\n";
+    r << "friction limit mu N = " << sc.friction_limit() << " N\n";
     sc.load_report = r.str();
   }
   check_representable(sc);

@@ -98,7 +98,7 @@ RoughBarModel rough_model(const Scene& sc) {
   m.mass = sc.mass;
   m.inertia = sc.inertia;
   m.geometry = sc.geometry;
-  m.muN = sc.surface.mu * sc.normal_load();
+  m.muN = sc.friction_limit();
   m.push = sc.push;
   return m;
 }
@@ -253,7 +253,9 @@ Trajectory run_cxx_rough(const Scene& sc, const RunSettings& s) {
 }  // namespace
 
 Trajectory run_scene(const Scene& scene, const RunSettings& settings) {
-  const RunSettings s = resolve_settings(scene, settings);
+  RunSettings own = settings;
+  if (own.engine.empty()) own.engine = "cxx";  // run_scene is the C++ engine, whatever the scene names
+  const RunSettings s = resolve_settings(scene, own);
   if (s.engine == "f77")
     throw InputError("engine", "f77",
                      "run_scene is the C++ engine; the F77 engine runs through nanopush::engines "

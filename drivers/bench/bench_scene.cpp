@@ -178,7 +178,7 @@ RoughBarModel bench_rough_model(const Scene& sc) {
   m.mass = sc.mass;
   m.inertia = sc.inertia;
   m.geometry = sc.geometry;
-  m.muN = sc.surface.mu * sc.normal_load();
+  m.muN = sc.friction_limit();
   m.push = sc.push;
   // Started from rest, the thesis law has no friction direction at t = 0 and its first step
   // sees friction jump from 0 to mu N (a discontinuity no tolerance below ~1e-12 resolves).

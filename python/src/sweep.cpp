@@ -86,7 +86,6 @@ py::tuple run_sweep(const std::string& task_name, const py::object& scene_obj, c
     rs.engine = engine;
     rs.method = method;
     rs.law = law;
-    rs.precision = "";
     if (!fixed.empty()) {
       std::vector<SceneSetting> s;
       for (auto item : fixed) {

@@ -96,6 +96,9 @@ struct Scene {
   [[nodiscard]] double normal_load() const {
     return surface.normal_load > 0 ? surface.normal_load : mass * surface.g + surface.f_vdw;
   }
+  /// The friction limit mu N [N] of a rough scene: the largest friction force the surface
+  /// exerts (the one place it is computed).
+  [[nodiscard]] double friction_limit() const { return surface.mu * normal_load(); }
   [[nodiscard]] bool rough() const { return surface.kind == "rough"; }
 
   /// Set one key after loading, validated as the file is: the whole scene is read again from

@@ -29,12 +29,15 @@ using TrajectoryRow = std::array<double, 10>;
 inline constexpr double kAutoDop853RtolMin = 1e-11;
 
 struct RunSettings {
-  std::string engine = "cxx";       ///< cxx | f77
+  /// Every choice left empty is the scene's (its solver.engine, solver.method, surface.law,
+  /// solver.precision); resolve_settings fills them in and validates the combination.
+  std::string engine;     ///< cxx | f77; "" = the scene's (run_scene: always cxx)
   /// faithful | modern (C++ BS; f77 is always the thesis algorithm) | dop853 (Dormand-Prince
   /// 8(5,3) with dense output, double; smooth scenes and the thesis law: docs/dop853.md) |
-  /// cvode (SUNDIALS CVODE cross-check, rough scenes under the coulomb law only)
-  std::string method = "faithful";
-  /// Rough scenes: friction law override ("" = the scene's): thesis | coulomb
+  /// cvode (SUNDIALS CVODE cross-check, rough scenes under the coulomb law only) | auto (by
+  /// rtol); "" = the scene's
+  std::string method;
+  /// Rough scenes: friction law override ("" = the scene's): thesis | printed | coulomb
   std::string law;
   /// Return what was computed when the integrator gives up (status in stats) instead of
   /// throwing; used to show where the thesis law chatters.
@@ -45,7 +48,7 @@ struct RunSettings {
   /// "" = the scene's solver.precision. long and quad need engine cxx, method faithful or
   /// modern, on a smooth scene (the right-hand side templated on the scalar); each costs
   /// more wall time per RHS call (docs/scenes.md).
-  std::string precision = "double";
+  std::string precision;
   /// Called at each output sample with the fraction done (for progress display).
   std::function<void(double)> progress;
 };
