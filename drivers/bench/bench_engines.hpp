@@ -1,5 +1,5 @@
 // The engines of the work-precision benchmark, for any right-hand side that follows the
-// integrator contract of bulirsch_stoer.hpp: `int rhs(S t, const S* y, S* dydt) const`,
+// integrator contract of integration.hpp: `int rhs(S t, const S* y, S* dydt) const`,
 // templated on the scalar S (double, long double, __float128).
 //
 // Every engine closure measures its own wall time (Solve + seconds below): from the first

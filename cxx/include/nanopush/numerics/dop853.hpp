@@ -9,7 +9,7 @@
 // as transcribed with 30 digits in SciPy's scipy/integrate/_ivp/dop853_coefficients.py
 // (BSD); the code is written from the book, not from either program.
 //
-// Integrator contract (as BulirschStoer's, bulirsch_stoer.hpp):
+// Integrator contract (integration.hpp, OdeIntegrator; no step hook):
 //   - rhs(t, y, dydt) -> int: writes dydt[0..n), returns 0, or non-zero to abort (the value
 //     is reported in Result::rhs_status; no retry).
 //   - integrate(rhs, t0, y, tout, observer): advances y from t0 through every output time in
@@ -34,7 +34,7 @@
 #include <type_traits>
 #include <vector>
 
-#include "nanopush/numerics/bulirsch_stoer.hpp"  // Dynamic, BsStatus, BsResult, to_string
+#include "nanopush/numerics/integration.hpp"  // Dynamic, the status, the result, the contract
 #include "nanopush/numerics/scalar.hpp"
 
 namespace nanopush {
@@ -489,16 +489,9 @@ class Dop853 {
   std::array<Vec, 8> cont_{};  // dense-output coefficients of the last step
   Vec y_{}, ynew_{}, ys_{}, atol_{};
 
-  static std::string fmt_g(double v) {
-    char b[32];
-    std::snprintf(b, sizeof b, "%.6g", v);
-    return b;
-  }
-
+  static std::string fmt_g(double v) { return integration_detail::fmt_g(v); }
   static void fail_rhs(BsResult& res, int st, Scalar t) {
-    res.status = BsStatus::rhs_failed;
-    res.rhs_status = st;
-    res.message = "right-hand side returned status " + std::to_string(st) + " at t = " + fmt_g(static_cast<double>(t));
+    integration_detail::fail_rhs(res, st, static_cast<double>(t));
   }
 
   template <class Rhs>
@@ -634,5 +627,8 @@ class Dop853 {
     }
   }
 };
+
+static_assert(OdeIntegrator<Dop853<double, 6>, double>);
+static_assert(OdeIntegrator<Dop853<double>, double>);
 
 }  // namespace nanopush
