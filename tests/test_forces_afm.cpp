@@ -31,7 +31,8 @@ TEST_CASE("Cantilever spring constants: eqs 2.4-2.7 and their stated identities"
   CHECK_FALSE(rel_close(spring_constants(c).ktheta, k.Ls * k.Ls / 2 * k.kz, 1e-3));
 }
 
-TEST_CASE("Deflection: eq 2.1 reduces to eq 2.2 without lateral force; numerators rotate the force", "[afm][unit][errata]") {
+TEST_CASE("Deflection: eq 2.1 reduces to eq 2.2 without lateral force; numerators rotate the force",
+          "[afm][unit][errata]") {
   const auto k = spring_constants(silicon());
   for (double alpha : {0.0, 0.1, 0.3}) {
     CHECK(rel_close(deflection_1d(k, 2e-9, 0.0, alpha), deflection_2d_normal(k, 2e-9, alpha), 4 * eps));

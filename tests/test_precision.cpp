@@ -115,7 +115,7 @@ TEST_CASE("precision long: rtol 1e-17 beats the floor of double", "[precision][n
 }
 
 TEST_CASE("precision: the modern method refuses rtol below 4 eps of its precision, naming the field and range",
-          "[precision][input]") {
+          "[precision][input][unit]") {
   const Scene sc = load_scene(preset("fig3_6a"));
   // double: 4 eps = 8.88e-16; the same rtol is fine in long double, and for the faithful method
   CHECK_THROWS_AS(run_engine(sc, settings("double", "modern", 1e-16)), InputError);

@@ -69,7 +69,7 @@ Balance balance(const Scene& sc, const Trajectory& tr) {
 
 }  // namespace
 
-TEST_CASE("Rough presets carry the captions' parameters", "[rough][scene]") {
+TEST_CASE("Rough presets carry the captions' parameters", "[rough][scene][unit]") {
   for (int fig = 12; fig <= 32; ++fig) {
     const Scene sc = preset(fig);
     CHECK(sc.rough());
@@ -142,7 +142,7 @@ TEST_CASE("Coulomb law: energy balance, dissipation, no chattering, exact rest",
   }
 }
 
-TEST_CASE("Coulomb law: the CVODE cross-check agrees to 1e-8", "[rough][coulomb][crosscheck]") {
+TEST_CASE("Coulomb law: the CVODE cross-check agrees to 1e-8", "[rough][coulomb][crosscheck][numeric]") {
   for (double mu : {0.05, 0.15, 0.5}) {
     Scene sc = preset(12);
     sc.surface.mu = mu;
@@ -171,7 +171,7 @@ TEST_CASE("Coulomb law: the CVODE cross-check agrees to 1e-8", "[rough][coulomb]
 }
 
 TEST_CASE("Coulomb law: CVODE lands on the converged solution at every rtol and rounding of the push",
-          "[rough][coulomb][crosscheck]") {
+          "[rough][coulomb][crosscheck][numeric]") {
   // The solution of a Coulomb slide from rest is unique (the friction is the gradient of a
   // convex dissipation), so rounding-level changes must move the result by the integration
   // error only. With a Jacobian kept over many steps, CVODE's Newton iteration held the
@@ -196,7 +196,7 @@ TEST_CASE("Coulomb law: CVODE lands on the converged solution at every rtol and 
 }
 
 TEST_CASE("Coulomb law: a slide from rest lands on the converged solution at every rounding of the push",
-          "[rough][coulomb]") {
+          "[rough][coulomb][numeric]") {
   // The start direction from rest maximises the power margin on a sphere. Found by comparing
   // values of the margin only, it was right to ~sqrt(eps), and the event-locating BS at the
   // presets' rtol 1e-10 then landed 3e-8 rad off on fig3_31 at a push 4 ulps larger (8e-11 at
@@ -272,7 +272,7 @@ TEST_CASE("Friction is continuous through omega = 0 while the bar slides (no swi
   }
 }
 
-TEST_CASE("Bad rough scenes are rejected clearly", "[rough][scene]") {
+TEST_CASE("Bad rough scenes are rejected clearly", "[rough][scene][unit]") {
   const std::string base = R"(
 [object]
 length = 100e-9
@@ -300,7 +300,8 @@ t_end = 1e-9
   CHECK_THROWS_WITH(parse_scene(with("mu = 0.1", "mu = 0.1\nf_vdw = -1"), "s"), Contains("surface.f_vdw = -1"));
 }
 
-TEST_CASE("Thesis law: C++ faithful and F77 agree to 1e-9 in theta wherever it does not chatter", "[rough][crosslang]") {
+TEST_CASE("Thesis law: C++ faithful and F77 agree to 1e-9 in theta wherever it does not chatter",
+          "[rough][crosslang][regression]") {
   for (int fig = 12; fig <= 24; ++fig) {
     const Scene sc = preset(fig);
     RunSettings a, b;
@@ -324,7 +325,8 @@ TEST_CASE("Thesis law: C++ faithful and F77 agree to 1e-9 in theta wherever it d
   CHECK(ta.rows.size() == tb.rows.size());
 }
 
-TEST_CASE("A rough scene with [environment] and [body] takes its normal load from the force models", "[rough][scene][forces]") {
+TEST_CASE("A rough scene with [environment] and [body] takes its normal load from the force models",
+          "[rough][scene][forces][unit]") {
   const Scene sc = load_scene(std::string(NANOPUSH_SOURCE_DIR) + "/drivers/scenes/examples/nanobar_humid_air.toml");
   Environment env;
   env.medium = Medium::humid_air;

@@ -51,7 +51,7 @@ TEST_CASE("Thesis law from rest: modern and dop853 reach the faithful method's a
   }
 }
 
-TEST_CASE("Thesis law from rest: the faithful method keeps the F77 engine's start", "[rough][start]") {
+TEST_CASE("Thesis law from rest: the faithful method keeps the F77 engine's start", "[rough][start][regression]") {
   const Scene sc = preset(17);
   RunSettings c, f;
   c.method = "faithful";
