@@ -12,6 +12,7 @@
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/scenes/scene.hpp"
 #include "nanopush/scenes/simulate.hpp"
+#include "support/support.hpp"
 
 using namespace nanopush;
 using namespace nanopush::fit;
@@ -20,18 +21,8 @@ using namespace nanopush::fit;
 namespace {
 namespace NANOPUSH_UNITY_ID {
 namespace {
-
-template <class F>
-std::string input_error_of(F&& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return {};
-}
-
-Scene preset(const std::string& rel) { return load_scene(std::string(NANOPUSH_SOURCE_DIR) + "/drivers/scenes/" + rel); }
+using nanopush::test::input_error_of;
+using nanopush::test::preset;
 
 /// A short version of a preset: span t_end, `samples` outputs.
 Scene short_scene(const std::string& rel, double t_end, int samples) {

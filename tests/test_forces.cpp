@@ -9,6 +9,7 @@
 
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/models/surface_forces.hpp"
+#include "support/support.hpp"
 
 using namespace nanopush;
 using namespace nanopush::forces;
@@ -17,12 +18,12 @@ using namespace nanopush::forces;
 namespace {
 namespace NANOPUSH_UNITY_ID {
 namespace {
+using nanopush::test::rel_close;
 constexpr double eps = std::numeric_limits<double>::epsilon();
 /// |value/unit - printed| <= half a unit in the last printed digit: "to all given digits".
 bool to_printed_digits(double value, double unit, double printed, int decimals) {
   return std::abs(value / unit - printed) <= 0.5 * std::pow(10.0, -decimals);
 }
-bool rel_close(double a, double b, double tol) { return std::abs(a - b) <= tol * std::max(std::abs(a), std::abs(b)); }
 }  // namespace
 
 TEST_CASE("Issue 6 oracles for A = 1e-19 J, R = 10 nm, to all given digits", "[forces][unit]") {

@@ -6,6 +6,7 @@
 
 #include "nanopush/models/afm_probe.hpp"
 #include "nanopush/numerics/error.hpp"
+#include "support/support.hpp"
 
 using namespace nanopush;
 using namespace nanopush::afm;
@@ -14,8 +15,8 @@ using namespace nanopush::afm;
 namespace {
 namespace NANOPUSH_UNITY_ID {
 namespace {
+using nanopush::test::rel_close;
 constexpr double eps = std::numeric_limits<double>::epsilon();
-bool rel_close(double a, double b, double tol) { return std::abs(a - b) <= tol * std::max(std::abs(a), std::abs(b)); }
 Cantilever silicon() { return {169e9, 1.0 / 3.0, 125e-6, 30e-6, 4e-6, 15e-6}; }
 }  // namespace
 

@@ -12,6 +12,7 @@
 #include "nanopush/models/materials.hpp"
 #include "nanopush/models/surface_forces.hpp"
 #include "nanopush/numerics/error.hpp"
+#include "support/support.hpp"
 
 using namespace nanopush;
 using namespace nanopush::forces;
@@ -21,7 +22,7 @@ namespace {
 namespace NANOPUSH_UNITY_ID {
 namespace {
 constexpr double eps = std::numeric_limits<double>::epsilon();
-bool rel_close(double a, double b, double tol) { return std::abs(a - b) <= tol * std::abs(b); }
+bool rel_close(double a, double b, double tol) { return nanopush::test::close_to_ref(a, b, tol); }
 /// Round v / unit to `digits` decimals.
 double rounded(double v, double unit, int digits) {
   const double s = std::pow(10.0, digits);

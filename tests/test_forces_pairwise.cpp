@@ -12,6 +12,7 @@
 #include "nanopush/models/surface_forces.hpp"
 #include "nanopush/models/surface_forces_pairwise.hpp"
 #include "nanopush/numerics/error.hpp"
+#include "support/support.hpp"
 
 using namespace nanopush;
 using namespace nanopush::forces;
@@ -21,7 +22,7 @@ namespace {
 namespace NANOPUSH_UNITY_ID {
 namespace {
 constexpr double eps = std::numeric_limits<double>::epsilon();
-bool rel_close(double a, double b, double tol) { return std::abs(a - b) <= tol * std::abs(b); }
+bool rel_close(double a, double b, double tol) { return nanopush::test::close_to_ref(a, b, tol); }
 /// Gauss-Legendre (composite, 64 panels x 8 points) of eq 2.18's integrand for n = 6:
 /// w = -(A/6) int_0^{2R} (2R - z) z / (D + z)^3 dz.
 double sphere_energy_quadrature(double A, double R, double D) {

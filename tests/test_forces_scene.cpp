@@ -9,6 +9,7 @@
 #include "nanopush/scenes/environment_toml.hpp"
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/models/surface_forces.hpp"
+#include "support/support.hpp"
 
 using namespace nanopush;
 namespace nf = nanopush::forces;
@@ -24,14 +25,7 @@ const char* kTube = R"(shape = "rod"
 material = "graphite"
 radius = 13.5e-9
 length = 590e-9)";
-std::string message_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
+std::string message_of(const std::function<void()>& f) { return nanopush::test::input_error_of(f, "(no error)"); }
 }  // namespace
 
 TEST_CASE("Environment and body tables parse; errors name the TOML field", "[forces][scene][validation][unit]") {

@@ -12,6 +12,7 @@
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/models/icor.hpp"
 #include "nanopush/numerics/roots.hpp"
+#include "support/support.hpp"
 
 using namespace nanopush;
 using icor::CubicMethod;
@@ -41,7 +42,8 @@ const std::vector<Solver>& solvers() {
   return s;
 }
 
-double rel(double a, double b) { return std::fabs(a - b) / std::max(std::fabs(a), std::fabs(b)); }
+using nanopush::test::kRelAgree;
+using nanopush::test::rel;
 
 }  // namespace
 
@@ -82,9 +84,9 @@ TEST_CASE("Table 5.1: Brent, Eigen and LAPACK agree to 1e-12 relative on both br
       REQUIRE(sol.real_roots.size() == ref.real_roots.size());
       CHECK(sol.at_infinity == ref.at_infinity);
       CHECK(sol.complex_roots == ref.complex_roots);
-      for (std::size_t i = 0; i < sol.real_roots.size(); ++i) CHECK(rel(sol.real_roots[i], ref.real_roots[i]) <= 1e-12);
+      for (std::size_t i = 0; i < sol.real_roots.size(); ++i) CHECK(rel(sol.real_roots[i], ref.real_roots[i]) <= kRelAgree);
       REQUIRE(sol.positive.has_value() == ref.positive.has_value());
-      if (sol.positive) CHECK(rel(*sol.positive, *ref.positive) <= 1e-12);
+      if (sol.positive) CHECK(rel(*sol.positive, *ref.positive) <= kRelAgree);
     }
   }
 }

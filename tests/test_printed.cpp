@@ -12,6 +12,7 @@
 #include "nanopush/models/friction.hpp"
 #include "nanopush/models/rough_bar.hpp"
 #include "nanopush/scenes/simulate.hpp"
+#include "support/support.hpp"
 
 using namespace nanopush;
 
@@ -20,9 +21,7 @@ namespace {
 namespace NANOPUSH_UNITY_ID {
 namespace {
 
-Scene preset(int fig) {
-  return load_scene(std::string(NANOPUSH_SOURCE_DIR) + "/drivers/scenes/thesis/fig3_" + std::to_string(fig) + ".toml");
-}
+Scene preset(int fig) { return nanopush::test::thesis_preset(fig); }
 
 // Faithful unless asked: these tests compare the two engines step for step (the presets' own
 // method is auto).

@@ -10,6 +10,7 @@
 #include "nanopush/engines/engines.hpp"
 #include "nanopush/models/stick_slip.hpp"
 #include "trajectory_checks.hpp"
+#include "support/support.hpp"
 
 using namespace nanopush;
 using Catch::Matchers::Contains;
@@ -20,9 +21,7 @@ namespace {
 namespace NANOPUSH_UNITY_ID {
 namespace {
 
-Scene preset(int fig) {
-  return load_scene(std::string(NANOPUSH_SOURCE_DIR) + "/drivers/scenes/thesis/fig3_" + std::to_string(fig) + ".toml");
-}
+Scene preset(int fig) { return nanopush::test::thesis_preset(fig); }
 
 /// The preset with its push force rounded `ulps` ulps up.
 Scene pushed_up(int fig, int ulps) {
@@ -273,26 +272,8 @@ TEST_CASE("Friction is continuous through omega = 0 while the bar slides (no swi
 }
 
 TEST_CASE("Bad rough scenes are rejected clearly", "[rough][scene][unit]") {
-  const std::string base = R"(
-[object]
-length = 100e-9
-width = 55e-9
-mass = 6e-19
-[push]
-force = 5e-6
-xn = 27.5e-9
-yn = 45e-9
-[surface]
-kind = "rough"
-mu = 0.1
-[solver]
-t_end = 1e-9
-)";
-  auto with = [&](const std::string& a, const std::string& b) {
-    std::string s = base;
-    s.replace(s.find(a), a.size(), b);
-    return s;
-  };
+  const std::string& base = nanopush::test::kBaseRoughSceneText;
+  auto with = [&](const std::string& a, const std::string& b) { return nanopush::test::replaced(base, a, b); };
   CHECK_THROWS_WITH(parse_scene(with("mu = 0.1", "mu = -0.1"), "s"), Contains("surface.mu = -0.1") && Contains("[0, 10]"));
   CHECK_THROWS_WITH(parse_scene(with("mass = 6e-19", "mass = 0"), "s"), Contains("object.mass = 0: must be > 0"));
   CHECK_THROWS_WITH(parse_scene(with("xn = 27.5e-9", "xn = 40e-9"), "s"), Contains("push.xn = 4") && Contains("on the body"));
@@ -345,21 +326,7 @@ TEST_CASE("A rough scene with [environment] and [body] takes its normal load fro
   RunSettings rs;
   const Trajectory tr = run_engine(sc, rs);
   CHECK(tr.complete);
-  const std::string base = R"(
-[object]
-length = 100e-9
-width = 55e-9
-mass = 6e-19
-[push]
-force = 5e-6
-xn = 27.5e-9
-yn = 45e-9
-[surface]
-kind = "rough"
-mu = 0.1
-[solver]
-t_end = 1e-9
-)";
+  const std::string& base = nanopush::test::kBaseRoughSceneText;
   CHECK_THROWS_WITH(parse_scene(base + "[environment]\nmedium = \"vacuum\"\n", "s"), Contains("body = (missing)"));
   CHECK_THROWS_WITH(
       parse_scene(base + "[environment]\nmedium = \"vacuum\"\n[body]\nshape = \"bar\"\nlength = 1e-7\nwidth = 4e-8\nheight = 5e-8\nmaterial = \"graphite\"\n", "s"),

@@ -11,6 +11,7 @@
 #include "nanopush/scenes/scene.hpp"
 #include "nanopush/scenes/scene_keys.hpp"
 #include "nanopush/scenes/simulate.hpp"
+#include "support/support.hpp"
 
 using namespace nanopush;
 
@@ -67,14 +68,7 @@ void require_same_rows(const Trajectory& a, const Trajectory& b) {
   CHECK(a.stats.nfcn == b.stats.nfcn);
 }
 
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
+std::string error_of(const std::function<void()>& f) { return nanopush::test::input_error_of(f, "(no error)"); }
 
 }  // namespace
 

@@ -10,6 +10,7 @@
 #include "nanopush/models/icor.hpp"
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/sweeps/sweep.hpp"
+#include "support/support.hpp"
 
 using namespace nanopush;
 
@@ -17,17 +18,8 @@ using namespace nanopush;
 namespace {
 namespace NANOPUSH_UNITY_ID {
 namespace {
+using nanopush::test::input_error_of;
 
-/// The message of the InputError `f` throws ("" when it throws none).
-template <class F>
-std::string input_error_of(F&& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return {};
-}
 
 }  // namespace
 
