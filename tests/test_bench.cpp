@@ -36,7 +36,7 @@ const Engine& find(const std::vector<Engine>& v, const std::string& name, const 
 
 }  // namespace
 
-TEST_CASE("bench: weighted max-abs error measure", "[bench]") {
+TEST_CASE("bench: weighted max-abs error measure", "[bench][unit]") {
   Problem p;
   p.n = 2;
   p.tout = {0.0, 1.0, 2.0};
@@ -57,7 +57,7 @@ TEST_CASE("bench: weighted max-abs error measure", "[bench]") {
   CHECK_THROWS_AS(scaled_max_error(p, std::vector<quad>(5), ref), InputError);
 }
 
-TEST_CASE("bench: tolerance sweep rtol = 10^(-k/2)", "[bench]") {
+TEST_CASE("bench: tolerance sweep rtol = 10^(-k/2)", "[bench][unit]") {
   const auto v = tolerance_sweep(6, 26, 1, 1e-13);
   REQUIRE(v.size() == 21);
   CHECK(v.front() == Approx(1e-3));
@@ -68,7 +68,7 @@ TEST_CASE("bench: tolerance sweep rtol = 10^(-k/2)", "[bench]") {
   CHECK_THROWS_AS(tolerance_sweep(6, 26, 0, 1e-13), InputError);
 }
 
-TEST_CASE("bench: the exact smooth solution solves the ODE (quad finite differences)", "[bench]") {
+TEST_CASE("bench: the exact smooth solution solves the ODE (quad finite differences)", "[bench][numeric]") {
   const Scene sc = smooth_scene("a");
   REQUIRE(has_exact_solution(sc));
   Problem p = problem_from_scene(sc);
@@ -93,7 +93,7 @@ TEST_CASE("bench: the exact smooth solution solves the ODE (quad finite differen
   for (int i = 0; i < 6; ++i) CHECK(static_cast<double>(y0[static_cast<std::size_t>(i)]) == sc.initial[i]);
 }
 
-TEST_CASE("bench: extended precision reaches 1e-25 against the exact smooth solution", "[bench]") {
+TEST_CASE("bench: extended precision reaches 1e-25 against the exact smooth solution", "[bench][numeric]") {
   const Scene sc = smooth_scene("a");
   const Problem p = problem_from_scene(sc);
   const auto exact = smooth_exact(sc, p);
@@ -116,7 +116,7 @@ TEST_CASE("bench: extended precision reaches 1e-25 against the exact smooth solu
   CHECK(el > 1e-21);
 }
 
-TEST_CASE("bench: reference acceptance (two runs agree to 1e-3 of the smallest plotted error)", "[bench]") {
+TEST_CASE("bench: reference acceptance (two runs agree to 1e-3 of the smallest plotted error)", "[bench][numeric]") {
   const Scene sc = smooth_scene("a");
   const Problem p = problem_from_scene(sc);
   const auto exact = smooth_exact(sc, p);
@@ -169,7 +169,7 @@ TEST_CASE("bench: reference acceptance (two runs agree to 1e-3 of the smallest p
   CHECK_THROWS_AS(extended_reference(p, q, failed, "test"), SolverError);
 }
 
-TEST_CASE("bench: rows below the reference's resolution are kept but not plotted or judged", "[bench]") {
+TEST_CASE("bench: rows below the reference's resolution are kept but not plotted or judged", "[bench][unit]") {
   Reference ref;
   ref.kind = "extended";
   ref.disagreement = 1e-15;  // resolves errors >= 1e-12
@@ -208,7 +208,7 @@ TEST_CASE("bench: rows below the reference's resolution are kept but not plotted
   CHECK_FALSE(accept_reference(bad, rows3).accepted);
 }
 
-TEST_CASE("bench: every engine wrapper reaches its tolerance on the smooth nanobar", "[bench]") {
+TEST_CASE("bench: every engine wrapper reaches its tolerance on the smooth nanobar", "[bench][numeric]") {
   const Scene sc = smooth_scene("a");
   EngineConfig cfg;
   const Bench b = make_bench(sc, cfg);
@@ -259,7 +259,7 @@ TEST_CASE("bench: every engine wrapper reaches its tolerance on the smooth nanob
   }
 }
 
-TEST_CASE("bench: F77 (callback and native) and C++ faithful take identical steps", "[bench]") {
+TEST_CASE("bench: F77 (callback and native) and C++ faithful take identical steps", "[bench][regression]") {
   const Scene sc = smooth_scene("c");
   const Bench b = make_bench(sc, EngineConfig{});
   for (const double rtol : {1e-4, 1e-9, 1e-12}) {
@@ -275,7 +275,7 @@ TEST_CASE("bench: F77 (callback and native) and C++ faithful take identical step
   }
 }
 
-TEST_CASE("bench: the wall-time spread of the repeats", "[bench]") {
+TEST_CASE("bench: the wall-time spread of the repeats", "[bench][unit]") {
   const Scene sc = smooth_scene("a");
   EngineConfig cfg;
   cfg.only = {"cxx-faithful"};
@@ -292,7 +292,7 @@ TEST_CASE("bench: the wall-time spread of the repeats", "[bench]") {
   CHECK(rows[0].wall_spread >= 0);
 }
 
-TEST_CASE("bench: loosest rtol from which the overhead stays within a bound", "[bench]") {
+TEST_CASE("bench: loosest rtol from which the overhead stays within a bound", "[bench][unit]") {
   // Synthetic rows (no timing is measured): the answer is the loosest rtol R such that every
   // successful row of the engine at rtol <= R is within the bound.
   auto row = [](const std::string& eng, double rtol, double ov, int status = 0) {
@@ -341,7 +341,7 @@ TEST_CASE("bench: loosest rtol from which the overhead stays within a bound", "[
   CHECK_FALSE(overhead_within_from(own, "a", "double", 10.0, &Row::own_ns_per_rhs).has_value());
 }
 
-TEST_CASE("bench: sweep rows and the CSV carry the documented columns", "[bench]") {
+TEST_CASE("bench: sweep rows and the CSV carry the documented columns", "[bench][unit]") {
   const Scene sc = smooth_scene("a");
   EngineConfig cfg;
   cfg.only = {"cxx-faithful", "f77-native"};
@@ -387,7 +387,7 @@ TEST_CASE("bench: sweep rows and the CSV carry the documented columns", "[bench]
   CHECK_THROWS_WITH(run_sweep(b.problem, b.engines, b.reference, s), Catch::Contains("repeats"));
 }
 
-TEST_CASE("bench: a replayed RHS reproduces every double engine's solve bit for bit", "[bench][replay]") {
+TEST_CASE("bench: a replayed RHS reproduces every double engine's solve bit for bit", "[bench][replay][regression]") {
   // The replay diagnostic times the integrator alone: one solve records its RHS values, the
   // timed solves get them handed back in order. It is valid only if the replayed solve is
   // the recorded one exactly (same counts, same outputs bit for bit); replay() checks that
@@ -430,7 +430,8 @@ TEST_CASE("bench: a replayed RHS reproduces every double engine's solve bit for 
 #endif
 }
 
-TEST_CASE("bench: the replay tape hands back values and statuses in order, and fails past its end", "[bench][replay]") {
+TEST_CASE("bench: the replay tape hands back values and statuses in order, and fails past its end",
+          "[bench][replay][unit]") {
   detail::RhsTape tape;
   const auto rhs = [](double t, const double* y, double* d) {
     d[0] = y[1] + t;
@@ -455,7 +456,7 @@ TEST_CASE("bench: the replay tape hands back values and statuses in order, and f
   CHECK(play(0.0, z, e) == detail::kReplayExhausted);
 }
 
-TEST_CASE("bench: a sweep with replay fills own_ns_per_rhs for the replayable engines only", "[bench][replay]") {
+TEST_CASE("bench: a sweep with replay fills own_ns_per_rhs for the replayable engines only", "[bench][replay][unit]") {
   const Scene sc = smooth_scene("a");
   EngineConfig cfg;
   cfg.only = {"cxx-faithful", "f77-native"};
@@ -478,7 +479,7 @@ TEST_CASE("bench: a sweep with replay fills own_ns_per_rhs for the replayable en
   }
 }
 
-TEST_CASE("bench: the overhead plot, with and without the replay panel", "[bench][replay]") {
+TEST_CASE("bench: the overhead plot, with and without the replay panel", "[bench][replay][unit]") {
   // Synthetic rows: the figure's layout only (gnuplot writes it; no timing is measured).
   auto row = [](const std::string& eng, const std::string& prec, double rtol, double ov, double own) {
     Row r;
@@ -524,7 +525,8 @@ TEST_CASE("bench: the overhead plot, with and without the replay panel", "[bench
   std::filesystem::remove_all(dir);
 }
 
-TEST_CASE("bench: rough scene against the extended-precision F77 program (-freal-8-real-16)", "[bench][rough]") {
+TEST_CASE("bench: rough scene against the extended-precision F77 program (-freal-8-real-16)",
+          "[bench][rough][regression]") {
   const Scene sc = load_scene(std::string(NANOPUSH_SOURCE_DIR) + "/drivers/scenes/thesis/fig3_17.toml");
   bench::EngineConfig cfg;
   cfg.only = {"cxx-faithful", "f77-callback"};
@@ -544,7 +546,8 @@ TEST_CASE("bench: rough scene against the extended-precision F77 program (-freal
   CHECK(bench::scaled_max_error(b.problem, c.y, f.y) == 0.0);
 }
 
-TEST_CASE("bench: stick-slip scene, the event-locating engines against their reference", "[bench][rough][coulomb]") {
+TEST_CASE("bench: stick-slip scene, the event-locating engines against their reference",
+          "[bench][rough][coulomb][numeric]") {
   const Scene sc = load_scene(std::string(NANOPUSH_SOURCE_DIR) + "/drivers/scenes/bench/stick_mu015.toml");
   bench::EngineConfig cfg;
   cfg.only = {"cxx-events", "cvode-events"};
@@ -565,7 +568,8 @@ TEST_CASE("bench: stick-slip scene, the event-locating engines against their ref
   CHECK(bench::scaled_max_error(b.problem, c.y, b.reference.y) <= 1e-7);
 }
 
-TEST_CASE("bench: stick-slip RHS budget stops the engines without event location, not the others", "[bench][rough][coulomb]") {
+TEST_CASE("bench: stick-slip RHS budget stops the engines without event location, not the others",
+          "[bench][rough][coulomb][unit]") {
   const Scene sc = load_scene(std::string(NANOPUSH_SOURCE_DIR) + "/drivers/scenes/bench/stick_mu015.toml");
   bench::EngineConfig cfg;
   cfg.only = {"cxx-events", "cxx-faithful", "odeint-bs"};

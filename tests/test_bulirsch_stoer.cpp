@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "nanopush/numerics/bulirsch_stoer.hpp"
+#include "support/support.hpp"
 
 using namespace nanopush;
 
@@ -44,15 +45,7 @@ namespace {
 namespace NANOPUSH_UNITY_ID {
 namespace {
 
-// y1' = y2, y2' = -y1: exact (cos t, -sin t) from (1, 0).
-struct Oscillator {
-  template <typename S>
-  int operator()(S, const S* y, S* d) const {
-    d[0] = y[1];
-    d[1] = -y[0];
-    return 0;
-  }
-};
+using nanopush::test::Oscillator;
 
 template <typename S, int N>
 double oscillator_error(BsOptions<S> opt, double t_end, BsResult* out = nullptr) {

@@ -12,6 +12,7 @@
 
 #include "nanopush/numerics/bulirsch_stoer.hpp"
 #include "nanopush/numerics/scalar.hpp"
+#include "support/support.hpp"
 
 using namespace nanopush;
 
@@ -20,14 +21,7 @@ namespace {
 namespace NANOPUSH_UNITY_ID {
 namespace {
 
-struct Oscillator {
-  template <typename S>
-  int operator()(S, const S* y, S* d) const {
-    d[0] = y[1];
-    d[1] = -y[0];
-    return 0;
-  }
-};
+using nanopush::test::Oscillator;
 
 // A pendulum swinging 1.5 rad about 1 rad: strongly nonlinear, no closed form used.
 struct Pendulum {

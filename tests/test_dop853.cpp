@@ -334,7 +334,8 @@ TEST_CASE("dop853: identical results across runs; dynamic size = fixed size", "[
   CHECK(yf[1] == yd[1]);
 }
 
-TEST_CASE("dop853: the smooth nanobar meets its exact solution at every rtol from 1e-4 to 1e-12", "[dop853][smooth]") {
+TEST_CASE("dop853: the smooth nanobar meets its exact solution at every rtol from 1e-4 to 1e-12",
+          "[dop853][smooth][numeric]") {
   // The scaled error of the benchmark at every output time. A local-error-per-step
   // controller bounds the global error by a multiple of naccpt rtol, not of rtol (the
   // pendulum's phase error grows along the run, and the order-7 interpolant adds its own):
@@ -360,7 +361,8 @@ TEST_CASE("dop853: the smooth nanobar meets its exact solution at every rtol fro
   }
 }
 
-TEST_CASE("dop853: rough scene under the thesis law agrees with the Bulirsch-Stoer engine", "[dop853][rough]") {
+TEST_CASE("dop853: rough scene under the thesis law agrees with the Bulirsch-Stoer engine",
+          "[dop853][rough][numeric]") {
   const Scene sc = load_scene(preset("fig3_17"));
   RunSettings a, b;
   a.method = "dop853";
@@ -381,7 +383,8 @@ TEST_CASE("dop853: rough scene under the thesis law agrees with the Bulirsch-Sto
   CHECK(ta.work_push.size() == ta.rows.size());
 }
 
-TEST_CASE("dop853: scenes refuse what dop853 does not do, naming field, value and what is allowed", "[dop853][scene]") {
+TEST_CASE("dop853: scenes refuse what dop853 does not do, naming field, value and what is allowed",
+          "[dop853][scene][unit]") {
   const Scene smooth = load_scene(preset("fig3_6a"));
   const Scene rough = load_scene(preset("fig3_17"));
   RunSettings rs;

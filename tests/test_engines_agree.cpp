@@ -66,7 +66,7 @@ std::vector<double> outputs(int n) {
 
 }  // namespace
 
-TEST_CASE("C++ faithful reproduces the F77 steps: 101 outputs", "[engines][crosslang]") {
+TEST_CASE("C++ faithful reproduces the F77 steps: 101 outputs", "[engines][crosslang][regression]") {
   for (int iextr : {1, 2}) {
     for (double rtol : {1e-6, 1e-9, 1e-12}) {
       const Counts f = run_f77(0.5, iextr, rtol, outputs(100));
@@ -80,7 +80,8 @@ TEST_CASE("C++ faithful reproduces the F77 steps: 101 outputs", "[engines][cross
   }
 }
 
-TEST_CASE("C++ faithful reproduces the F77 steps: free step control with rejections", "[engines][crosslang]") {
+TEST_CASE("C++ faithful reproduces the F77 steps: free step control with rejections",
+          "[engines][crosslang][regression]") {
   struct Case {
     double theta0;
     int iextr;
@@ -104,7 +105,8 @@ TEST_CASE("C++ faithful reproduces the F77 steps: free step control with rejecti
   }
 }
 
-TEST_CASE("Every Fig 3.6 preset: identical counts and theta to 1e-12, C++ faithful vs F77", "[engines][crosslang]") {
+TEST_CASE("Every Fig 3.6 preset: identical counts and theta to 1e-12, C++ faithful vs F77",
+          "[engines][crosslang][regression]") {
   for (const char* c : {"a", "b", "c", "d", "e", "f", "g", "h"}) {
     const Scene sc = load_scene(std::string(NANOPUSH_SOURCE_DIR) + "/drivers/scenes/thesis/fig3_6" + c + ".toml");
     RunSettings a, b;

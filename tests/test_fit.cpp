@@ -12,6 +12,7 @@
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/scenes/scene.hpp"
 #include "nanopush/scenes/simulate.hpp"
+#include "support/support.hpp"
 
 using namespace nanopush;
 using namespace nanopush::fit;
@@ -20,18 +21,8 @@ using namespace nanopush::fit;
 namespace {
 namespace NANOPUSH_UNITY_ID {
 namespace {
-
-template <class F>
-std::string input_error_of(F&& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return {};
-}
-
-Scene preset(const std::string& rel) { return load_scene(std::string(NANOPUSH_SOURCE_DIR) + "/drivers/scenes/" + rel); }
+using nanopush::test::input_error_of;
+using nanopush::test::preset;
 
 /// A short version of a preset: span t_end, `samples` outputs.
 Scene short_scene(const std::string& rel, double t_end, int samples) {
@@ -81,7 +72,7 @@ const char* kGood = "t,x,sigma_x,theta\n0,0,1e-9,0\n1e-10,1e-9,1e-9,0.01\n2e-10,
 
 }  // namespace
 
-TEST_CASE("fit data: a good file reads, --sigma fills a column", "[fit]") {
+TEST_CASE("fit data: a good file reads, --sigma fills a column", "[fit][unit]") {
   const Observations o = parse_observations(kGood, "d.csv", {{"theta", 0.01}});
   REQUIRE(o.t.size() == 3);
   CHECK(o.has[0]);
@@ -96,7 +87,7 @@ TEST_CASE("fit data: a good file reads, --sigma fills a column", "[fit]") {
   CHECK(back.sigma[0] == o.sigma[0]);
 }
 
-TEST_CASE("fit data: every bad-data case names its row and column", "[fit]") {
+TEST_CASE("fit data: every bad-data case names its row and column", "[fit][unit]") {
   const SigmaOverrides th{{"theta", 0.01}};
   auto err = [&](const std::string& csv, const SigmaOverrides& s = {}) {
     return input_error_of([&] { (void)parse_observations(csv, "d.csv", s); });
@@ -137,7 +128,7 @@ TEST_CASE("fit data: every bad-data case names its row and column", "[fit]") {
   (void)th;
 }
 
-TEST_CASE("fit sensitivities: smooth scene against central differences of BS solves", "[fit]") {
+TEST_CASE("fit sensitivities: smooth scene against central differences of BS solves", "[fit][numeric]") {
   const Scene s = short_scene("thesis/fig3_6a.toml", 0.4e-9, 41);
   const std::vector<std::string> free = {"push.force", "initial.theta"};
   const std::vector<double> p = {s.push.force, s.initial[kTheta]};
@@ -150,7 +141,7 @@ TEST_CASE("fit sensitivities: smooth scene against central differences of BS sol
   }
 }
 
-TEST_CASE("fit sensitivities: rough scene, thesis law, against central differences", "[fit]") {
+TEST_CASE("fit sensitivities: rough scene, thesis law, against central differences", "[fit][numeric]") {
   const Scene s = short_scene("thesis/fig3_20.toml", 0.4e-9, 41);
   const std::vector<std::string> free = {"surface.mu", "push.force"};
   const std::vector<double> p = {s.surface.mu, s.push.force};
@@ -162,7 +153,7 @@ TEST_CASE("fit sensitivities: rough scene, thesis law, against central differenc
   }
 }
 
-TEST_CASE("fit gradients: coulomb law by differences of whole solves, across stick events", "[fit]") {
+TEST_CASE("fit gradients: coulomb law by differences of whole solves, across stick events", "[fit][numeric]") {
   // Fig 3.27 parameters (mu = 0.15): the bar slides from rest and sticks at t = 3.81e-10 s,
   // 1e-12 s after a sample. The Jacobian of the fit (central differences, step 1e-4, rtol
   // 1e-12, faithful Bulirsch-Stoer) against differences of the modern method's solves with
@@ -205,25 +196,25 @@ FitResult fit_synthetic(const Scene& truth, const std::string& key, double start
 
 }  // namespace
 
-TEST_CASE("fit synthetic: smooth scene, push.force", "[fit]") {
+TEST_CASE("fit synthetic: smooth scene, push.force", "[fit][numeric]") {
   const Scene s = short_scene("thesis/fig3_6a.toml", 0.8e-9, 81);
   const FitResult r = fit_synthetic(s, "push.force", 1.3 * s.push.force, {2e-9, 2e-9, 0.02}, "", 11);
   CHECK(r.gradients == "sensitivities");
   CHECK(r.fitted.size() == 81);
 }
 
-TEST_CASE("fit synthetic: rough scene, thesis law, surface.mu", "[fit]") {
+TEST_CASE("fit synthetic: rough scene, thesis law, surface.mu", "[fit][numeric]") {
   const Scene s = short_scene("thesis/fig3_20.toml", 0.8e-9, 81);
   fit_synthetic(s, "surface.mu", 0.1, {1e-9, 1e-9, 0.01}, "thesis", 12);
 }
 
-TEST_CASE("fit synthetic: rough scene, coulomb law, surface.mu", "[fit]") {
+TEST_CASE("fit synthetic: rough scene, coulomb law, surface.mu", "[fit][numeric]") {
   const Scene s = short_scene("bench/stick_mu015.toml", 0.8e-9, 81);
   const FitResult r = fit_synthetic(s, "surface.mu", 0.13, {1e-9, 1e-9, 0.01}, "coulomb", 13);
   CHECK(r.gradients == "differences");
 }
 
-TEST_CASE("fit identifiability: mu and the adhesion load enter only as mu*N", "[fit]") {
+TEST_CASE("fit identifiability: mu and the adhesion load enter only as mu*N", "[fit][numeric]") {
   const Scene s = short_scene("thesis/fig3_20.toml", 0.8e-9, 41);
   const Observations obs = synthesize(s, {1e-9, 1e-9, 0.01}, 21, "thesis");
   Scene start = s;
@@ -247,7 +238,7 @@ TEST_CASE("fit identifiability: mu and the adhesion load enter only as mu*N", "[
   CHECK_THAT(json, Catch::Contains("\"stderr\": null") && Catch::Contains("\"identifiable\": false"));
 }
 
-TEST_CASE("fit JSON: the shape the issue specifies", "[fit]") {
+TEST_CASE("fit JSON: the shape the issue specifies", "[fit][unit]") {
   const Scene s = short_scene("thesis/fig3_6a.toml", 0.4e-9, 21);
   const Observations obs = synthesize(s, {2e-9, 0, 0}, 3);
   Scene start = s;
@@ -262,7 +253,7 @@ TEST_CASE("fit JSON: the shape the issue specifies", "[fit]") {
   CHECK(r.n_forward_solves >= 2);
 }
 
-TEST_CASE("fit options: bad keys and settings are named", "[fit]") {
+TEST_CASE("fit options: bad keys and settings are named", "[fit][unit]") {
   const Scene s = short_scene("thesis/fig3_6a.toml", 0.4e-9, 21);
   const Observations obs = synthesize(s, {2e-9, 0, 0}, 3);
   FitOptions o;
@@ -277,7 +268,7 @@ TEST_CASE("fit options: bad keys and settings are named", "[fit]") {
   CHECK_THAT(input_error_of([&] { (void)fit_trajectory(s, obs, o); }), Catch::Contains("named twice"));
 }
 
-TEST_CASE("fit non-convergence: reported with the last state, never silent", "[fit]") {
+TEST_CASE("fit non-convergence: reported with the last state, never silent", "[fit][unit]") {
   const Scene s = short_scene("thesis/fig3_6a.toml", 0.4e-9, 21);
   const Observations obs = synthesize(s, {2e-9, 2e-9, 0}, 4);
   Scene start = s;
@@ -292,7 +283,7 @@ TEST_CASE("fit non-convergence: reported with the last state, never silent", "[f
   CHECK_THAT(fit_json(r), Catch::Contains("\"converged\": false"));
 }
 
-TEST_CASE("fit identifiability: push force and density enter only as F/m on a smooth scene", "[fit]") {
+TEST_CASE("fit identifiability: push force and density enter only as F/m on a smooth scene", "[fit][numeric]") {
   // The bar's inertia scales with its mass (density given): the motion sees F/m only.
   const Scene s = short_scene("thesis/fig3_6a.toml", 0.4e-9, 41);
   const Observations obs = synthesize(s, {2e-9, 2e-9, 0.02}, 8);

@@ -9,6 +9,7 @@
 
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/models/surface_forces.hpp"
+#include "support/support.hpp"
 
 using namespace nanopush;
 using namespace nanopush::forces;
@@ -17,12 +18,12 @@ using namespace nanopush::forces;
 namespace {
 namespace NANOPUSH_UNITY_ID {
 namespace {
+using nanopush::test::rel_close;
 constexpr double eps = std::numeric_limits<double>::epsilon();
 /// |value/unit - printed| <= half a unit in the last printed digit: "to all given digits".
 bool to_printed_digits(double value, double unit, double printed, int decimals) {
   return std::abs(value / unit - printed) <= 0.5 * std::pow(10.0, -decimals);
 }
-bool rel_close(double a, double b, double tol) { return std::abs(a - b) <= tol * std::max(std::abs(a), std::abs(b)); }
 }  // namespace
 
 TEST_CASE("Issue 6 oracles for A = 1e-19 J, R = 10 nm, to all given digits", "[forces][unit]") {
@@ -147,7 +148,8 @@ TEST_CASE("Layered surfaces: limits 2.40-2.41 and the general form 2.38", "[forc
                     layered_vdw_pressure_symmetric(A232, A123, A121, T, D), 1e-12));
 }
 
-TEST_CASE("Metallic adhesion (eq 2.37): minimum -2 gamma at D0 (erratum: sign of the bracket)", "[forces][unit][errata]") {
+TEST_CASE("Metallic adhesion (eq 2.37): minimum -2 gamma at D0 (erratum: sign of the bracket)",
+          "[forces][unit][errata]") {
   const double gamma = 1.1, D0 = 0.2e-9, lam = 0.05e-9, h = 1e-6 * lam;
   CHECK(metallic_adhesion_energy_per_area(gamma, D0, D0, lam) == -2 * gamma);
   // Our form: zero slope at D0 (one-sided derivative, since D >= D0).
@@ -187,7 +189,8 @@ TEST_CASE("Hamaker combining relation", "[forces][unit]") {
   CHECK(hamaker_combined(9e-20, 1e-20, 4e-20) < 0.0);  // repulsion across a medium in between
 }
 
-TEST_CASE("Table 3.1: corrected values to the printed digits; old values where rounding allows", "[forces][table3_1]") {
+TEST_CASE("Table 3.1: corrected values to the printed digits; old values where rounding allows",
+          "[forces][table3_1][regression]") {
   const auto& t = thesis_table_3_1();
   REQUIRE(t.size() == 18);
   for (const auto& row : t) {
@@ -222,7 +225,7 @@ TEST_CASE("Table 3.1: corrected values to the printed digits; old values where r
   CHECK(std::round(24 * kPi * std::pow(0.4e-9 / 2.5, 2) / 1e-22) == 19302.0);
 }
 
-TEST_CASE("Bad input is rejected with the field, the value and the allowed range", "[forces][validation]") {
+TEST_CASE("Bad input is rejected with the field, the value and the allowed range", "[forces][validation][unit]") {
   CHECK_THROWS_AS(sphere_flat_vdw_force(-1e-19, 1e-8, 1e-9), InputError);
   CHECK_THROWS_WITH(sphere_flat_vdw_force(-1e-19, 1e-8, 1e-9), Catch::Contains("Hamaker constant A = -") && Catch::Contains("must be >= 0 (J)"));
   CHECK_THROWS_WITH(sphere_flat_vdw_force(1e-19, 1e-8, 0.0), Catch::Contains("separation D = 0: must be > 0"));

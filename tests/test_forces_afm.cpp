@@ -6,6 +6,7 @@
 
 #include "nanopush/models/afm_probe.hpp"
 #include "nanopush/numerics/error.hpp"
+#include "support/support.hpp"
 
 using namespace nanopush;
 using namespace nanopush::afm;
@@ -14,8 +15,8 @@ using namespace nanopush::afm;
 namespace {
 namespace NANOPUSH_UNITY_ID {
 namespace {
+using nanopush::test::rel_close;
 constexpr double eps = std::numeric_limits<double>::epsilon();
-bool rel_close(double a, double b, double tol) { return std::abs(a - b) <= tol * std::max(std::abs(a), std::abs(b)); }
 Cantilever silicon() { return {169e9, 1.0 / 3.0, 125e-6, 30e-6, 4e-6, 15e-6}; }
 }  // namespace
 
@@ -31,7 +32,8 @@ TEST_CASE("Cantilever spring constants: eqs 2.4-2.7 and their stated identities"
   CHECK_FALSE(rel_close(spring_constants(c).ktheta, k.Ls * k.Ls / 2 * k.kz, 1e-3));
 }
 
-TEST_CASE("Deflection: eq 2.1 reduces to eq 2.2 without lateral force; numerators rotate the force", "[afm][unit][errata]") {
+TEST_CASE("Deflection: eq 2.1 reduces to eq 2.2 without lateral force; numerators rotate the force",
+          "[afm][unit][errata]") {
   const auto k = spring_constants(silicon());
   for (double alpha : {0.0, 0.1, 0.3}) {
     CHECK(rel_close(deflection_1d(k, 2e-9, 0.0, alpha), deflection_2d_normal(k, 2e-9, alpha), 4 * eps));

@@ -12,6 +12,7 @@
 #include "nanopush/models/surface_forces.hpp"
 #include "nanopush/models/surface_forces_pairwise.hpp"
 #include "nanopush/numerics/error.hpp"
+#include "support/support.hpp"
 
 using namespace nanopush;
 using namespace nanopush::forces;
@@ -21,7 +22,7 @@ namespace {
 namespace NANOPUSH_UNITY_ID {
 namespace {
 constexpr double eps = std::numeric_limits<double>::epsilon();
-bool rel_close(double a, double b, double tol) { return std::abs(a - b) <= tol * std::abs(b); }
+bool rel_close(double a, double b, double tol) { return nanopush::test::close_to_ref(a, b, tol); }
 /// Gauss-Legendre (composite, 64 panels x 8 points) of eq 2.18's integrand for n = 6:
 /// w = -(A/6) int_0^{2R} (2R - z) z / (D + z)^3 dz.
 double sphere_energy_quadrature(double A, double R, double D) {
@@ -57,7 +58,8 @@ std::vector<std::vector<std::string>> read_csv(const std::string& path) {
 }
 }  // namespace
 
-TEST_CASE("Eq 2.12 and A = pi^2 C rho^2: methane's London coefficient and Hamaker constant", "[forces][pairwise][unit]") {
+TEST_CASE("Eq 2.12 and A = pi^2 C rho^2: methane's London coefficient and Hamaker constant",
+          "[forces][pairwise][unit]") {
   // Israelachvili's methane: alpha0/(4 pi eps0) = 2.60e-30 m^3, I = 12.6 eV -> C = 102e-79 J m^6.
   const double C = london_coefficient(2.60e-30, 12.6 * kElectronVolt);
   CHECK(std::round(C / 1e-79) == 102.0);
@@ -68,7 +70,8 @@ TEST_CASE("Eq 2.12 and A = pi^2 C rho^2: methane's London coefficient and Hamake
   CHECK_THROWS_AS(london_coefficient(-1e-30, 1e-18), InputError);
 }
 
-TEST_CASE("Eq 2.18 (n = 6): exact sphere-flat energy against quadrature and its limits 2.21-2.23", "[forces][pairwise][unit]") {
+TEST_CASE("Eq 2.18 (n = 6): exact sphere-flat energy against quadrature and its limits 2.21-2.23",
+          "[forces][pairwise][unit]") {
   const double A = 1e-19, R = 10e-9;
   for (double D : {0.2e-9, 1e-9, 10e-9, 100e-9, 1e-6}) {
     INFO("D = " << D);
@@ -103,7 +106,8 @@ TEST_CASE("Eqs 2.27-2.30: contact energies of molecular-scale bodies", "[forces]
   CHECK_THROWS_AS(sphere_surface_contact_energy(C, s, 0.4 * s), InputError);
 }
 
-TEST_CASE("Eqs 2.42-2.44, 3.7: effective surface energies; 3.7 equals 2.42 with w of 2.27's pair", "[forces][pairwise][unit]") {
+TEST_CASE("Eqs 2.42-2.44, 3.7: effective surface energies; 3.7 equals 2.42 with w of 2.27's pair",
+          "[forces][pairwise][unit]") {
   const double w = 1e-20, s = 0.4e-9, u = w / (s * s);
   CHECK(std::round(effective_surface_energy(w, s, MolecularSurface::planar) / u * 100) == 173.0);  // sqrt(3)
   CHECK(std::round(effective_surface_energy(w, s, MolecularSurface::isolated_molecule) / u * 10) == 19.0);

@@ -47,7 +47,7 @@ TEST_CASE("Eq 3.16 follows from eqs 3.10 and 3.12 with a_x = r alpha", "[rolling
   }
 }
 
-TEST_CASE("C++ and F77 rolling formulas agree over a grid", "[rolling][cross]") {
+TEST_CASE("C++ and F77 rolling formulas agree over a grid", "[rolling][cross][regression]") {
   const double r = 13.5e-9;
   for (int i = 0; i <= 40; ++i) {
     const double h = -r + 2 * r * i / 40.0;
@@ -111,7 +111,7 @@ TEST_CASE("Rolling versus sliding decision", "[rolling][unit]") {
   CHECK(rolling::decide(p).motion == rolling::Motion::rolling_with_slip);
 }
 
-TEST_CASE("Rolling formulas reject bad input; F77 returns IERR, never stops", "[rolling][validation]") {
+TEST_CASE("Rolling formulas reject bad input; F77 returns IERR, never stops", "[rolling][validation][unit]") {
   const double r = 13.5e-9;
   CHECK_THROWS_AS(rolling::static_friction(1e-9, 1.5 * r, r), InputError);
   CHECK_THROWS_WITH(rolling::static_friction(1e-9, 1.5 * r, r), Catch::Contains("push height h"));

@@ -9,6 +9,7 @@
 #include "nanopush/scenes/environment_toml.hpp"
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/models/surface_forces.hpp"
+#include "support/support.hpp"
 
 using namespace nanopush;
 namespace nf = nanopush::forces;
@@ -24,17 +25,10 @@ const char* kTube = R"(shape = "rod"
 material = "graphite"
 radius = 13.5e-9
 length = 590e-9)";
-std::string message_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
+std::string message_of(const std::function<void()>& f) { return nanopush::test::input_error_of(f, "(no error)"); }
 }  // namespace
 
-TEST_CASE("Environment and body tables parse; errors name the TOML field", "[forces][scene][validation]") {
+TEST_CASE("Environment and body tables parse; errors name the TOML field", "[forces][scene][validation][unit]") {
   const Environment e = env_of(R"(medium = "humid_air"
 humidity = 0.4
 temperature = 300.0)");
@@ -75,7 +69,7 @@ temperature = 300.0)");
   CHECK(std::isnan(c.material.surface_energy));
 }
 
-TEST_CASE("A scene without adhesion evaluates no adhesion model", "[forces][scene]") {
+TEST_CASE("A scene without adhesion evaluates no adhesion model", "[forces][scene][unit]") {
   const Body b = body_of(kTube);
   for (const char* env_text : {"adhesion = false", "medium = \"humid_air\"\nhumidity = 0.7\nadhesion = false"}) {
     INFO(env_text);
@@ -97,7 +91,7 @@ TEST_CASE("A scene without adhesion evaluates no adhesion model", "[forces][scen
   }
 }
 
-TEST_CASE("Only the models a scene needs: vacuum runs no capillary model, humid air does", "[forces][scene]") {
+TEST_CASE("Only the models a scene needs: vacuum runs no capillary model, humid air does", "[forces][scene][unit]") {
   const Body b = body_of(kTube);
   nf::model_counters().reset();
   const LoadReport vac = assemble_normal_load(env_of("medium = \"vacuum\""), b);
@@ -139,7 +133,7 @@ TEST_CASE("Only the models a scene needs: vacuum runs no capillary model, humid 
   CHECK(liq.hamaker == Approx(std::pow(std::sqrt(nf::kGraphiteHamaker) - std::sqrt(3.7e-20), 2)).epsilon(1e-14));
 }
 
-TEST_CASE("Shares add up to one and the sphere scene uses the sphere models", "[forces][scene]") {
+TEST_CASE("Shares add up to one and the sphere scene uses the sphere models", "[forces][scene][unit]") {
   const Body s = body_of("shape = \"sphere\"\nradius = 10e-9\nmaterial = \"silica\"");
   nf::model_counters().reset();
   const LoadReport r = assemble_normal_load(env_of("medium = \"humid_air\"\nhumidity = 0.5"), s);
@@ -156,7 +150,8 @@ TEST_CASE("Shares add up to one and the sphere scene uses the sphere models", "[
   CHECK(r.to_text().find("contact_adhesion") != std::string::npos);
 }
 
-TEST_CASE("Dropping a negligible term changes N and the trajectory by less than the tolerance", "[forces][scene][numeric]") {
+TEST_CASE("Dropping a negligible term changes N and the trajectory by less than the tolerance",
+          "[forces][scene][numeric]") {
   const Body b = body_of(kTube);
   const Environment e = env_of("medium = \"vacuum\"");
   LoadOptions keep;
@@ -194,7 +189,7 @@ TEST_CASE("Dropping a negligible term changes N and the trajectory by less than 
   CHECK(assemble_normal_load(e, b, tight).term("gravity").status == TermStatus::evaluated);
 }
 
-TEST_CASE("A bar evaluates no contact-adhesion model; a rigid sphere uses Derjaguin", "[forces][scene]") {
+TEST_CASE("A bar evaluates no contact-adhesion model; a rigid sphere uses Derjaguin", "[forces][scene][unit]") {
   nf::model_counters().reset();
   const LoadReport bar = assemble_normal_load(env_of("medium = \"vacuum\""),
                                               body_of("shape = \"bar\"\nmaterial = \"graphite\"\nlength = 100e-9\nwidth = 55e-9\nheight = 50e-9"));

@@ -23,7 +23,7 @@ const Pt kPoints[] = {{0.3, 0.7, 3.0, 0.8},  {0.3, 0.7, 3.0, 2.5},   {0.3, 0.7, 
                       {0.3, 0.7, 0.5, 0.9},  {0.3, 0.7, 0.0, 0.0},   {27.5, 50.0, 60.0, 1.1}, {1.0, 1.0, 1.3, 0.2}};
 }  // namespace
 
-TEST_CASE("errata (3.46): the printed fy' has the wrong sign", "[friction][errata]") {
+TEST_CASE("errata (3.46): the printed fy' has the wrong sign", "[friction][errata][numeric]") {
   for (const auto& p : kPoints) {
     const auto q = cubature_friction_wrench_uniform(p.a, p.b, 1.0, p.R, p.alpha, 1, 1e-13);
     const auto t = thesis_printed_friction(p.a, p.b, p.R, p.alpha);
@@ -43,7 +43,7 @@ TEST_CASE("errata (3.46): the printed fy' has the wrong sign", "[friction][errat
   CHECK(w.fx * vx + w.fy * vy + w.mf * omega < 0.0);
 }
 
-TEST_CASE("errata (3.48): C4 needs cubes h_i^3 (as in B.37), not squares", "[friction][errata]") {
+TEST_CASE("errata (3.48): C4 needs cubes h_i^3 (as in B.37), not squares", "[friction][errata][numeric]") {
   for (const auto& p : kPoints) {
     const auto q = cubature_friction_wrench_uniform(p.a, p.b, 1.0, p.R, p.alpha, 1, 1e-13);
     const auto t = thesis_printed_friction(p.a, p.b, p.R, p.alpha);
@@ -58,7 +58,8 @@ TEST_CASE("errata (3.48): C4 needs cubes h_i^3 (as in B.37), not squares", "[fri
   }
 }
 
-TEST_CASE("errata (3.47): mf must carry sign(theta-dot); without it friction adds energy", "[friction][errata]") {
+TEST_CASE("errata (3.47): mf must carry sign(theta-dot); without it friction adds energy",
+          "[friction][errata][numeric]") {
   // Rotation about the CM, clockwise: f = 0, so the power is mf * omega.
   const double omega = -2.0;
   const auto t = thesis_printed_friction(0.3, 0.7, 0.0, 0.0);  // (3.47) has no sense factor
@@ -69,7 +70,8 @@ TEST_CASE("errata (3.47): mf must carry sign(theta-dot); without it friction add
   CHECK(c.mf == Approx(w.mf).epsilon(1e-14));
 }
 
-TEST_CASE("errata (3.45)-(3.48) validity: the printed logarithms fail on iCOR edge lines", "[friction][errata]") {
+TEST_CASE("errata (3.45)-(3.48) validity: the printed logarithms fail on iCOR edge lines",
+          "[friction][errata][numeric]") {
   // iCOR on the line of an edge, h1 = R sin(alpha) - b = 0 exactly (alpha = pi/2, R = b), and
   // on a corner: the printed forms give 0 * log(0) or log(x/0) = NaN; ours is finite and right.
   const double a = 0.3, b = 0.7;
@@ -86,7 +88,7 @@ TEST_CASE("errata (3.45)-(3.48) validity: the printed logarithms fail on iCOR ed
   }
 }
 
-TEST_CASE("errata: the printed closed forms cancel catastrophically as R -> infinity", "[friction][errata]") {
+TEST_CASE("errata: the printed closed forms cancel catastrophically as R -> infinity", "[friction][errata][numeric]") {
   const double a = 27.5e-9, b = 50e-9, alpha = 0.3;
   double worst_printed = 0.0, worst_ours = 0.0;
   for (double rho : {1e3, 1e4, 1e5}) {

@@ -42,7 +42,7 @@ void require_agree(const FrictionWrench& c, const double* f, double tol, const s
 using friction_detail::rectangle_friction_from_velocity_reference;
 using friction_detail::rectangle_friction_wrench_reference;
 
-TEST_CASE("friction: C++ and F77 agree to 1e-13 relative", "[friction][cross-language]") {
+TEST_CASE("friction: C++ and F77 agree to 1e-13 relative", "[friction][cross-language][regression]") {
   std::mt19937_64 rng(99);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   int n = 0;
@@ -92,7 +92,7 @@ TEST_CASE("friction: C++ and F77 agree to 1e-13 relative", "[friction][cross-lan
   CHECK(n > 20000);
 }
 
-TEST_CASE("friction: F77 bad input returns a status and a message, never stops", "[friction][cross-language]") {
+TEST_CASE("friction: F77 bad input returns a status and a message, never stops", "[friction][cross-language][unit]") {
   const double nan = std::nan(""), inf = HUGE_VAL;
   double f[3] = {7, 7, 7};
   char msg[128];

@@ -243,7 +243,8 @@ TEST_CASE("friction fast: far field vs the same Gauss-Legendre sum in quad preci
 // of muN and muN max(a, b); measured 1.1e-15 and 2.7e-15 here, 7e-15 in larger scans, all of
 // it the older form's error near edge lines. (Identical to 1e-15 relative, as issue 24 asks,
 // holds in the far field; in form 1 the older form is itself farther than that from exact.)
-TEST_CASE("friction fast: the public entry points agree with the F77 routine's forms (the faithful method's)", "[friction][numeric]") {
+TEST_CASE("friction fast: the public entry points agree with the F77 routine's forms (the faithful method's)",
+          "[friction][numeric]") {
   std::mt19937_64 rng(24);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   double worst[6][2] = {};

@@ -12,6 +12,7 @@
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/models/icor.hpp"
 #include "nanopush/numerics/roots.hpp"
+#include "support/support.hpp"
 
 using namespace nanopush;
 using icor::CubicMethod;
@@ -41,7 +42,8 @@ const std::vector<Solver>& solvers() {
   return s;
 }
 
-double rel(double a, double b) { return std::fabs(a - b) / std::max(std::fabs(a), std::fabs(b)); }
+using nanopush::test::kRelAgree;
+using nanopush::test::rel;
 
 }  // namespace
 
@@ -72,7 +74,8 @@ TEST_CASE("Table 5.1: every row matches the printed digits from all four solvers
   }
 }
 
-TEST_CASE("Table 5.1: Brent, Eigen and LAPACK agree to 1e-12 relative on both branches", "[icor][cross-language]") {
+TEST_CASE("Table 5.1: Brent, Eigen and LAPACK agree to 1e-12 relative on both branches",
+          "[icor][cross-language][regression]") {
   for (const auto& row : icor::thesis_table_5_1()) {
     const auto ref = solvers()[0].solve(row.yn);
     for (const auto& s : solvers()) {
@@ -81,14 +84,15 @@ TEST_CASE("Table 5.1: Brent, Eigen and LAPACK agree to 1e-12 relative on both br
       REQUIRE(sol.real_roots.size() == ref.real_roots.size());
       CHECK(sol.at_infinity == ref.at_infinity);
       CHECK(sol.complex_roots == ref.complex_roots);
-      for (std::size_t i = 0; i < sol.real_roots.size(); ++i) CHECK(rel(sol.real_roots[i], ref.real_roots[i]) <= 1e-12);
+      for (std::size_t i = 0; i < sol.real_roots.size(); ++i) CHECK(rel(sol.real_roots[i], ref.real_roots[i]) <= kRelAgree);
       REQUIRE(sol.positive.has_value() == ref.positive.has_value());
-      if (sol.positive) CHECK(rel(*sol.positive, *ref.positive) <= 1e-12);
+      if (sol.positive) CHECK(rel(*sol.positive, *ref.positive) <= kRelAgree);
     }
   }
 }
 
-TEST_CASE("Erratum 9: at yn = 1, 2 nm the two branches differ; at yn = 0 they are +-b/3 exactly", "[icor][regression]") {
+TEST_CASE("Erratum 9: at yn = 1, 2 nm the two branches differ; at yn = 0 they are +-b/3 exactly",
+          "[icor][regression]") {
   const double b = 0.5 * kL;
   // yn = 0: the quadratic -3 k2 R^2 + k2 (b^2 - 2 k2) = 0, R = +-sqrt((b^2 - 2 k2)/3) = +-b/3.
   const double r0 = std::sqrt((b * b - 2.0 * kK2) / 3.0);
@@ -451,7 +455,8 @@ TEST_CASE("Extension point: the generic quasi-static solver with the line contac
   }
 }
 
-TEST_CASE("Errata evidence: at Table 5.1's root, F of eq 5.2 is positive and a local maximum in R", "[icor][regression]") {
+TEST_CASE("Errata evidence: at Table 5.1's root, F of eq 5.2 is positive and a local maximum in R",
+          "[icor][regression]") {
   const auto rod = icor::nanorod();
   const double W = rod.load(), mu = 0.1;
   for (double yn : {0.0, 1e-9, 50e-9, 150e-9, 295e-9}) {

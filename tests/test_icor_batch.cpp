@@ -34,7 +34,7 @@ double derivative_of(const icor::MuEstimate& e, const std::string& input) {
 
 }  // namespace
 
-TEST_CASE("icor_batch.single_observation_is_the_existing_estimate", "[icor_batch]") {
+TEST_CASE("icor_batch.single_observation_is_the_existing_estimate", "[icor_batch][unit]") {
   const icor::Rod rod = icor::nanorod();
   const Measured F{1e-6, 3e-8}, yn{200e-9, 5e-9}, R{150e-9, 4e-9};
   // known, R: eq 4.10 == estimate_mu_from_icor
@@ -68,7 +68,7 @@ TEST_CASE("icor_batch.single_observation_is_the_existing_estimate", "[icor_batch
   }
 }
 
-TEST_CASE("icor_batch.identical_observations_shrink_sigma_by_sqrt_n", "[icor_batch]") {
+TEST_CASE("icor_batch.identical_observations_shrink_sigma_by_sqrt_n", "[icor_batch][unit]") {
   const icor::Rod rod = icor::nanorod();
   const Observation o{{1e-6, 3e-8}, Measured{100e-9, 5e-9}, Measured{180e-9, 6e-9}};
   for (Pressure p : {Pressure::Known, Pressure::Unknown}) {
@@ -87,7 +87,7 @@ TEST_CASE("icor_batch.identical_observations_shrink_sigma_by_sqrt_n", "[icor_bat
   }
 }
 
-TEST_CASE("icor_batch.unknown_pressure_inverse_and_its_derivatives", "[icor_batch]") {
+TEST_CASE("icor_batch.unknown_pressure_inverse_and_its_derivatives", "[icor_batch][numeric]") {
   icor::Rod rod = icor::nanorod();
   const double b = rod.half_length();
   // At the iCOR of eq 4.13, eq 4.11 inverted is eq 4.8 inverted (same mu), for every yn.
@@ -122,7 +122,7 @@ TEST_CASE("icor_batch.unknown_pressure_inverse_and_its_derivatives", "[icor_batc
         Approx((mu(F, R, yn, L, H * (1 + h)) - mu(F, R, yn, L, H * (1 - h))) / (2 * h * H)).epsilon(1e-7));
 }
 
-TEST_CASE("icor_batch.synthetic_data_within_three_sigma", "[icor_batch]") {
+TEST_CASE("icor_batch.synthetic_data_within_three_sigma", "[icor_batch][numeric]") {
   // Forward model: the line-contact quasi-static push (iCOR of eq 4.13, minimum force of
   // eq 4.8 = 4.10 = 4.11 there), seeded Gaussian noise on F (2 %), yn (3 nm), R (3 nm).
   const icor::Rod rod = icor::nanorod();
@@ -151,7 +151,7 @@ TEST_CASE("icor_batch.synthetic_data_within_three_sigma", "[icor_batch]") {
   }
 }
 
-TEST_CASE("icor_batch.first_order_sigma_against_monte_carlo", "[icor_batch]") {
+TEST_CASE("icor_batch.first_order_sigma_against_monte_carlo", "[icor_batch][numeric]") {
   const icor::Rod rod = icor::nanorod();
   const double F = 8e-7, R = 120e-9, yn = 150e-9;
   const Measured mF{F, 0.02 * F}, mR{R, 3e-9}, my{yn, 3e-9};
@@ -185,7 +185,7 @@ TEST_CASE("icor_batch.first_order_sigma_against_monte_carlo", "[icor_batch]") {
   CHECK(sample_std(combined) == Approx(sigma_stat).epsilon(0.12));
 }
 
-TEST_CASE("icor_batch.inconsistent_observations_are_flagged", "[icor_batch]") {
+TEST_CASE("icor_batch.inconsistent_observations_are_flagged", "[icor_batch][unit]") {
   const icor::Rod rod = icor::nanorod();
   const Measured R{150e-9, 2e-9};
   std::vector<Observation> obs = {{{1e-6, 1e-8}, std::nullopt, R}, {{1.3e-6, 1e-8}, std::nullopt, R}};
@@ -198,7 +198,7 @@ TEST_CASE("icor_batch.inconsistent_observations_are_flagged", "[icor_batch]") {
   CHECK(b.rows[0].weight + b.rows[1].weight == Approx(1.0).epsilon(1e-15));
 }
 
-TEST_CASE("icor_batch.bad_observations_name_the_row", "[icor_batch]") {
+TEST_CASE("icor_batch.bad_observations_name_the_row", "[icor_batch][unit]") {
   const icor::Rod rod = icor::nanorod();
   const Observation good{{1e-6, 1e-8}, Measured{1e-7, 1e-9}, std::nullopt};
   const Observation no_sigma{{1e-6, 0.0}, Measured{1e-7, 0.0}, std::nullopt};
@@ -214,7 +214,7 @@ TEST_CASE("icor_batch.bad_observations_name_the_row", "[icor_batch]") {
   CHECK_THROWS_AS(icor::parse_pressure("both"), InputError);
 }
 
-TEST_CASE("icor_batch.chi2_survival_against_tables", "[icor_batch]") {
+TEST_CASE("icor_batch.chi2_survival_against_tables", "[icor_batch][numeric]") {
   // 5 % upper quantiles (NIST/SEMATECH table) for 1, 2, 3, 10 and 25 degrees of freedom
   CHECK(icor::chi2_survival(3.841458820694124, 1) == Approx(0.05).epsilon(1e-9));
   CHECK(icor::chi2_survival(5.991464547107979, 2) == Approx(0.05).epsilon(1e-9));

@@ -182,7 +182,8 @@ TEST_CASE("Dynamic iCOR tends to the quasi-static one as F falls to the minimum 
   }
 }
 
-TEST_CASE("Dynamic iCOR tends to the impulsive one (5.5) as F/(mu W) grows at a fixed impulse", "[icor][dynamic][numeric]") {
+TEST_CASE("Dynamic iCOR tends to the impulsive one (5.5) as F/(mu W) grows at a fixed impulse",
+          "[icor][dynamic][numeric]") {
   // Impulsive motion is a large force over a short time: the push's impulse F t is held at
   // that of F = 2 mu W over the thesis' 1e-10 s, t = 2e-10 s / (F/(mu W)). (At a fixed
   // t = 1e-10 s a large force spins the rod, theta ~ 0.011 F/(mu W) at yn = 100 nm, and the
@@ -206,7 +207,8 @@ TEST_CASE("Dynamic iCOR tends to the impulsive one (5.5) as F/(mu W) grows at a 
   }
 }
 
-TEST_CASE("Dynamic iCOR at the thesis' t = 1e-10 s lies between the quasi-static and impulsive ones", "[icor][dynamic][numeric]") {
+TEST_CASE("Dynamic iCOR at the thesis' t = 1e-10 s lies between the quasi-static and impulsive ones",
+          "[icor][dynamic][numeric]") {
   // For F/(mu W) = 1.1, 2, 5 (rotation < 0.2 rad by 1e-10 s) the iCOR moves monotonically
   // from the quasi-static value toward the impulsive one as F grows; all three meet where
   // eq 4.13 equals k^2/yn, yn = b/sqrt(3) = 170.3 nm (the thesis reads ~177 nm, Fig 5.3).

@@ -31,7 +31,7 @@ std::string slurp(const std::filesystem::path& p) {
 }
 }  // namespace
 
-TEST_CASE("csv_number: every double reads back exactly", "[outputs]") {
+TEST_CASE("csv_number: every double reads back exactly", "[outputs][unit]") {
   const double edge[] = {0.0,
                          -0.0,
                          0.1,
@@ -68,7 +68,7 @@ TEST_CASE("csv_number: every double reads back exactly", "[outputs]") {
   }
 }
 
-TEST_CASE("csv_number: the shortest form, plain digits for integers", "[outputs]") {
+TEST_CASE("csv_number: the shortest form, plain digits for integers", "[outputs][unit]") {
   CHECK(csv_number(3e-08) == "3e-08");
   CHECK(csv_number(0.1) == "0.1");
   CHECK(csv_number(1.6e-09) == "1.6e-09");
@@ -86,7 +86,7 @@ TEST_CASE("csv_number: the shortest form, plain digits for integers", "[outputs]
   CHECK(csv_number(1e20) == "1e+20");
 }
 
-TEST_CASE("csv_number: missing and infinite values", "[outputs]") {
+TEST_CASE("csv_number: missing and infinite values", "[outputs][unit]") {
   CHECK(csv_number(std::numeric_limits<double>::quiet_NaN()).empty());
   CHECK(csv_number(-std::numeric_limits<double>::quiet_NaN()).empty());
   CHECK(csv_number(std::numeric_limits<double>::infinity()) == "inf");
@@ -95,7 +95,7 @@ TEST_CASE("csv_number: missing and infinite values", "[outputs]") {
   CHECK(read_back("-inf") < 0);
 }
 
-TEST_CASE("CsvWriter: the CSV and its Table Schema sidecar appear together", "[outputs]") {
+TEST_CASE("CsvWriter: the CSV and its Table Schema sidecar appear together", "[outputs][unit]") {
   namespace fs = std::filesystem;
   const fs::path dir = fs::temp_directory_path() / ("nanopush_test_outputs_" + std::to_string(::getpid()));
   fs::remove_all(dir);
@@ -144,7 +144,7 @@ TEST_CASE("CsvWriter: the CSV and its Table Schema sidecar appear together", "[o
   fs::remove_all(dir);
 }
 
-TEST_CASE("join_command_line quotes what a shell would split", "[outputs]") {
+TEST_CASE("join_command_line quotes what a shell would split", "[outputs][unit]") {
   const char* argv[] = {"/usr/bin/nanopush", "run", "my scene.toml", "--out", "-"};
   CHECK(nanopush::join_command_line(5, argv) == "nanopush run 'my scene.toml' --out -");
 }

@@ -11,6 +11,7 @@
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/models/rigid_body.hpp"
 #include "nanopush/engines/engines.hpp"
+#include "support/support.hpp"
 
 using namespace nanopush;
 using Catch::Matchers::Contains;
@@ -115,7 +116,7 @@ TEST_CASE("precision long: rtol 1e-17 beats the floor of double", "[precision][n
 }
 
 TEST_CASE("precision: the modern method refuses rtol below 4 eps of its precision, naming the field and range",
-          "[precision][input]") {
+          "[precision][input][unit]") {
   const Scene sc = load_scene(preset("fig3_6a"));
   // double: 4 eps = 8.88e-16; the same rtol is fine in long double, and for the faithful method
   CHECK_THROWS_AS(run_engine(sc, settings("double", "modern", 1e-16)), InputError);
@@ -191,17 +192,7 @@ TEST_CASE("precision other than double is refused where the RHS is double only",
 }
 
 TEST_CASE("solver.precision in a scene file", "[precision][scene][unit]") {
-  const std::string base = R"(
-[object]
-length = 100e-9
-width = 55e-9
-height = 50e-9
-density = 2267.0
-[push]
-force = 5e-6
-xn = 27.5e-9
-yn = 45e-9
-[initial]
+  const std::string base = nanopush::test::kBaseSceneText + R"([initial]
 theta = -0.5
 [solver]
 t_end = 1.6e-9

@@ -12,6 +12,7 @@
 #include "nanopush/models/friction.hpp"
 #include "nanopush/models/rough_bar.hpp"
 #include "nanopush/scenes/simulate.hpp"
+#include "support/support.hpp"
 
 using namespace nanopush;
 
@@ -20,9 +21,7 @@ namespace {
 namespace NANOPUSH_UNITY_ID {
 namespace {
 
-Scene preset(int fig) {
-  return load_scene(std::string(NANOPUSH_SOURCE_DIR) + "/drivers/scenes/thesis/fig3_" + std::to_string(fig) + ".toml");
-}
+Scene preset(int fig) { return nanopush::test::thesis_preset(fig); }
 
 // Faithful unless asked: these tests compare the two engines step for step (the presets' own
 // method is auto).
@@ -47,7 +46,7 @@ Vel velocity_for(double R, double alpha, int sense) {
 
 }  // namespace
 
-TEST_CASE("Printed law: the C++ and F77 right-hand sides are bit-identical", "[printed][crosslang]") {
+TEST_CASE("Printed law: the C++ and F77 right-hand sides are bit-identical", "[printed][crosslang][regression]") {
   const Scene sc = preset(29);
   const RoughBarModel m = rough_model(sc);
   double params[12] = {m.mass, m.inertia, m.push.force, m.push.beta, m.push.pbx, m.push.pby,
@@ -168,7 +167,8 @@ TEST_CASE("Printed law reduces to the thesis law where the sign slips cannot act
   for (std::size_t i = 0; i < t0.rows.size(); ++i) CHECK(t0.rows[i][3] == p0.rows[i][3]);
 }
 
-TEST_CASE("Printed law on fig3_18 and fig3_29: both engines identical, two-signed fx, 1.6 ns", "[printed][crosslang]") {
+TEST_CASE("Printed law on fig3_18 and fig3_29: both engines identical, two-signed fx, 1.6 ns",
+          "[printed][crosslang][regression]") {
   for (int fig : {18, 29}) {
     const Scene sc = preset(fig);
     const Trajectory c = run(sc, "cxx", "printed"), f = run(sc, "f77", "printed");

@@ -10,6 +10,7 @@
 #include "nanopush/engines/engines.hpp"
 #include "nanopush/models/stick_slip.hpp"
 #include "trajectory_checks.hpp"
+#include "support/support.hpp"
 
 using namespace nanopush;
 using Catch::Matchers::Contains;
@@ -20,9 +21,7 @@ namespace {
 namespace NANOPUSH_UNITY_ID {
 namespace {
 
-Scene preset(int fig) {
-  return load_scene(std::string(NANOPUSH_SOURCE_DIR) + "/drivers/scenes/thesis/fig3_" + std::to_string(fig) + ".toml");
-}
+Scene preset(int fig) { return nanopush::test::thesis_preset(fig); }
 
 /// The preset with its push force rounded `ulps` ulps up.
 Scene pushed_up(int fig, int ulps) {
@@ -69,7 +68,7 @@ Balance balance(const Scene& sc, const Trajectory& tr) {
 
 }  // namespace
 
-TEST_CASE("Rough presets carry the captions' parameters", "[rough][scene]") {
+TEST_CASE("Rough presets carry the captions' parameters", "[rough][scene][unit]") {
   for (int fig = 12; fig <= 32; ++fig) {
     const Scene sc = preset(fig);
     CHECK(sc.rough());
@@ -142,7 +141,7 @@ TEST_CASE("Coulomb law: energy balance, dissipation, no chattering, exact rest",
   }
 }
 
-TEST_CASE("Coulomb law: the CVODE cross-check agrees to 1e-8", "[rough][coulomb][crosscheck]") {
+TEST_CASE("Coulomb law: the CVODE cross-check agrees to 1e-8", "[rough][coulomb][crosscheck][numeric]") {
   for (double mu : {0.05, 0.15, 0.5}) {
     Scene sc = preset(12);
     sc.surface.mu = mu;
@@ -171,7 +170,7 @@ TEST_CASE("Coulomb law: the CVODE cross-check agrees to 1e-8", "[rough][coulomb]
 }
 
 TEST_CASE("Coulomb law: CVODE lands on the converged solution at every rtol and rounding of the push",
-          "[rough][coulomb][crosscheck]") {
+          "[rough][coulomb][crosscheck][numeric]") {
   // The solution of a Coulomb slide from rest is unique (the friction is the gradient of a
   // convex dissipation), so rounding-level changes must move the result by the integration
   // error only. With a Jacobian kept over many steps, CVODE's Newton iteration held the
@@ -196,7 +195,7 @@ TEST_CASE("Coulomb law: CVODE lands on the converged solution at every rtol and 
 }
 
 TEST_CASE("Coulomb law: a slide from rest lands on the converged solution at every rounding of the push",
-          "[rough][coulomb]") {
+          "[rough][coulomb][numeric]") {
   // The start direction from rest maximises the power margin on a sphere. Found by comparing
   // values of the margin only, it was right to ~sqrt(eps), and the event-locating BS at the
   // presets' rtol 1e-10 then landed 3e-8 rad off on fig3_31 at a push 4 ulps larger (8e-11 at
@@ -272,27 +271,9 @@ TEST_CASE("Friction is continuous through omega = 0 while the bar slides (no swi
   }
 }
 
-TEST_CASE("Bad rough scenes are rejected clearly", "[rough][scene]") {
-  const std::string base = R"(
-[object]
-length = 100e-9
-width = 55e-9
-mass = 6e-19
-[push]
-force = 5e-6
-xn = 27.5e-9
-yn = 45e-9
-[surface]
-kind = "rough"
-mu = 0.1
-[solver]
-t_end = 1e-9
-)";
-  auto with = [&](const std::string& a, const std::string& b) {
-    std::string s = base;
-    s.replace(s.find(a), a.size(), b);
-    return s;
-  };
+TEST_CASE("Bad rough scenes are rejected clearly", "[rough][scene][unit]") {
+  const std::string& base = nanopush::test::kBaseRoughSceneText;
+  auto with = [&](const std::string& a, const std::string& b) { return nanopush::test::replaced(base, a, b); };
   CHECK_THROWS_WITH(parse_scene(with("mu = 0.1", "mu = -0.1"), "s"), Contains("surface.mu = -0.1") && Contains("[0, 10]"));
   CHECK_THROWS_WITH(parse_scene(with("mass = 6e-19", "mass = 0"), "s"), Contains("object.mass = 0: must be > 0"));
   CHECK_THROWS_WITH(parse_scene(with("xn = 27.5e-9", "xn = 40e-9"), "s"), Contains("push.xn = 4") && Contains("on the body"));
@@ -300,7 +281,8 @@ t_end = 1e-9
   CHECK_THROWS_WITH(parse_scene(with("mu = 0.1", "mu = 0.1\nf_vdw = -1"), "s"), Contains("surface.f_vdw = -1"));
 }
 
-TEST_CASE("Thesis law: C++ faithful and F77 agree to 1e-9 in theta wherever it does not chatter", "[rough][crosslang]") {
+TEST_CASE("Thesis law: C++ faithful and F77 agree to 1e-9 in theta wherever it does not chatter",
+          "[rough][crosslang][regression]") {
   for (int fig = 12; fig <= 24; ++fig) {
     const Scene sc = preset(fig);
     RunSettings a, b;
@@ -324,7 +306,8 @@ TEST_CASE("Thesis law: C++ faithful and F77 agree to 1e-9 in theta wherever it d
   CHECK(ta.rows.size() == tb.rows.size());
 }
 
-TEST_CASE("A rough scene with [environment] and [body] takes its normal load from the force models", "[rough][scene][forces]") {
+TEST_CASE("A rough scene with [environment] and [body] takes its normal load from the force models",
+          "[rough][scene][forces][unit]") {
   const Scene sc = load_scene(std::string(NANOPUSH_SOURCE_DIR) + "/drivers/scenes/examples/nanobar_humid_air.toml");
   Environment env;
   env.medium = Medium::humid_air;
@@ -343,21 +326,7 @@ TEST_CASE("A rough scene with [environment] and [body] takes its normal load fro
   RunSettings rs;
   const Trajectory tr = run_engine(sc, rs);
   CHECK(tr.complete);
-  const std::string base = R"(
-[object]
-length = 100e-9
-width = 55e-9
-mass = 6e-19
-[push]
-force = 5e-6
-xn = 27.5e-9
-yn = 45e-9
-[surface]
-kind = "rough"
-mu = 0.1
-[solver]
-t_end = 1e-9
-)";
+  const std::string& base = nanopush::test::kBaseRoughSceneText;
   CHECK_THROWS_WITH(parse_scene(base + "[environment]\nmedium = \"vacuum\"\n", "s"), Contains("body = (missing)"));
   CHECK_THROWS_WITH(
       parse_scene(base + "[environment]\nmedium = \"vacuum\"\n[body]\nshape = \"bar\"\nlength = 1e-7\nwidth = 4e-8\nheight = 5e-8\nmaterial = \"graphite\"\n", "s"),

@@ -11,6 +11,7 @@
 
 #include "nanopush/engines/engines.hpp"
 #include "trajectory_checks.hpp"
+#include "support/support.hpp"
 
 using namespace nanopush;
 using nanopush::test::max_dtheta;
@@ -20,9 +21,7 @@ namespace {
 namespace NANOPUSH_UNITY_ID {
 namespace {
 
-Scene preset(int fig) {
-  return load_scene(std::string(NANOPUSH_SOURCE_DIR) + "/drivers/scenes/thesis/fig3_" + std::to_string(fig) + ".toml");
-}
+Scene preset(int fig) { return nanopush::test::thesis_preset(fig); }
 
 Trajectory run(const Scene& sc, const std::string& method, double rtol) {
   RunSettings rs;
@@ -51,7 +50,7 @@ TEST_CASE("Thesis law from rest: modern and dop853 reach the faithful method's a
   }
 }
 
-TEST_CASE("Thesis law from rest: the faithful method keeps the F77 engine's start", "[rough][start]") {
+TEST_CASE("Thesis law from rest: the faithful method keeps the F77 engine's start", "[rough][start][regression]") {
   const Scene sc = preset(17);
   RunSettings c, f;
   c.method = "faithful";

@@ -5,6 +5,7 @@
 
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/scenes/scene.hpp"
+#include "support/support.hpp"
 
 using namespace nanopush;
 using Catch::Matchers::Contains;
@@ -13,27 +14,9 @@ using Catch::Matchers::Contains;
 namespace {
 namespace NANOPUSH_UNITY_ID {
 namespace {
-const std::string kGood = R"(
-[object]
-length = 100e-9
-width = 55e-9
-height = 50e-9
-density = 2267.0
-[push]
-force = 5e-6
-xn = 27.5e-9
-yn = 45e-9
-[solver]
-t_end = 1.6e-9
-)";
+const std::string kGood = nanopush::test::kBaseSceneText + "[solver]\nt_end = 1.6e-9\n";
 
-std::string with(const std::string& from, const std::string& to) {
-  std::string s = kGood;
-  const auto p = s.find(from);
-  REQUIRE(p != std::string::npos);
-  s.replace(p, from.size(), to);
-  return s;
-}
+std::string with(const std::string& from, const std::string& to) { return nanopush::test::replaced(kGood, from, to); }
 }  // namespace
 
 TEST_CASE("A minimal scene parses with defaults", "[scene][unit]") {

@@ -11,7 +11,7 @@ using namespace nanopush;
 using Catch::Matchers::Contains;
 
 TEST_CASE("Fuzz finding: a float too large for an integer in an unknown body key is reported, not cast",
-          "[scene][fuzz]") {
+          "[scene][fuzz][unit]") {
   // toml++'s value<int64_t>() casts a float before its range check (UB for 5.5e40); the
   // message about the unknown key printed the value through it.
   const std::string text = R"([object]

@@ -11,6 +11,7 @@
 #include "nanopush/scenes/scene.hpp"
 #include "nanopush/scenes/scene_keys.hpp"
 #include "nanopush/scenes/simulate.hpp"
+#include "support/support.hpp"
 
 using namespace nanopush;
 
@@ -67,19 +68,12 @@ void require_same_rows(const Trajectory& a, const Trajectory& b) {
   CHECK(a.stats.nfcn == b.stats.nfcn);
 }
 
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
+std::string error_of(const std::function<void()>& f) { return nanopush::test::input_error_of(f, "(no error)"); }
 
 }  // namespace
 
 TEST_CASE("scene set: surface.mu and push.yn change exactly what an edited file changes, bit for bit",
-          "[scene][keys]") {
+          "[scene][keys][unit]") {
   const std::string path = preset("fig3_18");
   Scene set = load_scene(path);
   set.set({{"surface.mu", 0.1}, {"push.yn", 20e-9}});
@@ -94,7 +88,7 @@ TEST_CASE("scene set: surface.mu and push.yn change exactly what an edited file 
   require_same_rows(run_scene(set), run_scene(edited));
 }
 
-TEST_CASE("scene set: integer and string keys, from text as the command line gives them", "[scene][keys]") {
+TEST_CASE("scene set: integer and string keys, from text as the command line gives them", "[scene][keys][unit]") {
   Scene s = load_scene(preset("fig3_6a"));
   s.set({{"solver.samples", SceneValue::from_text("solver.samples", "11")},
          {"solver.method", SceneValue::from_text("solver.method", "modern")},
@@ -106,7 +100,7 @@ TEST_CASE("scene set: integer and string keys, from text as the command line giv
 }
 
 TEST_CASE("scene set: bad keys and values are refused with key, value and range; the scene is unchanged",
-          "[scene][keys][errors]") {
+          "[scene][keys][errors][unit]") {
   Scene s = load_scene(preset("fig3_18"));
   const double mu0 = s.surface.mu;
   CHECK(error_of([&] { s.set("surface.muu", 0.1); }) ==
@@ -134,7 +128,7 @@ TEST_CASE("scene set: bad keys and values are refused with key, value and range;
   CHECK(smooth.surface.mu == 0.1);
 }
 
-TEST_CASE("scene builder: a scene from nothing equals the preset file, and runs the same", "[scene][keys]") {
+TEST_CASE("scene builder: a scene from nothing equals the preset file, and runs the same", "[scene][keys][unit]") {
   SceneBuilder b;
   b.set("object.shape", "bar")
       .set("object.length", 100e-9)
@@ -161,7 +155,7 @@ TEST_CASE("scene builder: a scene from nothing equals the preset file, and runs 
   CHECK(error_of([&] { (void)partial.build(); }) == "object.width = (missing): required number");
 }
 
-TEST_CASE("scene key table: every documented key is known to the parser", "[scene][keys]") {
+TEST_CASE("scene key table: every documented key is known to the parser", "[scene][keys][unit]") {
   // A value of the wrong type for each documented key: the parser must complain about that
   // key's value, never call it unknown.
   const std::string rough = read_text(std::string(NANOPUSH_SOURCE_DIR) +
@@ -180,13 +174,13 @@ TEST_CASE("scene key table: every documented key is known to the parser", "[scen
   }
 }
 
-TEST_CASE("scene key table: a file key outside the table is unknown", "[scene][keys]") {
+TEST_CASE("scene key table: a file key outside the table is unknown", "[scene][keys][unit]") {
   std::string text = read_text(preset("fig3_6a"));
   text = edit_line(text, "rtol = 1e-12", "rtol = 1e-12\nrtoll = 1e-9");
   CHECK(error_of([&] { (void)parse_scene(text, "x"); }).rfind("solver.rtoll = (present): unknown key", 0) == 0);
 }
 
-TEST_CASE("docs/scenes.md holds the generated key table", "[scene][keys][docs]") {
+TEST_CASE("docs/scenes.md holds the generated key table", "[scene][keys][docs][unit]") {
   const std::string doc = read_text(std::string(NANOPUSH_SOURCE_DIR) + "/docs/scenes.md");
   CHECK(doc.find(scene_keys_markdown()) != std::string::npos);
 }

@@ -65,7 +65,7 @@ TEST_CASE("Thesis mapping: theta* = pi/2 - atan(xn/yn) = 1.022246 rad, and it is
   }
 }
 
-TEST_CASE("Scene presets carry the thesis parameters", "[smooth][scene]") {
+TEST_CASE("Scene presets carry the thesis parameters", "[smooth][scene][unit]") {
   const Scene sc = load_scene(preset("fig3_6a"));
   CHECK(sc.mass == Approx(0.623425e-18).epsilon(1e-12));
   CHECK(sc.inertia == Approx(sc.mass * (1e-14 + 55e-9 * 55e-9) / 12).epsilon(1e-15));

@@ -10,6 +10,7 @@
 #include "nanopush/models/icor.hpp"
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/sweeps/sweep.hpp"
+#include "support/support.hpp"
 
 using namespace nanopush;
 
@@ -17,21 +18,12 @@ using namespace nanopush;
 namespace {
 namespace NANOPUSH_UNITY_ID {
 namespace {
+using nanopush::test::input_error_of;
 
-/// The message of the InputError `f` throws ("" when it throws none).
-template <class F>
-std::string input_error_of(F&& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return {};
-}
 
 }  // namespace
 
-TEST_CASE("sweep: axes and the cartesian order", "[sweep]") {
+TEST_CASE("sweep: axes and the cartesian order", "[sweep][unit]") {
   SECTION("FROM:TO:N hits both ends exactly") {
     const auto a = sweep::parse_axis("R=1e-9:3e-7:7");
     REQUIRE(a.key == "R");
@@ -82,7 +74,7 @@ TEST_CASE("sweep: axes and the cartesian order", "[sweep]") {
   }
 }
 
-TEST_CASE("sweep: evaluate_points gives evaluate_row's rows in point order", "[sweep]") {
+TEST_CASE("sweep: evaluate_points gives evaluate_row's rows in point order", "[sweep][unit]") {
   // A friction grid with a failing point (R < 0) and an iCOR grid (yn beyond the rod fails).
   const auto fr = sweep::make_friction_task({{"a", 27.5e-9}, {"b", 50e-9}});
   const auto pf = sweep::cartesian({sweep::parse_axis("R=-1e-9,0,1e-9,3e-8,2e-7,1e-5"),
@@ -105,7 +97,7 @@ TEST_CASE("sweep: evaluate_points gives evaluate_row's rows in point order", "[s
   }
 }
 
-TEST_CASE("sweep: cells read back exactly, columns by name", "[sweep]") {
+TEST_CASE("sweep: cells read back exactly, columns by name", "[sweep][unit]") {
   const auto task = sweep::make_friction_task({{"a", 27.5e-9}, {"b", 50e-9}});
   const auto plan = sweep::cartesian({sweep::parse_axis("R=0:2e-7:11"), sweep::parse_axis("alpha=0,1")});
   const auto rows = sweep::evaluate_points(plan, *task, 2);
@@ -125,7 +117,7 @@ TEST_CASE("sweep: cells read back exactly, columns by name", "[sweep]") {
   CHECK_THROWS_AS(sweep::cell_number("1x"), InputError);
 }
 
-TEST_CASE("sweep: the icor task gives both branches of eq 5.4 from the chosen cubic solver", "[sweep]") {
+TEST_CASE("sweep: the icor task gives both branches of eq 5.4 from the chosen cubic solver", "[sweep][unit]") {
   const auto rod = icor::nanorod();
   for (const char* solver : {"brent", "eigen"}) {
     INFO(solver);

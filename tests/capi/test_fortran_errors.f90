@@ -5,8 +5,9 @@ program test_fortran_errors
   use nanopush
   use capi_test_problems
   use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
+  use test_support, only: check, finish
   implicit none
-  integer :: failures = 0, stat
+  integer :: stat
   character(len=:), allocatable :: msg
   type(nanopush_scene) :: scene, never_loaded
   real(dp), allocatable :: traj(:, :), yout(:, :)
@@ -137,7 +138,7 @@ program test_fortran_errors
   call check(nanopush_status_name(NANOPUSH_BAD_INPUT) == "bad input", "status name")
   call check(nanopush_api_version() == 600, "API version 0.6.0")
 
-  if (failures > 0) error stop "test_fortran_errors: failures above"
+  call finish("test_fortran_errors")
   print '(a)', "all checks hold"
 
   ! Main-program allocatables live until the end (they are implicitly saved): free them so
@@ -171,14 +172,6 @@ contains
     if (t > 0.5_dp) stat = 7
   end subroutine failing_rhs
 
-  subroutine check(ok, what)
-    logical, intent(in) :: ok
-    character(len=*), intent(in) :: what
-    if (.not. ok) then
-      failures = failures + 1
-      print '(2a)', "FAIL: ", what
-    end if
-  end subroutine check
 
   !> The status is the expected one and the message contains `fragment` (empty when OK).
   subroutine expect(stat, want, msg, fragment, what)

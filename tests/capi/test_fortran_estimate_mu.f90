@@ -11,8 +11,9 @@
 program test_fortran_estimate_mu
   use nanopush
   use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
+  use test_support, only: check, finish
   implicit none
-  integer :: failures = 0, checks = 0, i
+  integer :: i
   real(dp) :: rod(6), F, sF, x, sx, sL, sH
   character(len=:), allocatable :: mode, arg
 
@@ -37,8 +38,7 @@ program test_fortran_estimate_mu
   call defaults_and_optional_outputs()
   call bad_input()
 
-  print '(i0,a,i0,a)', checks, " checks, ", failures, " failures"
-  if (failures > 0) error stop "test_fortran_estimate_mu: failures above"
+  call finish("test_fortran_estimate_mu")
   print '(a)', "Fortran estimate_mu (" // mode // "): identical to nanopush icor estimate-mu"
 
   if (allocated(mode)) deallocate(mode)
@@ -210,15 +210,6 @@ contains
     call check(ok, what)
   end subroutine same
 
-  subroutine check(ok, what)
-    logical, intent(in) :: ok
-    character(len=*), intent(in) :: what
-    checks = checks + 1
-    if (.not. ok) then
-      failures = failures + 1
-      print '(2a)', "FAIL: ", what
-    end if
-  end subroutine check
 
   !> The i-th comma-separated field of a CSV line (no quoting in these files).
   function field(line, i) result(f)

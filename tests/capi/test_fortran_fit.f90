@@ -4,8 +4,9 @@
 !> Usage: capi_test_fit_fortran SCENE.toml WORK_DIR
 program test_fortran_fit
   use nanopush
+  use test_support, only: check, finish
   implicit none
-  integer :: failures = 0, checks = 0, stat, i, u
+  integer :: stat, i, u
   type(nanopush_scene) :: scene
   real(dp), allocatable :: traj(:, :), values(:), stderrs(:)
   real(dp) :: truth, chi, summary(6)
@@ -51,8 +52,7 @@ program test_fortran_fit
   call check(stat == NANOPUSH_BAD_INPUT .and. size(stderrs) == 0, "absent data: " // msg)
   call nanopush_destroy(scene)
 
-  print '(i0,a,i0,a)', checks, " checks, ", failures, " failures"
-  if (failures > 0) error stop "test_fortran_fit: failures above"
+  call finish("test_fortran_fit")
   ! Main-program allocatables are not freed at the end (LeakSanitizer counts them): free them.
   if (allocated(traj)) deallocate(traj)
   if (allocated(values)) deallocate(values)
@@ -74,14 +74,5 @@ contains
     push_force = p(1)
   end function push_force
 
-  subroutine check(cond, what)
-    logical, intent(in) :: cond
-    character(len=*), intent(in) :: what
-    checks = checks + 1
-    if (.not. cond) then
-      failures = failures + 1
-      print '(a)', "FAIL: " // what
-    end if
-  end subroutine check
 
 end program test_fortran_fit

@@ -5,8 +5,9 @@
 program test_fortran_fit_icor
   use nanopush
   use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_value, ieee_quiet_nan
+  use test_support, only: check, finish, tol_round_trip
   implicit none
-  integer :: failures = 0, checks = 0, stat, i
+  integer :: stat, i
   real(dp) :: rod(6), W, L, b, mu, sigma, mu1, s1, sstat, chi, p
   real(dp) :: F(4), sF(4), yn(4), sy(4), R(4), sR(4)
   real(dp), allocatable :: row_mu(:), row_w(:)
@@ -47,13 +48,13 @@ program test_fortran_fit_icor
   call nanopush_estimate_mu_batch(rod, F, sF, NANOPUSH_PRESSURE_KNOWN, mu, sigma, yn=yn, sigma_yn=sy, R=R, &
                                   sigma_R=sR, sigma_stat=sstat, p_value=p, consistent=ok, row_mu=row_mu, &
                                   row_weight=row_w, equations=eq, stat=stat)
-  call check(stat == NANOPUSH_OK .and. abs(mu - 0.2_dp) < 1e-13_dp, "known: mu = 0.2")
+  call check(stat == NANOPUSH_OK .and. abs(mu - 0.2_dp) < tol_round_trip, "known: mu = 0.2")
   call check(sstat == sigma .and. ok .and. p > 0.99_dp, "known: consistent, no systematic part")
-  call check(size(row_mu) == 4 .and. all(abs(row_mu - 0.2_dp) < 1e-13_dp), "known: every row 0.2")
+  call check(size(row_mu) == 4 .and. all(abs(row_mu - 0.2_dp) < tol_round_trip), "known: every row 0.2")
   call check(abs(sum(row_w) - 1) < 1e-14_dp .and. all(eq == 10), "known: weights sum to 1, eq 4.10")
   call nanopush_estimate_mu_batch(rod, F, sF, NANOPUSH_PRESSURE_UNKNOWN, mu, sigma, yn=yn, sigma_yn=sy, R=R, &
                                   sigma_R=sR, sigma_H=2e-20_dp, sigma_stat=sstat, equations=eq, stat=stat)
-  call check(stat == NANOPUSH_OK .and. abs(mu - 0.2_dp) < 1e-13_dp .and. all(eq == 11), "unknown: mu = 0.2, eq 4.11")
+  call check(stat == NANOPUSH_OK .and. abs(mu - 0.2_dp) < tol_round_trip .and. all(eq == 11), "unknown: mu = 0.2, eq 4.11")
   call check(sigma > sstat, "unknown: the Hamaker sigma adds a systematic part")
 
   ! Bad input: stat + errmsg naming the row; NaN outputs; arrays of size 0.
@@ -70,8 +71,7 @@ program test_fortran_fit_icor
   call nanopush_estimate_mu_batch(rod, F, sF, NANOPUSH_PRESSURE_KNOWN, mu, sigma, R=R, stat=stat, errmsg=msg)
   call check(stat == NANOPUSH_BAD_INPUT .and. index(msg, "R/sigma_R") == 1, "R without sigma_R: " // msg)
 
-  print '(i0,a,i0,a)', checks, " checks, ", failures, " failures"
-  if (failures > 0) error stop "test_fortran_fit_icor: failures above"
+  call finish("test_fortran_fit_icor")
   ! Main-program allocatables are not freed at the end (LeakSanitizer counts them): free them.
   if (allocated(row_mu)) deallocate(row_mu)
   if (allocated(row_w)) deallocate(row_w)
@@ -80,15 +80,5 @@ program test_fortran_fit_icor
   print '(a)', "fortran fit-icor: all checks hold"
 
 contains
-
-  subroutine check(cond, what)
-    logical, intent(in) :: cond
-    character(len=*), intent(in) :: what
-    checks = checks + 1
-    if (.not. cond) then
-      failures = failures + 1
-      print '(a)', "FAIL: " // what
-    end if
-  end subroutine check
 
 end program test_fortran_fit_icor

@@ -10,8 +10,8 @@
 program test_fortran_friction_icor
   use nanopush
   use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_value, ieee_quiet_nan
+  use test_support, only: check, finish
   implicit none
-  integer :: failures = 0, checks = 0
   real(dp) :: rod(6), L, k2, W, mu, ratio
   real(dp), parameter :: a_bar = 27.5e-9_dp, b_bar = 50e-9_dp
   character(len=:), allocatable :: arg
@@ -31,8 +31,7 @@ program test_fortran_friction_icor
   call compare_friction(argument(5), 1)
   call compare_friction(argument(6), -1)
 
-  print '(i0,a,i0,a)', checks, " checks, ", failures, " failures"
-  if (failures > 0) error stop "test_fortran_friction_icor: failures above"
+  call finish("test_fortran_friction_icor")
   print '(a)', "Fortran friction and iCOR: identical to the nanopush CLI"
 
   ! Main-program allocatables live until the end (they are implicitly saved): free them so
@@ -176,15 +175,6 @@ contains
     call check(ok, what)
   end subroutine same
 
-  subroutine check(ok, what)
-    logical, intent(in) :: ok
-    character(len=*), intent(in) :: what
-    checks = checks + 1
-    if (.not. ok) then
-      failures = failures + 1
-      print '(2a)', "FAIL: ", what
-    end if
-  end subroutine check
 
   !> The i-th comma-separated field of a CSV line (no quoting in these files).
   function field(line, i) result(f)

@@ -8,16 +8,15 @@ program test_fortran_rhs_vs_f77
   use nanopush
   use capi_test_problems
   use, intrinsic :: iso_fortran_env, only: int64
+  use test_support, only: check, finish, tol_agree
   implicit none
   real(dp), parameter :: pi = acos(-1.0_dp)
-  real(dp), parameter :: match_tol = 1e-12_dp
-  integer :: failures = 0
   external :: f77_kepler, f77_vdp
 
   call compare_kepler(0.6_dp, 1e-10_dp)
   call compare_kepler(0.9_dp, 1e-12_dp)
   call compare_vdp(5.0_dp, 1e-10_dp)
-  if (failures > 0) error stop "test_fortran_rhs_vs_f77: failures above"
+  call finish("test_fortran_rhs_vs_f77")
   print '(a)', "all checks hold"
 
 contains
@@ -50,14 +49,6 @@ contains
     end select
   end subroutine vdp_rhs
 
-  subroutine check(ok, what)
-    logical, intent(in) :: ok
-    character(len=*), intent(in) :: what
-    if (.not. ok) then
-      failures = failures + 1
-      print '(2a)', "FAIL: ", what
-    end if
-  end subroutine check
 
   !> Largest deviation of a from b, per component relative to max(|b(i,:)|), over all outputs.
   real(dp) function max_rel_dev(a, b)
@@ -95,10 +86,10 @@ contains
     dev = max_rel_dev(yout, yout77)
     print '(a,f4.2,a,es8.1,a,es10.3,a,3i8,a,3i8)', "Kepler e = ", e, ", rtol = ", rtol, &
       ": max rel. deviation C++ vs F77 = ", dev, "; counts C++", counts, ", F77", nstat
-    call check(dev <= match_tol, "kepler: C++ (Fortran RHS) and F77 agree to 1e-12")
+    call check(dev <= tol_agree, "kepler: C++ (Fortran RHS) and F77 agree to 1e-12")
     call check(all(counts == int(nstat, int64)), "kepler: same RHS evaluations and steps")
     call check(p%evaluations == counts(1), "kepler: the RHS saw every evaluation through ctx")
-    call check(all(abs(y - y77) <= match_tol * max(1.0_dp, abs(y77))), "kepler: final state agrees")
+    call check(all(abs(y - y77) <= tol_agree * max(1.0_dp, abs(y77))), "kepler: final state agrees")
     ! Independent oracles: periodic orbit and conserved energy.
     call check(maxval(abs(yout(:, nout) - kepler_start(e))) <= 1e4 * rtol / (1 - e)**2, &
                "kepler: back to the start after one period")
@@ -132,7 +123,7 @@ contains
     dev = max_rel_dev(yout, yout77)
     print '(a,f4.1,a,es8.1,a,es10.3,a,3i8,a,3i8)', "Van der Pol mu = ", mu, ", rtol = ", rtol, &
       ": max rel. deviation C++ vs F77 = ", dev, "; counts C++", counts, ", F77", nstat
-    call check(dev <= match_tol, "vdp: C++ (Fortran RHS) and F77 agree to 1e-12")
+    call check(dev <= tol_agree, "vdp: C++ (Fortran RHS) and F77 agree to 1e-12")
     call check(all(counts == int(nstat, int64)), "vdp: same RHS evaluations and steps")
   end subroutine compare_vdp
 

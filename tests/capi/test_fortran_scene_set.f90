@@ -3,13 +3,13 @@
 ! keys and values come back as NANOPUSH_BAD_INPUT with the key named. Usage: prog fig3_18.toml
 program test_fortran_scene_set
   use nanopush
+  use test_support, only: check, finish
   implicit none
   type(nanopush_scene) :: a, b
   real(dp), allocatable :: ta(:, :), tb(:, :)
   character(len=512) :: path
   character(len=:), allocatable :: msg
-  integer :: stat, failures
-  failures = 0
+  integer :: stat
   call get_command_argument(1, path)
 
   call nanopush_load_scene(a, trim(path))
@@ -47,18 +47,7 @@ program test_fortran_scene_set
   call nanopush_destroy(b)
   ! The main program's allocatables are freed here (LeakSanitizer counts them as leaks).
   deallocate (ta, tb, msg)
-  if (failures > 0) then
-    print *, failures, " checks failed"
-    error stop 1
-  end if
+  call finish("test_fortran_scene_set")
   print '(a)', "fortran scene_set: all checks hold"
 contains
-  subroutine check(ok, what)
-    logical, intent(in) :: ok
-    character(len=*), intent(in) :: what
-    if (.not. ok) then
-      print '(2a)', "FAILED: ", what
-      failures = failures + 1
-    end if
-  end subroutine check
 end program test_fortran_scene_set

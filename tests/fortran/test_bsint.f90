@@ -86,10 +86,8 @@ end module bsint_test_rhs
 program test_bsint
   use bsint_test_rhs
   use nanopush_f77_interfaces, only: bsint
+  use test_support, only: check, finish
   implicit none
-
-
-  integer :: nfail = 0
 
   call test_exponential()
   call test_oscillator()
@@ -101,22 +99,10 @@ program test_bsint
   call test_blowup()
   call test_step_limits()
 
-  if (nfail > 0) then
-    write (*, '(a, i0, a)') 'test_bsint: ', nfail, ' check(s) failed'
-    error stop 1
-  end if
+  call finish('test_bsint')
   write (*, '(a)') 'test_bsint: all checks passed'
 
 contains
-
-  subroutine check(cond, what)
-    logical, intent(in) :: cond
-    character(*), intent(in) :: what
-    if (.not. cond) then
-      nfail = nfail + 1
-      write (*, '(a, a)') 'FAILED: ', what
-    end if
-  end subroutine check
 
   !> Counts are consistent: NFCN equals the calls counted by the RHS, at least one accepted
   !> step, and every attempted step costs at least 1 + 2 + 4 evaluations (f0 and two columns).

@@ -4,6 +4,7 @@
 program test_icor
   use, intrinsic :: iso_c_binding, only: c_int, c_double
   use nanopush_f77_icor, only: np_f77_icor_cubic_lapack
+  use test_support, only: check, finish, tol_agree
   implicit none
   external :: icrlap, icrbrt, icr413
   double precision, parameter :: rl = 590d-9, rk2 = rl*rl/12d0, b = 0.5d0*rl
@@ -30,7 +31,7 @@ program test_icor
       call icrbrt(295d-9, rl, rk2, rb3, nr2, nc2, ni2, res, it, ierr)
     end if
     call check(ierr == 0 .and. nr == nr2 .and. nc == nc2 .and. ni == ni2, "same root counts")
-    call check(all(abs(rl3(1:nr) - rb3(1:nr)) <= 1d-12*abs(rb3(1:nr))), "Brent = LAPACK to 1e-12")
+    call check(all(abs(rl3(1:nr) - rb3(1:nr)) <= tol_agree*abs(rb3(1:nr))), "Brent = LAPACK to 1e-12")
     call check(res <= 1d-12, "residual <= 1e-12")
   end do
   call check(nr == 1 .and. abs(rl3(1) + 7.930032d-8) < 1d-13, "yn = 295 nm: -7.930032e-8 (Table 5.1: 7.93e-8)")
@@ -47,17 +48,7 @@ program test_icor
   st = np_f77_icor_cubic_lapack(1d-9, rl, rk2, croots, cnr, cnc, cni, cres)
   call check(st == 0 .and. cnr == 3 .and. abs(croots(2) - 9.8444759457197367d-8) < 1d-20, &
              "bridge: positive branch at yn = 1 nm")
+  call finish("test_icor")
   print '(a)', "test_icor: all checks passed"
-
-contains
-
-  subroutine check(ok, what)
-    logical, intent(in) :: ok
-    character(len=*), intent(in) :: what
-    if (.not. ok) then
-      print '(2a)', "FAILED: ", what
-      error stop 1
-    end if
-  end subroutine check
 
 end program test_icor

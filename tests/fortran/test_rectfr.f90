@@ -1,5 +1,6 @@
 !> FORTRAN 77 RECTFR/RECTFV on their own (no C++): exact oracles and error statuses.
 program test_rectfr
+  use test_support, only: check, finish
   implicit none
   interface
     subroutine rectfr(a, b, fmun, r, alpha, isense, fx, fy, fm, ierr)
@@ -15,8 +16,7 @@ program test_rectfr
     end subroutine rectfv
   end interface
   double precision :: fx, fy, fm, gx, gy, gm, expect, zero
-  integer :: ierr, nfail
-  nfail = 0
+  integer :: ierr
   zero = 0.0d0
 
   ! Rotation about the CM of a unit square: f = 0, mf = -(sqrt 2 + ln(1 + sqrt 2))/6.
@@ -53,19 +53,10 @@ program test_rectfr
   call rectfr(1.0d0, 1.0d0, 1.0d0, 1.0d0, 0.0d0, 2, fx, fy, fm, ierr)
   call check(ierr == 7, 'sense = 2')
 
-  if (nfail > 0) error stop 1
+  call finish('test_rectfr')
   print '(a)', 'test_rectfr: all checks passed'
 
 contains
-
-  subroutine check(ok, what)
-    logical, intent(in) :: ok
-    character(len=*), intent(in) :: what
-    if (.not. ok) then
-      print '(2a)', 'FAILED: ', what
-      nfail = nfail + 1
-    end if
-  end subroutine check
 
   subroutine sweep()
     integer :: i, k, s, ie

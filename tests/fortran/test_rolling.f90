@@ -5,13 +5,13 @@ program test_rolling
   use, intrinsic :: iso_c_binding, only: c_double, c_int
   use nanopush_f77_rolling, only: np_f77_rolling_static_friction, np_f77_jkr_line_half_width
   use nanopush_f77_interfaces, only: rlfs, rljkrl, rlvdw, rldec
+  use test_support, only: check, finish
   implicit none
   double precision, parameter :: pi = 3.14159265358979323846d0
   double precision :: r, f, fs, b, p, fv, es, w, froll, fslid, fsreq
   real(c_double) :: fsc, bc
-  integer :: ierr, mode, nfail
+  integer :: ierr, mode
 
-  nfail = 0
   r = 13.5d-9
   f = 3.88796d-7
   call rlfs(f, r/2, r, fs, ierr)
@@ -47,18 +47,7 @@ program test_rolling
   call rldec(1.0d-8, 0.0d0, r, 0.1d0, 2.5d-6, 8.7d-6, 3.6d-9, mode, froll, fslid, fsreq, ierr)
   call check(ierr == 0 .and. mode == 0, 'small push: stuck')
 
-  if (nfail > 0) error stop 1
+  call finish('test_rolling')
   print '(a)', 'test_rolling: all checks passed'
-
-contains
-
-  subroutine check(ok, what)
-    logical, intent(in) :: ok
-    character(*), intent(in) :: what
-    if (.not. ok) then
-      print '(2a)', 'FAILED: ', what
-      nfail = nfail + 1
-    end if
-  end subroutine check
 
 end program test_rolling

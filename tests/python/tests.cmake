@@ -1,6 +1,7 @@
 # The Python package's tests (pytest, tests/python/test_*.py): one CTest per file, run by the
 # interpreter the package was built for. The command line and the plain C++ friction loop
-# are passed in by path, so the tests compare the package against them bit for bit.
+# are passed in by path, so the tests compare the package against them bit for bit: tier
+# regression (tests/CMakeLists.txt).
 set(_np_py_env
     "PYTHONPATH=${NANOPUSH_PYTHON_DIR}"
     "PYTHONDONTWRITEBYTECODE=1"
@@ -17,5 +18,5 @@ foreach(_t IN LISTS _np_py_tests)
   add_test(NAME python.${_name}
            COMMAND ${Python3_EXECUTABLE} -m pytest -q -p no:cacheprovider ${_t}
            WORKING_DIRECTORY ${PROJECT_BINARY_DIR})
-  set_tests_properties(python.${_name} PROPERTIES ENVIRONMENT "${_np_py_env}" LABELS python)
+  set_tests_properties(python.${_name} PROPERTIES ENVIRONMENT "${_np_py_env}" LABELS "python;regression")
 endforeach()
