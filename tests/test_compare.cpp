@@ -11,20 +11,14 @@
 #include "nanopush/engines/engines.hpp"
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/scenes/scene.hpp"
+#include "support/support.hpp"
 
 using namespace nanopush;
-
-namespace {
-namespace NANOPUSH_UNITY_ID {
-Scene thesis_preset(const std::string& name) {
-  return load_scene(std::string(NANOPUSH_SOURCE_DIR) + "/drivers/scenes/thesis/" + name + ".toml");
-}
-}  // namespace NANOPUSH_UNITY_ID
-}  // namespace
-using namespace NANOPUSH_UNITY_ID;
+using nanopush::test::preset;
+using nanopush::test::thesis_preset;
 
 TEST_CASE("compare: faithful is judged by same steps and its runs are run_engine's", "[compare][regression]") {
-  const Scene sc = thesis_preset("fig3_6a");
+  const Scene sc = preset("thesis/fig3_6a.toml");
   const EngineComparison r = compare_engines(sc, {});
   REQUIRE(r.complete);
   REQUIRE(r.failed() == nullptr);
@@ -59,7 +53,7 @@ TEST_CASE("compare: faithful is judged by same steps and its runs are run_engine
 }
 
 TEST_CASE("compare: modern is judged by convergence against both engines at rtol 1e-14", "[compare][regression]") {
-  const Scene sc = thesis_preset("fig3_16");
+  const Scene sc = thesis_preset(16);
   CompareSettings cs;
   cs.method = "modern";
   const EngineComparison r = compare_engines(sc, cs);
@@ -79,7 +73,7 @@ TEST_CASE("compare: modern is judged by convergence against both engines at rtol
 }
 
 TEST_CASE("compare: the coulomb law and methods without an F77 peer are refused", "[compare][unit]") {
-  const Scene sc = thesis_preset("fig3_18");
+  const Scene sc = thesis_preset(18);
   CompareSettings cs;
   cs.law = "coulomb";
   CHECK_THROWS_AS(compare_engines(sc, cs), InputError);
