@@ -61,7 +61,7 @@ int nanopush_fit_trajectory(nanopush_error error, nanopush_scene scene, const ch
     if (json_size > 0) require_handle(json, "json");
     fit::FitOptions o;
     o.free = split_list(free_keys, "free_keys");
-    o.law = opt_string(law);
+    o.law = nanopush::parse_optional_choice<nanopush::Law>("--law", opt_string(law));
     if (nfree < static_cast<int>(o.free.size()))
       throw StatusError(NANOPUSH_BUFFER_TOO_SMALL, "nfree = " + std::to_string(nfree) + ": values and stderrs hold " +
                                                        "fewer than the " + std::to_string(o.free.size()) + " free keys");

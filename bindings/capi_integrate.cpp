@@ -8,6 +8,7 @@
 #include <limits>
 #include <algorithm>
 #include "capi_internal.hpp"
+#include "nanopush/scenes/choices.hpp"
 #include "nanopush/numerics/bulirsch_stoer.hpp"
 
 using namespace nanopush::capi;
@@ -66,8 +67,9 @@ void check_start(const nanopush::BsOptions<double>& o, double t0, const double* 
 }
 
 nanopush::BsOptions<double> preset(const std::string& method, double rtol, std::vector<double> atol) {
-  if (method.empty() || method == "faithful") return nanopush::BsOptions<double>::faithful(rtol, std::move(atol));
-  if (method == "modern") return nanopush::BsOptions<double>::modern(rtol, std::move(atol));
+  const auto m = method.empty() ? std::optional(nanopush::Method::faithful) : nanopush::choice_from_name<nanopush::Method>(method);
+  if (m == nanopush::Method::faithful) return nanopush::BsOptions<double>::faithful(rtol, std::move(atol));
+  if (m == nanopush::Method::modern) return nanopush::BsOptions<double>::modern(rtol, std::move(atol));
   throw nanopush::InputError("method", "\"" + method + "\"", "must be faithful or modern");
 }
 

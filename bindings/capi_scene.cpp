@@ -135,10 +135,10 @@ nanopush_trajectory nanopush_run_scene_precision(nanopush_error error, nanopush_
   guarded(error, [&] {
     require_handle(scene, "scene");
     nanopush::RunSettings rs;
-    rs.engine = opt_string(engine);
-    rs.method = opt_string(method);
-    rs.law = opt_string(law);
-    rs.precision = opt_string(precision);  // "" = the scene's solver.precision
+    rs.engine = nanopush::parse_optional_choice<nanopush::Engine>("engine", opt_string(engine));  // "" = the scene's
+    rs.method = nanopush::parse_optional_choice<nanopush::Method>("method", opt_string(method));
+    rs.law = nanopush::parse_optional_choice<nanopush::Law>("law", opt_string(law));
+    rs.precision = nanopush::parse_optional_choice<nanopush::Precision>("precision", opt_string(precision));
     nanopush::require_finite("rtol", rtol);
     nanopush::require_finite("atol", atol);
     rs.rtol = rtol;
@@ -157,8 +157,8 @@ int nanopush_compare(nanopush_error error, nanopush_scene scene, const char* met
     require_handle(scene, "scene");
     require_handle(agree, "agree");
     nanopush::CompareSettings cs;
-    if (!opt_string(method).empty()) cs.method = opt_string(method);
-    cs.law = opt_string(law);
+    if (!opt_string(method).empty()) cs.method = nanopush::parse_choice<nanopush::Method>("method", opt_string(method));
+    cs.law = nanopush::parse_optional_choice<nanopush::Law>("law", opt_string(law));
     nanopush::require_finite("rtol", rtol);
     nanopush::require_finite("atol", atol);
     nanopush::require_finite("tolerance", tolerance);

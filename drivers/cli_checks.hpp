@@ -5,8 +5,13 @@
 #pragma once
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
+#include <initializer_list>
 #include <limits>
 #include <string>
+#include <vector>
+
+#include "nanopush/scenes/choices.hpp"
 
 namespace nanopush::cli {
 
@@ -20,6 +25,15 @@ CLI::Validator non_negative();
 CLI::Validator finite();
 /// A whole number in [lo, hi]; its name is "count" (harden() looks for it on integer options).
 CLI::Validator count(long long lo, long long hi);
+
+/// One of the names of a choice (choices.hpp: the name table), or of the listed values only.
+template <class E>
+CLI::IsMember is_choice(std::initializer_list<E> only = {}) {
+  std::vector<std::string> names;
+  for (const auto& [value, name] : ChoiceNames<E>::table)
+    if (only.size() == 0 || std::find(only.begin(), only.end(), value) != only.end()) names.emplace_back(name);
+  return CLI::IsMember(names);
+}
 
 /// The largest count a list-sized option takes unless it says otherwise (the sweep's axis
 /// bound): every table of that many rows still fits in memory.

@@ -45,7 +45,7 @@ struct BenchOptions {
 
 /// A scene whose friction law is coulomb (stick-slip)? Its engines without event location
 /// chatter through every rest (minutes per solve without a limit).
-bool stick_slip(const Scene& scene) { return scene.rough() && scene.surface.law == "coulomb"; }
+bool stick_slip(const Scene& scene) { return scene.rough() && scene.surface.law == Law::coulomb; }
 
 /// The budgets `reproduce` gives a stick-slip scene, and the defaults of `nanopush bench` on
 /// one (options the user gave are kept): each solve of an engine without event location may
@@ -586,7 +586,7 @@ RegisterCommand reg{
        app.add_option("--precision", o->precisions,
                       "scalar of the C++ BS, repeatable: double (53-bit), long (x87 64-bit), quad (__float128, "
                       "113-bit); default double")
-           ->check(CLI::IsMember({"double", "long", "quad"}));
+           ->check(is_choice<Precision>());
        app.add_option("--kmin", o->kmin, "first k of rtol = 10^(-k/2)")->check(count(0, 64))->capture_default_str();
        auto* kmax = app.add_option("--kmax", o->kmax,
                                    "last k in double precision (28: rtol 1e-14, stick-slip scenes 18: rtol 1e-9; each "

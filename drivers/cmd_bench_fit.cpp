@@ -61,7 +61,7 @@ struct CostRow {
 
 /// Cost of one configuration: LM (sensitivities where the law allows, and differences),
 /// Brent at the same accuracy.
-std::vector<CostRow> cost(const std::string& preset, const std::string& law, double truth, double start, std::ostream& log) {
+std::vector<CostRow> cost(const std::string& preset, Law law, double truth, double start, std::ostream& log) {
   Scene s = load_scene(resolve_scene(preset));
   s.set("surface.mu", truth);
   const fit::Observations obs = fit::synthesize(s, {1e-9, 1e-9, 0.01}, 1, law);
@@ -78,7 +78,7 @@ std::vector<CostRow> cost(const std::string& preset, const std::string& law, dou
   // The accuracy both must reach: 1e-3 of the standard error (far below what the data tell).
   const double accuracy = 1e-3 * fit::fit_trajectory(s, obs, tight).parameters[0].stderr_;
   for (const std::string g : {"sensitivities", "differences"}) {
-    if (law == "coulomb" && g == "sensitivities") continue;
+    if (law == Law::coulomb && g == "sensitivities") continue;
     fo.gradients = g;
     // Levenberg-Marquardt's tolerances tightened tenfold until it is that close.
     for (const double tol : {1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12}) {
@@ -88,10 +88,10 @@ std::vector<CostRow> cost(const std::string& preset, const std::string& law, dou
       const fit::FitResult r = fit::fit_trajectory(s, obs, fo);
       const double err = std::abs(r.parameters[0].value - best);
       if (err <= accuracy || tol <= 1e-12) {
-        CostRow row{law, "levenberg-marquardt (" + g + ", tol " + fmt(tol) + ")", r.parameters[0].value, err,
+        CostRow row{to_string(law), "levenberg-marquardt (" + g + ", tol " + fmt(tol) + ")", r.parameters[0].value, err,
                     static_cast<long>(r.n_forward_solves), seconds_since(t0)};
         rows.push_back(row);
-        log << "  " << law << ", " << row.method << ": mu = " << std::setprecision(12) << row.estimate << ", "
+        log << "  " << to_string(law) << ", " << row.method << ": mu = " << std::setprecision(12) << row.estimate << ", "
             << row.solves << " solves, " << std::setprecision(3) << row.wall << " s\n";
         break;
       }
@@ -113,8 +113,8 @@ std::vector<CostRow> cost(const std::string& preset, const std::string& law, dou
     const auto r = boost::math::tools::brent_find_minima(f, 0.5 * start, 1.2 * start, bits, iters);
     const double wall = seconds_since(t0);
     if (std::abs(r.first - best) <= accuracy || bits >= 52) {
-      rows.push_back({law, "brent (" + std::to_string(bits) + " bits)", r.first, std::abs(r.first - best), evals, wall});
-      log << "  " << law << ", brent: mu = " << std::setprecision(12) << r.first << ", " << evals << " solves, "
+      rows.push_back({to_string(law), "brent (" + std::to_string(bits) + " bits)", r.first, std::abs(r.first - best), evals, wall});
+      log << "  " << to_string(law) << ", brent: mu = " << std::setprecision(12) << r.first << ", " << evals << " solves, "
           << std::setprecision(3) << wall << " s\n";
       break;
     }
@@ -137,8 +137,8 @@ int run_bench_fit(const BenchFitOptions& o) {
 
   // 1. Cost.
   std::cerr << "bench-fit: cost of a 401-sample one-parameter fit (Fig 3.20 and 3.27 scenes, 1.6 ns)\n";
-  std::vector<CostRow> rows = cost("thesis/fig3_20", "thesis", 0.08, 0.1, std::cerr);
-  for (auto& r : cost("bench/stick_mu015", "coulomb", 0.15, 0.13, std::cerr)) rows.push_back(r);
+  std::vector<CostRow> rows = cost("thesis/fig3_20", Law::thesis, 0.08, 0.1, std::cerr);
+  for (auto& r : cost("bench/stick_mu015", Law::coulomb, 0.15, 0.13, std::cerr)) rows.push_back(r);
   CsvWriter cw(dir / "fit_benchmark.csv",
                {text_column("law", "friction law of the rough scene"), text_column("method", "optimiser (gradients)"),
                 {"estimate", "1", "fitted surface.mu"},
@@ -201,10 +201,10 @@ int run_bench_fit(const BenchFitOptions& o) {
     int covered = 0, failed = 0;
     const auto t0 = std::chrono::steady_clock::now();
     for (int i = 1; i <= n; ++i) {
-      const fit::Observations obs = fit::synthesize(truth, {1e-9, 1e-9, 0.01}, static_cast<std::uint64_t>(i), c.law);
+      const fit::Observations obs = fit::synthesize(truth, {1e-9, 1e-9, 0.01}, static_cast<std::uint64_t>(i), parse_choice<Law>("law", c.law));
       fit::FitOptions fo;
       fo.free = {c.key};
-      fo.law = c.law;
+      fo.law = parse_choice<Law>("law", c.law);
       const fit::FitResult r = fit::fit_trajectory(start, obs, fo);
       if (!r.converged) ++failed;
       const auto& p = r.parameters[0];

@@ -162,9 +162,9 @@ struct RunResult {
 };
 
 template <class Rhs>
-RunResult integrate(const Scene& sc, const RunSettings& rs, const Rhs& rhs) {
+RunResult integrate(const Scene& sc, const ResolvedSettings& rs, const Rhs& rhs) {
   const auto atol = sc.atol_vector(rs.rtol, rs.atol, kRoughStateSize);
-  auto opt = rs.method == "modern" ? BsOptions<double>::modern(rs.rtol, atol) : BsOptions<double>::faithful(rs.rtol, atol);
+  auto opt = rs.method == Method::modern ? BsOptions<double>::modern(rs.rtol, atol) : BsOptions<double>::faithful(rs.rtol, atol);
   opt.h0 = sc.solver.h0;
   opt.hmax = sc.solver.hmax;
   opt.maxstp = sc.solver.max_steps;
@@ -194,10 +194,9 @@ int bench_friction(const BenchFrictionOptions& o) {
   Scene sc = load_scene_arg(o.scene, o.sets);
   if (!sc.rough()) throw InputError("--scene", o.scene, "must be a rough scene (surface.kind = \"rough\")");
   set_provenance_scene(o.scene);
-  RunSettings rs;
-  rs = resolve_settings(sc, rs);
-  if (rs.law != "thesis")
-    throw InputError("surface.law", rs.law, "bench-friction integrates the thesis law (the RHS is the friction)");
+  const ResolvedSettings rs = resolve_settings(sc, RunSettings{});
+  if (rs.law != Law::thesis)
+    throw InputError("surface.law", to_string(rs.law), "bench-friction integrates the thesis law (the RHS is the friction)");
   const RoughBarModel model = rough_model(sc);
 
   // ---- workloads
@@ -411,7 +410,7 @@ int bench_friction(const BenchFrictionOptions& o) {
                                             static_cast<double>(std::max<std::size_t>(1, m.inputs.size())),
                                         0)
        << " %" << (f < 5 ? ", " : ".\n\n");
-  md << "| the whole run: " << o.scene << " (" << rs.method << ", rtol " << rs.rtol << ", " << rs.law
+  md << "| the whole run: " << o.scene << " (" << to_string(rs.method) << ", rtol " << rs.rtol << ", " << to_string(rs.law)
      << " law), integrated by the C++ engine | before | after | ratio (min–max) |\n|---|---|---|---|\n"
      << "| wall time [ms], median of " << o.repeats << " | " << fixed(1e3 * median(run_old), 3) << " | "
      << fixed(1e3 * median(run_new), 3) << " | **" << fixed(median(run_ratio), 3) << "** ("

@@ -52,8 +52,8 @@ void print_convergence(const EngineComparison& r) {
 int compare_cmd(const CompareOptions& o) {
   const Scene sc = load_scene_arg(o.scene, o.sets);
   CompareSettings cs;
-  cs.method = o.method.empty() ? "faithful" : o.method;
-  cs.law = o.law;
+  cs.method = o.method.empty() ? Method::faithful : parse_choice<Method>("method", o.method);
+  cs.law = parse_optional_choice<Law>("law", o.law);
   cs.rtol = o.rtol;
   cs.atol = o.atol;
   cs.tolerance = o.tolerance;
@@ -107,11 +107,11 @@ RegisterCommand reg_compare{{"compare",
                                app.add_option("--method", o->method,
                                               "C++ configuration compared with F77: faithful (default; the same "
                                               "steps), modern or dop853 (judged by convergence: docs/rough.md)")
-                                   ->check(CLI::IsMember({"faithful", "modern", "dop853"}));
+                                   ->check(is_choice<Method>({Method::faithful, Method::modern, Method::dop853}));
                                app.add_option("--law", o->law,
                                               "rough scenes: thesis or printed (both engines implement them); "
                                               "default: the scene's (thesis for a coulomb scene)")
-                                   ->check(CLI::IsMember({"thesis", "printed", "coulomb"}));
+                                   ->check(is_choice<Law>());
                                app.add_option("--tolerance", o->tolerance,
                                               "largest allowed max|diff|/max|value| per column; default 100 rtol for "
                                               "faithful (same steps); other methods get a convergence test instead: each "

@@ -159,7 +159,7 @@ int run_fit(const FitCliOptions& o) {
     std::array<double, 3> s{0, 0, 0};
     for (std::size_t c = 0; c < 3; ++c)
       if (auto it = sigma.find(fit::kPoseColumns[c]); it != sigma.end()) s[c] = it->second;
-    const fit::Observations obs = fit::synthesize(sc, s, o.seed, o.law, {}, o.rtol);
+    const fit::Observations obs = fit::synthesize(sc, s, o.seed, parse_optional_choice<Law>("--law", o.law), {}, o.rtol);
     Columns cols = {{"t", "s", "observation time"}};
     const char* units[3] = {"m", "m", "rad"};
     for (std::size_t c = 0; c < 3; ++c)
@@ -186,7 +186,7 @@ int run_fit(const FitCliOptions& o) {
   const fit::Observations obs = fit::read_observations(o.data, sigma);
   fit::FitOptions fo;
   fo.free = o.free;
-  fo.law = o.law;
+  fo.law = parse_optional_choice<Law>("--law", o.law);
   fo.rtol = o.rtol;
   fo.gradients = o.gradients;
   fo.max_evaluations = o.max_evaluations;
@@ -219,7 +219,7 @@ RegisterCommand reg_fit{{"fit", "Fit scene keys (e.g. surface.mu) to an observed
                            app.add_option("--sigma", o->sigma, "standard deviation of a column: x=2e-9, y=2e-9 (m), theta=0.01 (rad)");
                            add_set_option(app, o->sets);
                            app.add_option("--law", o->law, "rough scenes: friction law (default: the scene's)")
-                               ->check(CLI::IsMember({"thesis", "coulomb"}));
+                               ->check(is_choice<Law>({Law::thesis, Law::coulomb}));
                            app.add_option("--rtol", o->rtol, "relative tolerance of the forward solves (default 1e-10)")
                                ->check(real_in(1e-14, 1e-3));
                            app.add_option("--gradients", o->gradients,
@@ -248,7 +248,7 @@ void reproduce_fit(ReproduceContext& ctx) {
   Scene truth = load_scene(resolve_scene("thesis/fig3_20"));
   truth.set({{"solver.t_end", 0.8e-9}, {"solver.samples", ctx.quick ? 81 : 161}});
   const std::array<double, 3> sigma{1e-9, 1e-9, 0.01};
-  const fit::Observations obs = fit::synthesize(truth, sigma, 2026, "thesis");
+  const fit::Observations obs = fit::synthesize(truth, sigma, 2026, Law::thesis);
   Scene start = truth;
   start.set("surface.mu", 0.12);
   fit::FitOptions fo;

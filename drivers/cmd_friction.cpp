@@ -61,7 +61,7 @@ double parse_field(const std::string& text, std::size_t line, const std::string&
 }
 
 FrictionWrench evaluate(const Options& o, double R, double alpha) {
-  if (o.engine == "f77") {
+  if (parse_choice<Engine>("--engine", o.engine) == Engine::f77) {
     double w[3];
     const int st = np_f77_rectangle_friction(o.a, o.b, 1.0, R, alpha, o.sense, w);
     if (st != 0) {
@@ -254,7 +254,7 @@ RegisterCommand reg{{"friction",
                            ->check(CLI::Validator([](std::string& s) { return s == "0" ? std::string("0: must be 1 or -1") : std::string(); }, ""))
                            ->capture_default_str();
                        app.add_option("--engine", o->engine, "cxx (C++) or f77 (FORTRAN 77 RECTFR)")
-                           ->check(CLI::IsMember({"cxx", "f77"}))
+                           ->check(is_choice<Engine>())
                            ->capture_default_str();
                        app.add_flag("--bench", o->bench,
                                     "microbenchmark: evaluations per second of each form vs the cubature");

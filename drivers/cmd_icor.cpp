@@ -201,12 +201,7 @@ struct DynamicOptions {
   std::string out;
 };
 
-icor::DynamicIntegrator parse_integrator(const std::string& s) {
-  if (s == "automatic") return icor::DynamicIntegrator::automatic;
-  if (s == "bulirsch-stoer") return icor::DynamicIntegrator::bulirsch_stoer;
-  if (s == "cvode") return icor::DynamicIntegrator::cvode;
-  throw InputError("--integrator", s, "must be automatic, bulirsch-stoer or cvode");
-}
+icor::DynamicIntegrator parse_integrator(const std::string& s) { return icor::parse_dynamic_integrator("--integrator", s); }
 
 /// Output times: `samples` log-spaced from t_end/1000 to t_end (t_end alone for 1).
 std::vector<double> dynamic_times(double t_end, int samples) {

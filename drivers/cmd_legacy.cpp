@@ -105,8 +105,8 @@ int legacy_cmd(const LegacyOptions& o) {
                       (err_text.empty() ? std::string() : "; its error output: " + err_text.substr(0, 2000)));
   }
   RunSettings rs;
-  rs.engine = "f77";
-  rs.law = "thesis";
+  rs.engine = Engine::f77;
+  rs.law = Law::thesis;
   rs.allow_partial = true;
   const Trajectory tr = run_engine(sc, rs);
   const std::size_t n = std::min(rows.size(), tr.rows.size());

@@ -132,17 +132,17 @@ void reproduce_rough(ReproduceContext& ctx) {
     const Scene sc = load_scene(scenes_dir() / "thesis" / ("fig3_" + std::to_string(fig) + ".toml"));
     const std::string base = "fig3_" + std::to_string(fig);
     RunSettings th_c, th_f, co_c, co_v;
-    th_c.engine = "cxx";
-    th_c.method = "faithful";
-    th_c.law = "thesis";
+    th_c.engine = Engine::cxx;
+    th_c.method = Method::faithful;
+    th_c.law = Law::thesis;
     th_c.allow_partial = true;
     th_f = th_c;
-    th_f.engine = "f77";
-    co_c.engine = "cxx";
-    co_c.method = "faithful";
-    co_c.law = "coulomb";
+    th_f.engine = Engine::f77;
+    co_c.engine = Engine::cxx;
+    co_c.method = Method::faithful;
+    co_c.law = Law::coulomb;
     co_v = co_c;
-    co_v.method = "cvode";
+    co_v.method = Method::cvode;
     // CVODE's global error runs far above its local tolerance (BDF, order <= 5): at the scene's
     // rtol = 1e-10 it is off by up to 1e-4 rad where BS is within 1e-9. The cross-check is
     // of the event logic, so CVODE runs 100 times tighter.

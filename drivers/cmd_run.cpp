@@ -66,12 +66,12 @@ int run_cmd(const RunOptions& o) {
   set_provenance_scene(o.scene);  // recorded in the CSV's sidecar
   if (!o.quiet && !sc.load_report.empty()) std::cerr << sc.name << ": " << sc.load_report;
   RunSettings rs;
-  rs.engine = o.engine;
-  rs.method = o.method;
+  rs.engine = parse_optional_choice<Engine>("engine", o.engine);  // "" = the scene's
+  rs.method = parse_optional_choice<Method>("method", o.method);
   rs.rtol = o.rtol;
   rs.atol = o.atol;
-  rs.law = o.law;
-  rs.precision = o.precision;  // "" = the scene's solver.precision
+  rs.law = parse_optional_choice<Law>("law", o.law);
+  rs.precision = parse_optional_choice<Precision>("precision", o.precision);
   rs.allow_partial = true;  // a failure is reported below (and its samples kept with --keep-partial)
   rs.progress = progress_printer(sc.name);
   const auto t0 = std::chrono::steady_clock::now();
@@ -82,7 +82,7 @@ int run_cmd(const RunOptions& o) {
     // Never presented as a result: a distinct name, a message, a non-zero exit.
     std::cerr << "nanopush: solver failure: " << sc.name << " (" << tr.engine_label << "): " << to_string(tr.stats.status)
               << ": " << tr.stats.message << "\n";
-    print_rest_diagnosis(sc, o.law.empty() ? sc.surface.law : o.law, tr, std::cerr);
+    print_rest_diagnosis(sc, rs.law.value_or(sc.surface.law), tr, std::cerr);
     if (o.keep_partial) {
       if (out == "-") out = sc.name + "." + tr.engine_label + ".csv";
       const std::string partial = out + ".partial.csv";
@@ -124,18 +124,18 @@ RegisterCommand reg_run{{"run", "Integrate a scene and write its trajectory as C
                            auto o = std::make_shared<RunOptions>();
                            add_common(app, *o);
                            app.add_option("--engine", o->engine, "cxx (modern C++) or f77 (FORTRAN 77); default: the scene's")
-                               ->check(CLI::IsMember({"cxx", "f77"}));
+                               ->check(is_choice<Engine>());
                            app.add_option("--method", o->method,
                                           "C++ integrator: faithful (steps identical to F77), modern (Bulirsch-Stoer with dense "
                                           "output), dop853 (Dormand-Prince 8(5,3), double; smooth scenes and the thesis law: "
                                           "docs/dop853.md), cvode (SUNDIALS cross-check of the coulomb law), or auto (dop853 for "
                                           "rtol >= 1e-11 where it runs, else modern); default: the scene's")
-                               ->check(CLI::IsMember({"faithful", "modern", "dop853", "cvode", "auto"}));
+                               ->check(is_choice<Method>());
                            app.add_option("--law", o->law,
                                           "rough scenes: friction law, thesis (sign law of eq 3.40), printed (the same with "
                                           "eqs 3.45-3.48 exactly as printed, docs/rough.md) or coulomb (event-located "
                                           "stick-slip); default: the scene's")
-                               ->check(CLI::IsMember({"thesis", "printed", "coulomb"}));
+                               ->check(is_choice<Law>());
                            app.add_option("--precision", o->precision,
                                           "scalar of the integration: double, long (x87 80-bit) or quad (__float128); "
                                           "long and quad need --engine cxx, --method faithful or modern, a smooth scene. "
@@ -143,7 +143,7 @@ RegisterCommand reg_run{{"run", "Integrate a scene and write its trajectory as C
                                           "double, quad ~40x; double stops near 1e-14 in theta, long reaches ~1e-17 (rtol "
                                           "1e-17, ~7x), quad ~3e-24 (--method modern --rtol 1e-24, ~80-100x). The CSV holds "
                                           "the values rounded to double. Default: the scene's solver.precision (double)")
-                               ->check(CLI::IsMember({"double", "long", "quad"}));
+                               ->check(is_choice<Precision>());
                            app.add_option("--out", o->out, "output CSV ('-' for standard output; default <scene>.<engine>.csv)");
                            app.add_flag("--quiet", o->quiet, "no summary on standard error");
                            app.add_flag("--keep-partial", o->keep_partial,

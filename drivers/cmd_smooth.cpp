@@ -56,9 +56,9 @@ void reproduce_fig3_6(ReproduceContext& ctx) {
   for (const auto& c : cases) {
     const Scene sc = load_scene(scenes_dir() / "thesis" / ("fig3_6" + c + ".toml"));
     RunSettings cx, fo;
-    cx.engine = "cxx";
-    cx.method = "faithful";
-    fo.engine = "f77";
+    cx.engine = Engine::cxx;
+    cx.method = Method::faithful;
+    fo.engine = Engine::f77;
     const Trajectory tc = run_engine(sc, cx);
     const Trajectory tf = run_engine(sc, fo);
     const std::string scene_id = "thesis/fig3_6" + c;

@@ -123,9 +123,9 @@ int sweep_cmd(SweepOptions o) {
     Scene sc = load_scene_arg(o.scene, o.sets);
     set_provenance_scene(o.scene);
     RunSettings rs;
-    rs.engine = o.engine;
-    rs.method = o.method;
-    rs.law = o.law;
+    rs.engine = parse_optional_choice<Engine>("engine", o.engine);
+    rs.method = parse_optional_choice<Method>("method", o.method);
+    rs.law = parse_optional_choice<Law>("law", o.law);
     (void)resolve_settings(sc, rs);  // bad engine/method/law combinations before any work
     if (!o.trajectories.empty()) std::filesystem::create_directories(o.trajectories);
     task = sweep::make_run_task(sc, rs, o.trajectories);
@@ -196,11 +196,11 @@ RegisterCommand reg{
        app.add_option("--task", o->task, "what each point evaluates: run (default), friction, icor, estimate-mu")
            ->check(CLI::IsMember({"run", "friction", "icor", "estimate-mu"}));
        app.add_option("--engine", o->engine, "task run: cxx or f77 (default: the scene's)")
-           ->check(CLI::IsMember({"cxx", "f77"}));
+           ->check(is_choice<Engine>());
        app.add_option("--method", o->method, "task run: faithful, modern, dop853, cvode or auto (default: the scene's)")
-           ->check(CLI::IsMember({"faithful", "modern", "dop853", "cvode", "auto"}));
+           ->check(is_choice<Method>());
        app.add_option("--law", o->law, "task run, rough scenes: thesis, printed or coulomb (default: the scene's)")
-           ->check(CLI::IsMember({"thesis", "printed", "coulomb"}));
+           ->check(is_choice<Law>());
        app.add_option("--out", o->out, "the table (CSV; default <scene>_sweep.csv); its journal is OUT.journal");
        app.add_option("--trajectories", o->trajectories, "task run: also keep each point's trajectory, DIR/point_<i>.csv");
        app.add_option("--jobs", o->jobs, "threads (default: every core; under MPI, the cores per rank)")

@@ -38,8 +38,8 @@ Scene load_scene_arg(const std::string& scene, const std::vector<std::string>& s
 /// law of eq 3.40 has no direction at zero velocity, so once friction can hold the push
 /// (mu N > F) the integrator chatters about rest until its step budget is spent
 /// (docs/rough.md). Says where it came to rest and what continues honestly.
-void print_rest_diagnosis(const Scene& sc, const std::string& law, const Trajectory& tr, std::ostream& os) {
-  if (!sc.rough() || law == "coulomb" || tr.rows.size() < 2 || tr.stats.status != BsStatus::too_many_steps) return;
+void print_rest_diagnosis(const Scene& sc, Law law, const Trajectory& tr, std::ostream& os) {
+  if (!sc.rough() || law == Law::coulomb || tr.rows.size() < 2 || tr.stats.status != BsStatus::too_many_steps) return;
   const double muN = sc.friction_limit();
   if (!(muN > sc.push.force)) return;
   // The first sample from which the speed stays below 1e-3 of the largest speed of the run.

@@ -24,6 +24,6 @@ Scene load_scene_arg(const std::string& scene, const std::vector<std::string>& s
 
 /// After a failed rough run under the thesis or printed law that stopped at rest: where the
 /// bar came to rest and that --law coulomb continues honestly (nothing for other failures).
-void print_rest_diagnosis(const Scene& sc, const std::string& law, const Trajectory& tr, std::ostream& os);
+void print_rest_diagnosis(const Scene& sc, Law law, const Trajectory& tr, std::ostream& os);
 
 }  // namespace nanopush::cli

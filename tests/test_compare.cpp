@@ -27,10 +27,10 @@ TEST_CASE("compare: faithful is judged by same steps and its runs are run_engine
   CHECK(r.tolerance == 100 * r.rtol);
   REQUIRE(r.columns.size() == trajectory_columns().size() - 1);
   RunSettings a;
-  a.engine = "cxx";
-  a.method = "faithful";
+  a.engine = Engine::cxx;
+  a.method = Method::faithful;
   RunSettings b;
-  b.engine = "f77";
+  b.engine = Engine::f77;
   const Trajectory ta = run_engine(sc, a), tb = run_engine(sc, b);
   REQUIRE(ta.rows.size() == r.cxx.rows.size());
   REQUIRE(tb.rows.size() == r.f77.rows.size());
@@ -55,7 +55,7 @@ TEST_CASE("compare: faithful is judged by same steps and its runs are run_engine
 TEST_CASE("compare: modern is judged by convergence against both engines at rtol 1e-14", "[compare][regression]") {
   const Scene sc = thesis_preset(16);
   CompareSettings cs;
-  cs.method = "modern";
+  cs.method = Method::modern;
   const EngineComparison r = compare_engines(sc, cs);
   REQUIRE(r.complete);
   CHECK(r.kind == CompareKind::convergence);
@@ -75,13 +75,13 @@ TEST_CASE("compare: modern is judged by convergence against both engines at rtol
 TEST_CASE("compare: the coulomb law and methods without an F77 peer are refused", "[compare][unit]") {
   const Scene sc = thesis_preset(18);
   CompareSettings cs;
-  cs.law = "coulomb";
+  cs.law = Law::coulomb;
   CHECK_THROWS_AS(compare_engines(sc, cs), InputError);
   CHECK_THROWS_WITH(compare_engines(sc, cs), Catch::Contains("--law coulomb --method cvode"));
-  cs.law = "";
-  cs.method = "cvode";
+  cs.law = std::nullopt;
+  cs.method = Method::cvode;
   CHECK_THROWS_AS(compare_engines(sc, cs), InputError);
   bool from_coulomb = true;
-  CHECK(compare_law(sc, "", &from_coulomb) == sc.surface.law);
+  CHECK(compare_law(sc, std::nullopt, &from_coulomb) == sc.surface.law);
   CHECK_FALSE(from_coulomb);
 }

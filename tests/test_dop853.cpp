@@ -315,7 +315,7 @@ TEST_CASE("dop853: the steps do not depend on the output times", "[dop853][numer
 TEST_CASE("dop853: identical results across runs; dynamic size = fixed size", "[dop853][numeric]") {
   const Scene sc = load_scene(preset("fig3_6a"));
   RunSettings rs;
-  rs.method = "dop853";
+  rs.method = Method::dop853;
   rs.rtol = 1e-9;
   const Trajectory t1 = run_scene(sc, rs), t2 = run_scene(sc, rs);
   CHECK(t1.engine_label == "cxx-dop853");
@@ -346,7 +346,7 @@ TEST_CASE("dop853: the smooth nanobar meets its exact solution at every rtol fro
     double prev = 1;
     for (const double rtol : {1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12}) {
       RunSettings rs;
-      rs.method = "dop853";
+      rs.method = Method::dop853;
       rs.rtol = rtol;
       const Trajectory tr = run_scene(sc, rs);
       REQUIRE(tr.stats.ok());
@@ -365,8 +365,8 @@ TEST_CASE("dop853: rough scene under the thesis law agrees with the Bulirsch-Sto
           "[dop853][rough][numeric]") {
   const Scene sc = load_scene(preset("fig3_17"));
   RunSettings a, b;
-  a.method = "dop853";
-  b.method = "faithful";
+  a.method = Method::dop853;
+  b.method = Method::faithful;
   a.rtol = 1e-10;
   b.rtol = 1e-12;
   const Trajectory ta = run_scene(sc, a), tb = run_scene(sc, b);
@@ -388,15 +388,15 @@ TEST_CASE("dop853: scenes refuse what dop853 does not do, naming field, value an
   const Scene smooth = load_scene(preset("fig3_6a"));
   const Scene rough = load_scene(preset("fig3_17"));
   RunSettings rs;
-  rs.method = "dop853";
+  rs.method = Method::dop853;
   SECTION("the coulomb law") {
-    rs.law = "coulomb";
+    rs.law = Law::coulomb;
     CHECK_THROWS_WITH(run_scene(rough, rs), Catch::Contains("method = dop853") && Catch::Contains("coulomb law") &&
                                                  Catch::Contains("faithful, modern or cvode"));
   }
   SECTION("extended precision") {
     for (const char* p : {"long", "quad"}) {
-      rs.precision = p;
+      rs.precision = parse_optional_choice<Precision>("precision", p);
       CHECK_THROWS_WITH(run_scene(smooth, rs), Catch::Contains(std::string("precision = ") + p) &&
                                                    Catch::Contains("dop853 is double only"));
     }
@@ -406,19 +406,19 @@ TEST_CASE("dop853: scenes refuse what dop853 does not do, naming field, value an
     CHECK_THROWS_WITH(run_scene(smooth, rs), Catch::Contains("rtol = 1e-15") && Catch::Contains("must be >= 2.22e-15"));
   }
   SECTION("the f77 engine") {
-    rs.engine = "f77";
+    rs.engine = Engine::f77;
     CHECK_THROWS_AS(resolve_settings(smooth, rs), InputError);
   }
   SECTION("an unknown method lists the allowed ones") {
-    rs.method = "rk4";
-    CHECK_THROWS_WITH(run_scene(smooth, rs), Catch::Contains("must be faithful, modern, dop853, cvode or auto"));
+    CHECK_THROWS_WITH(parse_choice<Method>("method", "rk4"),
+                      Catch::Contains("method = rk4: must be faithful, modern, dop853, cvode or auto"));
   }
   SECTION("a scene file may ask for it") {
     Scene s = smooth;
-    s.solver.method = "dop853";
+    s.solver.method = Method::dop853;
     RunSettings none;
-    none.method = "";
-    CHECK(resolve_settings(s, none).method == "dop853");
+    none.method = std::nullopt;
+    CHECK(resolve_settings(s, none).method == Method::dop853);
   }
 }
 

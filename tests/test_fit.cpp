@@ -41,9 +41,9 @@ std::vector<std::array<double, 3>> engine_difference(const Scene& s, const std::
     Scene c = s;
     c.set(key, x);
     RunSettings rs;
-    rs.method = method;
+    rs.method = parse_optional_choice<Method>("method", method);
     rs.rtol = rtol;
-    rs.law = law;
+    rs.law = parse_optional_choice<Law>("law", law);
     return run_scene(c, rs).rows;
   };
   const auto a = run(v + dv), b = run(v - dv);
@@ -180,7 +180,7 @@ FitResult fit_synthetic(const Scene& truth, const std::string& key, double start
   s.set(key, start);
   FitOptions o;
   o.free = {key};
-  o.law = law;
+  o.law = parse_optional_choice<Law>("law", law);
   const FitResult r = fit_trajectory(s, obs, o);
   const double t = truth.document->at_path(key).value<double>().value();
   INFO(key << " truth " << t << " estimate " << r.parameters[0].value << " +- " << r.parameters[0].stderr_ << " "

@@ -44,9 +44,9 @@ double theta_error(const Scene& sc, const Trajectory& tr, bool rounded = false) 
 
 RunSettings settings(const char* precision, const char* method, double rtol) {
   RunSettings rs;
-  rs.engine = "cxx";
-  rs.precision = precision;
-  rs.method = method;
+  rs.engine = Engine::cxx;
+  rs.precision = parse_optional_choice<Precision>("precision", precision);
+  rs.method = parse_optional_choice<Method>("method", method);
   rs.rtol = rtol;
   return rs;
 }
@@ -141,8 +141,8 @@ TEST_CASE("precision: the modern method refuses rtol below 4 eps of its precisio
 TEST_CASE("precision double is the default, and extended precision takes the same steps at rtol 1e-12",
           "[precision][numeric]") {
   const Scene sc = load_scene(preset("fig3_6a"));
-  RunSettings def;  // default settings: double
-  CHECK(def.precision == "double");
+  RunSettings def;  // default settings: the scene's precision (fig3_6a: double)
+  CHECK_FALSE(def.precision.has_value());
   const Trajectory a = run_engine(sc, def);
   const Trajectory b = run_engine(sc, settings("double", "faithful", 0));
   CHECK(a.engine_label == "cxx-faithful");
@@ -162,33 +162,33 @@ TEST_CASE("precision other than double is refused where the RHS is double only",
   const Scene smooth = load_scene(preset("fig3_6a"));
   const Scene rough = load_scene(preset("fig3_27"));
   RunSettings rs;
-  rs.precision = "quad";
-  rs.engine = "f77";
+  rs.precision = Precision::quad;
+  rs.engine = Engine::f77;
   CHECK_THROWS_AS(run_engine(smooth, rs), InputError);
   CHECK_THROWS_WITH(run_engine(smooth, rs), Contains("precision = quad") && Contains("engine = cxx") &&
                                                Contains("F77"));
-  rs.engine = "cxx";
-  rs.precision = "long";
+  rs.engine = Engine::cxx;
+  rs.precision = Precision::long_;
   CHECK_THROWS_AS(run_engine(rough, rs), InputError);
   CHECK_THROWS_WITH(run_engine(rough, rs), Contains("precision = long") && Contains("smooth scene"));
-  rs.law = "coulomb";
-  rs.method = "cvode";
+  rs.law = Law::coulomb;
+  rs.method = Method::cvode;
   CHECK_THROWS_WITH(run_engine(rough, rs), Contains("precision = long") && Contains("smooth scene"));
-  RunSettings bad;
-  bad.precision = "bogus";
-  CHECK_THROWS_AS(run_engine(smooth, bad), InputError);
-  CHECK_THROWS_WITH(run_engine(smooth, bad), Contains("precision = bogus") && Contains("must be double, long or quad"));
+  // A name outside the table is refused where it is read (the front ends' parse_choice).
+  CHECK_THROWS_AS(parse_optional_choice<Precision>("precision", "bogus"), InputError);
+  CHECK_THROWS_WITH(parse_optional_choice<Precision>("precision", "bogus"),
+                    Contains("precision = bogus") && Contains("must be double, long or quad"));
   try {
-    (void)resolve_settings(smooth, bad);
+    (void)parse_optional_choice<Precision>("precision", "bogus");
     FAIL("no InputError");
   } catch (const InputError& e) {
     CHECK(e.field() == "precision");
   }
   // double stays allowed everywhere.
   RunSettings d;
-  d.precision = "double";
-  d.engine = "f77";
-  CHECK(resolve_settings(rough, d).precision == "double");
+  d.precision = Precision::double_;
+  d.engine = Engine::f77;
+  CHECK(resolve_settings(rough, d).precision == Precision::double_);
 }
 
 TEST_CASE("solver.precision in a scene file", "[precision][scene][unit]") {
@@ -198,25 +198,29 @@ theta = -0.5
 t_end = 1.6e-9
 samples = 5
 )";
-  CHECK(parse_scene(base, "s").solver.precision == "double");
+  CHECK(parse_scene(base, "s").solver.precision == Precision::double_);
   const Scene sc = parse_scene(base + "precision = \"long\"\n", "s");
-  CHECK(sc.solver.precision == "long");
+  CHECK(sc.solver.precision == Precision::long_);
   CHECK_THROWS_WITH(parse_scene(base + "precision = \"octuple\"\n", "s"),
                     Contains("solver.precision = \"octuple\"") && Contains("double, long, quad"));
   CHECK_THROWS_WITH(parse_scene(base + "precision = \"quad\"\nengine = \"f77\"\n", "s"),
                     Contains("solver.precision = \"quad\"") && Contains("F77"));
   CHECK_THROWS_WITH(parse_scene(base + "precision = \"quad\"\n[surface]\nkind = \"rough\"\nmu = 0.1\n", "s"),
                     Contains("solver.precision = \"quad\"") && Contains("smooth surface"));
-  // "" takes the scene's precision; the settings' value overrides it.
+  // Unset takes the scene's precision (and its method, auto: modern in extended precision);
+  // the settings' value overrides it.
   RunSettings from_scene;
-  from_scene.precision = "";
+  from_scene.precision = std::nullopt;
   const Trajectory tl = run_engine(sc, from_scene);
   CHECK(tl.precision == "long");
-  CHECK(tl.engine_label == "cxx-faithful-long");
-  CHECK(run_engine(sc, RunSettings{}).precision == "double");
+  CHECK(tl.engine_label == "cxx-modern-long");
+  CHECK(run_engine(sc, RunSettings{}).precision == "long");
+  RunSettings in_double;
+  in_double.precision = Precision::double_;
+  CHECK(run_engine(sc, in_double).precision == "double");
   // A scene's extended precision with the F77 engine asked on the command line: the error
   // names the scene's key.
-  from_scene.engine = "f77";
+  from_scene.engine = Engine::f77;
   CHECK_THROWS_WITH(run_engine(sc, from_scene), Contains("solver.precision = long"));
 }
 

@@ -28,9 +28,9 @@ Scene preset(int fig) { return nanopush::test::thesis_preset(fig); }
 Trajectory run(const Scene& sc, const std::string& engine, const std::string& law,
                const std::string& method = "faithful") {
   RunSettings s;
-  s.engine = engine;
-  s.law = law;
-  s.method = method;
+  s.engine = parse_optional_choice<Engine>("engine", engine);
+  s.law = parse_optional_choice<Law>("law", law);
+  s.method = parse_optional_choice<Method>("method", method);
   return run_engine(sc, s);
 }
 

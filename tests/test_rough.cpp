@@ -35,8 +35,8 @@ Scene pushed_up(int fig, int ulps) {
 /// The coulomb law's converged solution: the event-locating BS (modern) at rtol 1e-14.
 Trajectory coulomb_reference(const Scene& sc) {
   RunSettings ref;
-  ref.law = "coulomb";
-  ref.method = "modern";
+  ref.law = Law::coulomb;
+  ref.method = Method::modern;
   ref.rtol = 1e-14;
   return run_engine(sc, ref);
 }
@@ -85,7 +85,7 @@ TEST_CASE("mu = 0 reproduces the smooth-surface solution", "[rough][numeric]") {
   RunSettings rs;
   rs.rtol = 1e-12;
   for (const char* law : {"thesis", "coulomb"}) {
-    rs.law = law;
+    rs.law = parse_optional_choice<Law>("law", law);
     const Trajectory tr = run_engine(sc, rs);
     const Pendulum<double> ex(sc.push.theta_equilibrium(), 0.0, sc.push.force * sc.push.lever(), sc.inertia);
     double e = 0;
@@ -114,7 +114,7 @@ TEST_CASE("Energy balance and dissipation on every thesis-law run that does not 
 
 TEST_CASE("Coulomb law: energy balance, dissipation, no chattering, exact rest", "[rough][numeric][coulomb]") {
   RunSettings rs;
-  rs.law = "coulomb";
+  rs.law = Law::coulomb;
   const Trajectory ref = run_engine(preset(17), rs);  // mu = 0.05
   const long n_ref = static_cast<long>(ref.stats.nfcn);
   for (double mu : {0.05, 0.10, 0.13, 0.15, 0.20, 0.5, 1.0}) {
@@ -146,12 +146,12 @@ TEST_CASE("Coulomb law: the CVODE cross-check agrees to 1e-8", "[rough][coulomb]
     Scene sc = preset(12);
     sc.surface.mu = mu;
     RunSettings a, b;
-    a.law = b.law = "coulomb";
+    a.law = b.law = Law::coulomb;
     // CVODE's global error runs far above its rtol (BDF, order <= 5; ~1e-4 rad at 1e-10 where
     // BS is within 1e-9), so the reference runs 100 times tighter, as in the reproduce step.
     a.rtol = 1e-10;
     b.rtol = 1e-12;
-    b.method = "cvode";
+    b.method = Method::cvode;
     const Trajectory ta = run_engine(sc, a), tb = run_engine(sc, b);
     REQUIRE(ta.rows.size() == tb.rows.size());
     // theta in rad; x relative to its largest value over the run (x reaches 100 L here).
@@ -183,8 +183,8 @@ TEST_CASE("Coulomb law: CVODE lands on the converged solution at every rtol and 
       const Trajectory tr = coulomb_reference(sc);
       for (double rtol : {1e-11, 3e-12, 1e-12, 3e-13, 1e-13}) {
         RunSettings cv;
-        cv.law = "coulomb";
-        cv.method = "cvode";
+        cv.law = Law::coulomb;
+        cv.method = Method::cvode;
         cv.rtol = rtol;
         const double dth = max_dtheta(run_engine(sc, cv), tr);
         INFO("fig3_" << fig << ", push + " << ulps << " ulp, CVODE rtol " << rtol << ": max |dtheta| " << dth);
@@ -210,8 +210,8 @@ TEST_CASE("Coulomb law: a slide from rest lands on the converged solution at eve
     for (int ulps = 0; ulps < 10; ++ulps) {
       const Scene sc = pushed_up(fig, ulps);
       RunSettings bs;
-      bs.law = "coulomb";
-      bs.method = "faithful";  // at the preset's rtol, as reproduce runs it
+      bs.law = Law::coulomb;
+      bs.method = Method::faithful;  // at the preset's rtol, as reproduce runs it
       const Trajectory ref = coulomb_reference(sc);
       const double dth = max_dtheta(run_engine(sc, bs), ref);
       INFO("fig3_" << fig << ", push + " << ulps << " ulp: max |dtheta| " << dth);
@@ -286,8 +286,8 @@ TEST_CASE("Thesis law: C++ faithful and F77 agree to 1e-9 in theta wherever it d
   for (int fig = 12; fig <= 24; ++fig) {
     const Scene sc = preset(fig);
     RunSettings a, b;
-    a.engine = "cxx";
-    b.engine = "f77";
+    a.engine = Engine::cxx;
+    b.engine = Engine::f77;
     const Trajectory ta = run_engine(sc, a), tb = run_engine(sc, b);
     REQUIRE(ta.rows.size() == tb.rows.size());
     double d = 0;
@@ -299,7 +299,7 @@ TEST_CASE("Thesis law: C++ faithful and F77 agree to 1e-9 in theta wherever it d
   // Where it chatters (mu >= 0.13) both stop at the step budget, at the same sample.
   RunSettings a, b;
   a.allow_partial = b.allow_partial = true;
-  b.engine = "f77";
+  b.engine = Engine::f77;
   const Trajectory ta = run_engine(preset(27), a), tb = run_engine(preset(27), b);
   CHECK_FALSE(ta.complete);
   CHECK_FALSE(tb.complete);

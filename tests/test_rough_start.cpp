@@ -25,9 +25,9 @@ Scene preset(int fig) { return nanopush::test::thesis_preset(fig); }
 
 Trajectory run(const Scene& sc, const std::string& method, double rtol) {
   RunSettings rs;
-  rs.method = method;
+  rs.method = parse_optional_choice<Method>("method", method);
   rs.rtol = rtol;
-  rs.law = "thesis";
+  rs.law = Law::thesis;
   return run_engine(sc, rs);
 }
 
@@ -53,8 +53,8 @@ TEST_CASE("Thesis law from rest: modern and dop853 reach the faithful method's a
 TEST_CASE("Thesis law from rest: the faithful method keeps the F77 engine's start", "[rough][start][regression]") {
   const Scene sc = preset(17);
   RunSettings c, f;
-  c.method = "faithful";
-  f.engine = "f77";
+  c.method = Method::faithful;
+  f.engine = Engine::f77;
   const Trajectory a = run_engine(sc, c), b = run_engine(sc, f);
   CHECK(a.stats.nfcn == b.stats.nfcn);
   CHECK(max_dtheta(a, b) <= 1e-12);

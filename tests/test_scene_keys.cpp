@@ -94,7 +94,7 @@ TEST_CASE("scene set: integer and string keys, from text as the command line giv
          {"solver.method", SceneValue::from_text("solver.method", "modern")},
          {"initial.theta", SceneValue::from_text("initial.theta", "0.25")}});
   CHECK(s.solver.samples == 11);
-  CHECK(s.solver.method == "modern");
+  CHECK(s.solver.method == Method::modern);
   CHECK(s.initial[2] == 0.25);
   CHECK(s.output_times().size() == 11);
 }

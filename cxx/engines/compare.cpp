@@ -93,17 +93,13 @@ bool all_complete(EngineComparison& r, std::initializer_list<int> runs) {
 
 }  // namespace
 
-std::string compare_law(const Scene& scene, const std::string& law, bool* from_coulomb) {
+Law compare_law(const Scene& scene, std::optional<Law> law, bool* from_coulomb) {
   // The F77 engine implements the thesis and printed laws; a scene asking for the coulomb law
   // is compared under the thesis law unless the coulomb law is asked for, which has no F77 peer.
-  std::string l = law;
-  if (from_coulomb) *from_coulomb = false;
-  if (l.empty()) {
-    l = scene.surface.law == "coulomb" ? "thesis" : scene.surface.law;
-    if (from_coulomb) *from_coulomb = scene.rough() && scene.surface.law == "coulomb";
-  }
-  if (l == "coulomb")
-    throw InputError("law", l,
+  if (from_coulomb) *from_coulomb = !law && scene.rough() && scene.surface.law == Law::coulomb;
+  const Law l = law ? *law : (scene.surface.law == Law::coulomb ? Law::thesis : scene.surface.law);
+  if (l == Law::coulomb)
+    throw InputError("law", "coulomb",
                      "thesis or printed: the F77 engine implements only those. The coulomb law's independent "
                      "check is its CVODE cross-check: nanopush run " +
                          scene.name + " --law coulomb --method cvode, or nanopush.run(scene, law='coulomb', "
@@ -112,17 +108,17 @@ std::string compare_law(const Scene& scene, const std::string& law, bool* from_c
 }
 
 EngineComparison compare_engines(const Scene& scene, const CompareSettings& cs) {
-  if (cs.method != "faithful" && cs.method != "modern" && cs.method != "dop853")
-    throw InputError("method", cs.method, "must be faithful, modern or dop853 (the C++ configuration compared)");
+  if (cs.method != Method::faithful && cs.method != Method::modern && cs.method != Method::dop853)
+    throw InputError("method", to_string(cs.method),
+                     "must be faithful, modern or dop853 (the C++ configuration compared)");
   EngineComparison r;
   r.law = compare_law(scene, cs.law, &r.law_from_coulomb);
   RunSettings a, b;
-  a.engine = "cxx";
+  a.engine = Engine::cxx;
   a.method = cs.method;
-  b.engine = "f77";
-  b.method = "";
+  b.engine = Engine::f77;
   a.law = b.law = r.law;
-  a.precision = b.precision = "double";  // the F77 engine is REAL*8: compared in double
+  a.precision = b.precision = Precision::double_;  // the F77 engine is REAL*8: compared in double
   a.rtol = b.rtol = cs.rtol;
   a.atol = b.atol = cs.atol;
   a.allow_partial = b.allow_partial = true;
@@ -139,9 +135,9 @@ EngineComparison compare_engines(const Scene& scene, const CompareSettings& cs) 
   // rtol/100: the F77 engine's error is not monotone in rtol where it starts from rest (its
   // first step sees friction jump from 0 to mu N), e.g. fig3_16 is further off at 1e-12 than
   // at 1e-10; at 1e-14 both engines are within ~1e-12 of dop853 at 1e-13.
-  if (cs.method == "faithful" || cs.tolerance > 0 || r.rtol < 10 * kCompareTightRtol) {
+  if (cs.method == Method::faithful || cs.tolerance > 0 || r.rtol < 10 * kCompareTightRtol) {
     r.kind = CompareKind::same_steps;
-    r.tolerance_from_tight = cs.method != "faithful" && cs.tolerance <= 0;
+    r.tolerance_from_tight = cs.method != Method::faithful && cs.tolerance <= 0;
     r.tolerance = cs.tolerance > 0 ? cs.tolerance : 100 * r.rtol;
     judge_same_steps(r);
     return r;

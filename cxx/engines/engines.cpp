@@ -12,9 +12,9 @@
 
 namespace nanopush {
 
-Trajectory run_f77(const Scene& sc, const RunSettings& s) {
+Trajectory run_f77(const Scene& sc, const ResolvedSettings& s) {
   Trajectory tr;
-  const bool printed = sc.rough() && s.law == "printed";
+  const bool printed = sc.rough() && s.law == Law::printed;
   tr.engine_label = sc.rough() ? (printed ? "f77-printed" : "f77-thesis") : "f77";
   const int n = sc.rough() ? kRoughStateSize : kStateSize;
   tr.rtol = s.rtol;
@@ -74,9 +74,8 @@ Trajectory run_f77(const Scene& sc, const RunSettings& s) {
 }
 
 Trajectory run_engine(const Scene& scene, const RunSettings& settings) {
-  const RunSettings s = resolve_settings(scene, settings);
-  if (s.engine != "f77") return run_scene(scene, s);
-  return finish_run(scene, s, run_f77(scene, s));
+  const ResolvedSettings s = resolve_settings(scene, settings);
+  return finish_run(scene, s, s.engine == Engine::f77 ? run_f77(scene, s) : run_cxx(scene, s));
 }
 
 }  // namespace nanopush

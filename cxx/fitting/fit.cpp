@@ -80,7 +80,8 @@ struct Problem : Eigen::DenseFunctor<double> {
   const Scene& scene;
   const Observations& obs;
   const FitOptions& opt;
-  std::string law, gradients;
+  std::optional<Law> law;
+  std::string gradients;
   std::vector<double> c, lo, hi;  // parameter scales, bounds (in p)
   std::int64_t solves = 0, sens_solves = 0;
   bool eager = false;  // derivatives with every evaluation (sensitivities: no extra solve)
@@ -177,9 +178,8 @@ FitResult fit_trajectory(const Scene& scene, const Observations& obs, const FitO
   require_range("xtol", options.xtol, 0, 1);
   require_range("ftol", options.ftol, 0, 1);
   require_range("identifiability_threshold", options.identifiability_threshold, 0, 1);
-  const std::string law = options.law.empty() ? scene.surface.law : options.law;
-  if (law != "thesis" && law != "coulomb") throw InputError("--law", law, "must be thesis or coulomb");
-  const bool coulomb = scene.rough() && law == "coulomb";
+  const Law law = detail::fit_law(scene, options.law);
+  const bool coulomb = scene.rough() && law == Law::coulomb;
   std::string gradients = options.gradients;
   if (gradients == "auto") gradients = coulomb ? "differences" : "sensitivities";
   if (gradients != "sensitivities" && gradients != "differences")
@@ -197,7 +197,7 @@ FitResult fit_trajectory(const Scene& scene, const Observations& obs, const FitO
   prob.eager = gradients == "sensitivities";
   FitResult res;
   res.gradients = gradients;
-  res.law = scene.rough() ? law : "";
+  res.law = scene.rough() ? to_string(law) : "";
   Eigen::VectorXd u(static_cast<Eigen::Index>(np));
   for (std::size_t k = 0; k < np; ++k) {
     const std::string& key = options.free[k];

@@ -257,7 +257,7 @@ std::vector<std::array<double, 3>> coulomb_poses(const Scene& scene, const std::
 }  // namespace
 
 ModelPoses model_poses(const Scene& scene, const std::vector<std::string>& free, const std::vector<double>& p,
-                       const std::vector<double>& times, const std::string& law_in, double rtol, bool derivatives,
+                       const std::vector<double>& times, std::optional<Law> law_in, double rtol, bool derivatives,
                        const std::string& gradients, std::int64_t* solves) {
   check_times(times);
   require_range("rtol", rtol, 1e-14, 1e-3);
@@ -265,9 +265,7 @@ ModelPoses model_poses(const Scene& scene, const std::vector<std::string>& free,
     throw InputError("gradients", gradients, "must be auto, sensitivities or differences");
   if (p.size() != free.size()) throw InputError("parameters", std::to_string(p.size()), "one value per free key");
   Scene sc = free.empty() ? scene : detail::scene_at(scene, free, p);
-  const std::string law = law_in.empty() ? scene.surface.law : law_in;
-  if (law != "thesis" && law != "coulomb") throw InputError("--law", law, "must be thesis or coulomb");
-  const bool coulomb = sc.rough() && law == "coulomb";
+  const bool coulomb = sc.rough() && detail::fit_law(scene, law_in) == Law::coulomb;
   if (coulomb && gradients == "sensitivities")
     throw InputError("gradients", "sensitivities",
                      "the coulomb law's right-hand side jumps at its rest events: use differences (or auto)");

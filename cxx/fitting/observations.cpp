@@ -189,7 +189,7 @@ void check_observations(const Observations& obs, const Scene& scene, std::size_t
 }
 
 Observations synthesize(const Scene& scene, const std::array<double, 3>& sigma, std::uint64_t seed,
-                        const std::string& law, const std::vector<double>& times_in, double rtol) {
+                        std::optional<Law> law, const std::vector<double>& times_in, double rtol) {
   Observations obs;
   obs.source = "synthetic";
   obs.t = times_in.empty() ? scene.output_times() : times_in;

@@ -20,6 +20,13 @@ double rod_contact_half_width(const Rod& rod) {
   return forces::hertz_line_half_width(rod.radius, Es, rod.load() / rod.length);
 }
 
+DynamicIntegrator parse_dynamic_integrator(const std::string& field, const std::string& text) {
+  if (text == "automatic") return DynamicIntegrator::automatic;
+  if (text == "bulirsch-stoer" || text == "bulirsch_stoer") return DynamicIntegrator::bulirsch_stoer;
+  if (text == "cvode") return DynamicIntegrator::cvode;
+  throw InputError(field, text, "must be automatic, bulirsch-stoer or cvode");
+}
+
 std::string to_string(DynamicIntegrator i) {
   switch (i) {
     case DynamicIntegrator::automatic: return "automatic";

@@ -78,6 +78,14 @@ void require_one_of(const std::string& field, const std::string& v, const std::v
     throw InputError(field, "\"" + v + "\"", "must be one of: " + join(allowed));
 }
 
+/// A choice key of the scene file: its value by the choice's name table, or InputError
+/// "field = \"text\": must be one of: a, b, c".
+template <class E>
+E scene_choice(const std::string& field, const std::string& text) {
+  if (const auto v = choice_from_name<E>(text)) return *v;
+  throw InputError(field, "\"" + text + "\"", "must be one of: " + choice_names<E>(", "));
+}
+
 /// A scene name becomes part of output file names: letters, digits, '_', '-' and '.', not
 /// starting with '.' or '-' (no paths, no hidden files, nothing that reads as an option).
 bool is_identifier(const std::string& s) {
@@ -152,15 +160,15 @@ void check_representable(const Scene& sc) {
 
 }  // namespace
 
-std::string extended_precision_obstacle(bool rough, const std::string& engine, const std::string& method) {
+std::string extended_precision_obstacle(bool rough, Engine engine, Method method) {
   const std::string need = "long and quad need engine = cxx, method faithful or modern, on a smooth scene (smooth surface)";
   if (rough) return need + " (the rough-surface friction is computed in double)";
-  if (engine != "cxx") return need + " (the F77 engine is REAL*8)";
-  if (method == "dop853")
+  if (engine != Engine::cxx) return need + " (the F77 engine is REAL*8)";
+  if (method == Method::dop853)
     return need + " (dop853 is double only: its coefficients are tabulated to long double, so its order conditions "
                   "hold to ~1e-19)";
   // auto picks modern in extended precision (resolve_settings).
-  if (method != "faithful" && method != "modern" && method != "auto") return need + " (CVODE is double)";
+  if (method == Method::cvode) return need + " (CVODE is double)";
   return "";
 }
 
@@ -309,9 +317,8 @@ Scene scene_from_document(const toml::table& root, const std::string& source_nam
     const auto& t = require_table(root, "surface");
     check_keys(t, "surface", scene_table_keys("surface"));
     sc.model = opt_string(t, "surface", "kind").value_or("smooth");
-    require_one_of("surface.kind", sc.model, {"smooth", "rough"});
-    sc.surface.kind = sc.model;
-    if (sc.model == "smooth") {
+    sc.surface.kind = scene_choice<SurfaceKind>("surface.kind", sc.model);
+    if (sc.surface.kind == SurfaceKind::smooth) {
       for (const char* k : {"mu", "f_vdw", "g", "normal_load", "law"})
         if (t.get(k)) throw InputError(std::string("surface.") + k, "(present)", "only meaningful with surface.kind = \"rough\"");
     } else {
@@ -325,8 +332,7 @@ Scene scene_from_document(const toml::table& root, const std::string& source_nam
         require_positive("surface.normal_load", *nl, "N");
         sc.surface.normal_load = *nl;
       }
-      sc.surface.law = opt_string(t, "surface", "law").value_or("thesis");
-      require_one_of("surface.law", sc.surface.law, {"thesis", "printed", "coulomb"});
+      sc.surface.law = scene_choice<Law>("surface.law", opt_string(t, "surface", "law").value_or("thesis"));
     }
   }
 
@@ -354,21 +360,21 @@ Scene scene_from_document(const toml::table& root, const std::string& source_nam
       require_nonnegative("solver.atol", *a);
       sc.solver.atol = *a;
     }
-    sc.solver.engine = opt_string(t, "solver", "engine").value_or("cxx");
-    require_one_of("solver.engine", sc.solver.engine, {"cxx", "f77"});
+    sc.solver.engine = scene_choice<Engine>("solver.engine", opt_string(t, "solver", "engine").value_or("cxx"));
     // Default: auto (the fastest method for the rtol asked, docs/dop853.md); a scene on the F77
     // engine has its one method.
-    sc.solver.method = opt_string(t, "solver", "method").value_or(sc.solver.engine == "f77" ? "faithful" : "auto");
-    require_one_of("solver.method", sc.solver.method, {"faithful", "modern", "dop853", "cvode", "auto"});
-    if (sc.solver.engine == "f77" && sc.solver.method != "faithful")
-      throw InputError("solver.method", "\"" + sc.solver.method + "\"",
+    const auto method = opt_string(t, "solver", "method");
+    sc.solver.method = method ? scene_choice<Method>("solver.method", *method)
+                              : (sc.solver.engine == Engine::f77 ? Method::faithful : Method::automatic);
+    if (sc.solver.engine == Engine::f77 && sc.solver.method != Method::faithful)
+      throw InputError("solver.method", "\"" + to_string(sc.solver.method) + "\"",
                        "with solver.engine = \"f77\" there is one method (the F77 Bulirsch-Stoer): leave "
                        "solver.method out, or use solver.engine = \"cxx\"");
-    sc.solver.precision = opt_string(t, "solver", "precision").value_or("double");
-    require_one_of("solver.precision", sc.solver.precision, {"double", "long", "quad"});
-    if (sc.solver.precision != "double") {
+    sc.solver.precision =
+        scene_choice<Precision>("solver.precision", opt_string(t, "solver", "precision").value_or("double"));
+    if (sc.solver.precision != Precision::double_) {
       const std::string why = extended_precision_obstacle(sc.rough(), sc.solver.engine, sc.solver.method);
-      if (!why.empty()) throw InputError("solver.precision", "\"" + sc.solver.precision + "\"", why);
+      if (!why.empty()) throw InputError("solver.precision", "\"" + to_string(sc.solver.precision) + "\"", why);
     }
     if (auto h = opt_number(t, "solver", "h0")) {
       require_nonnegative("solver.h0", *h, "s");

@@ -2,6 +2,8 @@
 // (scene.cpp, environment_toml.cpp); tests/test_scene_keys.cpp holds the two together.
 #include "nanopush/scenes/scene_keys.hpp"
 
+#include "nanopush/scenes/choices.hpp"
+
 #include <set>
 #include <sstream>
 
@@ -21,6 +23,10 @@ std::string_view key_type_name(KeyType t) {
 
 const std::vector<SceneKey>& scene_keys() {
   using K = KeyType;
+  // The choice keys' allowed values come from the choices' name tables (choices.hpp).
+  static const std::string kinds = choice_names<SurfaceKind>(", "), laws = choice_names<Law>(", "),
+                           engines = choice_names<Engine>(", "), methods = choice_names<Method>(", "),
+                           precisions = choice_names<Precision>(", ");
   static const std::vector<SceneKey> keys = {
       {"scene.name", K::string, "", "file stem", "letters, digits, _ - . (not first: . -), <= 200", "all",
        "identifier used in output names"},
@@ -52,13 +58,13 @@ const std::vector<SceneKey>& scene_keys() {
       {"initial.vy", K::number, "m/s", "0", "finite", "all", "initial velocity, y"},
       {"initial.omega", K::number, "rad/s", "0", "finite", "all", "initial angular velocity"},
 
-      {"surface.kind", K::string, "", "smooth", "smooth, rough", "all",
+      {"surface.kind", K::string, "", "smooth", kinds, "all",
        "smooth (docs/models.md section A) or rough (section C)"},
       {"surface.mu", K::number, "1", "required", "[0, 10]", "rough", "Coulomb friction coefficient"},
       {"surface.f_vdw", K::number, "N", "0", ">= 0", "rough", "adhesion (van der Waals) load added to m g"},
       {"surface.g", K::number, "m/s^2", "9.81", ">= 0", "rough", "gravity"},
       {"surface.normal_load", K::number, "N", "m g + f_vdw", "> 0", "rough", "normal load N, given directly"},
-      {"surface.law", K::string, "", "thesis", "thesis, printed, coulomb", "rough",
+      {"surface.law", K::string, "", "thesis", laws, "rough",
        "friction law: the eq 3.40 sign law, the same with eqs 3.45-3.48 as printed, or event-located "
        "stick-slip"},
 
@@ -68,12 +74,12 @@ const std::vector<SceneKey>& scene_keys() {
       {"solver.rtol", K::number, "1", "1e-10", "[1e-30, 0.1]", "all", "relative tolerance"},
       {"solver.atol", K::number, "SI of each state", "0", ">= 0", "all",
        "absolute tolerance of every component; 0 = rtol x each component's natural scale"},
-      {"solver.engine", K::string, "", "cxx", "cxx, f77", "all", "the C++ solver or the FORTRAN 77 reproduction"},
-      {"solver.method", K::string, "", "auto", "faithful, modern, dop853, cvode, auto", "all",
+      {"solver.engine", K::string, "", "cxx", engines, "all", "the C++ solver or the FORTRAN 77 reproduction"},
+      {"solver.method", K::string, "", "auto", methods, "all",
        "C++ integrator: Bulirsch-Stoer configuration (docs/bulirsch_stoer.md), dop853 (Dormand-Prince 8(5,3), "
        "docs/dop853.md: double, not the coulomb law); cvode: rough scenes, coulomb law; auto (default; faithful "
        "with engine f77): dop853 for rtol >= 1e-11 where it runs, else modern"},
-      {"solver.precision", K::string, "", "double", "double, long, quad", "all",
+      {"solver.precision", K::string, "", "double", precisions, "all",
        "scalar of the integration; long and quad: engine cxx, faithful or modern, smooth surface"},
       {"solver.h0", K::number, "s", "0 (1% of t_end)", ">= 0", "all", "initial step"},
       {"solver.hmax", K::number, "s", "0 (none)", ">= 0", "all", "largest step"},

@@ -19,70 +19,64 @@ std::string fmt_short(double v) {
 }
 }  // namespace
 
-RunSettings resolve_settings(const Scene& scene, RunSettings s) {
-  if (s.engine.empty()) s.engine = scene.solver.engine;
-  if (s.engine != "cxx" && s.engine != "f77") throw InputError("engine", s.engine, "must be cxx or f77");
+ResolvedSettings resolve_settings(const Scene& scene, const RunSettings& in) {
+  ResolvedSettings s;
+  s.allow_partial = in.allow_partial;
+  s.progress = in.progress;
+  s.engine = in.engine.value_or(scene.solver.engine);
   // The F77 engine has one method, its own Bulirsch-Stoer: asking it for another is a
   // conflict, not a setting to ignore. (A scene's solver.method configures the C++ engine and
   // does not bind a run that chose the F77 engine.)
-  if (s.engine == "f77" && !s.method.empty() && s.method != "faithful")
-    throw InputError("method", s.method,
+  if (s.engine == Engine::f77 && in.method && *in.method != Method::faithful)
+    throw InputError("method", to_string(*in.method),
                      "the f77 engine has one method (its Bulirsch-Stoer, which faithful reproduces in C++): drop the "
                      "method or use engine cxx");
-  if (s.engine == "f77") s.method = "faithful";
-  // The field named is the one the value came from (the settings or the scene), as below.
-  const std::string mfield = s.method.empty() ? "solver.method" : "method";
-  if (s.method.empty()) s.method = scene.solver.method;
-  if (s.method != "faithful" && s.method != "modern" && s.method != "cvode" && s.method != "dop853" &&
-      s.method != "auto")
-    throw InputError(mfield, s.method, "must be faithful, modern, dop853, cvode or auto");
-  if (s.law.empty()) s.law = scene.surface.law;
-  if (s.law != "thesis" && s.law != "coulomb" && s.law != "printed")
-    throw InputError("law", s.law, "must be thesis, printed or coulomb");
-  if (s.rtol == 0) s.rtol = scene.solver.rtol;
+  // The field named in a message is the one the value came from (the settings or the scene).
+  const std::string mfield = in.method ? "method" : "solver.method";
+  s.method = s.engine == Engine::f77 ? Method::faithful : in.method.value_or(scene.solver.method);
+  s.law = in.law.value_or(scene.surface.law);
+  s.rtol = in.rtol == 0 ? scene.solver.rtol : in.rtol;
   require_range("rtol", s.rtol, 1e-30, 0.1);
-  if (s.method == "auto") {
+  const std::string pfield = in.precision ? "precision" : "solver.precision";
+  s.precision = in.precision.value_or(scene.solver.precision);
+  const bool coulomb = scene.rough() && s.law == Law::coulomb;
+  if (s.method == Method::automatic) {
     // The method that reached the error asked for with the least wall time in the measured
     // work-precision (docs/dop853.md, "Choosing a method"): dop853 down to rtol 1e-11 where it
     // runs (double, smooth scenes and the thesis law), the modern Bulirsch-Stoer below that,
     // in extended precision and under the coulomb law (its rest events).
-    const std::string prec = s.precision.empty() ? scene.solver.precision : s.precision;
-    const bool dop853_runs = prec == "double" && !(scene.rough() && s.law == "coulomb");
-    s.method = dop853_runs && s.rtol >= kAutoDop853RtolMin ? "dop853" : "modern";
+    const bool dop853_runs = s.precision == Precision::double_ && !coulomb;
+    s.method = dop853_runs && s.rtol >= kAutoDop853RtolMin ? Method::dop853 : Method::modern;
   }
-  if (s.atol < 0) s.atol = scene.solver.atol;
-  if (s.method == "cvode" && !(scene.rough() && s.law == "coulomb" && s.engine == "cxx"))
+  s.atol = in.atol < 0 ? scene.solver.atol : in.atol;
+  if (s.method == Method::cvode && !(coulomb && s.engine == Engine::cxx))
     throw InputError("method", "cvode", "the CVODE cross-check exists for rough scenes under the coulomb law only");
   // dop853 (docs/dop853.md) integrates a smooth ODE: the smooth scenes, and the rough ones
   // under the thesis law. The coulomb law needs the rest events located and the stick held,
   // which only the Bulirsch-Stoer engine (and the CVODE cross-check) do.
-  if (s.method == "dop853" && scene.rough() && s.law == "coulomb")
+  if (s.method == Method::dop853 && coulomb)
     throw InputError(mfield, "dop853",
                      "the coulomb law needs its rest events located, which dop853 does not do: use faithful, modern "
                      "or cvode, or law thesis");
-  if (s.engine == "f77" && scene.rough() && s.law == "coulomb")
+  if (s.engine == Engine::f77 && coulomb)
     throw InputError("engine", "f77", "the F77 engine implements the thesis friction law only (use --engine cxx)");
-  // Precision: the field named is the one the value came from (the settings or the scene).
-  const std::string pfield = s.precision.empty() ? "solver.precision" : "precision";
-  if (s.precision.empty()) s.precision = scene.solver.precision;
-  if (s.precision != "double" && s.precision != "long" && s.precision != "quad")
-    throw InputError(pfield, s.precision, "must be double, long or quad");
-  if (s.precision != "double") {
+  if (s.precision != Precision::double_) {
     const std::string why = extended_precision_obstacle(scene.rough(), s.engine, s.method);
-    if (!why.empty()) throw InputError(pfield, s.precision, why);
+    if (!why.empty()) throw InputError(pfield, to_string(s.precision), why);
   }
-  if (s.method == "dop853" && s.rtol < dop853_rtol_min<double>())
+  if (s.method == Method::dop853 && s.rtol < dop853_rtol_min<double>())
     throw InputError("rtol", fmt(s.rtol),
                      "must be >= " + fmt_short(dop853_rtol_min<double>()) + " (" + fmt(kDop853RtolEps) +
                          " eps of double) with the dop853 method; use --method faithful, or modern with --precision "
                          "long or quad");
-  if (s.method == "modern" && s.engine == "cxx") {
-    const double floor = s.precision == "quad"   ? dense_rtol_min<num::quad>()
-                         : s.precision == "long" ? dense_rtol_min<long double>()
-                                                 : dense_rtol_min<double>();
+  if (s.method == Method::modern && s.engine == Engine::cxx) {
+    const double floor = s.precision == Precision::quad    ? dense_rtol_min<num::quad>()
+                         : s.precision == Precision::long_ ? dense_rtol_min<long double>()
+                                                           : dense_rtol_min<double>();
     if (s.rtol < floor)
       throw InputError("rtol", fmt(s.rtol),
-                       "must be >= " + fmt_short(floor) + " (" + fmt(kDenseRtolEps) + " eps of " + s.precision +
+                       "must be >= " + fmt_short(floor) + " (" + fmt(kDenseRtolEps) + " eps of " +
+                           to_string(s.precision) +
                            ") with the modern method (dense output); use --precision long or quad, or "
                            "--method faithful");
   }
@@ -106,8 +100,8 @@ RoughBarModel rough_model(const Scene& sc) {
 namespace {
 
 template <class S = double>
-BsOptions<S> options_for(const Scene& sc, const RunSettings& s, const std::vector<S>& atol) {
-  auto opt = s.method == "modern" ? BsOptions<S>::modern(S(s.rtol), atol) : BsOptions<S>::faithful(S(s.rtol), atol);
+BsOptions<S> options_for(const Scene& sc, const ResolvedSettings& s, const std::vector<S>& atol) {
+  auto opt = s.method == Method::modern ? BsOptions<S>::modern(S(s.rtol), atol) : BsOptions<S>::faithful(S(s.rtol), atol);
   opt.h0 = S(sc.solver.h0);
   opt.hmax = S(sc.solver.hmax);
   opt.maxstp = sc.solver.max_steps;
@@ -116,7 +110,7 @@ BsOptions<S> options_for(const Scene& sc, const RunSettings& s, const std::vecto
 
 /// A dop853 run (docs/dop853.md) in double with the scene's step settings.
 template <int NS, class Rhs, class Observer>
-BsResult run_dop853(const Scene& sc, const RunSettings& s, const std::vector<double>& atol, const Rhs& rhs, double* y,
+BsResult run_dop853(const Scene& sc, const ResolvedSettings& s, const std::vector<double>& atol, const Rhs& rhs, double* y,
                     const std::vector<double>& tout, Observer&& observer) {
   auto opt = Dop853Options<double>::make(s.rtol, atol);
   opt.h0 = sc.solver.h0;
@@ -130,10 +124,10 @@ BsResult run_dop853(const Scene& sc, const RunSettings& s, const std::vector<dou
 /// __float128): initial state, output times, rtol and atol converted to S; the rows are the
 /// states rounded back to double. In double this is the plain double run.
 template <class S>
-Trajectory run_cxx_smooth(const Scene& sc, const RunSettings& s) {
+Trajectory run_cxx_smooth(const Scene& sc, const ResolvedSettings& s) {
   constexpr bool extended = !std::is_same_v<S, double>;
   Trajectory tr;
-  tr.engine_label = "cxx-" + s.method;
+  tr.engine_label = "cxx-" + to_string(s.method);
   tr.precision = num::name<S>();
   if constexpr (extended) tr.engine_label += "-" + tr.precision;
   tr.rtol = s.rtol;
@@ -163,7 +157,7 @@ Trajectory run_cxx_smooth(const Scene& sc, const RunSettings& s) {
     if (s.progress) s.progress(static_cast<double>(i + 1) / n);
   };
   if constexpr (!extended) {
-    if (s.method == "dop853") {  // double only (resolve_settings)
+    if (s.method == Method::dop853) {  // double only (resolve_settings)
       tr.stats = run_dop853<kStateSize>(sc, s, tr.atol, rhs, y.data(), tout_d, observer);
       return tr;
     }
@@ -188,14 +182,14 @@ std::array<double, kRoughStateSize> rough_initial(const Scene& sc) {
   return y;
 }
 
-Trajectory run_cxx_rough(const Scene& sc, const RunSettings& s) {
+Trajectory run_cxx_rough(const Scene& sc, const ResolvedSettings& s) {
   Trajectory tr;
-  tr.engine_label = "cxx-" + s.method + "-" + s.law;
+  tr.engine_label = "cxx-" + to_string(s.method) + "-" + to_string(s.law);
   tr.rtol = s.rtol;
   tr.atol = sc.atol_vector(s.rtol, s.atol, kRoughStateSize);
   RoughBarModel model = rough_model(sc);
-  model.printed = s.law == "printed";
-  model.f77_forms = s.method == "faithful";
+  model.printed = s.law == Law::printed;
+  model.f77_forms = s.method == Method::faithful;
   const auto tout = sc.output_times();
   auto y = rough_initial(sc);
   const double n = static_cast<double>(tout.size());
@@ -205,7 +199,7 @@ Trajectory run_cxx_rough(const Scene& sc, const RunSettings& s) {
     tr.work_fric.push_back(yy[kWorkFric]);
     if (s.progress) s.progress(static_cast<double>(tr.rows.size()) / n);
   };
-  if (s.law == "thesis" || s.law == "printed") {
+  if (s.law == Law::thesis || s.law == Law::printed) {
     // Started from rest, eq 3.40 gives no friction direction at t = 0, so the first step sees
     // friction jump from 0 to mu N. The faithful method keeps that value (its steps are the
     // F77 engine's); the others take the right limit, friction in the direction the body
@@ -216,12 +210,12 @@ Trajectory run_cxx_rough(const Scene& sc, const RunSettings& s) {
     std::int64_t start_evaluations = 0;
     // The printed law keeps zero friction at rest with every method (its wrench has no
     // right limit to take from the coulomb analysis: the printed forms are not a limit surface).
-    if (s.method != "faithful" && !m.printed) start_evaluations = set_start_direction(m, y.data());
+    if (s.method != Method::faithful && !m.printed) start_evaluations = set_start_direction(m, y.data());
     const RoughBarThesisRhs rhs{m};
     auto observer = [&](std::size_t, double t, const double* yy) {
       record(t, yy, model.friction(yy[kTheta], yy[kVx], yy[kVy], yy[kOmega]));
     };
-    if (s.method == "dop853") {
+    if (s.method == Method::dop853) {
       tr.stats = run_dop853<kRoughStateSize>(sc, s, tr.atol, rhs, y.data(), tout, observer);
     } else {
       BulirschStoer<double, kRoughStateSize> bs(options_for(sc, s, tr.atol));
@@ -232,7 +226,7 @@ Trajectory run_cxx_rough(const Scene& sc, const RunSettings& s) {
   }
   StickSlipResult r;
   try {
-    if (s.method == "cvode")
+    if (s.method == Method::cvode)
       r = integrate_coulomb_cvode(model, s.rtol, tr.atol, y.data(), tout, record);
     else
       r = integrate_coulomb(model, options_for(sc, s, tr.atol), y.data(), tout, record);
@@ -254,25 +248,23 @@ Trajectory run_cxx_rough(const Scene& sc, const RunSettings& s) {
 
 Trajectory run_scene(const Scene& scene, const RunSettings& settings) {
   RunSettings own = settings;
-  if (own.engine.empty()) own.engine = "cxx";  // run_scene is the C++ engine, whatever the scene names
-  const RunSettings s = resolve_settings(scene, own);
-  if (s.engine == "f77")
+  if (!own.engine) own.engine = Engine::cxx;  // run_scene is the C++ engine, whatever the scene names
+  const ResolvedSettings s = resolve_settings(scene, own);
+  if (s.engine == Engine::f77)
     throw InputError("engine", "f77",
                      "run_scene is the C++ engine; the F77 engine runs through nanopush::engines "
                      "(nanopush/engines/engines.hpp: run_engine)");
-  Trajectory tr;
-  if (scene.rough())
-    tr = run_cxx_rough(scene, s);
-  else if (s.precision == "long")
-    tr = run_cxx_smooth<long double>(scene, s);
-  else if (s.precision == "quad")
-    tr = run_cxx_smooth<num::quad>(scene, s);
-  else
-    tr = run_cxx_smooth<double>(scene, s);
-  return finish_run(scene, s, std::move(tr));
+  return finish_run(scene, s, run_cxx(scene, s));
 }
 
-Trajectory finish_run(const Scene& scene, const RunSettings& s, Trajectory tr) {
+Trajectory run_cxx(const Scene& scene, const ResolvedSettings& s) {
+  if (scene.rough()) return run_cxx_rough(scene, s);
+  if (s.precision == Precision::long_) return run_cxx_smooth<long double>(scene, s);
+  if (s.precision == Precision::quad) return run_cxx_smooth<num::quad>(scene, s);
+  return run_cxx_smooth<double>(scene, s);
+}
+
+Trajectory finish_run(const Scene& scene, const ResolvedSettings& s, Trajectory tr) {
   if (!tr.stats.ok()) {
     tr.complete = false;
     if (!s.allow_partial)

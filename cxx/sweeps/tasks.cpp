@@ -89,9 +89,11 @@ class RunTask final : public Task {
   }
 
   [[nodiscard]] std::string identity() const override {
-    return "run\n" + base_.to_toml() + "\nengine=" + settings_.engine + " method=" + settings_.method +
-           " law=" + settings_.law + " rtol=" + fmt(settings_.rtol) + " atol=" + fmt(settings_.atol) +
-           " precision=" + settings_.precision;
+    // The journal's identity of the task: the settings as given ("" = the scene's).
+    return "run\n" + base_.to_toml() + "\nengine=" + name_or_empty(settings_.engine) +
+           " method=" + name_or_empty(settings_.method) + " law=" + name_or_empty(settings_.law) +
+           " rtol=" + fmt(settings_.rtol) + " atol=" + fmt(settings_.atol) +
+           " precision=" + name_or_empty(settings_.precision);
   }
 
  private:

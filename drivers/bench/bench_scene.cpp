@@ -38,7 +38,7 @@ Problem problem_from_scene(const Scene& sc) {
   return p;
 }
 
-bool has_exact_solution(const Scene& sc) { return sc.model == "smooth" && sc.initial[kOmega] == 0; }
+bool has_exact_solution(const Scene& sc) { return !sc.rough() && sc.initial[kOmega] == 0; }
 
 std::vector<quad> smooth_exact(const Scene& sc, const Problem& p) {
   if (!has_exact_solution(sc))
@@ -256,19 +256,18 @@ Solve extended_run(const Scene& sc, const Problem& p, double rtol, bool modern) 
     (void)modern;
     return quad_legacy_run(sc, p, bench_rough_model(sc), rtol);
   }
-  if (sc.model != "smooth") throw InputError("surface.kind", sc.model, "the benchmark supports: smooth, rough");
   const SmoothBarRhs rhs{sc.mass, sc.inertia, sc.push};
   return solve_cxx_bs<quad, kStateSize>(p, rhs, rtol, modern, nullptr);
 }
 
 std::vector<std::string> engine_names(const Scene& sc) {
-  if (sc.rough() && sc.surface.law == "coulomb") {
+  if (sc.rough() && sc.surface.law == Law::coulomb) {
     std::vector<std::string> v = {"cxx-events", "cvode-events"};
     for (const auto& n : generic_engine_names()) v.push_back(n);
     return v;
   }
   std::vector<std::string> v = generic_engine_names();
-  if (sc.model == "smooth") v.insert(v.begin() + 3, "f77-native");
+  if (!sc.rough()) v.insert(v.begin() + 3, "f77-native");
   v.push_back("cxx-modern-odex");  // run only when named
   return v;
 }
@@ -277,7 +276,7 @@ Bench make_bench(const Scene& sc, const EngineConfig& cfg) {
   Bench b;
   b.problem = problem_from_scene(sc);
   const Problem& p = b.problem;
-  if (sc.model == "smooth") {
+  if (!sc.rough()) {
     auto rhs = std::make_shared<const SmoothBarRhs>(SmoothBarRhs{sc.mass, sc.inertia, sc.push});
     if (has_exact_solution(sc)) {
       b.reference.kind = "exact";
@@ -300,7 +299,7 @@ Bench make_bench(const Scene& sc, const EngineConfig& cfg) {
       auto it = std::find_if(b.engines.begin(), b.engines.end(), [](const Engine& x) { return x.name == "f77-callback"; });
       b.engines.insert(it == b.engines.end() ? b.engines.end() : it + 1, std::move(e));
     }
-  } else if (sc.rough() && sc.surface.law == "coulomb") {
+  } else if (sc.rough() && sc.surface.law == Law::coulomb) {
     // Stick-slip: the event-locating integrators (C++ BS and CVODE) against every engine
     // integrating the thesis-law ODE without event location (which chatters at rest).
     const RoughBarModel m = bench_rough_model(sc);

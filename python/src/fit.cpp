@@ -28,7 +28,7 @@ fit::FitResult fit_scene(const Scene& scene, const py::object& data, const py::o
                          const py::object& sigma, const std::string& gradients, double rtol, int max_evaluations) {
   fit::FitOptions o;
   o.free = keys_of(free);
-  o.law = law;
+  o.law = parse_optional_choice<Law>("--law", law);
   o.gradients = gradients;
   o.rtol = rtol;
   o.max_evaluations = max_evaluations;

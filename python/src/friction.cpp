@@ -26,10 +26,10 @@ py::object wrench_tuple(const std::array<py::array_t<double>, 3>& w) {
 
 py::object friction_wrench(const py::object& a, const py::object& b, const py::object& R, const py::object& alpha,
                            const py::object& sense, const py::object& mu_n, const std::string& engine) {
-  if (engine != "cxx" && engine != "f77") throw InputError("engine", engine, "must be cxx or f77");
+  const bool f77 = parse_choice<Engine>("engine", engine) == Engine::f77;
   const std::array<py::handle, 6> in = {a, b, R, alpha, sense, mu_n};
   const std::array<const char*, 6> names = {"a", "b", "R", "alpha", "sense", "muN"};
-  if (engine == "f77") {
+  if (f77) {
     return wrench_tuple(broadcast_apply<6, 3>(in, names, [](const double* x, double* w) {
       const int s = sense_of(x[4]);
       (void)rectangle_friction_wrench_checked(x[0], x[1], x[5], x[2], x[3], s);  // the library's checks

@@ -48,12 +48,7 @@ void check_solver(const std::string& solver) {
     throw InputError("solver", solver, "must be brent, eigen, brent_f77 or lapack_f77");
 }
 
-icor::DynamicIntegrator parse_integrator(const std::string& s) {
-  if (s == "automatic") return icor::DynamicIntegrator::automatic;
-  if (s == "bulirsch-stoer" || s == "bulirsch_stoer") return icor::DynamicIntegrator::bulirsch_stoer;
-  if (s == "cvode") return icor::DynamicIntegrator::cvode;
-  throw InputError("integrator", s, "must be automatic, bulirsch-stoer or cvode");
-}
+icor::DynamicIntegrator parse_integrator(const std::string& s) { return icor::parse_dynamic_integrator("integrator", s); }
 
 py::object optional_float(const std::optional<double>& v) { return v ? py::object(py::float_(*v)) : py::none(); }
 

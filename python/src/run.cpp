@@ -44,10 +44,10 @@ py::array_t<double> copy_vector(const std::vector<double>& v) {
 RunResult run(const Scene& scene, const std::string& engine, const std::string& method, const std::string& law,
               const py::object& rtol, const py::object& atol, const std::string& precision) {
   RunSettings rs;
-  rs.engine = engine;  // "" = the scene's (run_engine)
-  rs.method = method;
-  rs.law = law;
-  rs.precision = precision;
+  rs.engine = parse_optional_choice<Engine>("engine", engine);  // "" = the scene's (run_engine)
+  rs.method = parse_optional_choice<Method>("method", method);
+  rs.law = parse_optional_choice<Law>("law", law);
+  rs.precision = parse_optional_choice<Precision>("precision", precision);
   rs.rtol = 0.0;
   rs.atol = -1.0;
   if (!rtol.is_none()) {
@@ -81,8 +81,8 @@ RunResult run(const Scene& scene, const std::string& engine, const std::string& 
 py::dict compare(const Scene& scene, const std::string& method, const std::string& law, const py::object& rtol,
                  const py::object& atol, const py::object& tolerance) {
   CompareSettings cs;
-  cs.method = method.empty() ? "faithful" : method;
-  cs.law = law;
+  cs.method = method.empty() ? Method::faithful : parse_choice<Method>("method", method);
+  cs.law = parse_optional_choice<Law>("law", law);
   if (!rtol.is_none()) {
     cs.rtol = rtol.cast<double>();
     require_positive("rtol", cs.rtol);
@@ -115,7 +115,7 @@ py::dict compare(const Scene& scene, const std::string& method, const std::strin
   d["kind"] = same ? "same-steps" : "convergence";
   d["tolerance"] = same ? py::object(py::float_(r.tolerance)) : py::object(py::none());
   d["agree"] = r.agree;
-  d["law"] = r.law;
+  d["law"] = to_string(r.law);
   d["cxx"] = result(r.cxx);
   d["f77"] = result(r.f77);
   py::dict cols;

@@ -73,8 +73,8 @@ py::dict info(const Scene& s) {
   for (int i = 0; i < kStateSize; ++i) init[names[i]] = s.initial[static_cast<std::size_t>(i)];
   d["initial"] = init;
   py::dict surf;
-  surf["kind"] = s.surface.kind;
-  surf["law"] = s.surface.law;
+  surf["kind"] = to_string(s.surface.kind);
+  surf["law"] = to_string(s.surface.law);
   surf["mu"] = s.surface.mu;
   surf["f_vdw"] = s.surface.f_vdw;
   surf["g"] = s.surface.g;
@@ -85,9 +85,9 @@ py::dict info(const Scene& s) {
   sol["samples"] = s.solver.samples;
   sol["rtol"] = s.solver.rtol;
   sol["atol"] = s.solver.atol;
-  sol["engine"] = s.solver.engine;
-  sol["method"] = s.solver.method;
-  sol["precision"] = s.solver.precision;
+  sol["engine"] = to_string(s.solver.engine);
+  sol["method"] = to_string(s.solver.method);
+  sol["precision"] = to_string(s.solver.precision);
   sol["h0"] = s.solver.h0;
   sol["hmax"] = s.solver.hmax;
   sol["max_steps"] = s.solver.max_steps;

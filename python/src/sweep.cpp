@@ -83,9 +83,9 @@ py::tuple run_sweep(const std::string& task_name, const py::object& scene_obj, c
     if (scene_obj.is_none()) throw InputError("task", "run", "a run sweep needs a scene");
     Scene sc = scene_obj.cast<Scene>();
     RunSettings rs;
-    rs.engine = engine;
-    rs.method = method;
-    rs.law = law;
+    rs.engine = parse_optional_choice<Engine>("engine", engine);
+    rs.method = parse_optional_choice<Method>("method", method);
+    rs.law = parse_optional_choice<Law>("law", law);
     if (!fixed.empty()) {
       std::vector<SceneSetting> s;
       for (auto item : fixed) {

@@ -6,3 +6,6 @@ set_tests_properties(architecture.layers PROPERTIES PASS_REGULAR_EXPRESSION "lay
 add_test(NAME architecture.layers_selftest
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/check_layers_selftest.sh ${CMAKE_CURRENT_BINARY_DIR})
 set_tests_properties(architecture.layers_selftest PROPERTIES PASS_REGULAR_EXPRESSION "layers selftest: ok")
+# Choices are types: no engine/method/law/kind compared as text outside scenes/choices.hpp.
+add_test(NAME architecture.choices COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/check_choices.sh ${PROJECT_SOURCE_DIR})
+set_tests_properties(architecture.choices PROPERTIES PASS_REGULAR_EXPRESSION "choices: ok")

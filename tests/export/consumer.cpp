@@ -60,10 +60,10 @@ int main(int argc, char** argv) {
   try {
     const nanopush::Scene scene = nanopush::load_scene(argv[1]);
     nanopush::RunSettings settings;
-    settings.engine = argc > 2 ? argv[2] : "";
+    settings.engine = nanopush::parse_optional_choice<nanopush::Engine>("engine", argc > 2 ? argv[2] : "");
     // The C++ engine through nanopush::core alone (simulate.hpp), the F77 one through nanopush::engines.
-    const nanopush::Trajectory tr =
-        settings.engine == "cxx" ? nanopush::run_scene(scene, settings) : nanopush::run_engine(scene, settings);
+    const nanopush::Trajectory tr = settings.engine == nanopush::Engine::cxx ? nanopush::run_scene(scene, settings)
+                                                                            : nanopush::run_engine(scene, settings);
     std::cout << "t,x,y,theta,vx,vy,omega,fx,fy,mf\n";
     for (const auto& r : tr.rows) {
       for (std::size_t i = 0; i < r.size(); ++i) std::cout << (i ? "," : "") << nanopush::csv_number(r[i]);

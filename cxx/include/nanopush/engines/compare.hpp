@@ -11,6 +11,7 @@
 //    the sum of the engines' errors at rtol (each against its own tight run) plus a rounding
 //    floor. Figures are relative to the column's vector scale (x,y | vx,vy | fx,fy share one).
 #pragma once
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,8 +25,8 @@ inline constexpr double kCompareTightRtol = 1e-14;
 inline constexpr double kCompareRoundingFloor = 1e-13;
 
 struct CompareSettings {
-  std::string method = "faithful";  ///< the C++ configuration: faithful | modern | dop853
-  std::string law;                  ///< thesis | printed; "" = the scene's (thesis for a coulomb scene)
+  Method method = Method::faithful;  ///< the C++ configuration: faithful | modern | dop853
+  std::optional<Law> law;            ///< thesis | printed; unset = the scene's (thesis for a coulomb scene)
   double rtol = 0;                  ///< 0 = the scene's
   double atol = -1;                 ///< < 0 = the scene's
   double tolerance = 0;             ///< > 0: judge by same steps against it; 0 = by the method
@@ -46,7 +47,7 @@ struct ColumnVerdict {
 
 struct EngineComparison {
   CompareKind kind = CompareKind::same_steps;
-  std::string law;                 ///< the law both engines ran
+  Law law = Law::thesis;           ///< the law both engines ran
   bool law_from_coulomb = false;   ///< the scene asked for coulomb; compared under thesis instead
   double rtol = 0;                 ///< the resolved rtol of the runs
   double tolerance = 0;            ///< same steps: the bound on relative; convergence: 0
@@ -69,7 +70,7 @@ struct EngineComparison {
 
 /// The law a comparison runs under: `law`, or the scene's (thesis for a coulomb scene).
 /// InputError for coulomb (the F77 engine implements thesis and printed only).
-std::string compare_law(const Scene& scene, const std::string& law, bool* from_coulomb = nullptr);
+Law compare_law(const Scene& scene, std::optional<Law> law, bool* from_coulomb = nullptr);
 
 /// Run both engines (and, for a convergence comparison, both again at kCompareTightRtol) and
 /// judge every column. InputError for bad settings; a run that fails is reported through

@@ -6,12 +6,12 @@
 
 namespace nanopush {
 
-/// Integrate the scene with the engine `settings.engine` names (cxx | f77; "" = the scene's
-/// solver.engine). Same contract as run_scene: SolverError on failure (unless allow_partial),
+/// Integrate the scene with the engine `settings.engine` names (cxx | f77; unset = the
+/// scene's solver.engine). Same contract as run_scene: SolverError on failure (unless allow_partial),
 /// InputError for bad settings.
 Trajectory run_engine(const Scene& scene, const RunSettings& settings = {});
 
 /// The F77 engine alone (BSINT with the F77 right-hand sides); `resolved` from resolve_settings.
-Trajectory run_f77(const Scene& scene, const RunSettings& resolved);
+Trajectory run_f77(const Scene& scene, const ResolvedSettings& resolved);
 
 }  // namespace nanopush

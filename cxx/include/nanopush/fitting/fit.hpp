@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -54,7 +55,7 @@ struct FitOptions {
   std::vector<std::string> free;  ///< scene keys to fit (numeric keys; solver.* refused)
   /// Bounds per key overriding the key's validation range (scene_keys: "> 0", "[0, 10]"...).
   std::map<std::string, std::array<double, 2>> bounds;
-  std::string law;               ///< "" = the scene's surface.law (rough scenes)
+  std::optional<Law> law;        ///< unset = the scene's surface.law (rough scenes): thesis | coulomb
   double rtol = 1e-10;           ///< forward solves (and sensitivities)
   std::string gradients = "auto";
   int max_evaluations = 100;     ///< Levenberg-Marquardt function evaluations
@@ -123,14 +124,15 @@ struct ModelPoses {
   std::vector<std::vector<std::array<double, 3>>> jac;  ///< empty without derivatives
 };
 ModelPoses model_poses(const Scene& scene, const std::vector<std::string>& free, const std::vector<double>& p,
-                       const std::vector<double>& times, const std::string& law, double rtol, bool derivatives,
+                       const std::vector<double>& times, std::optional<Law> law, double rtol, bool derivatives,
                        const std::string& gradients = "auto", std::int64_t* solves = nullptr);
 
 /// Synthetic data: the scene's forward model at `times` (default: its output times) with
 /// seeded Gaussian noise of the given sigma per column (x, y, theta; a column with sigma
 /// <= 0 is not observed).
 Observations synthesize(const Scene& scene, const std::array<double, 3>& sigma, std::uint64_t seed,
-                        const std::string& law = "", const std::vector<double>& times = {}, double rtol = 1e-10);
+                        std::optional<Law> law = std::nullopt, const std::vector<double>& times = {},
+                        double rtol = 1e-10);
 /// Observations as CSV text (t, x, sigma_x, ...), readable by parse_observations.
 std::string observations_csv(const Observations& obs);
 

@@ -38,6 +38,9 @@ QuasiStaticIcor rectangle_quasi_static(double a, double b, double yn);
 
 enum class DynamicIntegrator { automatic, bulirsch_stoer, cvode };
 std::string to_string(DynamicIntegrator i);
+/// The integrator named `text` (automatic, bulirsch-stoer or bulirsch_stoer, cvode), or
+/// InputError naming `field`.
+DynamicIntegrator parse_dynamic_integrator(const std::string& field, const std::string& text);
 
 /// One reading of the dynamic iCOR.
 struct DynamicIcorSample {

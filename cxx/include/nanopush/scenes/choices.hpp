@@ -92,6 +92,12 @@ std::string choice_names(std::string_view last = " or ") {
   return s;
 }
 
+/// The name of a choice that may be unset ("" when unset: the scene's).
+template <class E>
+std::string name_or_empty(const std::optional<E>& e) {
+  return e ? std::string(name_of(*e)) : std::string();
+}
+
 /// The value of `text`, or InputError "field = text: must be a, b or c".
 template <class E>
 E parse_choice(const std::string& field, std::string_view text) {

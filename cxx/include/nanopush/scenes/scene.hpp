@@ -12,18 +12,19 @@
 #include <toml++/toml.h>
 
 #include "nanopush/models/rigid_body.hpp"
+#include "nanopush/scenes/choices.hpp"
 #include "nanopush/scenes/scene_keys.hpp"
 
 namespace nanopush {
 
 /// The support surface (docs/models.md §A, §C).
 struct SurfaceSettings {
-  std::string kind = "smooth";  ///< smooth | rough
+  SurfaceKind kind = SurfaceKind::smooth;
   double mu = 0;                ///< Coulomb friction coefficient
   double f_vdw = 0;             ///< adhesion (Van der Waals) load [N]
   double g = 9.81;              ///< gravity [m/s^2]
   double normal_load = 0;       ///< N [N]; 0 = m g + f_vdw
-  std::string law = "thesis";   ///< thesis | printed | coulomb
+  Law law = Law::thesis;        ///< rough surfaces: the friction law
 };
 
 struct SolverSettings {
@@ -31,9 +32,9 @@ struct SolverSettings {
   int samples = 401;           ///< output times, evenly spaced over [0, t_end], both ends included
   double rtol = 1e-10;
   double atol = 0;             ///< 0 = automatic: rtol times each state's natural scale
-  std::string engine = "cxx";  ///< cxx | f77
-  std::string method = "auto";  ///< auto | faithful | modern | dop853 | cvode (C++ engine)
-  std::string precision = "double";  ///< double | long | quad (long, quad: C++ engine, smooth surface)
+  Engine engine = Engine::cxx;
+  Method method = Method::automatic;        ///< the C++ engine's method
+  Precision precision = Precision::double_;  ///< long, quad: C++ engine, smooth surface
   double h0 = 0;               ///< initial step [s]; 0 = 1% of t_end
   double hmax = 0;             ///< largest step [s]; 0 = none
   long max_steps = 100000;     ///< attempted steps before giving up
@@ -99,7 +100,7 @@ struct Scene {
   /// The friction limit mu N [N] of a rough scene: the largest friction force the surface
   /// exerts (the one place it is computed).
   [[nodiscard]] double friction_limit() const { return surface.mu * normal_load(); }
-  [[nodiscard]] bool rough() const { return surface.kind == "rough"; }
+  [[nodiscard]] bool rough() const { return surface.kind == SurfaceKind::rough; }
 
   /// Set one key after loading, validated as the file is: the whole scene is read again from
   /// its document with the new value, so a value out of range, a key this scene's model does
@@ -131,7 +132,7 @@ class SceneBuilder {
 /// Why extended precision (long, quad) cannot run with this surface, engine and method, or
 /// "" when it can: the right-hand side must be templated on the scalar (the smooth bar in the
 /// C++ Bulirsch–Stoer). One rule for scene files and run settings.
-std::string extended_precision_obstacle(bool rough, const std::string& engine, const std::string& method);
+std::string extended_precision_obstacle(bool rough, Engine engine, Method method);
 
 /// The largest scene file load_scene reads [bytes].
 inline constexpr std::size_t kMaxSceneBytes = 1u << 20;

@@ -3,6 +3,7 @@
 #pragma once
 #include <array>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -10,6 +11,7 @@
 #include "nanopush/models/rigid_body.hpp"
 #include "nanopush/numerics/scalar.hpp"
 #include "nanopush/models/rough_bar.hpp"
+#include "nanopush/scenes/choices.hpp"
 #include "nanopush/scenes/scene.hpp"
 
 namespace nanopush {
@@ -28,28 +30,40 @@ using TrajectoryRow = std::array<double, 10>;
 /// method auto: dop853 for rtol >= this (where dop853 runs), modern below (docs/dop853.md).
 inline constexpr double kAutoDop853RtolMin = 1e-11;
 
+/// What a run asks for. Every choice left unset is the scene's (its solver.engine,
+/// solver.method, surface.law, solver.precision); resolve_settings fills them in and validates
+/// the combination. Front ends read names with parse_optional_choice (choices.hpp).
 struct RunSettings {
-  /// Every choice left empty is the scene's (its solver.engine, solver.method, surface.law,
-  /// solver.precision); resolve_settings fills them in and validates the combination.
-  std::string engine;     ///< cxx | f77; "" = the scene's (run_scene: always cxx)
-  /// faithful | modern (C++ BS; f77 is always the thesis algorithm) | dop853 (Dormand-Prince
-  /// 8(5,3) with dense output, double; smooth scenes and the thesis law: docs/dop853.md) |
-  /// cvode (SUNDIALS CVODE cross-check, rough scenes under the coulomb law only) | auto (by
-  /// rtol); "" = the scene's
-  std::string method;
-  /// Rough scenes: friction law override ("" = the scene's): thesis | printed | coulomb
-  std::string law;
+  std::optional<Engine> engine;  ///< cxx | f77 (run_scene: always cxx)
+  /// faithful (C++ BS, the F77 engine's steps; f77 is always the thesis algorithm) | modern |
+  /// dop853 (Dormand-Prince 8(5,3) with dense output, double; smooth scenes and the thesis
+  /// law: docs/dop853.md) | cvode (SUNDIALS CVODE cross-check, rough scenes under the
+  /// coulomb law only) | automatic (by rtol)
+  std::optional<Method> method;
+  std::optional<Law> law;  ///< rough scenes: thesis | printed | coulomb
   /// Return what was computed when the integrator gives up (status in stats) instead of
   /// throwing; used to show where the thesis law chatters.
   bool allow_partial = false;
   double rtol = 0;                  ///< 0 = the scene's
   double atol = -1;                 ///< < 0 = the scene's (0 = automatic scaling)
-  /// Scalar of the integration: double | long (x87 80-bit long double) | quad (__float128);
-  /// "" = the scene's solver.precision. long and quad need engine cxx, method faithful or
-  /// modern, on a smooth scene (the right-hand side templated on the scalar); each costs
-  /// more wall time per RHS call (docs/scenes.md).
-  std::string precision;
+  /// Scalar of the integration: double | long (x87 80-bit long double) | quad (__float128).
+  /// long and quad need engine cxx, method faithful or modern, on a smooth scene (the
+  /// right-hand side templated on the scalar); each costs more wall time per RHS call
+  /// (docs/scenes.md).
+  std::optional<Precision> precision;
   /// Called at each output sample with the fraction done (for progress display).
+  std::function<void(double)> progress;
+};
+
+/// RunSettings resolved against a scene: every choice made (method automatic replaced by the
+/// method it picks), rtol and atol filled in, the combination validated.
+struct ResolvedSettings {
+  Engine engine = Engine::cxx;
+  Method method = Method::faithful;
+  Law law = Law::thesis;
+  Precision precision = Precision::double_;
+  bool allow_partial = false;
+  double rtol = 0, atol = 0;
   std::function<void(double)> progress;
 };
 
@@ -80,9 +94,12 @@ struct Trajectory {
 /// (nanopush::engines runs that one: run_engine).
 Trajectory run_scene(const Scene& scene, const RunSettings& settings = {});
 
+/// The C++ engine on settings already resolved (no finish_run: a failed run is returned as is).
+Trajectory run_cxx(const Scene& scene, const ResolvedSettings& resolved);
+
 /// The end of every engine's run: a failed run is marked incomplete and throws SolverError
 /// unless `resolved.allow_partial`.
-Trajectory finish_run(const Scene& scene, const RunSettings& resolved, Trajectory tr);
+Trajectory finish_run(const Scene& scene, const ResolvedSettings& resolved, Trajectory tr);
 
 /// One trajectory row from a state y (kX..kOmega) and the friction wrench at it.
 TrajectoryRow make_row(double t, const double* y, const WorldWrench& f = {});
@@ -90,7 +107,8 @@ TrajectoryRow make_row(double t, const double* y, const WorldWrench& f = {});
 /// The rough-surface model of a rough scene (mass, inertia, contact, mu N, push).
 RoughBarModel rough_model(const Scene& scene);
 
-/// Settings as resolved against the scene (engine/method/rtol/atol defaults filled in).
-RunSettings resolve_settings(const Scene& scene, RunSettings s);
+/// Settings as resolved against the scene (choices, rtol and atol filled in and validated);
+/// InputError naming the field a bad value came from.
+ResolvedSettings resolve_settings(const Scene& scene, const RunSettings& settings);
 
 }  // namespace nanopush
