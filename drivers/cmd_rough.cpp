@@ -151,7 +151,7 @@ void reproduce_rough(ReproduceContext& ctx) {
     const Trajectory cc = run_engine(sc, co_c), cv = run_engine(sc, co_v);
     // The printed law (eqs 3.45-3.48 as printed, docs/rough.md), both engines.
     RunSettings pr_c = th_c, pr_f = th_f;
-    pr_c.law = pr_f.law = "printed";
+    pr_c.law = pr_f.law = Law::printed;
     const Trajectory pc_ = run_engine(sc, pr_c), pf_ = run_engine(sc, pr_f);
     for (auto& [tr, tag] : {std::pair{&tc, "thesis_cxx"}, std::pair{&tf, "thesis_f77"}, std::pair{&cc, "coulomb_cxx"},
                             std::pair{&cv, "coulomb_cvode"}, std::pair{&pc_, "printed_cxx"},

@@ -28,7 +28,7 @@ Scene smooth_scene(const std::string& c = "a") {
                     ("fig3_6" + c + ".toml"));
 }
 
-const Engine& find(const std::vector<Engine>& v, const std::string& name, const std::string& prec = "double") {
+const bench::Engine& find(const std::vector<bench::Engine>& v, const std::string& name, const std::string& prec = "double") {
   for (const auto& e : v)
     if (e.name == name && e.precision == prec) return e;
   throw std::runtime_error("no engine " + name + " " + prec);

@@ -27,10 +27,10 @@ TEST_CASE("compare: faithful is judged by same steps and its runs are run_engine
   CHECK(r.tolerance == 100 * r.rtol);
   REQUIRE(r.columns.size() == trajectory_columns().size() - 1);
   RunSettings a;
-  a.engine = Engine::cxx;
+  a.engine = nanopush::Engine::cxx;
   a.method = Method::faithful;
   RunSettings b;
-  b.engine = Engine::f77;
+  b.engine = nanopush::Engine::f77;
   const Trajectory ta = run_engine(sc, a), tb = run_engine(sc, b);
   REQUIRE(ta.rows.size() == r.cxx.rows.size());
   REQUIRE(tb.rows.size() == r.f77.rows.size());

@@ -406,7 +406,7 @@ TEST_CASE("dop853: scenes refuse what dop853 does not do, naming field, value an
     CHECK_THROWS_WITH(run_scene(smooth, rs), Catch::Contains("rtol = 1e-15") && Catch::Contains("must be >= 2.22e-15"));
   }
   SECTION("the f77 engine") {
-    rs.engine = Engine::f77;
+    rs.engine = nanopush::Engine::f77;
     CHECK_THROWS_AS(resolve_settings(smooth, rs), InputError);
   }
   SECTION("an unknown method lists the allowed ones") {

@@ -110,9 +110,9 @@ TEST_CASE("Every Fig 3.6 preset: identical counts and theta to 1e-12, C++ faithf
   for (const char* c : {"a", "b", "c", "d", "e", "f", "g", "h"}) {
     const Scene sc = load_scene(std::string(NANOPUSH_SOURCE_DIR) + "/drivers/scenes/thesis/fig3_6" + c + ".toml");
     RunSettings a, b;
-    a.engine = Engine::cxx;
+    a.engine = nanopush::Engine::cxx;
     a.method = Method::faithful;
-    b.engine = Engine::f77;
+    b.engine = nanopush::Engine::f77;
     const Trajectory ta = run_engine(sc, a), tb = run_engine(sc, b);
     INFO("fig3_6" << c);
     CHECK(ta.stats.nfcn == tb.stats.nfcn);
@@ -127,7 +127,7 @@ TEST_CASE("Fig 3.6, F77 engine: exact pendulum at rtol 1e-12", "[smooth][numeric
   for (const char* c : {"a", "b", "c", "d", "e", "f", "g", "h"}) {
     const Scene sc = load_scene(std::string(NANOPUSH_SOURCE_DIR) + "/drivers/scenes/thesis/fig3_6" + c + ".toml");
     RunSettings b;
-    b.engine = Engine::f77;
+    b.engine = nanopush::Engine::f77;
     const Trajectory tb = run_engine(sc, b);
     const Pendulum<double> ex(sc.push.theta_equilibrium(), sc.initial[kTheta], sc.push.force * sc.push.lever(),
                               sc.inertia);

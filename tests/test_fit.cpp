@@ -132,7 +132,7 @@ TEST_CASE("fit sensitivities: smooth scene against central differences of BS sol
   const Scene s = short_scene("thesis/fig3_6a.toml", 0.4e-9, 41);
   const std::vector<std::string> free = {"push.force", "initial.theta"};
   const std::vector<double> p = {s.push.force, s.initial[kTheta]};
-  const ModelPoses m = model_poses(s, free, p, s.output_times(), "", 1e-12, true);
+  const ModelPoses m = model_poses(s, free, p, s.output_times(), std::nullopt, 1e-12, true);
   REQUIRE(m.jac.size() == 41);
   for (std::size_t k = 0; k < free.size(); ++k) {
     const auto fd = engine_difference(s, free[k], 1e-4, 1e-13, "faithful");
@@ -145,7 +145,7 @@ TEST_CASE("fit sensitivities: rough scene, thesis law, against central differenc
   const Scene s = short_scene("thesis/fig3_20.toml", 0.4e-9, 41);
   const std::vector<std::string> free = {"surface.mu", "push.force"};
   const std::vector<double> p = {s.surface.mu, s.push.force};
-  const ModelPoses m = model_poses(s, free, p, s.output_times(), "thesis", 1e-12, true);
+  const ModelPoses m = model_poses(s, free, p, s.output_times(), Law::thesis, 1e-12, true);
   for (std::size_t k = 0; k < free.size(); ++k) {
     const auto fd = engine_difference(s, free[k], 1e-4, 1e-13, "modern", "thesis");
     INFO(free[k]);
@@ -160,11 +160,11 @@ TEST_CASE("fit gradients: coulomb law by differences of whole solves, across sti
   // step 1e-5 at rtol 1e-13: 8e-6 relative (a step of 1e-3 moves the stick across the sample,
   // and the differences there mean nothing: 7e-4).
   const Scene s = short_scene("bench/stick_mu015.toml", 0.8e-9, 41);
-  const ModelPoses m = model_poses(s, {"surface.mu"}, {s.surface.mu}, s.output_times(), "coulomb", 1e-10, true);
+  const ModelPoses m = model_poses(s, {"surface.mu"}, {s.surface.mu}, s.output_times(), Law::coulomb, 1e-10, true);
   const auto fd = engine_difference(s, "surface.mu", 1e-5, 1e-13, "modern", "coulomb");
   CHECK(relative_difference(m.jac, 0, fd) < 3e-5);
   CHECK_THAT(input_error_of([&] {
-               (void)model_poses(s, {"surface.mu"}, {s.surface.mu}, s.output_times(), "coulomb", 1e-10, true,
+               (void)model_poses(s, {"surface.mu"}, {s.surface.mu}, s.output_times(), Law::coulomb, 1e-10, true,
                                  "sensitivities");
              }),
              Catch::Contains("rest events"));
@@ -175,7 +175,7 @@ namespace {
 /// Synthetic data at the truth, a start away from it, the fit; truth within 3 stderr.
 FitResult fit_synthetic(const Scene& truth, const std::string& key, double start, const std::array<double, 3>& sigma,
                         const std::string& law, std::uint64_t seed) {
-  const Observations obs = synthesize(truth, sigma, seed, law);
+  const Observations obs = synthesize(truth, sigma, seed, parse_optional_choice<Law>("law", law));
   Scene s = truth;
   s.set(key, start);
   FitOptions o;
@@ -216,7 +216,7 @@ TEST_CASE("fit synthetic: rough scene, coulomb law, surface.mu", "[fit][numeric]
 
 TEST_CASE("fit identifiability: mu and the adhesion load enter only as mu*N", "[fit][numeric]") {
   const Scene s = short_scene("thesis/fig3_20.toml", 0.8e-9, 41);
-  const Observations obs = synthesize(s, {1e-9, 1e-9, 0.01}, 21, "thesis");
+  const Observations obs = synthesize(s, {1e-9, 1e-9, 0.01}, 21, Law::thesis);
   Scene start = s;
   start.set("surface.mu", 0.1);
   FitOptions o;

@@ -44,7 +44,7 @@ double theta_error(const Scene& sc, const Trajectory& tr, bool rounded = false) 
 
 RunSettings settings(const char* precision, const char* method, double rtol) {
   RunSettings rs;
-  rs.engine = Engine::cxx;
+  rs.engine = nanopush::Engine::cxx;
   rs.precision = parse_optional_choice<Precision>("precision", precision);
   rs.method = parse_optional_choice<Method>("method", method);
   rs.rtol = rtol;
@@ -163,11 +163,11 @@ TEST_CASE("precision other than double is refused where the RHS is double only",
   const Scene rough = load_scene(preset("fig3_27"));
   RunSettings rs;
   rs.precision = Precision::quad;
-  rs.engine = Engine::f77;
+  rs.engine = nanopush::Engine::f77;
   CHECK_THROWS_AS(run_engine(smooth, rs), InputError);
   CHECK_THROWS_WITH(run_engine(smooth, rs), Contains("precision = quad") && Contains("engine = cxx") &&
                                                Contains("F77"));
-  rs.engine = Engine::cxx;
+  rs.engine = nanopush::Engine::cxx;
   rs.precision = Precision::long_;
   CHECK_THROWS_AS(run_engine(rough, rs), InputError);
   CHECK_THROWS_WITH(run_engine(rough, rs), Contains("precision = long") && Contains("smooth scene"));
@@ -187,7 +187,7 @@ TEST_CASE("precision other than double is refused where the RHS is double only",
   // double stays allowed everywhere.
   RunSettings d;
   d.precision = Precision::double_;
-  d.engine = Engine::f77;
+  d.engine = nanopush::Engine::f77;
   CHECK(resolve_settings(rough, d).precision == Precision::double_);
 }
 
@@ -220,7 +220,7 @@ samples = 5
   CHECK(run_engine(sc, in_double).precision == "double");
   // A scene's extended precision with the F77 engine asked on the command line: the error
   // names the scene's key.
-  from_scene.engine = Engine::f77;
+  from_scene.engine = nanopush::Engine::f77;
   CHECK_THROWS_WITH(run_engine(sc, from_scene), Contains("solver.precision = long"));
 }
 

@@ -286,8 +286,8 @@ TEST_CASE("Thesis law: C++ faithful and F77 agree to 1e-9 in theta wherever it d
   for (int fig = 12; fig <= 24; ++fig) {
     const Scene sc = preset(fig);
     RunSettings a, b;
-    a.engine = Engine::cxx;
-    b.engine = Engine::f77;
+    a.engine = nanopush::Engine::cxx;
+    b.engine = nanopush::Engine::f77;
     const Trajectory ta = run_engine(sc, a), tb = run_engine(sc, b);
     REQUIRE(ta.rows.size() == tb.rows.size());
     double d = 0;
@@ -299,7 +299,7 @@ TEST_CASE("Thesis law: C++ faithful and F77 agree to 1e-9 in theta wherever it d
   // Where it chatters (mu >= 0.13) both stop at the step budget, at the same sample.
   RunSettings a, b;
   a.allow_partial = b.allow_partial = true;
-  b.engine = Engine::f77;
+  b.engine = nanopush::Engine::f77;
   const Trajectory ta = run_engine(preset(27), a), tb = run_engine(preset(27), b);
   CHECK_FALSE(ta.complete);
   CHECK_FALSE(tb.complete);

@@ -54,7 +54,7 @@ TEST_CASE("Thesis law from rest: the faithful method keeps the F77 engine's star
   const Scene sc = preset(17);
   RunSettings c, f;
   c.method = Method::faithful;
-  f.engine = Engine::f77;
+  f.engine = nanopush::Engine::f77;
   const Trajectory a = run_engine(sc, c), b = run_engine(sc, f);
   CHECK(a.stats.nfcn == b.stats.nfcn);
   CHECK(max_dtheta(a, b) <= 1e-12);

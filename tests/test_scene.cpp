@@ -24,7 +24,7 @@ TEST_CASE("A minimal scene parses with defaults", "[scene][unit]") {
   CHECK(sc.name == "good");
   CHECK(sc.model == "smooth");
   CHECK(sc.solver.samples == 401);
-  CHECK(sc.solver.engine == Engine::cxx);
+  CHECK(sc.solver.engine == nanopush::Engine::cxx);
   CHECK(sc.initial[kTheta] == 0.0);
 }
 

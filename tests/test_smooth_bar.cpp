@@ -79,7 +79,7 @@ TEST_CASE("Fig 3.6, C++ engine: exact pendulum and uniform acceleration at rtol 
     const Scene sc = load_scene(preset(name));
     for (const char* method : {"faithful", "modern"}) {
       RunSettings rs;
-      rs.engine = Engine::cxx;
+      rs.engine = nanopush::Engine::cxx;
       rs.method = parse_optional_choice<Method>("method", method);
       rs.rtol = 1e-12;
       const Trajectory tr = run_scene(sc, rs);

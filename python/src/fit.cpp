@@ -144,7 +144,7 @@ raise. Bad data or keys raise nanopush.InputError naming the row and column or t
         std::string text;
         {
           py::gil_scoped_release release;
-          text = fit::observations_csv(fit::synthesize(scene, sigma, seed, law));
+          text = fit::observations_csv(fit::synthesize(scene, sigma, seed, parse_optional_choice<Law>("law", law)));
         }
         if (!path.is_none()) {
           std::ofstream out(py::str(path).cast<std::string>());
