@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include <boost/math/special_functions/gamma.hpp>
+
 #include "nanopush/numerics/error.hpp"
 
 namespace nanopush::icor {
@@ -143,17 +145,8 @@ double chi2_survival(double x, int k) {
   if (k < 1) throw InputError("chi2 degrees of freedom", std::to_string(k), "must be >= 1");
   if (!(x > 0.0)) return 1.0;
   if (std::isinf(x)) return 0.0;
-  const double h = 0.5 * x, lh = std::log(h);
-  double sum = 0.0;
-  if (k % 2 == 0) {
-    // e^{-x/2} sum_{j < k/2} (x/2)^j / j!, each term in logs (no overflow for large x or k).
-    for (int j = 0; j < k / 2; ++j) sum += std::exp(-h + j * lh - std::lgamma(j + 1.0));
-    return std::min(1.0, sum);
-  }
-  // erfc(sqrt(x/2)) + e^{-x/2} sum_{j=1}^{(k-1)/2} (x/2)^{j-1/2} / Gamma(j + 1/2).
-  sum = std::erfc(std::sqrt(h));
-  for (int j = 1; j <= (k - 1) / 2; ++j) sum += std::exp(-h + (j - 0.5) * lh - std::lgamma(j + 0.5));
-  return std::min(1.0, sum);
+  // Q(k/2, x/2), the regularised upper incomplete gamma function (Boost.Math; 0 on underflow).
+  return boost::math::gamma_q(0.5 * k, 0.5 * x);
 }
 
 }  // namespace nanopush::icor

@@ -88,8 +88,8 @@ struct BatchEstimate {
 BatchEstimate estimate_mu_batch(const Rod& rod, const std::vector<Observation>& observations, Pressure pressure,
                                 double sigma_L = 0.0, double sigma_H = 0.0, double alpha = 0.01);
 
-/// Upper tail of the chi-square distribution with k >= 1 degrees of freedom, P(X >= x), by
-/// the closed finite series for integer k (erfc for odd k); 1 for x <= 0.
+/// Upper tail of the chi-square distribution with k >= 1 degrees of freedom, P(X >= x): the
+/// regularised upper incomplete gamma function Q(k/2, x/2) (Boost.Math gamma_q); 1 for x <= 0.
 double chi2_survival(double x, int k);
 
 }  // namespace nanopush::icor
