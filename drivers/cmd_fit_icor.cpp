@@ -23,6 +23,7 @@
 #include "nanopush/models/icor.hpp"
 #include "nanopush/models/icor_batch.hpp"
 #include "nanopush/numerics/error.hpp"
+#include "nanopush/outputs/csv_reader.hpp"
 #include "nanopush/outputs/io.hpp"
 #include "nanopush/outputs/plot.hpp"
 #include "registry.hpp"
@@ -47,24 +48,6 @@ struct Options {
 
 const std::vector<std::string> kValues = {"F", "yn", "R"};
 const std::map<std::string, std::string> kUnit = {{"F", "N"}, {"yn", "m"}, {"R", "m"}};
-
-std::string trim(const std::string& s) {
-  const auto a = s.find_first_not_of(" \t\r");
-  if (a == std::string::npos) return {};
-  const auto b = s.find_last_not_of(" \t\r");
-  std::string t = s.substr(a, b - a + 1);
-  if (t.size() >= 2 && t.front() == '"' && t.back() == '"') t = t.substr(1, t.size() - 2);
-  return t;
-}
-
-std::vector<std::string> split(const std::string& line) {
-  std::vector<std::string> cells;
-  std::string cell;
-  std::istringstream s(line);
-  while (std::getline(s, cell, ',')) cells.push_back(trim(cell));
-  if (!line.empty() && line.back() == ',') cells.emplace_back();
-  return cells;
-}
 
 /// A finite number or nothing (empty cell); anything else is bad input naming the place.
 std::optional<double> number(const std::string& cell, const std::string& where) {
@@ -104,16 +87,13 @@ Data read_data(const std::string& path, const std::map<std::string, double>& sig
   if (fs::file_size(path, ec) > (64u << 20)) throw InputError("DATA", path, "must be at most 64 MiB");
   std::ifstream in(path);
   if (!in) throw InputError("DATA", path, "cannot be read");
-  std::string line;
-  int lineno = 0;
-  std::vector<std::string> header;
-  while (header.empty() && std::getline(in, line)) {
-    ++lineno;
-    const std::string t = trim(line);
-    if (t.empty() || t[0] == '#') continue;
-    header = split(line);
-  }
-  if (header.empty()) throw InputError("DATA", path, "has no header line");
+  // Records (RFC 4180, csv_reader.hpp); '#' comments and blank lines skipped.
+  csv::ReadOptions ro;
+  ro.comments = true;
+  csv::Reader reader(in, path, ro);
+  csv::Record rec;
+  if (!reader.next(rec)) throw InputError("DATA", path, "has no header line");
+  const std::vector<std::string> header = rec.fields;
   std::map<std::string, std::size_t> col;
   for (std::size_t i = 0; i < header.size(); ++i) {
     const std::string& h = header[i];
@@ -142,12 +122,10 @@ Data read_data(const std::string& path, const std::map<std::string, double>& sig
                        "give the column or --sigma " + q + "=VALUE (standard uncertainty, " + kUnit.at(q) + ")");
   }
   int row = 0;
-  while (std::getline(in, line)) {
-    ++lineno;
-    const std::string t = trim(line);
-    if (t.empty() || t[0] == '#') continue;
+  while (reader.next(rec)) {
     ++row;
-    const auto cells = split(line);
+    const int lineno = static_cast<int>(rec.line);
+    const std::vector<std::string>& cells = rec.fields;
     const std::string at = path + ": row " + std::to_string(row) + " (line " + std::to_string(lineno) + ")";
     if (cells.size() != header.size())
       throw InputError(at, std::to_string(cells.size()) + " cells",

@@ -20,6 +20,7 @@
 #include "nanopush/outputs/io.hpp"
 #include "nanopush/outputs/plot.hpp"
 #include "nanopush/sweeps/sweep.hpp"
+#include "nanopush/outputs/csv_reader.hpp"
 #include "cli_checks.hpp"
 #include "registry.hpp"
 
@@ -78,28 +79,29 @@ int run_rows(const Options& o) {
   (void)rectangle_friction_wrench_checked(o.a, o.b, 1.0, 0.0, 0.0, o.sense);  // validates a, b, sense
   std::ostringstream out;
   out << "R,alpha,fx,fy,mf\n";
-  std::string line;
-  std::size_t n = 0;
+  // Records from stdin (RFC 4180, csv_reader.hpp); '#' comments and blank lines skipped; an
+  // optional header R,alpha.
+  csv::ReadOptions ro;
+  ro.comments = true;
+  csv::Reader reader(std::cin, "stdin", ro);
+  csv::Record rec;
   bool first = true;
-  while (std::getline(std::cin, line)) {
-    ++n;
-    const std::string t = trim(line);
-    if (t.empty() || t[0] == '#') continue;
-    if (first && (t == "R,alpha" || t == "R, alpha")) {
+  while (reader.next(rec)) {
+    const std::size_t n = rec.line;
+    const auto& f = rec.fields;
+    if (first && f.size() == 2 && f[0] == "R" && f[1] == "alpha") {
       first = false;
       continue;
     }
     first = false;
-    const auto comma = t.find(',');
-    if (comma == std::string::npos)
-      throw InputError("stdin line " + std::to_string(n), t, "expected two fields 'R,alpha' separated by a comma");
-    const std::string f1 = t.substr(0, comma), f2 = t.substr(comma + 1);
-    if (f2.find(',') != std::string::npos)
-      throw InputError("stdin line " + std::to_string(n), t, "expected exactly two fields 'R,alpha'");
-    const double R = parse_field(f1, n, "R", "must be a finite number >= 0 (m)");
+    if (f.size() < 2)
+      throw InputError("stdin line " + std::to_string(n), csv::join(f), "expected two fields 'R,alpha' separated by a comma");
+    if (f.size() > 2)
+      throw InputError("stdin line " + std::to_string(n), csv::join(f), "expected exactly two fields 'R,alpha'");
+    const double R = parse_field(f[0], n, "R", "must be a finite number >= 0 (m)");
     if (!(R >= 0.0))
-      throw InputError("stdin line " + std::to_string(n) + ", field R", trim(f1), "must be a finite number >= 0 (m)");
-    const double alpha = parse_field(f2, n, "alpha", "must be a finite number (rad)");
+      throw InputError("stdin line " + std::to_string(n) + ", field R", f[0], "must be a finite number >= 0 (m)");
+    const double alpha = parse_field(f[1], n, "alpha", "must be a finite number (rad)");
     const auto w = evaluate(o, R, alpha);
     out << csv_number(R) << ',' << csv_number(alpha) << ',' << csv_number(w.fx) << ',' << csv_number(w.fy) << ','
         << csv_number(w.mf) << '\n';

@@ -9,6 +9,7 @@
 #include <system_error>
 
 #include "nanopush/fitting/fit.hpp"
+#include "nanopush/outputs/csv_reader.hpp"
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/outputs/io.hpp"
 
@@ -22,25 +23,6 @@ std::size_t Observations::count() const {
 }
 
 namespace {
-
-std::string trim(std::string_view s) {
-  std::size_t a = 0, b = s.size();
-  while (a < b && (s[a] == ' ' || s[a] == '\t' || s[a] == '\r')) ++a;
-  while (b > a && (s[b - 1] == ' ' || s[b - 1] == '\t' || s[b - 1] == '\r')) --b;
-  return std::string(s.substr(a, b - a));
-}
-
-std::vector<std::string> split(std::string_view line) {
-  std::vector<std::string> out;
-  std::size_t start = 0;
-  for (;;) {
-    const std::size_t comma = line.find(',', start);
-    out.push_back(trim(line.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start)));
-    if (comma == std::string_view::npos) break;
-    start = comma + 1;
-  }
-  return out;
-}
 
 int pose_index(std::string_view name) {
   for (int c = 0; c < 3; ++c)
@@ -61,23 +43,14 @@ Observations parse_observations(std::string_view text, const std::string& source
     if (pose_index(col) < 0) throw InputError("--sigma", col + "=" + fmt(s), "the column must be x, y or theta");
     require_positive("--sigma " + col, s, col == "theta" ? "rad" : "m");
   }
-  // Lines; '#' comments and blank lines are skipped (their numbers still count).
-  std::vector<std::pair<std::size_t, std::string_view>> lines;
-  {
-    std::size_t start = 0, number = 0;
-    while (start <= text.size()) {
-      const std::size_t nl = text.find('\n', start);
-      const std::string_view line = text.substr(start, nl == std::string_view::npos ? std::string_view::npos : nl - start);
-      ++number;
-      const std::string tl = trim(line);
-      if (!tl.empty() && tl[0] != '#') lines.emplace_back(number, line);
-      if (nl == std::string_view::npos) break;
-      start = nl + 1;
-    }
-  }
+  // Records (RFC 4180, csv_reader.hpp); '#' comments and blank lines are skipped (their numbers
+  // still count).
+  csv::ReadOptions ro;
+  ro.comments = true;
+  const std::vector<csv::Record> lines = csv::parse(text, source, ro);
   if (lines.empty()) throw InputError(source, "(empty)", "needs a header line: t and any of x, y, theta, sigma_x, ...");
-  const auto header = split(lines[0].second);
-  const std::size_t hline = lines[0].first;
+  const std::vector<std::string>& header = lines[0].fields;
+  const std::size_t hline = lines[0].line;
   int col_t = -1;
   std::array<int, 3> col_v{-1, -1, -1}, col_s{-1, -1, -1};
   for (std::size_t j = 0; j < header.size(); ++j) {
@@ -117,8 +90,8 @@ Observations parse_observations(std::string_view text, const std::string& source
   if (lines.size() < 2) throw InputError(source, "(no rows)", "needs at least one data row");
 
   for (std::size_t r = 1; r < lines.size(); ++r) {
-    const auto cells = split(lines[r].second);
-    const std::size_t line = lines[r].first;
+    const std::vector<std::string>& cells = lines[r].fields;
+    const std::size_t line = lines[r].line;
     if (cells.size() != header.size())
       throw InputError(source + " row " + std::to_string(r) + " (line " + std::to_string(line) + ")",
                        std::to_string(cells.size()) + " cells", "the header has " + std::to_string(header.size()));

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "nanopush/numerics/error.hpp"
+#include "nanopush/outputs/csv_reader.hpp"
 #include "nanopush/sweeps/sweep.hpp"
 
 namespace nanopush::sweep {
@@ -133,19 +134,19 @@ Plan cartesian(const std::vector<Axis>& axes) {
 Plan points_from_csv(const std::filesystem::path& path) {
   std::ifstream in(path);
   if (!in) throw InputError("--points", path.string(), "cannot open the file");
+  // One record at a time (RFC 4180: quoted keys and values, CRLF, a byte order mark; blank
+  // lines skipped), so the file is never held whole.
+  csv::Reader reader(in, "--points " + path.string());
+  csv::Record rec;
   Plan p;
-  std::string line;
-  if (!std::getline(in, line)) throw InputError("--points", path.string(), "empty file: the first line names the keys");
-  p.keys = split(line, ',');
+  if (!reader.next(rec)) throw InputError("--points", path.string(), "empty file: the first line names the keys");
+  p.keys = rec.fields;
   for (const auto& k : p.keys)
     if (k.empty()) throw InputError("--points", path.string(), "an empty key in the header");
-  std::size_t lineno = 1;
-  while (std::getline(in, line)) {
-    ++lineno;
-    if (line.empty()) continue;
-    const auto cells = split(line, ',');
+  while (reader.next(rec)) {
+    const auto& cells = rec.fields;
     if (cells.size() != p.keys.size())
-      throw InputError("--points", path.string() + ":" + std::to_string(lineno),
+      throw InputError("--points", path.string() + ":" + std::to_string(rec.line),
                        "has " + std::to_string(cells.size()) + " cells; the header has " + std::to_string(p.keys.size()));
     std::vector<SceneValue> pt;
     for (std::size_t k = 0; k < cells.size(); ++k) pt.push_back(value_of(p.keys[k], cells[k]));
