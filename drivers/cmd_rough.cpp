@@ -28,29 +28,29 @@ RunStats stats_of(const Scene& sc, const Trajectory& tr) {
   RunStats s;
   if (tr.rows.empty()) return s;
   auto ke = [&](const TrajectoryRow& r) {
-    return 0.5 * sc.mass * (r[4] * r[4] + r[5] * r[5]) + 0.5 * sc.inertia * r[6] * r[6];
+    return 0.5 * sc.mass * (r[col::vx] * r[col::vx] + r[col::vy] * r[col::vy]) + 0.5 * sc.inertia * r[col::omega] * r[col::omega];
   };
   double wmax = 0;
   for (double w : tr.work_push) wmax = std::max(wmax, std::fabs(w));
   const double muN = sc.friction_limit();
-  s.theta_min = s.theta_max = tr.rows[0][3];
-  s.mf_min = s.mf_max = tr.rows[0][9];
-  s.fx_min = s.fx_max = tr.rows[0][7];
-  s.f_min = s.f_max = std::hypot(tr.rows[0][7], tr.rows[0][8]);
+  s.theta_min = s.theta_max = tr.rows[0][col::theta];
+  s.mf_min = s.mf_max = tr.rows[0][col::mf];
+  s.fx_min = s.fx_max = tr.rows[0][col::fx];
+  s.f_min = s.f_max = std::hypot(tr.rows[0][col::fx], tr.rows[0][col::fy]);
   s.power_max = -1e300;
   for (std::size_t i = 0; i < tr.rows.size(); ++i) {
     const auto& r = tr.rows[i];
     if (wmax > 0)
       s.energy_rel = std::max(s.energy_rel, std::fabs(ke(r) - ke(tr.rows[0]) - tr.work_push[i] - tr.work_fric[i]) / wmax);
-    s.power_max = std::max(s.power_max, r[7] * r[4] + r[8] * r[5] + r[9] * r[6]);
-    const double f = std::hypot(r[7], r[8]);
+    s.power_max = std::max(s.power_max, r[col::fx] * r[col::vx] + r[col::fy] * r[col::vy] + r[col::mf] * r[col::omega]);
+    const double f = std::hypot(r[col::fx], r[col::fy]);
     if (muN > 0) s.f_over_muN = std::max(s.f_over_muN, f / muN);
-    s.theta_min = std::min(s.theta_min, r[3]);
-    s.theta_max = std::max(s.theta_max, r[3]);
-    s.mf_min = std::min(s.mf_min, r[9]);
-    s.mf_max = std::max(s.mf_max, r[9]);
-    s.fx_min = std::min(s.fx_min, r[7]);
-    s.fx_max = std::max(s.fx_max, r[7]);
+    s.theta_min = std::min(s.theta_min, r[col::theta]);
+    s.theta_max = std::max(s.theta_max, r[col::theta]);
+    s.mf_min = std::min(s.mf_min, r[col::mf]);
+    s.mf_max = std::max(s.mf_max, r[col::mf]);
+    s.fx_min = std::min(s.fx_min, r[col::fx]);
+    s.fx_max = std::max(s.fx_max, r[col::fx]);
     s.f_min = std::min(s.f_min, f);
     s.f_max = std::max(s.f_max, f);
   }
@@ -66,7 +66,7 @@ void write_rough_csv(const Trajectory& tr, const std::filesystem::path& p, const
   for (std::size_t i = 0; i < tr.rows.size(); ++i) {
     const auto& r = tr.rows[i];
     std::vector<double> v(r.begin(), r.end());
-    v.push_back(std::hypot(r[7], r[8]));
+    v.push_back(std::hypot(r[col::fx], r[col::fy]));
     v.push_back(tr.work_push[i]);
     v.push_back(tr.work_fric[i]);
     w.row(v);
@@ -179,10 +179,10 @@ void reproduce_rough(ReproduceContext& ctx) {
       bool same = pc_.rows.size() == pf_.rows.size() && pc_.stats.nfcn == pf_.stats.nfcn;
       for (std::size_t i = 0; same && i < pc_.rows.size(); ++i) same = pc_.rows[i] == pf_.rows[i];
       int positive = 0;
-      for (const auto& r : pc_.rows) positive += r[7] * r[4] + r[8] * r[5] + r[9] * r[6] > 0 ? 1 : 0;
+      for (const auto& r : pc_.rows) positive += r[col::fx] * r[col::vx] + r[col::fy] * r[col::vy] + r[col::mf] * r[col::omega] > 0 ? 1 : 0;
       printed << "| 3." << fig << " | " << std::fixed << std::setprecision(2) << sc.surface.mu << std::defaultfloat
               << " | " << pc_.stats.nfcn << " / " << pf_.stats.nfcn << " | " << (same ? "yes" : "NO") << " | "
-              << (pc_.complete ? std::string("1.6 ns") : "stopped at " + sci(pc_.rows.back()[0]) + " s") << " | ["
+              << (pc_.complete ? std::string("1.6 ns") : "stopped at " + sci(pc_.rows.back()[col::t]) + " s") << " | ["
               << std::setprecision(3) << spr.theta_min << ", " << spr.theta_max << "] | [" << sci(spr.fx_min) << ", "
               << sci(spr.fx_max) << "] | [" << sci(spr.mf_min) << ", " << sci(spr.mf_max) << "] | " << positive << "/"
               << pc_.rows.size() << " |\n";
@@ -200,13 +200,13 @@ void reproduce_rough(ReproduceContext& ctx) {
     if (fig == 17) nfcn_ref = static_cast<long>(cc.stats.nfcn);
     if (!tc.complete && chatter_from < 0) chatter_from = fig;
     summary.row(std::to_string(fig),
-                {sc.surface.mu, tc.complete ? 1.0 : 0.0, tc.rows.empty() ? 0.0 : tc.rows.back()[0], double(tc.stats.nfcn),
+                {sc.surface.mu, tc.complete ? 1.0 : 0.0, tc.rows.empty() ? 0.0 : tc.rows.back()[col::t], double(tc.stats.nfcn),
                  double(tf.stats.nfcn), double(tc.stats.nrejct), dev_tf, st.energy_rel, st.power_max, double(cc.stats.nfcn),
                  double(cc.events.size()), stuck_at, sco.energy_rel, sco.power_max, double(cv.stats.nfcn), dev_cv,
                  sco.theta_min, sco.theta_max, sco.mf_min, sco.mf_max, sco.fx_min, sco.fx_max, sco.f_min, sco.f_max});
     table << "| 3." << fig << " | " << std::fixed << std::setprecision(2) << sc.surface.mu << std::defaultfloat << " | "
           << tc.stats.nfcn << " / " << tf.stats.nfcn << " | "
-          << (tc.complete ? std::string("1.6 ns") : "stopped at " + sci(tc.rows.empty() ? 0 : tc.rows.back()[0]) + " s")
+          << (tc.complete ? std::string("1.6 ns") : "stopped at " + sci(tc.rows.empty() ? 0 : tc.rows.back()[col::t]) + " s")
           << " | " << sci(dev_tf) << " | " << cc.stats.nfcn << " | " << cc.events.size()
           << (stuck_at >= 0 ? " (stuck at " + sci(stuck_at) + " s)" : "") << " | " << sci(st.energy_rel) << " / "
           << sci(sco.energy_rel) << " | " << sci(dev_cv) << " |\n";

@@ -54,8 +54,8 @@ void print_summary(const Scene& sc, const Trajectory& tr, double seconds, std::o
   const auto& last = tr.rows.back();
   os << std::setprecision(10) << sc.name << " [" << tr.engine_label << "] rtol = " << tr.rtol << ", precision "
      << tr.precision << (tr.precision == "double" ? "" : " (CSV values rounded to double)") << "\n"
-     << "  t_end = " << last[0] << " s: x = " << last[1] << " m, y = " << last[2] << " m, theta = " << last[3]
-     << " rad, omega = " << last[6] << " rad/s\n"
+     << "  t_end = " << last[col::t] << " s: x = " << last[col::x] << " m, y = " << last[col::y] << " m, theta = " << last[col::theta]
+     << " rad, omega = " << last[col::omega] << " rad/s\n"
      << "  RHS evaluations " << tr.stats.nfcn << ", accepted steps " << tr.stats.naccpt << ", rejected steps "
      << tr.stats.nrejct << ", wall time " << std::setprecision(3)
      << (seconds < 1 ? seconds * 1e3 : seconds) << (seconds < 1 ? " ms\n" : " s\n");

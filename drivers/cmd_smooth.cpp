@@ -70,7 +70,7 @@ void reproduce_fig3_6(ReproduceContext& ctx) {
                               sc.inertia);
     const double Fd = sc.push.force * sc.push.lever();
     auto energy = [&](const TrajectoryRow& r) {
-      return 0.5 * sc.inertia * r[6] * r[6] - Fd * std::cos(r[3] - sc.push.theta_equilibrium());
+      return 0.5 * sc.inertia * r[col::omega] * r[col::omega] - Fd * std::cos(r[col::theta] - sc.push.theta_equilibrium());
     };
     CsvWriter err(dir / (sc.name + "_error.csv"),
                   {{"t", "s", "time"},
@@ -80,11 +80,11 @@ void reproduce_fig3_6(ReproduceContext& ctx) {
                   scene_id);
     double ec = 0, ef = 0, dev = 0, drift = 0;
     for (std::size_t i = 0; i < tc.rows.size(); ++i) {
-      const double t = tc.rows[i][0], th = ex.theta(t);
-      const double a = std::fabs(tc.rows[i][3] - th), b = std::fabs(tf.rows[i][3] - th);
+      const double t = tc.rows[i][col::t], th = ex.theta(t);
+      const double a = std::fabs(tc.rows[i][col::theta] - th), b = std::fabs(tf.rows[i][col::theta] - th);
       ec = std::max(ec, a);
       ef = std::max(ef, b);
-      dev = std::max(dev, std::fabs(tc.rows[i][3] - tf.rows[i][3]));
+      dev = std::max(dev, std::fabs(tc.rows[i][col::theta] - tf.rows[i][col::theta]));
       drift = std::max(drift, std::fabs(energy(tc.rows[i]) - energy(tc.rows[0])) / Fd);
       err.row({t, th, a, b});
     }

@@ -45,15 +45,15 @@ void print_rest_diagnosis(const Scene& sc, Law law, const Trajectory& tr, std::o
   // The first sample from which the speed stays below 1e-3 of the largest speed of the run.
   const auto speed = [&](const TrajectoryRow& r) {
     const double L = std::max(sc.geometry.a, sc.geometry.b);
-    return std::hypot(r[4], r[5]) + std::fabs(r[6]) * L;
+    return std::hypot(r[col::vx], r[col::vy]) + std::fabs(r[col::omega]) * L;
   };
   double vmax = 0;
   for (const auto& r : tr.rows) vmax = std::max(vmax, speed(r));
   std::size_t rest = tr.rows.size() - 1;
   while (rest > 0 && speed(tr.rows[rest - 1]) <= 1e-3 * vmax) --rest;
   const auto& r = tr.rows[rest];
-  os << std::setprecision(6) << "  the bar came to rest near t = " << r[0] << " s at x = " << r[1] << " m, y = " << r[2]
-     << " m, theta = " << r[3] << " rad (last sample t = " << tr.rows.back()[0] << " s): mu N = " << muN
+  os << std::setprecision(6) << "  the bar came to rest near t = " << r[col::t] << " s at x = " << r[col::x] << " m, y = " << r[col::y]
+     << " m, theta = " << r[col::theta] << " rad (last sample t = " << tr.rows.back()[col::t] << " s): mu N = " << muN
      << " N exceeds the push F = " << sc.push.force
      << " N, and the sign law of eq 3.40 has no direction at rest, so the integrator chatters there\n"
      << "  to continue: --law coulomb (event-located stick-slip: the bar stays stuck or slides off honestly; "

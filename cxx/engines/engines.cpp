@@ -68,7 +68,7 @@ Trajectory run_f77(const Scene& sc, const ResolvedSettings& s) {
       tr.rows.push_back(make_row(tout[i], yy));
     }
   }
-  if (!tr.rows.empty()) tr.stats.t_reached = tr.rows.back()[0];
+  if (!tr.rows.empty()) tr.stats.t_reached = tr.rows.back()[col::t];
   if (s.progress) s.progress(1.0);
   return tr;
 }

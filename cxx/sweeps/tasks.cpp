@@ -66,15 +66,15 @@ class RunTask final : public Task {
     const auto& last = rows.back();
     double dist = 0, rot = 0, fpeak = 0;
     for (std::size_t i = 0; i < rows.size(); ++i) {
-      fpeak = std::max(fpeak, std::hypot(rows[i][7], rows[i][8]));
+      fpeak = std::max(fpeak, std::hypot(rows[i][col::fx], rows[i][col::fy]));
       if (i == 0) continue;
-      dist += std::hypot(rows[i][1] - rows[i - 1][1], rows[i][2] - rows[i - 1][2]);
-      rot += std::fabs(rows[i][3] - rows[i - 1][3]);
+      dist += std::hypot(rows[i][col::x] - rows[i - 1][col::x], rows[i][col::y] - rows[i - 1][col::y]);
+      rot += std::fabs(rows[i][col::theta] - rows[i - 1][col::theta]);
     }
     double ix = kNaN, iy = kNaN;
-    if (last[6] != 0.0) {  // v = omega x r: the point at rest is CM + (-vy, vx) / omega
-      ix = -last[5] / last[6];
-      iy = last[4] / last[6];
+    if (last[col::omega] != 0.0) {  // v = omega x r: the point at rest is CM + (-vy, vx) / omega
+      ix = -last[col::vy] / last[col::omega];
+      iy = last[col::vx] / last[col::omega];
     }
     double t_stick = kNaN;
     for (const auto& e : tr.events)
@@ -83,7 +83,7 @@ class RunTask final : public Task {
         break;
       }
     const double wf = tr.work_fric.empty() ? 0.0 : tr.work_fric.back();
-    return {cell(last[1]), cell(last[2]), cell(last[3]), cell(dist), cell(rot), cell(ix), cell(iy), cell(t_stick),
+    return {cell(last[col::x]), cell(last[col::y]), cell(last[col::theta]), cell(dist), cell(rot), cell(ix), cell(iy), cell(t_stick),
             cell(fpeak), cell(wf), std::to_string(tr.stats.nfcn), std::to_string(tr.stats.naccpt),
             std::to_string(tr.stats.nrejct)};
   }

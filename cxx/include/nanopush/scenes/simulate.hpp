@@ -26,6 +26,10 @@ inline const std::vector<std::string>& trajectory_units() {
   return u;
 }
 using TrajectoryRow = std::array<double, 10>;
+/// The columns of a TrajectoryRow by name: row[col::fx] (the order of trajectory_columns()).
+namespace col {
+inline constexpr std::size_t t = 0, x = 1, y = 2, theta = 3, vx = 4, vy = 5, omega = 6, fx = 7, fy = 8, mf = 9;
+}
 
 /// method auto: dop853 for rtol >= this (where dop853 runs), modern below (docs/dop853.md).
 inline constexpr double kAutoDop853RtolMin = 1e-11;
