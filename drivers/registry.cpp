@@ -1,5 +1,7 @@
 #include "registry.hpp"
 
+#include "nanopush/scenes/presets.hpp"
+
 #include <cstdlib>
 #include <fstream>
 #include <string>
@@ -53,14 +55,7 @@ std::filesystem::path resolve_scene(const std::string& arg) {
   namespace fs = std::filesystem;
   if (fs::exists(arg)) return arg;
   const fs::path dir = scenes_dir();
-  for (const fs::path& cand : {dir / (arg + ".toml"), dir / arg}) {
-    if (fs::exists(cand) && fs::is_regular_file(cand)) return cand;
-  }
-  // Presets live in subdirectories (thesis/, bench/, examples/): search them in that order.
-  for (const char* sub : {"thesis", "bench", "examples"}) {
-    const fs::path cand = dir / sub / (arg + ".toml");
-    if (fs::exists(cand) && fs::is_regular_file(cand)) return cand;
-  }
+  if (const auto found = find_preset(dir, arg)) return *found;  // the preset rule (scenes/presets.hpp)
   throw InputError("SCENE", arg, "no such file, and no preset of that name under " + dir.string());
 }
 

@@ -75,46 +75,24 @@ def _input_error(message, field=""):
     return e
 
 
-def _first_comment(path):
-    with open(path, encoding="utf-8") as f:
-        for line in f:
-            s = line.strip()
-            if s.startswith("#"):
-                return s.lstrip("#").strip()
-    return ""
-
-
 def _resolve_preset(name):
-    """The file of a preset name, searched as ``nanopush run`` does: NAME.toml or NAME under
-    scenes_dir(), then its thesis/, bench/ and examples/ folders."""
+    """The file of a preset name, found by the rule of ``nanopush run`` (the library's
+    find_preset: NAME.toml or NAME under scenes_dir(), then its thesis/, bench/ and examples/
+    folders)."""
     d = scenes_dir()
-    for cand in (d / (name + ".toml"), d / name):
-        if cand.is_file():
-            return cand
-    for sub in ("thesis", "bench", "examples"):
-        cand = d / sub / (name + ".toml")
-        if cand.is_file():
-            return cand
-    raise _input_error(f"SCENE = {name}: no preset of that name under {d} (nanopush.presets() lists them)", "SCENE")
+    found = _nanopush._find_preset(str(d), name)
+    if found is None:
+        raise _input_error(f"SCENE = {name}: no preset of that name under {d} (nanopush.presets() lists them)",
+                           "SCENE")
+    return _pathlib.Path(found)
 
 
 def presets():
     """The preset scenes as a dict {name: one-line description}, sorted by name. Names are
     what Scene.preset and ``nanopush run`` accept: the short name (``fig3_6a``) when it finds
-    the file, else the path under scenes_dir() (``examples/foo``)."""
-    d = scenes_dir()
-    if not d.is_dir():
-        raise _input_error(f"scenes directory = {d}: no such directory (set NANOPUSH_SCENES)", "scenes directory")
-    out = {}
-    for path in sorted(d.rglob("*.toml")):
-        full = path.relative_to(d).with_suffix("").as_posix()
-        name = full
-        try:
-            if _resolve_preset(path.stem).resolve() == path.resolve():
-                name = path.stem
-        except InputError:
-            pass
-        out[name] = _first_comment(path)
+    the file, else the path under scenes_dir() (``examples/foo``). The list is the library's
+    (the same as ``nanopush presets``)."""
+    out = {short or name: desc for name, short, desc, _ in _nanopush._list_presets(str(scenes_dir()))}
     return dict(sorted(out.items()))
 
 

@@ -6,6 +6,7 @@
 
 #include <pybind11/stl/filesystem.h>
 
+#include "nanopush/scenes/presets.hpp"
 #include "nanopush/scenes/scene.hpp"
 #include "nanopush/scenes/scene_keys.hpp"
 
@@ -99,6 +100,23 @@ py::dict info(const Scene& s) {
 }  // namespace
 
 void register_scenes(py::module_& m) {
+  // The preset rule of the command line (scenes/presets.hpp); the directory is Python's.
+  m.def(
+      "_find_preset",
+      [](const std::filesystem::path& dir, const std::string& name) -> py::object {
+        const auto found = find_preset(dir, name);
+        return found ? py::cast(found->string()) : py::none();
+      },
+      py::arg("dir"), py::arg("name"), "The file of a preset name under dir, or None (nanopush.Scene.preset).");
+  m.def(
+      "_list_presets",
+      [](const std::filesystem::path& dir) {
+        py::list out;
+        for (const PresetEntry& p : list_presets(dir))
+          out.append(py::make_tuple(p.name, p.short_name, p.description, p.path.string()));
+        return out;
+      },
+      py::arg("dir"), "(name, short name, description, path) of every preset under dir, sorted by name.");
   py::class_<Scene>(m, "Scene", R"doc(A scene: the object, the push, the initial state, the surface and the solver
 settings (docs/scenes.md; every number SI).
 
