@@ -208,12 +208,10 @@ Scene parse_scene(std::string_view text, const std::string& source_name) {
   return scene_from_document(root, source_name);
 }
 
-Scene scene_from_document(const toml::table& root, const std::string& source_name) {
-  check_keys(root, "", scene_table_keys(""));
-  Scene sc;
-  sc.source = source_name;
+namespace {
 
-  // [scene]
+/// [scene]: the name and the description.
+void read_scene(const toml::table& root, Scene& sc) {
   if (root.get("scene")) {
     const auto& t = require_table(root, "scene");
     check_keys(t, "scene", scene_table_keys("scene"));
@@ -224,83 +222,84 @@ Scene scene_from_document(const toml::table& root, const std::string& source_nam
                        "must be an identifier: letters, digits, _ - . (at most 200, not starting with . or -); it "
                        "names the output files, which go only to --out or the working directory");
   }
-  if (sc.name.empty()) sc.name = identifier_from(std::filesystem::path(source_name).stem().string());
+}
 
-  // [object]
-  {
-    const auto& t = require_table(root, "object");
-    check_keys(t, "object", scene_table_keys("object"));
-    sc.shape = opt_string(t, "object", "shape").value_or("bar");
-    require_one_of("object.shape", sc.shape, {"bar"});
-    sc.length = number(t, "object", "length");
-    sc.width = number(t, "object", "width");
-    require_positive("object.length", sc.length, "m");
-    require_positive("object.width", sc.width, "m");
-    require_representable("object.length", sc.length, "m");  // before the push point is checked against them
-    require_representable("object.width", sc.width, "m");
-    sc.geometry = {sc.width / 2, sc.length / 2};
-    const auto mass = opt_number(t, "object", "mass");
-    const auto density = opt_number(t, "object", "density");
-    const auto height = opt_number(t, "object", "height");
-    if (height) {
-      require_positive("object.height", *height, "m");
-      sc.height = *height;
-    }
-    if (mass) {
-      require_positive("object.mass", *mass, "kg");
-      if (density) throw InputError("object.density", fmt(*density), "give either object.mass or object.density, not both");
-      sc.mass = *mass;
-    } else {
-      if (!density) throw InputError("object.mass", "(missing)", "give object.mass [kg], or object.density [kg/m^3] with object.height");
-      require_positive("object.density", *density, "kg/m^3");
-      if (!height) throw InputError("object.height", "(missing)", "needed with object.density to compute the mass (m)");
-      sc.density = *density;
-      sc.mass = sc.density * sc.length * sc.width * sc.height;
-    }
-    if (auto in = opt_number(t, "object", "inertia")) {
-      require_positive("object.inertia", *in, "kg m^2");
-      sc.inertia = *in;
-    } else {
-      sc.inertia = sc.mass * (sc.length * sc.length + sc.width * sc.width) / 12.0;
-    }
+/// [object]: the bar, its mass (given, or density x volume) and moment of inertia.
+void read_object(const toml::table& root, Scene& sc) {
+  const auto& t = require_table(root, "object");
+  check_keys(t, "object", scene_table_keys("object"));
+  sc.shape = opt_string(t, "object", "shape").value_or("bar");
+  require_one_of("object.shape", sc.shape, {"bar"});
+  sc.length = number(t, "object", "length");
+  sc.width = number(t, "object", "width");
+  require_positive("object.length", sc.length, "m");
+  require_positive("object.width", sc.width, "m");
+  require_representable("object.length", sc.length, "m");  // before the push point is checked against them
+  require_representable("object.width", sc.width, "m");
+  sc.geometry = {sc.width / 2, sc.length / 2};
+  const auto mass = opt_number(t, "object", "mass");
+  const auto density = opt_number(t, "object", "density");
+  const auto height = opt_number(t, "object", "height");
+  if (height) {
+    require_positive("object.height", *height, "m");
+    sc.height = *height;
   }
-
-  // [push]
-  {
-    const auto& t = require_table(root, "push");
-    check_keys(t, "push", scene_table_keys("push"));
-    const double F = number(t, "push", "force");
-    require_positive("push.force", F, "N");
-    const double beta = opt_number(t, "push", "direction").value_or(0.0);
-    require_finite("push.direction", beta, "rad");
-    const auto xn = opt_number(t, "push", "xn");
-    const auto yn = opt_number(t, "push", "yn");
-    if (xn) require_finite("push.xn", *xn, "m");
-    if (yn) require_finite("push.yn", *yn, "m");
-    const toml::node* pt = t.get("point");
-    if (pt && (xn || yn)) throw InputError("push.point", "(present)", "give either push.point = [x', y'] or the thesis push.xn/push.yn, not both");
-    if (pt) {
-      const toml::array* arr = pt->as_array();
-      if (!arr || arr->size() != 2 || !arr->get(0)->value<double>() || !arr->get(1)->value<double>()) {
-                throw InputError("push.point", node_text(*pt), "must be [x', y'], two numbers in body axes (m)");
-      }
-      sc.push = {F, beta, *arr->get(0)->value<double>(), *arr->get(1)->value<double>()};
-    } else {
-      if (!xn || !yn) throw InputError(xn ? "push.yn" : "push.xn", "(missing)", "give both push.xn and push.yn (thesis coordinates, m), or push.point");
-      sc.push = Push::from_thesis(F, beta, *xn, *yn);
-    }
-    require_finite("push.point[0]", sc.push.pbx, "m");
-    require_finite("push.point[1]", sc.push.pby, "m");
-    const double tol = 1e-9 * std::max(sc.geometry.a, sc.geometry.b);
-    if (std::fabs(sc.push.pbx) > sc.geometry.a + tol)
-      throw InputError(pt ? "push.point[0]" : "push.xn", fmt(pt ? sc.push.pbx : *xn),
-                       "the push point must lie on the body: |x'| <= width/2 = " + fmt(sc.geometry.a) + " m");
-    if (std::fabs(sc.push.pby) > sc.geometry.b + tol)
-      throw InputError(pt ? "push.point[1]" : "push.yn", fmt(pt ? sc.push.pby : *yn),
-                       "the push point must lie on the body: |y'| <= length/2 = " + fmt(sc.geometry.b) + " m");
+  if (mass) {
+    require_positive("object.mass", *mass, "kg");
+    if (density) throw InputError("object.density", fmt(*density), "give either object.mass or object.density, not both");
+    sc.mass = *mass;
+  } else {
+    if (!density) throw InputError("object.mass", "(missing)", "give object.mass [kg], or object.density [kg/m^3] with object.height");
+    require_positive("object.density", *density, "kg/m^3");
+    if (!height) throw InputError("object.height", "(missing)", "needed with object.density to compute the mass (m)");
+    sc.density = *density;
+    sc.mass = sc.density * sc.length * sc.width * sc.height;
   }
+  if (auto in = opt_number(t, "object", "inertia")) {
+    require_positive("object.inertia", *in, "kg m^2");
+    sc.inertia = *in;
+  } else {
+    sc.inertia = sc.mass * (sc.length * sc.length + sc.width * sc.width) / 12.0;
+  }
+}
 
-  // [initial]
+/// [push]: force, direction and the push point (body axes, or the thesis xn/yn), on the body.
+void read_push(const toml::table& root, Scene& sc) {
+  const auto& t = require_table(root, "push");
+  check_keys(t, "push", scene_table_keys("push"));
+  const double F = number(t, "push", "force");
+  require_positive("push.force", F, "N");
+  const double beta = opt_number(t, "push", "direction").value_or(0.0);
+  require_finite("push.direction", beta, "rad");
+  const auto xn = opt_number(t, "push", "xn");
+  const auto yn = opt_number(t, "push", "yn");
+  if (xn) require_finite("push.xn", *xn, "m");
+  if (yn) require_finite("push.yn", *yn, "m");
+  const toml::node* pt = t.get("point");
+  if (pt && (xn || yn)) throw InputError("push.point", "(present)", "give either push.point = [x', y'] or the thesis push.xn/push.yn, not both");
+  if (pt) {
+    const toml::array* arr = pt->as_array();
+    if (!arr || arr->size() != 2 || !arr->get(0)->value<double>() || !arr->get(1)->value<double>()) {
+              throw InputError("push.point", node_text(*pt), "must be [x', y'], two numbers in body axes (m)");
+    }
+    sc.push = {F, beta, *arr->get(0)->value<double>(), *arr->get(1)->value<double>()};
+  } else {
+    if (!xn || !yn) throw InputError(xn ? "push.yn" : "push.xn", "(missing)", "give both push.xn and push.yn (thesis coordinates, m), or push.point");
+    sc.push = Push::from_thesis(F, beta, *xn, *yn);
+  }
+  require_finite("push.point[0]", sc.push.pbx, "m");
+  require_finite("push.point[1]", sc.push.pby, "m");
+  const double tol = 1e-9 * std::max(sc.geometry.a, sc.geometry.b);
+  if (std::fabs(sc.push.pbx) > sc.geometry.a + tol)
+    throw InputError(pt ? "push.point[0]" : "push.xn", fmt(pt ? sc.push.pbx : *xn),
+                     "the push point must lie on the body: |x'| <= width/2 = " + fmt(sc.geometry.a) + " m");
+  if (std::fabs(sc.push.pby) > sc.geometry.b + tol)
+    throw InputError(pt ? "push.point[1]" : "push.yn", fmt(pt ? sc.push.pby : *yn),
+                     "the push point must lie on the body: |y'| <= length/2 = " + fmt(sc.geometry.b) + " m");
+}
+
+/// [initial]: the state at t = 0.
+void read_initial(const toml::table& root, Scene& sc) {
   if (root.get("initial")) {
     const auto& t = require_table(root, "initial");
     const std::vector<std::string> keys = {"x", "y", "theta", "vx", "vy", "omega"};
@@ -311,8 +310,10 @@ Scene scene_from_document(const toml::table& root, const std::string& source_nam
       require_finite("initial." + keys[i], sc.initial[i], units[i]);
     }
   }
+}
 
-  // [surface]
+/// [surface]: smooth, or rough with its friction coefficient, load terms and law.
+void read_surface(const toml::table& root, Scene& sc) {
   if (root.get("surface")) {
     const auto& t = require_table(root, "surface");
     check_keys(t, "surface", scene_table_keys("surface"));
@@ -335,57 +336,61 @@ Scene scene_from_document(const toml::table& root, const std::string& source_nam
       sc.surface.law = scene_choice<Law>("surface.law", opt_string(t, "surface", "law").value_or("thesis"));
     }
   }
+}
 
-  // [solver]
-  {
-    const auto& t = require_table(root, "solver");
-    check_keys(t, "solver", scene_table_keys("solver"));
-    if (auto ms = opt_number(t, "solver", "max_steps")) {
-      if (!(*ms >= 1 && *ms <= 1e9) || std::floor(*ms) != *ms)
-        throw InputError("solver.max_steps", fmt(*ms), "must be an integer in [1, 1000000000]");
-      sc.solver.max_steps = static_cast<long>(*ms);
-    }
-    sc.solver.t_end = number(t, "solver", "t_end");
-    require_positive("solver.t_end", sc.solver.t_end, "s");
-    if (auto s = opt_number(t, "solver", "samples")) {
-      if (!(*s >= 2 && *s <= 1e7) || std::floor(*s) != *s)
-        throw InputError("solver.samples", fmt(*s), "must be an integer in [2, 10000000]");
-      sc.solver.samples = static_cast<int>(*s);
-    }
-    if (auto r = opt_number(t, "solver", "rtol")) {
-      require_range("solver.rtol", *r, 1e-30, 0.1);
-      sc.solver.rtol = *r;
-    }
-    if (auto a = opt_number(t, "solver", "atol")) {
-      require_nonnegative("solver.atol", *a);
-      sc.solver.atol = *a;
-    }
-    sc.solver.engine = scene_choice<Engine>("solver.engine", opt_string(t, "solver", "engine").value_or("cxx"));
-    // Default: auto (the fastest method for the rtol asked, docs/dop853.md); a scene on the F77
-    // engine has its one method.
-    const auto method = opt_string(t, "solver", "method");
-    sc.solver.method = method ? scene_choice<Method>("solver.method", *method)
-                              : (sc.solver.engine == Engine::f77 ? Method::faithful : Method::automatic);
-    if (sc.solver.engine == Engine::f77 && sc.solver.method != Method::faithful)
-      throw InputError("solver.method", "\"" + to_string(sc.solver.method) + "\"",
-                       "with solver.engine = \"f77\" there is one method (the F77 Bulirsch-Stoer): leave "
-                       "solver.method out, or use solver.engine = \"cxx\"");
-    sc.solver.precision =
-        scene_choice<Precision>("solver.precision", opt_string(t, "solver", "precision").value_or("double"));
-    if (sc.solver.precision != Precision::double_) {
-      const std::string why = extended_precision_obstacle(sc.rough(), sc.solver.engine, sc.solver.method);
-      if (!why.empty()) throw InputError("solver.precision", "\"" + to_string(sc.solver.precision) + "\"", why);
-    }
-    if (auto h = opt_number(t, "solver", "h0")) {
-      require_nonnegative("solver.h0", *h, "s");
-      sc.solver.h0 = *h;
-    }
-    if (auto h = opt_number(t, "solver", "hmax")) {
-      require_nonnegative("solver.hmax", *h, "s");
-      sc.solver.hmax = *h;
-    }
+/// [solver]: output times, tolerances, step settings, engine, method and precision.
+void read_solver(const toml::table& root, Scene& sc) {
+  const auto& t = require_table(root, "solver");
+  check_keys(t, "solver", scene_table_keys("solver"));
+  if (auto ms = opt_number(t, "solver", "max_steps")) {
+    if (!(*ms >= 1 && *ms <= 1e9) || std::floor(*ms) != *ms)
+      throw InputError("solver.max_steps", fmt(*ms), "must be an integer in [1, 1000000000]");
+    sc.solver.max_steps = static_cast<long>(*ms);
   }
-  // [environment] and [body]: the normal load is assembled from the models the scene needs.
+  sc.solver.t_end = number(t, "solver", "t_end");
+  require_positive("solver.t_end", sc.solver.t_end, "s");
+  if (auto s = opt_number(t, "solver", "samples")) {
+    if (!(*s >= 2 && *s <= 1e7) || std::floor(*s) != *s)
+      throw InputError("solver.samples", fmt(*s), "must be an integer in [2, 10000000]");
+    sc.solver.samples = static_cast<int>(*s);
+  }
+  if (auto r = opt_number(t, "solver", "rtol")) {
+    require_range("solver.rtol", *r, 1e-30, 0.1);
+    sc.solver.rtol = *r;
+  }
+  if (auto a = opt_number(t, "solver", "atol")) {
+    require_nonnegative("solver.atol", *a);
+    sc.solver.atol = *a;
+  }
+  sc.solver.engine = scene_choice<Engine>("solver.engine", opt_string(t, "solver", "engine").value_or("cxx"));
+  // Default: auto (the fastest method for the rtol asked, docs/dop853.md); a scene on the F77
+  // engine has its one method.
+  const auto method = opt_string(t, "solver", "method");
+  sc.solver.method = method ? scene_choice<Method>("solver.method", *method)
+                            : (sc.solver.engine == Engine::f77 ? Method::faithful : Method::automatic);
+  if (sc.solver.engine == Engine::f77 && sc.solver.method != Method::faithful)
+    throw InputError("solver.method", "\"" + to_string(sc.solver.method) + "\"",
+                     "with solver.engine = \"f77\" there is one method (the F77 Bulirsch-Stoer): leave "
+                     "solver.method out, or use solver.engine = \"cxx\"");
+  sc.solver.precision =
+      scene_choice<Precision>("solver.precision", opt_string(t, "solver", "precision").value_or("double"));
+  if (sc.solver.precision != Precision::double_) {
+    const std::string why = extended_precision_obstacle(sc.rough(), sc.solver.engine, sc.solver.method);
+    if (!why.empty()) throw InputError("solver.precision", "\"" + to_string(sc.solver.precision) + "\"", why);
+  }
+  if (auto h = opt_number(t, "solver", "h0")) {
+    require_nonnegative("solver.h0", *h, "s");
+    sc.solver.h0 = *h;
+  }
+  if (auto h = opt_number(t, "solver", "hmax")) {
+    require_nonnegative("solver.hmax", *h, "s");
+    sc.solver.hmax = *h;
+  }
+}
+
+/// The normal load of a rough surface: from [environment] and [body] when the scene has
+/// them (the force models), else m g + F_vdw or the given load; with its report.
+void assemble_load(const toml::table& root, Scene& sc) {
   if (root.get("environment") || root.get("body")) {
     if (!root.get("environment")) throw InputError("environment", "(missing)", "a [body] table needs an [environment] table");
     if (!root.get("body"))
@@ -428,6 +433,22 @@ Scene scene_from_document(const toml::table& root, const std::string& source_nam
     r << "friction limit mu N = " << sc.friction_limit() << " N\n";
     sc.load_report = r.str();
   }
+}
+
+}  // namespace
+
+Scene scene_from_document(const toml::table& root, const std::string& source_name) {
+  check_keys(root, "", scene_table_keys(""));
+  Scene sc;
+  sc.source = source_name;
+  read_scene(root, sc);
+  if (sc.name.empty()) sc.name = identifier_from(std::filesystem::path(source_name).stem().string());
+  read_object(root, sc);
+  read_push(root, sc);
+  read_initial(root, sc);
+  read_surface(root, sc);
+  read_solver(root, sc);
+  assemble_load(root, sc);
   check_representable(sc);
   sc.document = std::make_shared<const toml::table>(root);
   return sc;
