@@ -166,8 +166,11 @@ struct Problem : Eigen::DenseFunctor<double> {
 
 }  // namespace
 
-FitResult fit_trajectory(const Scene& scene, const Observations& obs, const FitOptions& options) {
-  const auto t0 = std::chrono::steady_clock::now();
+namespace {
+
+/// The options' checks and the gradients to use (auto: sensitivities where the right-hand
+/// side is smooth, differences under the coulomb law).
+std::string checked_gradients(const Scene& scene, const FitOptions& options, Law law) {
   if (options.free.empty()) throw InputError("--free", "(none)", "name at least one scene key to fit");
   for (std::size_t k = 0; k < options.free.size(); ++k)
     for (std::size_t j = 0; j < k; ++j)
@@ -178,7 +181,6 @@ FitResult fit_trajectory(const Scene& scene, const Observations& obs, const FitO
   require_range("xtol", options.xtol, 0, 1);
   require_range("ftol", options.ftol, 0, 1);
   require_range("identifiability_threshold", options.identifiability_threshold, 0, 1);
-  const Law law = detail::fit_law(scene, options.law);
   const bool coulomb = scene.rough() && law == Law::coulomb;
   std::string gradients = options.gradients;
   if (gradients == "auto") gradients = coulomb ? "differences" : "sensitivities";
@@ -187,17 +189,13 @@ FitResult fit_trajectory(const Scene& scene, const Observations& obs, const FitO
   if (coulomb && gradients == "sensitivities")
     throw InputError("gradients", "sensitivities",
                      "the coulomb law's right-hand side jumps at its rest events: use differences (or auto)");
-  check_observations(obs, scene, options.free.size());
+  return gradients;
+}
 
+/// The start point in scaled parameters u = p / c, the bounds and scales into prob, the
+/// parameters' entries of res (key, unit, start, bounds).
+Eigen::VectorXd start_point(const Scene& scene, const FitOptions& options, Problem& prob, FitResult& res) {
   const std::size_t np = options.free.size();
-  const auto m = static_cast<int>(obs.count());
-  Problem prob(scene, obs, options, static_cast<int>(np), m);
-  prob.law = law;
-  prob.gradients = gradients;
-  prob.eager = gradients == "sensitivities";
-  FitResult res;
-  res.gradients = gradients;
-  res.law = scene.rough() ? to_string(law) : "";
   Eigen::VectorXd u(static_cast<Eigen::Index>(np));
   for (std::size_t k = 0; k < np; ++k) {
     const std::string& key = options.free[k];
@@ -220,6 +218,202 @@ FitResult fit_trajectory(const Scene& scene, const Observations& obs, const FitO
     pe.upper = b[1];
     res.parameters.push_back(pe);
   }
+  return u;
+}
+
+/// Residuals, chi2 and the weighted Jacobian w.r.t. relative parameters (scales crel) at the
+/// estimate.
+Eigen::MatrixXd residuals_and_jacobian(const Observations& obs, const ModelPoses& mp, const std::vector<double>& crel,
+                                       int m, FitResult& res) {
+  const std::size_t np = crel.size();
+  res.t = obs.t;
+  res.fitted = mp.pose;
+  res.residuals.assign(obs.t.size(), {kNaN, kNaN, kNaN});
+  Eigen::MatrixXd J(m, static_cast<Eigen::Index>(np));  // weighted, w.r.t. relative parameters
+  {
+    Eigen::Index r = 0;
+    for (std::size_t i = 0; i < obs.t.size(); ++i)
+      for (std::size_t j = 0; j < 3; ++j)
+        if (obs.has[j]) {
+          const double rr = (obs.value[j][i] - mp.pose[i][j]) / obs.sigma[j][i];
+          res.residuals[i][j] = rr;
+          res.chi2 += rr * rr;
+          for (std::size_t k = 0; k < np; ++k) J(r, static_cast<Eigen::Index>(k)) = mp.jac[i][k][j] * crel[k] / obs.sigma[j][i];
+          ++r;
+        }
+  }
+  return J;
+}
+
+/// The singular value decomposition of the scaled Jacobian and what it determines.
+struct Svd {
+  Eigen::VectorXd S;
+  Eigen::MatrixXd V;
+  std::vector<Eigen::Index> det, null;  // singular directions above / below the threshold
+  Eigen::MatrixXd cov_q;                // covariance of the relative parameters on det
+  std::vector<bool> undetermined;
+};
+
+/// Identifiability: singular values, the covariance on the determined directions, standard
+/// errors and correlations into res.
+Svd identifiability(const Eigen::MatrixXd& J, const FitOptions& options, const std::vector<double>& crel, FitResult& res) {
+  const std::size_t np = crel.size();
+  Svd out;
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(J, Eigen::ComputeThinV);
+  out.S = svd.singularValues();
+  out.V = svd.matrixV();
+  const Eigen::VectorXd& S = out.S;
+  const Eigen::MatrixXd& V = out.V;
+  Identifiability& id = res.identifiability;
+  id.singular_values.assign(S.data(), S.data() + S.size());
+  const double smax = S.size() ? S[0] : 0.0;
+  id.condition = S.size() && S[S.size() - 1] > 0 ? smax / S[S.size() - 1] : std::numeric_limits<double>::infinity();
+  std::vector<Eigen::Index>& det = out.det;
+  std::vector<Eigen::Index>& null = out.null;
+  for (Eigen::Index i = 0; i < S.size(); ++i)
+    (smax > 0 && S[i] > options.identifiability_threshold * smax ? det : null).push_back(i);
+  Eigen::MatrixXd& cov_q = out.cov_q;
+  cov_q = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(np), static_cast<Eigen::Index>(np));
+  for (Eigen::Index i : det) cov_q += V.col(i) * V.col(i).transpose() / (S[i] * S[i]);
+  std::vector<bool>& undetermined = out.undetermined;
+  undetermined.assign(np, false);
+  for (Eigen::Index i : null)
+    for (std::size_t k = 0; k < np; ++k)
+      if (std::abs(V(static_cast<Eigen::Index>(k), i)) > 1e-3) undetermined[k] = true;
+  for (std::size_t k = 0; k < np; ++k)
+    if (undetermined[k]) id.undetermined.push_back(options.free[k]);
+  id.identifiable = id.undetermined.empty();
+  for (std::size_t k = 0; k < np; ++k) {
+    const auto kk = static_cast<Eigen::Index>(k);
+    res.parameters[k].stderr_ = undetermined[k] ? kNaN : std::sqrt(cov_q(kk, kk)) * crel[k];
+  }
+  res.correlation.assign(np, std::vector<double>(np, kNaN));
+  for (std::size_t a = 0; a < np; ++a)
+    for (std::size_t b = 0; b < np; ++b) {
+      if (undetermined[a] || undetermined[b]) continue;
+      const auto ia = static_cast<Eigen::Index>(a), ib = static_cast<Eigen::Index>(b);
+      const double d = std::sqrt(cov_q(ia, ia) * cov_q(ib, ib));
+      res.correlation[a][b] = d > 0 ? cov_q(ia, ib) / d : (a == b ? 1.0 : kNaN);
+    }
+  return out;
+}
+
+/// Not identifiable: what the data do determine (named quantities whose ln-gradient is
+/// orthogonal to every undetermined direction, e.g. mu*N, else power products from the SVD),
+/// and the message.
+void explain_undetermined(const Scene& scene, const FitOptions& options, const std::vector<double>& p,
+                          const std::vector<double>& crel, const Svd& svd, FitResult& res) {
+  const std::size_t np = p.size();
+  Identifiability& id = res.identifiability;
+  const Eigen::MatrixXd& V = svd.V;
+  const std::vector<Eigen::Index>& det = svd.det;
+  const std::vector<Eigen::Index>& null = svd.null;
+  const Eigen::MatrixXd& cov_q = svd.cov_q;
+  const std::vector<bool>& undetermined = svd.undetermined;
+  auto ln_gradient = [&](const Quantity& q) {
+    Eigen::VectorXd g = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(np));
+    const double q0 = q.value(res.scene);
+    if (!(q0 > 0) || !std::isfinite(q0)) return g;
+    for (std::size_t k = 0; k < np; ++k) {
+      auto pp = p, pm = p;
+      const double h = 1e-6 * crel[k];
+      pp[k] += h;
+      pm[k] -= h;
+      try {
+        const double a = q.value(detail::scene_at(scene, options.free, pp));
+        const double b = q.value(detail::scene_at(scene, options.free, pm));
+        g[static_cast<Eigen::Index>(k)] = (std::log(a) - std::log(b)) / (2e-6);
+      } catch (const InputError&) {
+        g[static_cast<Eigen::Index>(k)] = kNaN;
+      }
+    }
+    return g;
+  };
+  std::vector<Eigen::VectorXd> named;
+  for (const Quantity& q : quantities()) {
+    const Eigen::VectorXd g = ln_gradient(q);
+    if (!g.allFinite() || g.norm() == 0) continue;
+    bool touches = false, orthogonal = true;
+    for (std::size_t k = 0; k < np; ++k)
+      if (undetermined[k] && std::abs(g[static_cast<Eigen::Index>(k)]) > 1e-3 * g.norm()) touches = true;
+    for (Eigen::Index i : null)
+      if (std::abs(g.dot(V.col(i))) > 1e-3 * g.norm()) orthogonal = false;
+    if (!touches || !orthogonal) continue;
+    // One name per direction: with the other factors fixed, mu*N/m is mu*N again.
+    bool same = false;
+    for (const Eigen::VectorXd& h : named)
+      if (std::abs(std::abs(h.dot(g)) - h.norm() * g.norm()) < 1e-6 * h.norm() * g.norm()) same = true;
+    if (same) continue;
+    named.push_back(g);
+    Combination cb;
+    cb.name = q.name;
+    for (std::size_t k = 0; k < np; ++k)
+      if (std::abs(g[static_cast<Eigen::Index>(k)]) > 1e-6) cb.exponents.emplace_back(options.free[k], g[static_cast<Eigen::Index>(k)]);
+    cb.value = q.value(res.scene);
+    cb.stderr_relative = std::sqrt(g.dot(cov_q * g));
+    id.determined.push_back(cb);
+  }
+  if (id.determined.empty()) {
+    // Power products: the directions of the determined subspace restricted to the
+    // undetermined keys (exponents scaled so the largest is 1).
+    for (Eigen::Index i : det) {
+      Eigen::VectorXd w = V.col(i);
+      bool touches = false;
+      for (std::size_t k = 0; k < np; ++k)
+        if (undetermined[k] && std::abs(w[static_cast<Eigen::Index>(k)]) > 1e-3) touches = true;
+      if (!touches) continue;
+      Eigen::Index imax = 0;
+      w.cwiseAbs().maxCoeff(&imax);
+      w /= w[imax];
+      Combination cb;
+      double lnv = 0;
+      std::ostringstream name;
+      for (std::size_t k = 0; k < np; ++k) {
+        const double e = w[static_cast<Eigen::Index>(k)];
+        if (std::abs(e) < 1e-3) continue;
+        cb.exponents.emplace_back(options.free[k], e);
+        if (!cb.name.empty()) name << " * ";
+        name << options.free[k] << "^" << std::setprecision(4) << e;
+        cb.name = name.str();
+        lnv += e * std::log(std::abs(p[k]));
+      }
+      cb.value = std::exp(lnv);
+      cb.stderr_relative = std::sqrt(w.dot(cov_q * w));
+      id.determined.push_back(cb);
+    }
+  }
+  std::ostringstream msg;
+  for (std::size_t k = 0; k < id.undetermined.size(); ++k)
+    msg << (k == 0 ? "" : k + 1 == id.undetermined.size() ? " and " : ", ") << id.undetermined[k];
+  msg << (id.undetermined.size() == 1 ? " is" : " are") << " not determined separately by these data";
+  if (!id.determined.empty()) {
+    msg << "; they determine only ";
+    for (std::size_t k = 0; k < id.determined.size(); ++k)
+      msg << (k ? ", " : "") << id.determined[k].name << " = " << std::setprecision(6) << id.determined[k].value
+          << " (relative stderr " << std::setprecision(3) << id.determined[k].stderr_relative << ")";
+  }
+  msg << ". No separate standard errors are given for them; fix all but one (--set) or add data that separate them.";
+  id.message = msg.str();
+}
+
+}  // namespace
+
+FitResult fit_trajectory(const Scene& scene, const Observations& obs, const FitOptions& options) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const Law law = detail::fit_law(scene, options.law);
+  const std::string gradients = checked_gradients(scene, options, law);
+  check_observations(obs, scene, options.free.size());
+
+  const std::size_t np = options.free.size();
+  const auto m = static_cast<int>(obs.count());
+  Problem prob(scene, obs, options, static_cast<int>(np), m);
+  prob.law = law;
+  prob.gradients = gradients;
+  prob.eager = gradients == "sensitivities";
+  FitResult res;
+  res.gradients = gradients;
+  res.law = scene.rough() ? to_string(law) : "";
+  Eigen::VectorXd u = start_point(scene, options, prob, res);
   // The start must run: its failure is the user's to see, not a point to step away from.
   (void)prob.evaluate(u, false);
 
@@ -244,148 +438,15 @@ FitResult fit_trajectory(const Scene& scene, const Observations& obs, const FitO
       throw SolverError(std::string("fit: the Jacobian at the last parameters failed (") + e.what() + ")");
     }
   }();
-  res.t = obs.t;
-  res.fitted = mp.pose;
-  res.residuals.assign(obs.t.size(), {kNaN, kNaN, kNaN});
-  Eigen::MatrixXd J(m, static_cast<Eigen::Index>(np));  // weighted, w.r.t. relative parameters
   std::vector<double> crel(np);
   for (std::size_t k = 0; k < np; ++k) crel[k] = detail::parameter_scale(scene, options.free[k], p[k]);
-  {
-    Eigen::Index r = 0;
-    for (std::size_t i = 0; i < obs.t.size(); ++i)
-      for (std::size_t j = 0; j < 3; ++j)
-        if (obs.has[j]) {
-          const double rr = (obs.value[j][i] - mp.pose[i][j]) / obs.sigma[j][i];
-          res.residuals[i][j] = rr;
-          res.chi2 += rr * rr;
-          for (std::size_t k = 0; k < np; ++k) J(r, static_cast<Eigen::Index>(k)) = mp.jac[i][k][j] * crel[k] / obs.sigma[j][i];
-          ++r;
-        }
-  }
+  const Eigen::MatrixXd J = residuals_and_jacobian(obs, mp, crel, m, res);
   res.dof = static_cast<long>(m) - static_cast<long>(np);
   res.chi2_dof = res.chi2 / static_cast<double>(res.dof);
   res.scene = detail::scene_at(scene, options.free, p);
 
-  // Identifiability: singular values of the scaled Jacobian.
-  Eigen::JacobiSVD<Eigen::MatrixXd> svd(J, Eigen::ComputeThinV);
-  const Eigen::VectorXd S = svd.singularValues();
-  const Eigen::MatrixXd V = svd.matrixV();
-  Identifiability& id = res.identifiability;
-  id.singular_values.assign(S.data(), S.data() + S.size());
-  const double smax = S.size() ? S[0] : 0.0;
-  id.condition = S.size() && S[S.size() - 1] > 0 ? smax / S[S.size() - 1] : std::numeric_limits<double>::infinity();
-  std::vector<Eigen::Index> det, null;
-  for (Eigen::Index i = 0; i < S.size(); ++i)
-    (smax > 0 && S[i] > options.identifiability_threshold * smax ? det : null).push_back(i);
-  Eigen::MatrixXd cov_q = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(np), static_cast<Eigen::Index>(np));
-  for (Eigen::Index i : det) cov_q += V.col(i) * V.col(i).transpose() / (S[i] * S[i]);
-  std::vector<bool> undetermined(np, false);
-  for (Eigen::Index i : null)
-    for (std::size_t k = 0; k < np; ++k)
-      if (std::abs(V(static_cast<Eigen::Index>(k), i)) > 1e-3) undetermined[k] = true;
-  for (std::size_t k = 0; k < np; ++k)
-    if (undetermined[k]) id.undetermined.push_back(options.free[k]);
-  id.identifiable = id.undetermined.empty();
-  for (std::size_t k = 0; k < np; ++k) {
-    const auto kk = static_cast<Eigen::Index>(k);
-    res.parameters[k].stderr_ = undetermined[k] ? kNaN : std::sqrt(cov_q(kk, kk)) * crel[k];
-  }
-  res.correlation.assign(np, std::vector<double>(np, kNaN));
-  for (std::size_t a = 0; a < np; ++a)
-    for (std::size_t b = 0; b < np; ++b) {
-      if (undetermined[a] || undetermined[b]) continue;
-      const auto ia = static_cast<Eigen::Index>(a), ib = static_cast<Eigen::Index>(b);
-      const double d = std::sqrt(cov_q(ia, ia) * cov_q(ib, ib));
-      res.correlation[a][b] = d > 0 ? cov_q(ia, ib) / d : (a == b ? 1.0 : kNaN);
-    }
-  if (!id.identifiable) {
-    // What the data do determine: named quantities whose ln-gradient is orthogonal to every
-    // undetermined direction (e.g. mu*N), else power products from the SVD.
-    auto ln_gradient = [&](const Quantity& q) {
-      Eigen::VectorXd g = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(np));
-      const double q0 = q.value(res.scene);
-      if (!(q0 > 0) || !std::isfinite(q0)) return g;
-      for (std::size_t k = 0; k < np; ++k) {
-        auto pp = p, pm = p;
-        const double h = 1e-6 * crel[k];
-        pp[k] += h;
-        pm[k] -= h;
-        try {
-          const double a = q.value(detail::scene_at(scene, options.free, pp));
-          const double b = q.value(detail::scene_at(scene, options.free, pm));
-          g[static_cast<Eigen::Index>(k)] = (std::log(a) - std::log(b)) / (2e-6);
-        } catch (const InputError&) {
-          g[static_cast<Eigen::Index>(k)] = kNaN;
-        }
-      }
-      return g;
-    };
-    std::vector<Eigen::VectorXd> named;
-    for (const Quantity& q : quantities()) {
-      const Eigen::VectorXd g = ln_gradient(q);
-      if (!g.allFinite() || g.norm() == 0) continue;
-      bool touches = false, orthogonal = true;
-      for (std::size_t k = 0; k < np; ++k)
-        if (undetermined[k] && std::abs(g[static_cast<Eigen::Index>(k)]) > 1e-3 * g.norm()) touches = true;
-      for (Eigen::Index i : null)
-        if (std::abs(g.dot(V.col(i))) > 1e-3 * g.norm()) orthogonal = false;
-      if (!touches || !orthogonal) continue;
-      // One name per direction: with the other factors fixed, mu*N/m is mu*N again.
-      bool same = false;
-      for (const Eigen::VectorXd& h : named)
-        if (std::abs(std::abs(h.dot(g)) - h.norm() * g.norm()) < 1e-6 * h.norm() * g.norm()) same = true;
-      if (same) continue;
-      named.push_back(g);
-      Combination cb;
-      cb.name = q.name;
-      for (std::size_t k = 0; k < np; ++k)
-        if (std::abs(g[static_cast<Eigen::Index>(k)]) > 1e-6) cb.exponents.emplace_back(options.free[k], g[static_cast<Eigen::Index>(k)]);
-      cb.value = q.value(res.scene);
-      cb.stderr_relative = std::sqrt(g.dot(cov_q * g));
-      id.determined.push_back(cb);
-    }
-    if (id.determined.empty()) {
-      // Power products: the directions of the determined subspace restricted to the
-      // undetermined keys (exponents scaled so the largest is 1).
-      for (Eigen::Index i : det) {
-        Eigen::VectorXd w = V.col(i);
-        bool touches = false;
-        for (std::size_t k = 0; k < np; ++k)
-          if (undetermined[k] && std::abs(w[static_cast<Eigen::Index>(k)]) > 1e-3) touches = true;
-        if (!touches) continue;
-        Eigen::Index imax = 0;
-        w.cwiseAbs().maxCoeff(&imax);
-        w /= w[imax];
-        Combination cb;
-        double lnv = 0;
-        std::ostringstream name;
-        for (std::size_t k = 0; k < np; ++k) {
-          const double e = w[static_cast<Eigen::Index>(k)];
-          if (std::abs(e) < 1e-3) continue;
-          cb.exponents.emplace_back(options.free[k], e);
-          if (!cb.name.empty()) name << " * ";
-          name << options.free[k] << "^" << std::setprecision(4) << e;
-          cb.name = name.str();
-          lnv += e * std::log(std::abs(p[k]));
-        }
-        cb.value = std::exp(lnv);
-        cb.stderr_relative = std::sqrt(w.dot(cov_q * w));
-        id.determined.push_back(cb);
-      }
-    }
-    std::ostringstream msg;
-    for (std::size_t k = 0; k < id.undetermined.size(); ++k)
-      msg << (k == 0 ? "" : k + 1 == id.undetermined.size() ? " and " : ", ") << id.undetermined[k];
-    msg << (id.undetermined.size() == 1 ? " is" : " are") << " not determined separately by these data";
-    if (!id.determined.empty()) {
-      msg << "; they determine only ";
-      for (std::size_t k = 0; k < id.determined.size(); ++k)
-        msg << (k ? ", " : "") << id.determined[k].name << " = " << std::setprecision(6) << id.determined[k].value
-            << " (relative stderr " << std::setprecision(3) << id.determined[k].stderr_relative << ")";
-    }
-    msg << ". No separate standard errors are given for them; fix all but one (--set) or add data that separate them.";
-    id.message = msg.str();
-  }
+  const Svd svd = identifiability(J, options, crel, res);
+  if (!res.identifiability.identifiable) explain_undetermined(scene, options, p, crel, svd, res);
   res.n_forward_solves = prob.solves;
   res.n_sensitivity_solves = prob.sens_solves;
   res.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
