@@ -82,6 +82,11 @@ std::string LoadReport::to_text() const {
 }
 
 // ------------------------------------------------------------------ assembly
+// One function on purpose (~200 lines): its passes (every term; then the terms below the
+// threshold dropped and the contact redone, kept only if N moves less than the threshold)
+// share one list of terms through the lambdas below, and the report is written as they run.
+// Cutting it means a LoadAssembly object holding that list; worth it when a third pass or a
+// second contact model per body comes.
 LoadReport assemble_normal_load(const Environment& env, const Body& body, const LoadOptions& opt) {
   require_positive("rtol", opt.rtol);
   require_nonnegative("drop_fraction", opt.drop_fraction);

@@ -174,6 +174,13 @@ double speed_scaled(const RoughBarModel& m, const double* y) {
 
 }  // namespace
 
+// One event loop (~250 lines): slide, locate the rest event (a step hook, then a regula falsi
+// whose sub-integrations stop at the main integration's terminal test), decide stick or slide
+// by Gauss' principle, hold the stick until the push overcomes the limit surface. Every branch
+// reads and writes the same state (mode, the last state and time, the pending event, the
+// outputs emitted), so its named steps are the helpers above (rest_event, analyse_rest, ...)
+// and the loop stays whole; cutting it further means a StickSlip state object, planned with
+// the event-located iCOR changes of issue 33.
 StickSlipResult integrate_coulomb(const RoughBarModel& model, const BsOptions<double>& options, const double* y0,
                                   const std::vector<double>& tout, const StickSlipObserver& observer) {
   StickSlipResult out;

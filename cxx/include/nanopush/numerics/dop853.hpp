@@ -281,6 +281,10 @@ class Dop853 {
 
   /// Integrate; y holds the initial state on entry and, on return, the state at t_reached
   /// (the last output time on success; the end of the last accepted step on a failure).
+  /// One loop (~190 lines) on purpose: the 12 stages, the two error estimators and the
+  /// dense-output stages share the stage vectors k1..k10 and the step state, and the loop is
+  /// written as dop853.f's so a reader can follow the book; Bulirsch-Stoer's integrate (cut into
+  /// steps) shows the shape a split would take.
   template <class Rhs, class Observer>
   Dop853Result integrate(Rhs&& rhs, Scalar t0, Scalar* y, std::span<const Scalar> tout, Observer&& observer) {
     using Tb = dop853_tableau::T<Scalar>;
