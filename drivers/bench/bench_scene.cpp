@@ -9,6 +9,7 @@
 #include "nanopush/outputs/io.hpp"
 #include "nanopush/outputs/process.hpp"
 #include "nanopush/models/rough_bar.hpp"
+#include "nanopush/scenes/simulate.hpp"
 #include "nanopush/models/stick_slip.hpp"
 
 #include <limits>
@@ -174,12 +175,7 @@ Solve solve_coulomb_cvode(const Problem& p, const RoughBarModel& m, double rtol)
 }
 
 RoughBarModel bench_rough_model(const Scene& sc) {
-  RoughBarModel m;
-  m.mass = sc.mass;
-  m.inertia = sc.inertia;
-  m.geometry = sc.geometry;
-  m.muN = sc.friction_limit();
-  m.push = sc.push;
+  RoughBarModel m = rough_model(sc);  // the scene's model (simulate.hpp), then the start below
   // Started from rest, the thesis law has no friction direction at t = 0 and its first step
   // sees friction jump from 0 to mu N (a discontinuity no tolerance below ~1e-12 resolves).
   // The benchmark starts it in the direction the body actually takes (Gauss' principle,
