@@ -147,6 +147,7 @@ TEST_CASE("Coulomb law: the CVODE cross-check agrees to 1e-8", "[rough][coulomb]
     sc.surface.mu = mu;
     RunSettings a, b;
     a.law = b.law = Law::coulomb;
+    a.method = Method::faithful;  // the Bulirsch-Stoer of the thesis (the preset states auto)
     // CVODE's global error runs far above its rtol (BDF, order <= 5; ~1e-4 rad at 1e-10 where
     // BS is within 1e-9), so the reference runs 100 times tighter, as in the reproduce step.
     a.rtol = 1e-10;
@@ -287,6 +288,7 @@ TEST_CASE("Thesis law: C++ faithful and F77 agree to 1e-9 in theta wherever it d
     const Scene sc = preset(fig);
     RunSettings a, b;
     a.engine = nanopush::Engine::cxx;
+    a.method = Method::faithful;  // the F77 engine's steps (the presets state auto)
     b.engine = nanopush::Engine::f77;
     const Trajectory ta = run_engine(sc, a), tb = run_engine(sc, b);
     REQUIRE(ta.rows.size() == tb.rows.size());
@@ -299,6 +301,7 @@ TEST_CASE("Thesis law: C++ faithful and F77 agree to 1e-9 in theta wherever it d
   // Where it chatters (mu >= 0.13) both stop at the step budget, at the same sample.
   RunSettings a, b;
   a.allow_partial = b.allow_partial = true;
+  a.method = Method::faithful;
   b.engine = nanopush::Engine::f77;
   const Trajectory ta = run_engine(preset(27), a), tb = run_engine(preset(27), b);
   CHECK_FALSE(ta.complete);

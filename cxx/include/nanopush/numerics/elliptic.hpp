@@ -43,6 +43,13 @@ S jacobi_cn(S u, S k) {
   return static_cast<S>(boost::math::jacobi_cn(B(num::abs(k)), B(u)));
 }
 
+/// dn(u, k) for 0 <= |k| < 1 (Boost.Math jacobi_dn).
+template <typename S>
+S jacobi_dn(S u, S k) {
+  using B = elliptic_detail::boost_t<S>;
+  return static_cast<S>(boost::math::jacobi_dn(B(num::abs(k)), B(u)));
+}
+
 /// Exact pendulum I θ'' = -T sin(θ - θ*) from rest at θ0: returns θ(t) and ω(t).
 /// With φ = θ - θ*, k = sin(φ0/2), w0 = sqrt(T/I): φ(t) = 2 asin(k sn(K(k) - w0 t, k)).
 template <typename S>
@@ -60,12 +67,14 @@ struct Pendulum {
     const S u = num::fmod(K - w0 * t, 4 * K);
     return theta_eq + 2 * num::asin(k * jacobi_sn(u, k));
   }
-  /// ω = θ' = -2 k w0 cn(K - w0 t, k) (from φ = 2 asin(k sn(u)), dsn/du = cn dn and
-  /// sqrt(1 - k² sn²) = dn).
+  /// ω = θ' = -2 k w0 cn(u, k), u = K - w0 t (from φ = 2 asin(k sn(u)), dsn/du = cn dn and
+  /// sqrt(1 - k² sn²) = dn), with cn(u) = dn(u) sn(K - u) (sn(u + K) = cn(u)/dn(u)): the
+  /// argument K - u = w0 t (mod 4K) is exact at the turning points, so ω is 0 there exactly
+  /// (at t = 0: the state starts at rest), where cn(K) from the numerical K is ~eps.
   [[nodiscard]] S omega(S t) const {
     if (k == 0) return S(0);
     const S u = num::fmod(K - w0 * t, 4 * K);
-    return -2 * k * w0 * jacobi_cn(u, k);
+    return -2 * k * w0 * (jacobi_dn(u, k) * jacobi_sn(K - u, k));
   }
 };
 
