@@ -41,6 +41,20 @@ py::array_t<double> copy_vector(const std::vector<double>& v) {
   return py::array_t<double>(static_cast<py::ssize_t>(v.size()), v.data());
 }
 
+/// rtol (> 0; None = the scene's, 0) and atol (>= 0; None = the scene's, -1) from Python.
+void read_tolerances(const py::object& rtol, const py::object& atol, double& r, double& a) {
+  r = 0.0;
+  a = -1.0;
+  if (!rtol.is_none()) {
+    r = rtol.cast<double>();
+    require_positive("rtol", r);
+  }
+  if (!atol.is_none()) {
+    a = atol.cast<double>();
+    require_nonnegative("atol", a);
+  }
+}
+
 RunResult run(const Scene& scene, const std::string& engine, const std::string& method, const std::string& law,
               const py::object& rtol, const py::object& atol, const std::string& precision) {
   RunSettings rs;
@@ -48,16 +62,7 @@ RunResult run(const Scene& scene, const std::string& engine, const std::string& 
   rs.method = parse_optional_choice<Method>("method", method);
   rs.law = parse_optional_choice<Law>("law", law);
   rs.precision = parse_optional_choice<Precision>("precision", precision);
-  rs.rtol = 0.0;
-  rs.atol = -1.0;
-  if (!rtol.is_none()) {
-    rs.rtol = rtol.cast<double>();
-    require_positive("rtol", rs.rtol);
-  }
-  if (!atol.is_none()) {
-    rs.atol = atol.cast<double>();
-    require_nonnegative("atol", rs.atol);
-  }
+  read_tolerances(rtol, atol, rs.rtol, rs.atol);
   rs.allow_partial = true;  // a failure becomes nanopush.SolverError carrying the partial result
   RunResult r;
   r.scene = scene.name;
@@ -83,14 +88,7 @@ py::dict compare(const Scene& scene, const std::string& method, const std::strin
   CompareSettings cs;
   cs.method = method.empty() ? Method::faithful : parse_choice<Method>("method", method);
   cs.law = parse_optional_choice<Law>("law", law);
-  if (!rtol.is_none()) {
-    cs.rtol = rtol.cast<double>();
-    require_positive("rtol", cs.rtol);
-  }
-  if (!atol.is_none()) {
-    cs.atol = atol.cast<double>();
-    require_nonnegative("atol", cs.atol);
-  }
+  read_tolerances(rtol, atol, cs.rtol, cs.atol);
   if (!tolerance.is_none()) cs.tolerance = tolerance.cast<double>();
   EngineComparison r;
   const Scene own = scene;

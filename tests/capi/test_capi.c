@@ -8,14 +8,7 @@
 
 #include "nanopush.h"
 
-static int failures = 0;
-#define CHECK(cond)                                                 \
-  do {                                                              \
-    if (!(cond)) {                                                  \
-      ++failures;                                                   \
-      fprintf(stderr, "FAIL %s:%d: %s\n", __FILE__, __LINE__, #cond); \
-    }                                                               \
-  } while (0)
+#include "check.h"
 
 /* y' = -k y, y(0) = 1: exact y = exp(-k t). udata points at k. */
 static int decay(int n, double t, const double* y, double* dydt, void* udata) {

@@ -5,14 +5,7 @@
 
 #include "nanopush.h"
 
-static int failures = 0;
-#define CHECK(cond)                                                 \
-  do {                                                              \
-    if (!(cond)) {                                                  \
-      ++failures;                                                   \
-      fprintf(stderr, "FAIL %s:%d: %s\n", __FILE__, __LINE__, #cond); \
-    }                                                               \
-  } while (0)
+#include "check.h"
 
 int main(int argc, char** argv) {
   if (argc < 2) {

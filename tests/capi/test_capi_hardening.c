@@ -10,14 +10,7 @@
 
 #include "nanopush.h"
 
-static int failures = 0;
-#define CHECK(c)                                                            \
-  do {                                                                      \
-    if (!(c)) {                                                             \
-      fprintf(stderr, "%s:%d: CHECK failed: %s\n", __FILE__, __LINE__, #c); \
-      ++failures;                                                           \
-    }                                                                       \
-  } while (0)
+#include "check.h"
 
 static char msg[1024];
 /* The call's status is `want` and the message contains `text`. */

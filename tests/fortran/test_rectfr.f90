@@ -1,20 +1,8 @@
 !> FORTRAN 77 RECTFR/RECTFV on their own (no C++): exact oracles and error statuses.
 program test_rectfr
   use test_support, only: check, finish
+  use nanopush_f77_interfaces, only: rectfr, rectfv  ! the one declaration (fortran/bridge)
   implicit none
-  interface
-    subroutine rectfr(a, b, fmun, r, alpha, isense, fx, fy, fm, ierr)
-      double precision, intent(in) :: a, b, fmun, r, alpha
-      integer, intent(in) :: isense
-      double precision, intent(out) :: fx, fy, fm
-      integer, intent(out) :: ierr
-    end subroutine rectfr
-    subroutine rectfv(a, b, fmun, vx, vy, omega, fx, fy, fm, ierr)
-      double precision, intent(in) :: a, b, fmun, vx, vy, omega
-      double precision, intent(out) :: fx, fy, fm
-      integer, intent(out) :: ierr
-    end subroutine rectfv
-  end interface
   double precision :: fx, fy, fm, gx, gy, gm, expect, zero
   integer :: ierr
   zero = 0.0d0
