@@ -30,7 +30,7 @@ CLI::Validator count(long long lo, long long hi);
 template <class E>
 CLI::IsMember is_choice(std::initializer_list<E> only = {}) {
   std::vector<std::string> names;
-  for (const auto& [value, name] : ChoiceNames<E>::table)
+  for (const auto& [value, name] : NameTable<E>::table)
     if (only.size() == 0 || std::find(only.begin(), only.end(), value) != only.end()) names.emplace_back(name);
   return CLI::IsMember(names);
 }

@@ -17,31 +17,6 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 }  // namespace
 
-std::string_view medium_name(Medium m) {
-  switch (m) {
-    case Medium::vacuum: return "vacuum";
-    case Medium::humid_air: return "humid_air";
-    case Medium::liquid: return "liquid";
-  }
-  return "?";
-}
-std::string_view shape_name(Shape s) {
-  switch (s) {
-    case Shape::bar: return "bar";
-    case Shape::rod: return "rod";
-    case Shape::tube: return "tube";
-    case Shape::sphere: return "sphere";
-  }
-  return "?";
-}
-std::string_view term_status_name(TermStatus s) {
-  switch (s) {
-    case TermStatus::evaluated: return "evaluated";
-    case TermStatus::dropped: return "dropped";
-    case TermStatus::not_needed: return "not needed";
-  }
-  return "?";
-}
 
 double Body::volume() const {
   switch (shape) {

@@ -21,20 +21,11 @@ double rod_contact_half_width(const Rod& rod) {
 }
 
 DynamicIntegrator parse_dynamic_integrator(const std::string& field, const std::string& text) {
-  if (text == "automatic") return DynamicIntegrator::automatic;
-  if (text == "bulirsch-stoer" || text == "bulirsch_stoer") return DynamicIntegrator::bulirsch_stoer;
-  if (text == "cvode") return DynamicIntegrator::cvode;
-  throw InputError(field, text, "must be automatic, bulirsch-stoer or cvode");
+  // "bulirsch_stoer" too: Python's keyword spelling.
+  return parse_choice<DynamicIntegrator>(field, text == "bulirsch_stoer" ? "bulirsch-stoer" : text);
 }
 
-std::string to_string(DynamicIntegrator i) {
-  switch (i) {
-    case DynamicIntegrator::automatic: return "automatic";
-    case DynamicIntegrator::bulirsch_stoer: return "bulirsch-stoer";
-    case DynamicIntegrator::cvode: return "cvode";
-  }
-  return "?";
-}
+std::string to_string(DynamicIntegrator i) { return std::string(name_of(i)); }
 
 QuasiStaticIcor rectangle_quasi_static(double a, double b, double yn) {
   require_positive("a", a, "m");

@@ -111,21 +111,12 @@ constexpr const char* kCdToScript =
 }  // namespace
 
 Format parse_format(const std::string& text, const std::string& field) {
-  if (text == "png") return Format::png;
-  if (text == "svg") return Format::svg;
-  if (text == "pdf") return Format::pdf;
-  throw InputError(field, text, "must be one of png, svg, pdf");
+  if (const auto f = choice_from_name<Format>(text)) return *f;
+  throw InputError(field, text, "must be one of " + choice_names<Format>(", "));
 }
 void set_format(Format f) { g_format.store(static_cast<int>(f)); }
 Format format() { return static_cast<Format>(g_format.load()); }
-std::string extension(Format f) {
-  switch (f) {
-    case Format::png: return "png";
-    case Format::svg: return "svg";
-    case Format::pdf: return "pdf";
-  }
-  return "png";
-}
+std::string extension(Format f) { return std::string(name_of(f)); }
 std::filesystem::path figure_path(const std::filesystem::path& p) {
   std::string ext(1, '.');  // (not "." + ...: GCC 12 warns -Wrestrict on that)
   ext += extension(format());

@@ -192,10 +192,10 @@ Environment parse_environment(const toml::table& t, std::string_view path) {
   Fields f(t, path, table_keys("environment"));
   Environment e;
   const std::string medium = f.string("medium").value_or("vacuum");
-  if (medium == "vacuum") e.medium = Medium::vacuum;
-  else if (medium == "humid_air") e.medium = Medium::humid_air;
-  else if (medium == "liquid") e.medium = Medium::liquid;
-  else throw InputError(f.field("medium"), "\"" + medium + "\"", "must be one of: vacuum, humid_air, liquid");
+  if (const auto m = choice_from_name<Medium>(medium))
+    e.medium = *m;
+  else
+    throw InputError(f.field("medium"), "\"" + medium + "\"", "must be one of: " + choice_names<Medium>(", "));
 
   if (auto h = f.number("humidity")) {
     need_range(f.field("humidity"), *h, 0.0, 1.0);
@@ -245,39 +245,42 @@ Body parse_body(const toml::table& t, std::string_view path) {
   Body b;
   b.name = f.string("name").value_or(std::string(path));
   const auto shape = f.string("shape");
-  if (!shape) throw InputError(f.field("shape"), "(missing)", "required, one of: bar, rod, tube, sphere");
+  if (!shape) throw InputError(f.field("shape"), "(missing)", "required, one of: " + choice_names<Shape>(", "));
   auto forbid = [&](std::initializer_list<const char*> ks) {
     for (const char* k : ks)
       if (f.has(k)) throw InputError(f.field(k), node_text(*f.node(k)), "not used by shape = \"" + *shape + "\"");
   };
-  if (*shape == "bar") {
-    b.shape = Shape::bar;
-    forbid({"radius", "inner_radius"});
-    b.length = f.positive("length", "m");
-    b.width = f.positive("width", "m");
-    b.height = f.positive("height", "m");
-  } else if (*shape == "rod") {
-    b.shape = Shape::rod;
-    forbid({"width", "height", "inner_radius"});
-    b.radius = f.positive("radius", "m");
-    b.length = f.positive("length", "m");
-  } else if (*shape == "tube") {
-    b.shape = Shape::tube;
-    forbid({"width", "height"});
-    b.radius = f.positive("radius", "m");
-    b.length = f.positive("length", "m");
-    if (auto ri = f.number("inner_radius")) {
-      need_nonnegative(f.field("inner_radius"), *ri, "m");
-      if (!(*ri < b.radius))
-        throw InputError(f.field("inner_radius"), sfmt(*ri), "must be < radius = " + sfmt(b.radius) + " (m)");
-      b.inner_radius = *ri;
-    }
-  } else if (*shape == "sphere") {
-    b.shape = Shape::sphere;
-    forbid({"length", "width", "height", "inner_radius"});
-    b.radius = f.positive("radius", "m");
-  } else {
-    throw InputError(f.field("shape"), "\"" + *shape + "\"", "must be one of: bar, rod, tube, sphere");
+  const auto kind = choice_from_name<Shape>(*shape);
+  if (!kind)
+    throw InputError(f.field("shape"), "\"" + *shape + "\"", "must be one of: " + choice_names<Shape>(", "));
+  b.shape = *kind;
+  switch (*kind) {
+    case Shape::bar:
+      forbid({"radius", "inner_radius"});
+      b.length = f.positive("length", "m");
+      b.width = f.positive("width", "m");
+      b.height = f.positive("height", "m");
+      break;
+    case Shape::rod:
+      forbid({"width", "height", "inner_radius"});
+      b.radius = f.positive("radius", "m");
+      b.length = f.positive("length", "m");
+      break;
+    case Shape::tube:
+      forbid({"width", "height"});
+      b.radius = f.positive("radius", "m");
+      b.length = f.positive("length", "m");
+      if (auto ri = f.number("inner_radius")) {
+        need_nonnegative(f.field("inner_radius"), *ri, "m");
+        if (!(*ri < b.radius))
+          throw InputError(f.field("inner_radius"), sfmt(*ri), "must be < radius = " + sfmt(b.radius) + " (m)");
+        b.inner_radius = *ri;
+      }
+      break;
+    case Shape::sphere:
+      forbid({"length", "width", "height", "inner_radius"});
+      b.radius = f.positive("radius", "m");
+      break;
   }
   b.material = parse_material(f, true);
   return b;

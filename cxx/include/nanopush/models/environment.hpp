@@ -10,11 +10,17 @@
 #include <vector>
 
 #include "nanopush/models/surface_forces.hpp"
+#include "nanopush/numerics/names.hpp"
 
 namespace nanopush {
 
 enum class Medium { vacuum, humid_air, liquid };
-std::string_view medium_name(Medium m);
+template <>
+struct NameTable<Medium> {
+  static constexpr std::array<std::pair<Medium, std::string_view>, 3> table{
+      {{Medium::vacuum, "vacuum"}, {Medium::humid_air, "humid_air"}, {Medium::liquid, "liquid"}}};
+};
+inline std::string_view medium_name(Medium m) { return name_of(m); }
 
 struct Environment {
   Medium medium = Medium::vacuum;
@@ -30,7 +36,12 @@ struct Environment {
 };
 
 enum class Shape { bar, rod, tube, sphere };
-std::string_view shape_name(Shape s);
+template <>
+struct NameTable<Shape> {
+  static constexpr std::array<std::pair<Shape, std::string_view>, 4> table{
+      {{Shape::bar, "bar"}, {Shape::rod, "rod"}, {Shape::tube, "tube"}, {Shape::sphere, "sphere"}}};
+};
+inline std::string_view shape_name(Shape s) { return name_of(s); }
 
 struct Body {
   std::string name = "body";
@@ -59,7 +70,12 @@ struct LoadOptions {
 };
 
 enum class TermStatus { evaluated, dropped, not_needed };
-std::string_view term_status_name(TermStatus s);
+template <>
+struct NameTable<TermStatus> {
+  static constexpr std::array<std::pair<TermStatus, std::string_view>, 3> table{
+      {{TermStatus::evaluated, "evaluated"}, {TermStatus::dropped, "dropped"}, {TermStatus::not_needed, "not needed"}}};
+};
+inline std::string_view term_status_name(TermStatus s) { return name_of(s); }
 
 struct LoadTerm {
   std::string name;   ///< gravity, buoyancy, van_der_waals, capillary, contact_adhesion

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "nanopush/models/icor.hpp"
+#include "nanopush/numerics/names.hpp"
 
 namespace nanopush::icor {
 
@@ -37,7 +38,7 @@ double rod_contact_half_width(const Rod& rod);
 QuasiStaticIcor rectangle_quasi_static(double a, double b, double yn);
 
 enum class DynamicIntegrator { automatic, bulirsch_stoer, cvode };
-std::string to_string(DynamicIntegrator i);
+std::string to_string(DynamicIntegrator i);  // its name (the name table below)
 /// The integrator named `text` (automatic, bulirsch-stoer or bulirsch_stoer, cvode), or
 /// InputError naming `field`.
 DynamicIntegrator parse_dynamic_integrator(const std::string& field, const std::string& text);
@@ -88,3 +89,13 @@ struct DynamicIcorRun {
 DynamicIcorRun dynamic_icor(const DynamicIcorSetup& setup);
 
 }  // namespace nanopush::icor
+
+namespace nanopush {
+template <>
+struct NameTable<icor::DynamicIntegrator> {
+  static constexpr std::array<std::pair<icor::DynamicIntegrator, std::string_view>, 3> table{
+      {{icor::DynamicIntegrator::automatic, "automatic"},
+       {icor::DynamicIntegrator::bulirsch_stoer, "bulirsch-stoer"},
+       {icor::DynamicIntegrator::cvode, "cvode"}}};
+};
+}  // namespace nanopush

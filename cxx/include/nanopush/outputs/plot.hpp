@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "nanopush/numerics/names.hpp"
+
 namespace nanopush::plot {
 
 struct Series {
@@ -35,7 +37,7 @@ struct Figure {
   std::vector<Panel> panels;
 };
 
-enum class Format { png, svg, pdf };
+enum class Format { png, svg, pdf };  // names: the table after this namespace
 /// Parse "png" | "svg" | "pdf" (throws InputError naming `field` otherwise).
 Format parse_format(const std::string& text, const std::string& field = "--format");
 /// Set / read the figure format of this process (default png).
@@ -62,3 +64,11 @@ std::filesystem::path render_script(const std::string& body, const std::filesyst
 bool available();
 
 }  // namespace nanopush::plot
+
+namespace nanopush {
+template <>
+struct NameTable<plot::Format> {
+  static constexpr std::array<std::pair<plot::Format, std::string_view>, 3> table{
+      {{plot::Format::png, "png"}, {plot::Format::svg, "svg"}, {plot::Format::pdf, "pdf"}}};
+};
+}  // namespace nanopush

@@ -8,7 +8,7 @@
 #include <string_view>
 #include <utility>
 
-#include "nanopush/numerics/error.hpp"
+#include "nanopush/numerics/names.hpp"
 
 namespace nanopush {
 
@@ -25,16 +25,14 @@ enum class Precision { double_, long_, quad };
 /// The support surface: smooth (docs/models.md section A) or rough (section C).
 enum class SurfaceKind { smooth, rough };
 
-/// The name table of a choice: every value and its name, in the order messages list them.
-template <class E>
-struct ChoiceNames;
+/// The name tables (numerics/names.hpp): every value and its name, in the order messages list them.
 template <>
-struct ChoiceNames<Engine> {
+struct NameTable<Engine> {
   static constexpr std::array<std::pair<Engine, std::string_view>, 2> table{
       {{Engine::cxx, "cxx"}, {Engine::f77, "f77"}}};
 };
 template <>
-struct ChoiceNames<Method> {
+struct NameTable<Method> {
   static constexpr std::array<std::pair<Method, std::string_view>, 5> table{{{Method::faithful, "faithful"},
                                                                              {Method::modern, "modern"},
                                                                              {Method::dop853, "dop853"},
@@ -42,73 +40,19 @@ struct ChoiceNames<Method> {
                                                                              {Method::automatic, "auto"}}};
 };
 template <>
-struct ChoiceNames<Law> {
+struct NameTable<Law> {
   static constexpr std::array<std::pair<Law, std::string_view>, 3> table{
       {{Law::thesis, "thesis"}, {Law::printed, "printed"}, {Law::coulomb, "coulomb"}}};
 };
 template <>
-struct ChoiceNames<Precision> {
+struct NameTable<Precision> {
   static constexpr std::array<std::pair<Precision, std::string_view>, 3> table{
       {{Precision::double_, "double"}, {Precision::long_, "long"}, {Precision::quad, "quad"}}};
 };
 template <>
-struct ChoiceNames<SurfaceKind> {
+struct NameTable<SurfaceKind> {
   static constexpr std::array<std::pair<SurfaceKind, std::string_view>, 2> table{
       {{SurfaceKind::smooth, "smooth"}, {SurfaceKind::rough, "rough"}}};
 };
-
-/// The name of a value ("auto" for Method::automatic).
-template <class E>
-constexpr std::string_view name_of(E e) {
-  for (const auto& [v, n] : ChoiceNames<E>::table)
-    if (v == e) return n;
-  return "?";
-}
-template <class E>
-std::string to_string(E e)
-  requires requires { ChoiceNames<E>::table; }
-{
-  return std::string(name_of(e));
-}
-
-/// The value of a name, or nullopt.
-template <class E>
-constexpr std::optional<E> choice_from_name(std::string_view text) {
-  for (const auto& [v, n] : ChoiceNames<E>::table)
-    if (n == text) return v;
-  return std::nullopt;
-}
-
-/// The names joined for a message: "a, b or c" (sep ", ", last " or "), or with `last` = ", "
-/// the key table's "a, b, c".
-template <class E>
-std::string choice_names(std::string_view last = " or ") {
-  std::string s;
-  const auto& t = ChoiceNames<E>::table;
-  for (std::size_t i = 0; i < t.size(); ++i) {
-    if (i > 0) s += i + 1 == t.size() ? std::string(last) : std::string(", ");
-    s += t[i].second;
-  }
-  return s;
-}
-
-/// The name of a choice that may be unset ("" when unset: the scene's).
-template <class E>
-std::string name_or_empty(const std::optional<E>& e) {
-  return e ? std::string(name_of(*e)) : std::string();
-}
-
-/// The value of `text`, or InputError "field = text: must be a, b or c".
-template <class E>
-E parse_choice(const std::string& field, std::string_view text) {
-  if (const auto v = choice_from_name<E>(text)) return *v;
-  throw InputError(field, std::string(text), "must be " + choice_names<E>());
-}
-/// As parse_choice, "" = unset (the scene's).
-template <class E>
-std::optional<E> parse_optional_choice(const std::string& field, std::string_view text) {
-  if (text.empty()) return std::nullopt;
-  return parse_choice<E>(field, text);
-}
 
 }  // namespace nanopush
