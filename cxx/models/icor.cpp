@@ -197,18 +197,7 @@ BrentRoots real_roots_brent(const std::vector<double>& c_in) {
   if (c_in.size() > 4) throw InputError("polynomial degree", std::to_string(c_in.size() - 1), "must be <= 3");
   std::vector<double> c = c_in;
   BrentRoots out;
-  const double big = std::numeric_limits<double>::max() / 16.0;
-  while (!c.empty()) {  // the same deflation rule as roots::polynomial_roots
-    const double lead = c.back();
-    bool infinite = (lead == 0.0);
-    if (!infinite)
-      for (std::size_t i = 0; i + 1 < c.size(); ++i)
-        if (std::fabs(c[i]) > big * std::fabs(lead)) { infinite = true; break; }
-    if (!infinite) break;
-    c.pop_back();
-    ++out.at_infinity;
-  }
-  if (c.empty()) throw InputError("polynomial coefficients", "all zero", "at least one coefficient must be non-zero");
+  out.at_infinity = roots::deflate_roots_at_infinity(c);  // the rule of polynomial_roots
   const std::size_t n = c.size() - 1;
   if (n == 0) return out;
   // p(x)/max(1,|x|)^n: same sign and zeros as p, no overflow for huge |x|.

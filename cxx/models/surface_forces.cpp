@@ -167,24 +167,25 @@ double layered_vdw_pressure(double A232p, double A121, double A32p3, double A1p2
   return (A232p / (D * D * D) - g1 / (a * a * a) - g2 / (b * b * b) + g3 / (c * c * c)) / (6.0 * kPi);
 }
 
-double metallic_adhesion_energy_per_area(double gamma, double D, double D0, double lambda) {
+namespace {
+/// The metallic-adhesion model's checks, counted once per evaluation; x = (D - D0)/lambda_M.
+double metallic_x(double gamma, double D, double D0, double lambda) {
   count(Model::metallic_adhesion);
   require_nonnegative("surface energy gamma", gamma, "J/m^2");
   require_positive("equilibrium distance D0", D0, "m");
   require_positive("decay length lambda_M", lambda, "m");
   need_gap("separation D", D);
   if (D < D0) throw InputError("separation D", fmt(D), "must be >= D0 = " + fmt(D0) + " (m)");
-  const double x = (D - D0) / lambda;
+  return (D - D0) / lambda;
+}
+}  // namespace
+
+double metallic_adhesion_energy_per_area(double gamma, double D, double D0, double lambda) {
+  const double x = metallic_x(gamma, D, D0, lambda);
   return -2.0 * gamma * (1.0 + x) * std::exp(-x);
 }
 double metallic_adhesion_pressure(double gamma, double D, double D0, double lambda) {
-  count(Model::metallic_adhesion);
-  require_nonnegative("surface energy gamma", gamma, "J/m^2");
-  require_positive("equilibrium distance D0", D0, "m");
-  require_positive("decay length lambda_M", lambda, "m");
-  need_gap("separation D", D);
-  if (D < D0) throw InputError("separation D", fmt(D), "must be >= D0 = " + fmt(D0) + " (m)");
-  const double x = (D - D0) / lambda;
+  const double x = metallic_x(gamma, D, D0, lambda);
   return 2.0 * gamma * x * std::exp(-x) / lambda;
 }
 

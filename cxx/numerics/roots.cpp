@@ -63,14 +63,11 @@ std::vector<std::complex<double>> companion_eigenvalues(const std::vector<double
 }
 }  // namespace
 
-PolynomialRoots polynomial_roots(const std::vector<double>& c_in) {
-  for (std::size_t i = 0; i < c_in.size(); ++i)
-    require_finite("polynomial coefficient c[" + std::to_string(i) + "]", c_in[i]);
-  std::vector<double> c = c_in;
-  PolynomialRoots out;
+int deflate_roots_at_infinity(std::vector<double>& c) {
   // Deflate the leading coefficient while it is zero or so small that the monic
   // companion matrix would overflow: those roots are at infinity.
   const double big = std::numeric_limits<double>::max() / 16.0;
+  int at_infinity = 0;
   while (!c.empty()) {
     const double lead = c.back();
     bool infinite = (lead == 0.0);
@@ -79,9 +76,18 @@ PolynomialRoots polynomial_roots(const std::vector<double>& c_in) {
         if (std::fabs(c[i]) > big * std::fabs(lead)) { infinite = true; break; }
     if (!infinite) break;
     c.pop_back();
-    ++out.at_infinity;
+    ++at_infinity;
   }
   if (c.empty()) throw InputError("polynomial coefficients", "all zero", "at least one coefficient must be non-zero");
+  return at_infinity;
+}
+
+PolynomialRoots polynomial_roots(const std::vector<double>& c_in) {
+  for (std::size_t i = 0; i < c_in.size(); ++i)
+    require_finite("polynomial coefficient c[" + std::to_string(i) + "]", c_in[i]);
+  std::vector<double> c = c_in;
+  PolynomialRoots out;
+  out.at_infinity = deflate_roots_at_infinity(c);
   // Zero roots: trailing zero constant terms.
   std::size_t zeros = 0;
   while (zeros + 1 < c.size() && c[zeros] == 0.0) ++zeros;
@@ -92,6 +98,7 @@ PolynomialRoots polynomial_roots(const std::vector<double>& c_in) {
     auto big_roots = companion_eigenvalues(c);
     std::vector<double> rev(c.rbegin(), c.rend());  // x^n p(1/x); rev.back() = c[0] != 0
     bool rev_ok = true;  // the reversed companion matrix must not overflow either
+    const double big = std::numeric_limits<double>::max() / 16.0;  // as deflate_roots_at_infinity
     for (std::size_t i = 0; i + 1 < rev.size(); ++i)
       if (std::fabs(rev[i]) > big * std::fabs(rev.back())) rev_ok = false;
     auto inv = rev_ok ? companion_eigenvalues(rev) : std::vector<std::complex<double>>{};

@@ -9,16 +9,10 @@
 // as transcribed with 30 digits in SciPy's scipy/integrate/_ivp/dop853_coefficients.py
 // (BSD); the code is written from the book, not from either program.
 //
-// Integrator contract (integration.hpp, OdeIntegrator; no step hook):
-//   - rhs(t, y, dydt) -> int: writes dydt[0..n), returns 0, or non-zero to abort (the value
-//     is reported in Result::rhs_status; no retry).
-//   - integrate(rhs, t0, y, tout, observer): advances y from t0 through every output time in
-//     `tout` (non-decreasing, >= t0) and calls observer(i, tout[i], y) at each. Only the last
-//     output time ends a step: the steps are chosen by the error alone and the outputs inside
-//     a step come from the dense output (three more RHS evaluations in a step that holds one).
-//     The step sequence does not depend on the output times (tested).
-//   - No allocation per step: all work arrays are allocated at construction (std::array
-//     when N > 0).
+// The integrator follows the contract of integration.hpp (OdeIntegrator; no step hook). Its
+// own: only the last output time ends a step; the steps are chosen by the error alone and the
+// outputs inside a step come from the dense output (three more RHS evaluations in a step that
+// holds one), so the step sequence does not depend on the output times (tested).
 // Templated on the scalar S and the dimension N (N = Dynamic for a size chosen at run time).
 // The coefficients are long double literals (30 digits transcribed, ~19 kept): in
 // __float128 the method's order conditions hold to ~1e-19 only, so it is no extended-

@@ -176,6 +176,11 @@ struct PolynomialRoots {
 /// that c_i/c_n overflows, is deflated and counted in `at_infinity`; zero constant terms
 /// give exact zero roots. Throws InputError for non-finite or all-zero coefficients.
 PolynomialRoots polynomial_roots(const std::vector<double>& c_ascending);
+/// The deflation rule of polynomial_roots, for every polynomial root finder: drops the leading
+/// coefficients that are zero or so small that the monic companion matrix would overflow
+/// (|c_i| > (DBL_MAX/16) |c_n|) and returns how many (roots at infinity). InputError when every
+/// coefficient is zero.
+int deflate_roots_at_infinity(std::vector<double>& c_ascending);
 
 /// Parlett-Reinsch balancing (radix 2) of a square matrix in place: a diagonal similarity
 /// D^-1 A D with powers of two, so eigenvalues are unchanged and bit-exact scaling is used.
