@@ -12,6 +12,8 @@
 #include <system_error>
 #include <unistd.h>
 
+#include "nanopush/numerics/error.hpp"
+
 namespace nanopush {
 
 // ---- temporaries a signal handler can remove --------------------------------------------
@@ -62,7 +64,24 @@ void TemporaryPath::release() {
   slot_ = -2;
 }
 
+void require_replaceable(const std::filesystem::path& target) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status st = fs::symlink_status(target, ec);
+  if (ec || st.type() == fs::file_type::not_found || st.type() == fs::file_type::regular) return;
+  const char* what = st.type() == fs::file_type::symlink     ? "a symbolic link"
+                     : st.type() == fs::file_type::directory ? "a directory"
+                     : st.type() == fs::file_type::fifo      ? "a FIFO"
+                     : st.type() == fs::file_type::character || st.type() == fs::file_type::block ? "a device"
+                                                                                                 : "not a regular file";
+  throw InputError("output", target.string(),
+                   std::string("is ") + what +
+                       ": nanopush writes a file whole and renames it into place, which would replace it; give "
+                       "the path of a regular file or of one that does not exist");
+}
+
 AtomicFile::AtomicFile(std::filesystem::path target) : target_(std::move(target)) {
+  require_replaceable(target_);
   if (target_.has_parent_path()) std::filesystem::create_directories(target_.parent_path());
   tmp_ = target_;
   tmp_ += ".tmp." + std::to_string(::getpid());
@@ -93,6 +112,7 @@ void AtomicFile::finish() {
 
 void AtomicFile::commit() {
   finish();
+  require_replaceable(target_);  // again: the path may have changed while the file was written
   std::error_code ec;
   std::filesystem::rename(tmp_, target_, ec);
   if (ec) throw std::runtime_error("cannot rename " + tmp_.string() + " to " + target_.string() + ": " + ec.message());

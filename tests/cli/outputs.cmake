@@ -54,3 +54,11 @@ set_tests_properties(cli.outputs.figures_check PROPERTIES FIXTURES_REQUIRED cli_
 add_test(NAME cli.outputs.format_bad COMMAND ${_np} reproduce --only fig3_6 --format jpg --out ${_figs}-bad)
 set_tests_properties(cli.outputs.format_bad PROPERTIES
   PASS_REGULAR_EXPRESSION "--format = jpg: must be one of png, svg, pdf")
+
+# An output path that is a FIFO (or a device, a directory, a symlink) is refused with exit 2 and
+# left as it was; a scratch directory of the build tree holds it.
+add_test(NAME cli.outputs.refuses_fifo
+  COMMAND sh -c "d=\"$1/outputs-fifo\"; rm -rf \"$d\"; mkdir -p \"$d\"; mkfifo \"$d/o.csv\"; \"$0\" run fig3_6c --out \"$d/o.csv\" --quiet; rc=$?; [ $rc -eq 2 ] && [ -p \"$d/o.csv\" ] && echo refused-ok rc=$rc"
+          ${_np} ${CMAKE_CURRENT_BINARY_DIR})
+set_tests_properties(cli.outputs.refuses_fifo PROPERTIES ENVIRONMENT "${_env}" PASS_REGULAR_EXPRESSION "refused-ok"
+  FAIL_REGULAR_EXPRESSION "internal error")

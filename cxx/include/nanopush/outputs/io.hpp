@@ -20,6 +20,10 @@ namespace nanopush {
 /// committed). Async-signal-safe: for a SIGINT/SIGTERM handler, which then exits.
 void remove_temporary_files() noexcept;
 
+/// InputError when `target` exists and is not a regular file (a device, FIFO, directory or
+/// symbolic link): an output never replaces what is not its own.
+void require_replaceable(const std::filesystem::path& target);
+
 class AtomicFile {
  public:
   explicit AtomicFile(std::filesystem::path target);
