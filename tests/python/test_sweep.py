@@ -86,8 +86,10 @@ def test_failing_points_are_kept(cli, tmp_path):
         nanopush.sweep("friction", vary={"R": [1e-9, -1, 2e-9]}, check=True)
 
 
-def test_errors_before_any_work(cli):
-    msg = cli.error("sweep", "--task", "friction", "--vary", "Q=1,2", "--out", "/dev/null", "--quiet")
+def test_errors_before_any_work(cli, tmp_path):
+    out = tmp_path / "never_written.csv"  # a scratch path, never a real /dev node
+    msg = cli.error("sweep", "--task", "friction", "--vary", "Q=1,2", "--out", str(out), "--quiet")
+    assert not out.exists()
     with pytest.raises(nanopush.InputError) as e:
         nanopush.sweep("friction", vary={"Q": [1, 2]})
     assert str(e.value) == msg
