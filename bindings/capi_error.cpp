@@ -22,6 +22,9 @@ const char* nanopush_status_name(int status) {
     case NANOPUSH_INTERNAL: return "internal error";
     case NANOPUSH_TOO_MUCH_ACCURACY: return "too much accuracy requested";
     case NANOPUSH_TOUT_TOO_CLOSE: return "output time too close";
+    case NANOPUSH_NO_STATIC_FRICTION: return "no static friction (the law cannot hold the object at rest)";
+    case NANOPUSH_LAW_BLOWUP: return "the printed law blew up";
+    case NANOPUSH_ACCURACY_NOT_REACHED: return "accuracy not reached";
     default: return "unknown status";
   }
 }

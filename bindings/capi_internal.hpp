@@ -80,6 +80,9 @@ int guarded(nanopush_error err, F&& f) noexcept {
   } catch (const InputError& e) {
     return record(err, NANOPUSH_BAD_INPUT, e.what());
   } catch (const SolverError& e) {
+    if (e.outcome() == "no_static_friction") return record(err, NANOPUSH_NO_STATIC_FRICTION, e.what());
+    if (e.outcome() == "law_blowup") return record(err, NANOPUSH_LAW_BLOWUP, e.what());
+    if (e.outcome() == "accuracy_not_reached") return record(err, NANOPUSH_ACCURACY_NOT_REACHED, e.what());
     return record(err, solver_status(e.what()), e.what());
   } catch (const std::bad_alloc&) {
     return record(err, NANOPUSH_OUT_OF_MEMORY, "out of memory");

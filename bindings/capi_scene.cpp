@@ -131,6 +131,12 @@ nanopush_trajectory nanopush_run_scene_ex(nanopush_error error, nanopush_scene s
 nanopush_trajectory nanopush_run_scene_precision(nanopush_error error, nanopush_scene scene, const char* engine,
                                                  const char* method, const char* law, const char* precision,
                                                  double rtol, double atol) {
+  return nanopush_run_scene_accuracy(error, scene, engine, method, law, precision, rtol, atol, -1.0, -1);
+}
+
+nanopush_trajectory nanopush_run_scene_accuracy(nanopush_error error, nanopush_scene scene, const char* engine,
+                                                const char* method, const char* law, const char* precision,
+                                                double rtol, double atol, double accuracy, int error_estimate) {
   nanopush_trajectory out = nullptr;
   guarded(error, [&] {
     require_handle(scene, "scene");
@@ -143,6 +149,10 @@ nanopush_trajectory nanopush_run_scene_precision(nanopush_error error, nanopush_
     nanopush::require_finite("atol", atol);
     rs.rtol = rtol;
     rs.atol = atol;
+    nanopush::require_finite("accuracy", accuracy);
+    if (accuracy > 0) nanopush::require_range("accuracy", accuracy, nanopush::kAccuracyMin, nanopush::kAccuracyMax);
+    rs.accuracy = accuracy < 0 ? -1.0 : accuracy;
+    if (error_estimate >= 0) rs.error_estimate = error_estimate != 0;
     auto t = std::make_unique<nanopush_trajectory_s>();
     t->trajectory = nanopush::run_engine(scene->scene, rs);
     out = t.release();
@@ -168,8 +178,8 @@ int nanopush_compare(nanopush_error error, nanopush_scene scene, const char* met
     const nanopush::EngineComparison r = nanopush::compare_engines(scene->scene, cs);
     if (const nanopush::Trajectory* t = r.failed())
       throw nanopush::SolverError(scene->scene.name + " (" + t->engine_label +
-                                  (r.failed_run >= 2 ? ", reference run" : "") + "): " + to_string(t->stats.status) +
-                                  (t->stats.message.empty() ? "" : ": " + t->stats.message));
+                                  (r.failed_run >= 2 ? ", reference run" : "") + "): " + t->outcome_text(),
+                                  to_string(t->outcome));
     *agree = r.agree ? 1 : 0;
     const bool same = r.kind == nanopush::CompareKind::same_steps;
     if (kind) *kind = same ? 0 : 1;
@@ -226,6 +236,29 @@ int nanopush_trajectory_get_counts(nanopush_error error, nanopush_trajectory tra
 int nanopush_trajectory_get_engine(nanopush_error error, nanopush_trajectory trajectory, char* buffer,
                                    int size) {
   return trajectory_string(error, trajectory, &nanopush::Trajectory::engine_label, buffer, size);
+}
+
+int nanopush_trajectory_get_error(nanopush_error error, nanopush_trajectory trajectory, double* estimate) {
+  return guarded(error, [&] {
+    require_handle(trajectory, "trajectory");
+    require_handle(estimate, "estimate");
+    const nanopush::Trajectory& tr = trajectory->trajectory;
+    const nanopush::ErrorEstimate& e = tr.error;
+    const double v[NANOPUSH_ERROR_SIZE] = {e.norm, e.x, e.y, e.theta, e.trajectory, tr.rtol,
+                                           static_cast<double>(tr.nfcn_total())};
+    std::copy(v, v + NANOPUSH_ERROR_SIZE, estimate);
+    return NANOPUSH_OK;
+  });
+}
+
+int nanopush_trajectory_get_outcome(nanopush_error error, nanopush_trajectory trajectory, char* buffer, int size) {
+  int n = -1;
+  guarded(error, [&] {
+    require_handle(trajectory, "trajectory");
+    n = copy_string(nanopush::to_string(trajectory->trajectory.outcome), buffer, size);
+    return NANOPUSH_OK;
+  });
+  return n;
 }
 
 int nanopush_trajectory_get_precision(nanopush_error error, nanopush_trajectory trajectory, char* buffer,

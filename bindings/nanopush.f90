@@ -66,7 +66,12 @@ module nanopush
                                 NANOPUSH_SOLVER_FAILED = 6, NANOPUSH_NULL_HANDLE = 7, &
                                 NANOPUSH_BUFFER_TOO_SMALL = 8, NANOPUSH_OUT_OF_MEMORY = 9, &
                                 NANOPUSH_INTERNAL = 10, NANOPUSH_TOO_MUCH_ACCURACY = 11, &
-                                NANOPUSH_TOUT_TOO_CLOSE = 12
+                                NANOPUSH_TOUT_TOO_CLOSE = 12, NANOPUSH_NO_STATIC_FRICTION = 13, &
+                                NANOPUSH_LAW_BLOWUP = 14, NANOPUSH_ACCURACY_NOT_REACHED = 15
+  !> Entries of nanopush_run's error estimate (docs/accuracy.md): the final pose in the accuracy
+  !> norm, |dx| [m], |dy| [m], |dtheta| [rad], the norm's max over the trajectory, the rtol used,
+  !> RHS evaluations in all; NaN where not estimated.
+  integer, parameter, public :: NANOPUSH_ERROR_SIZE = 7
   !> Rows of a trajectory array and their meaning.
   integer, parameter, public :: NANOPUSH_TRAJECTORY_COLUMNS = 10
   !> Components of the state (x, y, theta, vx, vy, omega), the rows of state_ext.
@@ -229,6 +234,27 @@ module nanopush
       character(kind=c_char), intent(in) :: engine(*), method(*), law(*), precision(*)
       real(c_double), value, intent(in) :: rtol, atol
     end function c_run_scene_precision
+    type(c_ptr) function c_run_scene_accuracy(error, scene, engine, method, law, precision, rtol, atol, &
+                                              accuracy, error_estimate) bind(C, name="nanopush_run_scene_accuracy")
+      import :: c_ptr, c_char, c_double, c_int
+      type(c_ptr), value, intent(in) :: error, scene
+      character(kind=c_char), intent(in) :: engine(*), method(*), law(*), precision(*)
+      real(c_double), value, intent(in) :: rtol, atol, accuracy
+      integer(c_int), value, intent(in) :: error_estimate
+    end function c_run_scene_accuracy
+    integer(c_int) function c_trajectory_get_error(error, trajectory, estimate) &
+        bind(C, name="nanopush_trajectory_get_error")
+      import :: c_int, c_ptr, c_double
+      type(c_ptr), value, intent(in) :: error, trajectory
+      real(c_double), intent(out) :: estimate(*)
+    end function c_trajectory_get_error
+    integer(c_int) function c_trajectory_get_outcome(error, trajectory, buffer, size) &
+        bind(C, name="nanopush_trajectory_get_outcome")
+      import :: c_int, c_ptr, c_char
+      type(c_ptr), value, intent(in) :: error, trajectory
+      character(kind=c_char), intent(out) :: buffer(*)
+      integer(c_int), value, intent(in) :: size
+    end function c_trajectory_get_outcome
     integer(c_int) function c_trajectory_get_state_extended(error, trajectory, capacity, hi, lo) &
         bind(C, name="nanopush_trajectory_get_state_extended")
       import :: c_int, c_ptr, c_double
@@ -589,12 +615,19 @@ contains
   !>   values rounded to double, and state_ext(6, nrows), if present, the state
   !>   (x, y, theta, vx, vy, omega) at each output time in kind nanopush_qp, with the digits of
   !>   the integration (to about 1e-32 relative for quad; exact for long and double).
+  !>   accuracy: the error asked for of the final pose, in [1e-14, 0.1] (0: none; default: the
+  !>   scene's solver.accuracy); error_estimate: estimate the error (default: the scene's);
+  !>   error(NANOPUSH_ERROR_SIZE): the estimate (docs/accuracy.md); outcome: "ok" or "at_rest".
   !> On failure traj (and state_ext) are allocated with zero columns.
   subroutine nanopush_run(scene, traj, engine, method, rtol, atol, counts, stat, errmsg, law, &
-                          precision, state_ext)
+                          precision, state_ext, accuracy, error_estimate, error, outcome)
     type(nanopush_scene), intent(in) :: scene
     real(dp), allocatable, intent(out) :: traj(:, :)
     character(len=*), intent(in), optional :: engine, method, law, precision
+    real(dp), intent(in), optional :: accuracy
+    logical, intent(in), optional :: error_estimate
+    real(dp), intent(out), optional :: error(NANOPUSH_ERROR_SIZE)
+    character(len=:), allocatable, intent(out), optional :: outcome
     real(nanopush_qp), allocatable, intent(out), optional :: state_ext(:, :)
     real(dp), intent(in), optional :: rtol, atol
     integer(c_int64_t), intent(out), optional :: counts(3)
@@ -606,18 +639,31 @@ contains
     integer(c_int) :: nrows, st
     integer(c_int64_t) :: cnt(3)
     real(c_double), allocatable :: hi(:, :), lo(:, :)
+    real(c_double) :: acc, est(NANOPUSH_ERROR_SIZE)
+    integer(c_int) :: want_estimate, nchar
+    character(kind=c_char, len=32) :: oc
     r = 0
     a = -1
+    acc = -1
+    want_estimate = -1
     if (present(rtol)) r = rtol
     if (present(atol)) a = atol
+    if (present(accuracy)) acc = accuracy
+    if (present(error_estimate)) want_estimate = merge(1_c_int, 0_c_int, error_estimate)
     cnt = 0
     nrows = 0
+    est = ieee_value(est, ieee_quiet_nan)
     err = c_new_error()
-    tr = c_run_scene_precision(err, scene%ptr, to_c(opt(engine)), to_c(opt(method)), to_c(opt(law)), &
-                               to_c(opt(precision)), r, a)
+    tr = c_run_scene_accuracy(err, scene%ptr, to_c(opt(engine)), to_c(opt(method)), to_c(opt(law)), &
+                              to_c(opt(precision)), r, a, acc, want_estimate)
     if (c_associated(tr)) then
       st = c_trajectory_get_size(err, tr, nrows)
       if (st == 0) st = c_trajectory_get_counts(err, tr, cnt)
+      if (st == 0) st = c_trajectory_get_error(err, tr, est)
+      if (st == 0 .and. present(outcome)) then
+        nchar = c_trajectory_get_outcome(err, tr, oc, len(oc, kind=c_int))
+        if (nchar >= 0) outcome = oc(1:min(nchar, len(oc)))
+      end if
       if (st /= 0) nrows = 0
       allocate (traj(NANOPUSH_TRAJECTORY_COLUMNS, nrows))
       if (st == 0) st = c_trajectory_get_data(err, tr, nrows, traj)
@@ -635,6 +681,10 @@ contains
       if (.not. allocated(state_ext)) allocate (state_ext(NANOPUSH_STATE_SIZE, 0))
     end if
     if (present(counts)) counts = cnt
+    if (present(error)) error = est
+    if (present(outcome)) then
+      if (.not. allocated(outcome)) outcome = ""
+    end if
     call finish(err, "nanopush_run", msg, stat)
     if (present(errmsg)) errmsg = msg
   end subroutine nanopush_run

@@ -30,7 +30,7 @@ extern "C" {
 #endif
 
 /* Version of this interface: major * 10000 + minor * 100 + patch. */
-#define NANOPUSH_API_VERSION 600
+#define NANOPUSH_API_VERSION 700
 int nanopush_get_api_version(void);
 
 /* ---- Status codes ---------------------------------------------------------------------- */
@@ -48,6 +48,10 @@ int nanopush_get_api_version(void);
 #define NANOPUSH_INTERNAL 10        /* any other C++ exception (a bug: please report) */
 #define NANOPUSH_TOO_MUCH_ACCURACY 11 /* integrate: rtol/atol ask more than double precision gives */
 #define NANOPUSH_TOUT_TOO_CLOSE 12    /* integrate: output times closer than the smallest step */
+/* How a run ended when it is not an answer (docs/errors.md, "Outcomes"): */
+#define NANOPUSH_NO_STATIC_FRICTION 13  /* thesis/printed law: the object is at rest inside the limit surface */
+#define NANOPUSH_LAW_BLOWUP 14          /* printed law: its friction injected energy and the run blew up */
+#define NANOPUSH_ACCURACY_NOT_REACHED 15 /* the accuracy asked for could not be met (message: best estimate) */
 
 /* Short fixed description of a status code ("bad input", ...); never NULL, static storage. */
 const char* nanopush_status_name(int status);
@@ -219,6 +223,28 @@ nanopush_trajectory nanopush_run_scene_precision(nanopush_error error, nanopush_
  * full length or -1. */
 int nanopush_trajectory_get_precision(nanopush_error error, nanopush_trajectory trajectory, char* buffer,
                                       int size);
+/* nanopush_run_scene_precision plus (docs/accuracy.md)
+ *   accuracy:       the error asked for of the final pose, in [1e-14, 0.1] (rtol, and under
+ *                   method "auto" the method, chosen to reach it); 0 = none (run at rtol);
+ *                   < 0 = the scene's solver.accuracy. Not reached: NANOPUSH_ACCURACY_NOT_REACHED
+ *                   with the best estimate in the message.
+ *   error_estimate: 1 estimate the error of the answer (a companion run at rtol/100), 0 do not,
+ *                   < 0 the scene's solver.error_estimate (the other run functions use the scene's). */
+nanopush_trajectory nanopush_run_scene_accuracy(nanopush_error error, nanopush_scene scene, const char* engine,
+                                                const char* method, const char* law, const char* precision,
+                                                double rtol, double atol, double accuracy, int error_estimate);
+/* The estimated global error of the answer, NaN where not estimated:
+ *   estimate[0] the final pose in the accuracy norm: max(|dx|, |dy|) / length scale, |dtheta|
+ *   estimate[1] |dx| [m], [2] |dy| [m], [3] |dtheta| [rad] at t_end
+ *   estimate[4] the norm's max over the output times
+ *   estimate[5] the rtol the answer used (--accuracy chooses it)
+ *   estimate[6] RHS evaluations in all (the answer's and the estimate's) */
+#define NANOPUSH_ERROR_SIZE 7
+int nanopush_trajectory_get_error(nanopush_error error, nanopush_trajectory trajectory, double* estimate);
+/* How the run ended: "ok" or "at_rest" (the push cannot break static friction: the object
+ * stays), into buffer[size]; full length or -1 as nanopush_trajectory_get_engine. */
+int nanopush_trajectory_get_outcome(nanopush_error error, nanopush_trajectory trajectory, char* buffer, int size);
+
 /* Number of state components: x [m], y [m], theta [rad], vx [m/s], vy [m/s], omega [rad/s]. */
 #define NANOPUSH_STATE_SIZE 6
 /* The state at each output time to the precision of the integration, as an unevaluated sum of

@@ -206,6 +206,7 @@ int bench_sweep(const BenchSweepOptions& o) {
   Scene sc = load_scene_arg(kScene, {kLaw});
   set_provenance_scene(kScene);
   RunSettings rs;
+  rs.error_estimate = false;  // the throughput of plain points (docs/performance.md)
   (void)resolve_settings(sc, rs);
   const auto task = sweep::make_run_task(sc, rs);
   std::vector<sweep::Axis> axes;

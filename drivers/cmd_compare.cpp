@@ -63,10 +63,11 @@ int compare_cmd(const CompareOptions& o) {
               << " asks for the coulomb law; the engines are compared under the thesis law, which both implement\n";
   if (const Trajectory* t = r.failed()) {
     const bool reference = r.failed_run >= 2;
-    std::cerr << "nanopush: solver failure: " << sc.name << " (" << t->engine_label
+    std::cerr << "nanopush: " << (t->outcome == Outcome::solver_failure ? "solver failure" : to_string(t->outcome))
+              << ": " << sc.name << " (" << t->engine_label
               << (reference ? ", the reference run at rtol " + fmt(r.rtol_tight) : std::string()) << "): "
-              << to_string(t->stats.status) << ": " << t->stats.message << "\n";
-    print_rest_diagnosis(sc, r.law, *t, std::cerr);
+              << t->outcome_message << "\n";
+    if (t->outcome == Outcome::solver_failure) print_rest_diagnosis(sc, r.law, *t, std::cerr);
     std::cerr << (reference ? "  no reference to judge the engines against: nothing to compare\n"
                             : "  nothing to compare\n");
     return 3;

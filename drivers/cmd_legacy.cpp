@@ -108,6 +108,7 @@ int legacy_cmd(const LegacyOptions& o) {
   rs.engine = Engine::f77;
   rs.law = Law::thesis;
   rs.allow_partial = true;
+  rs.error_estimate = false;
   const Trajectory tr = run_engine(sc, rs);
   const std::size_t n = std::min(rows.size(), tr.rows.size());
   double dev = 0;

@@ -22,6 +22,8 @@ struct RunOptions {
   std::string scene, engine, method, out, law, precision;
   std::vector<std::string> sets;  ///< --set KEY=VALUE
   double rtol = 0, atol = -1;
+  double accuracy = -1;  ///< < 0: the scene's solver.accuracy
+  bool no_estimate = false;
   bool quiet = false;
   bool keep_partial = false;
 };
@@ -48,6 +50,7 @@ void add_common(CLI::App& app, RunOptions& o) {
                  "absolute tolerance, one value for every state component (default: the scene's; 0 = rtol times "
                  "each component's natural scale)")
       ->check(non_negative());
+  add_accuracy_options(app, o.accuracy, o.no_estimate);
 }
 
 void print_summary(const Scene& sc, const Trajectory& tr, double seconds, std::ostream& os) {
@@ -59,6 +62,7 @@ void print_summary(const Scene& sc, const Trajectory& tr, double seconds, std::o
      << "  RHS evaluations " << tr.stats.nfcn << ", accepted steps " << tr.stats.naccpt << ", rejected steps "
      << tr.stats.nrejct << ", wall time " << std::setprecision(3)
      << (seconds < 1 ? seconds * 1e3 : seconds) << (seconds < 1 ? " ms\n" : " s\n");
+  print_error_estimate(tr, os);
 }
 
 int run_cmd(const RunOptions& o) {
@@ -74,15 +78,18 @@ int run_cmd(const RunOptions& o) {
   rs.precision = parse_optional_choice<Precision>("precision", o.precision);
   rs.allow_partial = true;  // a failure is reported below (and its samples kept with --keep-partial)
   rs.progress = progress_printer(sc.name);
+  rs.accuracy = o.accuracy;
+  if (o.no_estimate) rs.error_estimate = false;
   const auto t0 = std::chrono::steady_clock::now();
   const Trajectory tr = run_engine(sc, rs);
   const double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::string out = o.out.empty() ? sc.name + "." + tr.engine_label + ".csv" : o.out;
   if (!tr.complete) {
     // Never presented as a result: a distinct name, a message, a non-zero exit.
-    std::cerr << "nanopush: solver failure: " << sc.name << " (" << tr.engine_label << "): " << to_string(tr.stats.status)
-              << ": " << tr.stats.message << "\n";
-    print_rest_diagnosis(sc, rs.law.value_or(sc.surface.law), tr, std::cerr);
+    std::cerr << "nanopush: " << (tr.outcome == Outcome::solver_failure ? "solver failure" : to_string(tr.outcome))
+              << ": " << sc.name << " (" << tr.engine_label << "): " << tr.outcome_message << "\n";
+    if (tr.outcome == Outcome::accuracy_not_reached) print_error_estimate(tr, std::cerr);
+    if (tr.outcome == Outcome::solver_failure) print_rest_diagnosis(sc, rs.law.value_or(sc.surface.law), tr, std::cerr);
     if (o.keep_partial) {
       if (out == "-") out = sc.name + "." + tr.engine_label + ".csv";
       const std::string partial = out + ".partial.csv";
@@ -108,6 +115,7 @@ int run_cmd(const RunOptions& o) {
   }
   if (!o.quiet) {
     print_summary(sc, tr, dt, std::cerr);
+    if (tr.outcome == Outcome::at_rest) std::cerr << "  at_rest: " << tr.outcome_message << "\n";
     for (const auto& e : tr.events) {
       if (e.t == 0.0)
         std::cerr << "  at rest at t = 0: " << (e.stuck ? "stays stuck (applied wrench inside the limit surface)" : "the push starts it sliding") << "\n";

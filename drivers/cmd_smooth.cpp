@@ -59,6 +59,7 @@ void reproduce_fig3_6(ReproduceContext& ctx) {
     cx.engine = Engine::cxx;
     cx.method = Method::faithful;
     fo.engine = Engine::f77;
+    cx.error_estimate = fo.error_estimate = false;  // judged against the exact solution
     const Trajectory tc = run_engine(sc, cx);
     const Trajectory tf = run_engine(sc, fo);
     const std::string scene_id = "thesis/fig3_6" + c;

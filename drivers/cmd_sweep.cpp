@@ -35,6 +35,8 @@ struct SweepOptions {
   std::string points;
   unsigned jobs = 0;
   bool quiet = false;
+  double accuracy = -1;  ///< task run: < 0 the scene's solver.accuracy
+  bool no_estimate = false;
 };
 
 /// The [sweep] table of a scene file: vary, vary_log, points, set, task (docs/sweeps.md).
@@ -126,6 +128,8 @@ int sweep_cmd(SweepOptions o) {
     rs.engine = parse_optional_choice<Engine>("engine", o.engine);
     rs.method = parse_optional_choice<Method>("method", o.method);
     rs.law = parse_optional_choice<Law>("law", o.law);
+    rs.accuracy = o.accuracy;
+    if (o.no_estimate) rs.error_estimate = false;
     (void)resolve_settings(sc, rs);  // bad engine/method/law combinations before any work
     if (!o.trajectories.empty()) std::filesystem::create_directories(o.trajectories);
     task = sweep::make_run_task(sc, rs, o.trajectories);
@@ -201,6 +205,7 @@ RegisterCommand reg{
            ->check(is_choice<Method>());
        app.add_option("--law", o->law, "task run, rough scenes: thesis, printed or coulomb (default: the scene's)")
            ->check(is_choice<Law>());
+       add_accuracy_options(app, o->accuracy, o->no_estimate);
        app.add_option("--out", o->out, "the table (CSV; default <scene>_sweep.csv); its journal is OUT.journal");
        app.add_option("--trajectories", o->trajectories, "task run: also keep each point's trajectory, DIR/point_<i>.csv");
        app.add_option("--jobs", o->jobs, "threads (default: every core; under MPI, the cores per rank)")

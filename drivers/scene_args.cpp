@@ -34,6 +34,35 @@ Scene load_scene_arg(const std::string& scene, const std::vector<std::string>& s
   return sc;
 }
 
+void add_accuracy_options(CLI::App& app, double& accuracy, bool& no_estimate) {
+  app.add_option("--accuracy", accuracy,
+                 "the error asked for of the final pose (positions relative to max(object length, distance "
+                 "travelled), angle in rad), in [1e-14, 0.1]: rtol (and under method auto the method) is chosen to "
+                 "reach it, checked by companion runs (docs/accuracy.md); default: the scene's solver.accuracy "
+                 "(0: run at rtol)")
+      ->check(CLI::Range(0.0, kAccuracyMax));
+  app.add_flag("--no-error-estimate", no_estimate,
+               "skip the companion run at rtol/100 that estimates the error of the answer (about halves the cost)");
+}
+
+void print_error_estimate(const Trajectory& tr, std::ostream& os) {
+  const ErrorEstimate& e = tr.error;
+  os << std::setprecision(3);
+  if (tr.accuracy.requested > 0)
+    os << "  accuracy asked " << tr.accuracy.requested << ": " << (tr.accuracy.reached ? "reached" : "NOT reached")
+       << " with rtol " << tr.accuracy.rtol_used << " (" << tr.accuracy.runs << " runs, " << tr.nfcn_total()
+       << " RHS evaluations in all)\n";
+  if (e.available) {
+    os << "  error estimate of the final pose " << e.norm << " (|dx| " << e.x << " m, |dy| " << e.y
+       << " m, |dtheta| " << e.theta << " rad; lengths over " << e.length_scale << " m), over the trajectory "
+       << e.trajectory << (e.basis == "looser" ? "; the difference from the looser run [" : "; from a companion run [")
+       << e.companion << "] at rtol " << e.companion_rtol << " (" << e.nfcn << " RHS evaluations beside the answer's)\n";
+    if (!e.note.empty()) os << "  (" << e.note << ")\n";
+  } else if (!e.note.empty()) {
+    os << "  no error estimate: " << e.note << "\n";
+  }
+}
+
 /// Why a rough run under the thesis (or printed) law gave up, when the bar came to rest: the sign
 /// law of eq 3.40 has no direction at zero velocity, so once friction can hold the push
 /// (mu N > F) the integrator chatters about rest until its step budget is spent

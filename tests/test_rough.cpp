@@ -298,7 +298,9 @@ TEST_CASE("Thesis law: C++ faithful and F77 agree to 1e-9 in theta wherever it d
     CHECK(d <= 1e-9);
     CHECK(ta.stats.nfcn == tb.stats.nfcn);
   }
-  // Where it chatters (mu >= 0.13) both stop at the step budget, at the same sample.
+  // Where the bar comes to rest inside the limit surface (mu >= 0.13) both end in
+  // no_static_friction: the C++ engine's watch stops where the velocity reverses at rest, the
+  // F77 engine at its step budget; they agree on every sample both reached.
   RunSettings a, b;
   a.allow_partial = b.allow_partial = true;
   a.method = Method::faithful;
@@ -306,7 +308,13 @@ TEST_CASE("Thesis law: C++ faithful and F77 agree to 1e-9 in theta wherever it d
   const Trajectory ta = run_engine(preset(27), a), tb = run_engine(preset(27), b);
   CHECK_FALSE(ta.complete);
   CHECK_FALSE(tb.complete);
-  CHECK(ta.rows.size() == tb.rows.size());
+  CHECK(ta.outcome == Outcome::no_static_friction);
+  CHECK(tb.outcome == Outcome::no_static_friction);
+  REQUIRE(ta.rows.size() > 10);
+  REQUIRE(ta.rows.size() <= tb.rows.size());
+  double d = 0;
+  for (std::size_t i = 0; i < ta.rows.size(); ++i) d = std::max(d, std::fabs(ta.rows[i][col::theta] - tb.rows[i][col::theta]));
+  CHECK(d <= 1e-9);
 }
 
 TEST_CASE("A rough scene with [environment] and [body] takes its normal load from the force models",

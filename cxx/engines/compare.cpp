@@ -122,6 +122,9 @@ EngineComparison compare_engines(const Scene& scene, const CompareSettings& cs) 
   a.rtol = b.rtol = cs.rtol;
   a.atol = b.atol = cs.atol;
   a.allow_partial = b.allow_partial = true;
+  // The verdict has its own references (below): no companion runs for error estimates.
+  a.error_estimate = b.error_estimate = false;
+  a.accuracy = b.accuracy = 0;
   r.rtol = resolve_settings(scene, a).rtol;
   r.cxx = run_engine(scene, a);
   r.f77 = run_engine(scene, b);

@@ -1,6 +1,8 @@
 // The F77 engine (BSINT through the bind(C) bridge) and the choice between engines.
 #include "nanopush/engines/engines.hpp"
 
+#include "nanopush/engines/accuracy.hpp"
+
 #include <algorithm>
 #include <string>
 #include <vector>
@@ -20,6 +22,14 @@ Trajectory run_f77(const Scene& sc, const ResolvedSettings& s) {
   tr.rtol = s.rtol;
   tr.atol = sc.atol_vector(s.rtol, s.atol, n);
   const auto tout = sc.output_times();
+  if (sc.rough() && starts_stuck(sc)) {  // the sign law cannot hold it: no 100,000 steps of chatter
+    tr.rows.push_back(make_row(0.0, sc.initial.data()));
+    tr.work_push.push_back(0.0);
+    tr.work_fric.push_back(0.0);
+    tr.outcome = Outcome::no_static_friction;
+    tr.outcome_message = no_static_friction_outcome(sc, s.law, 0.0);
+    return tr;
+  }
   std::vector<double> yout(tout.size() * static_cast<std::size_t>(n));
   std::vector<double> y(static_cast<std::size_t>(n), 0.0);
   std::copy(sc.initial.begin(), sc.initial.end(), y.begin());
@@ -73,9 +83,16 @@ Trajectory run_f77(const Scene& sc, const ResolvedSettings& s) {
   return tr;
 }
 
+Trajectory run_resolved(const Scene& scene, const ResolvedSettings& s) {
+  ResolvedSettings keep = s;
+  keep.allow_partial = true;
+  return finish_run(scene, keep, s.engine == Engine::f77 ? run_f77(scene, s) : run_cxx(scene, s));
+}
+
 Trajectory run_engine(const Scene& scene, const RunSettings& settings) {
   const ResolvedSettings s = resolve_settings(scene, settings);
-  return finish_run(scene, s, s.engine == Engine::f77 ? run_f77(scene, s) : run_cxx(scene, s));
+  Trajectory tr = s.accuracy > 0 ? run_to_accuracy(scene, settings) : run_estimated(scene, s);
+  return finish_run(scene, s, std::move(tr));
 }
 
 }  // namespace nanopush

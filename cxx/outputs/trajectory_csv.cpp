@@ -1,5 +1,6 @@
 #include "nanopush/outputs/trajectory_csv.hpp"
 
+#include <cmath>
 #include <stdexcept>
 #include <vector>
 
@@ -30,8 +31,38 @@ const Columns& trajectory_column_specs() {
   return c;
 }
 
+RunInfo trajectory_run_info(const Trajectory& tr) {
+  const auto num = [](double v) { return std::isfinite(v) ? csv_number(v) : std::string("null"); };
+  RunInfo info{{"engine", json_string(tr.engine_label)},
+               {"precision", json_string(tr.precision)},
+               {"outcome", json_string(to_string(tr.outcome))},
+               {"rtol", num(tr.rtol)},
+               {"nfcn", std::to_string(tr.stats.nfcn)},
+               {"nfcn_total", std::to_string(tr.nfcn_total())}};
+  const ErrorEstimate& e = tr.error;
+  if (e.available || !e.note.empty()) {
+    info.push_back({"error_estimate", num(e.norm)});
+    info.push_back({"error_x_m", num(e.x)});
+    info.push_back({"error_y_m", num(e.y)});
+    info.push_back({"error_theta_rad", num(e.theta)});
+    info.push_back({"error_trajectory", num(e.trajectory)});
+    info.push_back({"error_length_scale_m", num(e.length_scale)});
+    info.push_back({"error_basis", json_string(e.basis)});
+    info.push_back({"error_companion", json_string(e.companion)});
+    info.push_back({"error_companion_rtol", num(e.companion_rtol)});
+    if (!e.note.empty()) info.push_back({"error_note", json_string(e.note)});
+  }
+  if (tr.accuracy.requested > 0) {
+    info.push_back({"accuracy_requested", num(tr.accuracy.requested)});
+    info.push_back({"accuracy_reached", tr.accuracy.reached ? "true" : "false"});
+    info.push_back({"accuracy_runs", std::to_string(tr.accuracy.runs)});
+  }
+  return info;
+}
+
 void write_trajectory_csv(const Trajectory& tr, const std::filesystem::path& path, const std::string& scene) {
   CsvWriter w(path, trajectory_column_specs(), scene);
+  w.run_info(trajectory_run_info(tr));
   for (const auto& r : tr.rows) w.row(std::vector<double>(r.begin(), r.end()));
   w.commit();
 }

@@ -73,6 +73,13 @@ std::optional<std::string> opt_string(const toml::table& t, const std::string& w
     throw InputError(where + "." + key, node_text(*n), "must be a string");
 }
 
+std::optional<bool> opt_bool(const toml::table& t, const std::string& where, const std::string& key) {
+  const toml::node* n = t.get(key);
+  if (!n) return std::nullopt;
+  if (!n->is_boolean()) throw InputError(where + "." + key, node_text(*n), "must be true or false");
+  return n->value<bool>();
+}
+
 void require_one_of(const std::string& field, const std::string& v, const std::vector<std::string>& allowed) {
   if (std::find(allowed.begin(), allowed.end(), v) == allowed.end())
     throw InputError(field, "\"" + v + "\"", "must be one of: " + join(allowed));
@@ -362,6 +369,11 @@ void read_solver(const toml::table& root, Scene& sc) {
     require_nonnegative("solver.atol", *a);
     sc.solver.atol = *a;
   }
+  if (auto e = opt_number(t, "solver", "accuracy")) {
+    if (*e != 0.0) require_range("solver.accuracy", *e, kAccuracyMin, kAccuracyMax);
+    sc.solver.accuracy = *e;
+  }
+  sc.solver.error_estimate = opt_bool(t, "solver", "error_estimate").value_or(true);
   sc.solver.engine = scene_choice<Engine>("solver.engine", opt_string(t, "solver", "engine").value_or("cxx"));
   // Default: auto (the fastest method for the rtol asked, docs/dop853.md); a scene on the F77
   // engine has its one method.

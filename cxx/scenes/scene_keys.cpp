@@ -74,6 +74,11 @@ const std::vector<SceneKey>& scene_keys() {
       {"solver.rtol", K::number, "1", "1e-10", "[1e-30, 0.1]", "all", "relative tolerance"},
       {"solver.atol", K::number, "SI of each state", "0", ">= 0", "all",
        "absolute tolerance of every component; 0 = rtol x each component's natural scale"},
+      {"solver.accuracy", K::number, "1", "0 (none)", "0 or [1e-14, 0.1]", "all",
+       "the error asked for of the final pose (positions / max(length, distance), angle in rad): chooses rtol "
+       "(docs/accuracy.md)"},
+      {"solver.error_estimate", K::boolean, "", "true", "true, false", "all",
+       "estimate the global error of the answer by a companion run at rtol/100 (docs/accuracy.md)"},
       {"solver.engine", K::string, "", "cxx", engines, "all", "the C++ solver or the FORTRAN 77 reproduction"},
       {"solver.method", K::string, "", "auto", methods, "all",
        "C++ integrator: Bulirsch-Stoer configuration (docs/bulirsch_stoer.md), dop853 (Dormand-Prince 8(5,3), "

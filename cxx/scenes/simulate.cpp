@@ -1,6 +1,9 @@
 #include "nanopush/scenes/simulate.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <functional>
 #include <type_traits>
 
 #include "nanopush/numerics/dop853.hpp"
@@ -49,6 +52,9 @@ ResolvedSettings resolve_settings(const Scene& scene, const RunSettings& in) {
     s.method = dop853_runs && s.rtol >= kAutoDop853RtolMin ? Method::dop853 : Method::modern;
   }
   s.atol = in.atol < 0 ? scene.solver.atol : in.atol;
+  s.error_estimate = in.error_estimate.value_or(scene.solver.error_estimate);
+  s.accuracy = in.accuracy < 0 ? scene.solver.accuracy : in.accuracy;
+  if (s.accuracy != 0.0) require_range(in.accuracy < 0 ? "solver.accuracy" : "accuracy", s.accuracy, kAccuracyMin, kAccuracyMax);
   if (s.method == Method::cvode && !(coulomb && s.engine == Engine::cxx))
     throw InputError("method", "cvode", "the CVODE cross-check exists for rough scenes under the coulomb law only");
   // dop853 (docs/dop853.md) integrates a smooth ODE: the smooth scenes, and the rough ones
@@ -176,6 +182,77 @@ std::int64_t set_start_direction(RoughBarModel& m, const double* y) {
   return ra.evaluations;
 }
 
+/// The thesis and printed laws have no static friction (eq 3.40's sign has no value at rest).
+/// Where the push cannot break the coulomb limit surface and the body comes to rest, friction
+/// reverses at every step and the integrator creeps until it gives up (100,000 steps). The
+/// watch stops the run there: after an accepted step that reverses the velocity or the spin
+/// while the speed (|v| + |omega| L) is below 1e-3 of the run's largest and within ten steps of
+/// friction's deceleration of zero, and where the rest analysis says the push is inside the
+/// limit surface. It also keeps the largest work of friction (positive: the printed law
+/// injected energy).
+struct RestWatch {
+  RoughBarModel coulomb;  ///< the contact under the coulomb law (analyse_rest)
+  double accel = 0, spin = 0;  ///< friction's deceleration scales [m/s^2], [rad/s^2]
+  double lever = 0;            ///< [m] the body's half-length, the speed's lever for omega
+  double max_speed = 0;
+  double max_work_fric = 0;
+  bool came_to_rest = false;
+  double t_rest = 0;
+
+  explicit RestWatch(const RoughBarModel& m) : coulomb(m) {
+    coulomb.printed = false;
+    coulomb.f77_forms = false;
+    coulomb.rest_direction = {0.0, 0.0, 0.0};
+    accel = m.muN / m.mass;
+    lever = std::max(m.geometry.a, m.geometry.b);
+    spin = m.muN * lever / m.inertia;
+  }
+  int operator()(double t0, const double* y0, double t1, const double* y1) {
+    max_work_fric = std::max(max_work_fric, y1[kWorkFric]);
+    const double speed = std::hypot(y1[kVx], y1[kVy]) + std::fabs(y1[kOmega]) * lever;
+    max_speed = std::max(max_speed, speed);
+    const bool reversed = y0[kVx] * y1[kVx] + y0[kVy] * y1[kVy] < 0.0 || y0[kOmega] * y1[kOmega] < 0.0;
+    if (!reversed || speed > 1e-3 * max_speed) return kHookContinue;
+    const double h = t1 - t0;
+    if (std::hypot(y1[kVx], y1[kVy]) > 10.0 * accel * h || std::fabs(y1[kOmega]) > 10.0 * spin * h) return kHookContinue;
+    if (!analyse_rest(coulomb, y1[kTheta]).stuck) return kHookContinue;
+    came_to_rest = true;
+    t_rest = t1;
+    return kHookStopAfter;
+  }
+};
+
+std::string printed_blowup_message(double work, double t) {
+  return "the printed law's friction did +" + fmt_short(work) + " J of work by t = " + fmt_short(t) +
+         " s: the signs of eqs 3.45-3.48 as printed inject energy, and the motion blows up until the "
+         "integrator gives up (docs/rough.md); --law thesis or coulomb";
+}
+
+std::string no_static_friction_message(const Scene& sc, Law law, double t, double x, double y, double theta) {
+  return "the object " +
+         std::string(t > 0.0 ? "came to rest at t = " + fmt_short(t) + " s" : "starts at rest") + " (x = " + fmt_short(x) +
+         " m, y = " + fmt_short(y) + " m, theta = " + fmt_short(theta) + " rad)" +
+         " where the push (F = " + fmt_short(sc.push.force) + " N) cannot break static friction (mu N = " +
+         fmt_short(sc.friction_limit()) + " N, the coulomb limit surface): the " + to_string(law) +
+         " law's sign of the velocity has no static friction, so it cannot hold the object and the "
+         "integrator would chatter there; --law coulomb holds it (event-located stick-slip, docs/rough.md)";
+}
+
+}  // namespace
+
+bool starts_stuck(const Scene& sc) {
+  if (!sc.rough() || sc.friction_limit() == 0.0) return false;
+  if (sc.initial[kVx] != 0.0 || sc.initial[kVy] != 0.0 || sc.initial[kOmega] != 0.0) return false;
+  const RestWatch watch(rough_model(sc));
+  return analyse_rest(watch.coulomb, sc.initial[kTheta]).stuck;
+}
+
+std::string no_static_friction_outcome(const Scene& sc, Law law, double t) {
+  return no_static_friction_message(sc, law, t, sc.initial[kX], sc.initial[kY], sc.initial[kTheta]);
+}
+
+namespace {
+
 std::array<double, kRoughStateSize> rough_initial(const Scene& sc) {
   std::array<double, kRoughStateSize> y{};
   std::copy(sc.initial.begin(), sc.initial.end(), y.begin());
@@ -215,13 +292,33 @@ Trajectory run_cxx_rough(const Scene& sc, const ResolvedSettings& s) {
     auto observer = [&](std::size_t, double t, const double* yy) {
       record(t, yy, model.friction(yy[kTheta], yy[kVx], yy[kVy], yy[kOmega]));
     };
+    RestWatch watch(model);
+    if (starts_stuck(sc)) {
+      record(0.0, y.data(), WorldWrench{});
+      tr.stats.t_reached = 0.0;
+      tr.outcome = Outcome::no_static_friction;
+      tr.outcome_message = no_static_friction_message(sc, s.law, 0.0, y[kX], y[kY], y[kTheta]);
+      return tr;
+    }
     if (s.method == Method::dop853) {
-      tr.stats = run_dop853<kRoughStateSize>(sc, s, tr.atol, rhs, y.data(), tout, observer);
+      auto opt = Dop853Options<double>::make(s.rtol, tr.atol);
+      opt.h0 = sc.solver.h0;
+      opt.hmax = sc.solver.hmax;
+      opt.maxstp = sc.solver.max_steps;
+      Dop853<double, kRoughStateSize> dp(std::move(opt));
+      tr.stats = dp.integrate(rhs, 0.0, y.data(), std::span<const double>(tout), observer, std::ref(watch));
     } else {
       BulirschStoer<double, kRoughStateSize> bs(options_for(sc, s, tr.atol));
-      tr.stats = bs.integrate(rhs, 0.0, y.data(), std::span<const double>(tout), observer);
+      tr.stats = bs.integrate(rhs, 0.0, y.data(), std::span<const double>(tout), observer, std::ref(watch));
     }
     tr.stats.nfcn += start_evaluations;
+    if (watch.came_to_rest) {
+      tr.outcome = Outcome::no_static_friction;
+      tr.outcome_message = no_static_friction_message(sc, s.law, watch.t_rest, y[kX], y[kY], y[kTheta]);
+    } else if (!tr.stats.ok() && m.printed && watch.max_work_fric > 0.0) {
+      tr.outcome = Outcome::law_blowup;
+      tr.outcome_message = printed_blowup_message(watch.max_work_fric, tr.stats.t_reached);
+    }
     return tr;
   }
   StickSlipResult r;
@@ -241,6 +338,11 @@ Trajectory run_cxx_rough(const Scene& sc, const ResolvedSettings& s) {
   }
   tr.stats = r.stats;
   for (const auto& e : r.events) tr.events.push_back({e.t, e.stuck});
+  if (tr.events.size() == 1 && tr.events[0].t == 0.0 && tr.events[0].stuck) {
+    tr.outcome = Outcome::at_rest;
+    tr.outcome_message = "the push (F = " + fmt_short(sc.push.force) +
+                         " N) lies inside the limit surface: static friction holds the object where it is";
+  }
   return tr;
 }
 
@@ -265,11 +367,34 @@ Trajectory run_cxx(const Scene& scene, const ResolvedSettings& s) {
 }
 
 Trajectory finish_run(const Scene& scene, const ResolvedSettings& s, Trajectory tr) {
-  if (!tr.stats.ok()) {
+  if (tr.outcome == Outcome::ok && !tr.stats.ok()) {
+    tr.outcome = Outcome::solver_failure;
+    // A run of the thesis or printed law that gave up where the object is at rest inside the
+    // limit surface (the F77 engine has no watch; RestWatch stops the C++ engine earlier).
+    if (scene.rough() && s.law != Law::coulomb && !tr.rows.empty()) {
+      const auto& r = tr.rows.back();
+      const RoughBarModel m = rough_model(scene);
+      const RestWatch watch(m);
+      const double scale = 1e-3 * (watch.accel * scene.solver.t_end);
+      if (s.law == Law::printed && !tr.work_fric.empty() &&
+          *std::max_element(tr.work_fric.begin(), tr.work_fric.end()) > 0.0) {
+        tr.outcome = Outcome::law_blowup;
+        tr.outcome_message = printed_blowup_message(
+            *std::max_element(tr.work_fric.begin(), tr.work_fric.end()), tr.stats.t_reached);
+      } else if (std::hypot(r[col::vx], r[col::vy]) < scale &&
+                 std::fabs(r[col::omega]) < 1e-3 * watch.spin * scene.solver.t_end &&
+                 analyse_rest(watch.coulomb, r[col::theta]).stuck) {
+        tr.outcome = Outcome::no_static_friction;
+        tr.outcome_message = no_static_friction_message(scene, s.law, r[col::t], r[col::x], r[col::y], r[col::theta]);
+      }
+    }
+  }
+  if (!is_answer(tr.outcome)) {
     tr.complete = false;
+    if (tr.outcome_message.empty())
+      tr.outcome_message = to_string(tr.stats.status) + (tr.stats.message.empty() ? "" : ": " + tr.stats.message);
     if (!s.allow_partial)
-      throw SolverError(scene.name + " (" + tr.engine_label + "): " + to_string(tr.stats.status) +
-                        (tr.stats.message.empty() ? "" : ": " + tr.stats.message));
+      throw SolverError(scene.name + " (" + tr.engine_label + "): " + tr.outcome_text(), to_string(tr.outcome));
   }
   return tr;
 }

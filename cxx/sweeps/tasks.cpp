@@ -38,7 +38,15 @@ class RunTask final : public Task {
             {"t_stick", "s", "coulomb law: first time after 0 the object comes to rest and stays stuck; empty if never"},
             {"f_peak", "N", "largest friction force |(fx, fy)| over the output samples"},
             {"w_friction", "J", "work done by friction from 0 to t_end (rough surface; 0 on a smooth one)"},
-            count_column("nfcn", "right-hand-side evaluations"),
+            {"error_estimate", "1",
+             "estimated error of the final pose: max(|error_x|, |error_y|) / max(length, distance) and |error_theta| "
+             "(docs/accuracy.md); empty when not estimated"},
+            {"error_x", "m", "estimated error of x_final"},
+            {"error_y", "m", "estimated error of y_final"},
+            {"error_theta", "rad", "estimated error of theta_final"},
+            {"error_trajectory", "1", "the error estimate's norm, max over the output times"},
+            {"rtol_used", "1", "the relative tolerance of the answer (--accuracy chooses it)"},
+            count_column("nfcn", "right-hand-side evaluations, the error estimate's companion runs included"),
             count_column("steps", "accepted steps"),
             count_column("rejected", "rejected steps")};
   }
@@ -57,9 +65,19 @@ class RunTask final : public Task {
 
   [[nodiscard]] std::vector<std::string> evaluate(const std::vector<SceneSetting>& point,
                                                   std::size_t index) const override {
+    PointResult r = evaluate_point(point, index);
+    if (r.status != "ok" && r.status != to_string(Outcome::at_rest)) throw SolverError(r.message, r.status);
+    return r.cells;
+  }
+
+  [[nodiscard]] PointResult evaluate_point(const std::vector<SceneSetting>& point, std::size_t index) const override {
     Scene sc = base_;
     if (!point.empty()) sc.set(point);
-    const Trajectory tr = run_engine(sc, settings_);
+    RunSettings s = settings_;
+    s.allow_partial = true;  // an outcome other than ok is the row's status
+    const Trajectory tr = run_engine(sc, s);
+    if (!is_answer(tr.outcome) && tr.outcome != Outcome::accuracy_not_reached)
+      return {{}, to_string(tr.outcome), sc.name + " (" + tr.engine_label + "): " + tr.outcome_message};
     if (!trajectories_.empty())
       write_trajectory_csv(tr, trajectories_ / ("point_" + std::to_string(index) + ".csv"));
     const auto& rows = tr.rows;
@@ -83,9 +101,15 @@ class RunTask final : public Task {
         break;
       }
     const double wf = tr.work_fric.empty() ? 0.0 : tr.work_fric.back();
-    return {cell(last[col::x]), cell(last[col::y]), cell(last[col::theta]), cell(dist), cell(rot), cell(ix), cell(iy), cell(t_stick),
-            cell(fpeak), cell(wf), std::to_string(tr.stats.nfcn), std::to_string(tr.stats.naccpt),
-            std::to_string(tr.stats.nrejct)};
+    const ErrorEstimate& e = tr.error;
+    PointResult r;
+    r.cells = {cell(last[col::x]), cell(last[col::y]), cell(last[col::theta]), cell(dist), cell(rot), cell(ix), cell(iy),
+               cell(t_stick), cell(fpeak), cell(wf), cell(e.norm), cell(e.x), cell(e.y), cell(e.theta),
+               cell(e.trajectory), cell(tr.rtol), std::to_string(tr.nfcn_total()), std::to_string(tr.stats.naccpt),
+               std::to_string(tr.stats.nrejct)};
+    r.status = to_string(tr.outcome);
+    if (tr.outcome != Outcome::ok) r.message = tr.outcome_message;
+    return r;
   }
 
   [[nodiscard]] std::string identity() const override {
@@ -93,7 +117,8 @@ class RunTask final : public Task {
     return "run\n" + base_.to_toml() + "\nengine=" + name_or_empty(settings_.engine) +
            " method=" + name_or_empty(settings_.method) + " law=" + name_or_empty(settings_.law) +
            " rtol=" + fmt(settings_.rtol) + " atol=" + fmt(settings_.atol) +
-           " precision=" + name_or_empty(settings_.precision);
+           " precision=" + name_or_empty(settings_.precision) + " accuracy=" + fmt(settings_.accuracy) +
+           " estimate=" + (settings_.error_estimate ? (*settings_.error_estimate ? "1" : "0") : "");
   }
 
  private:
@@ -337,7 +362,9 @@ Columns table_columns(const Plan& plan, const Task& task) {
   for (const auto& point : plan.points)
     for (std::size_t j = 0; j < point.size() && j < plan.keys.size(); ++j) task.check_input(plan.keys[j], point[j]);
   for (auto& o : task.outputs()) c.push_back(o);
-  c.push_back(text_column("status", "ok, bad_input (a value the model refuses), solver_failure or error"));
+  c.push_back(text_column("status",
+                          "ok or at_rest (an answer); no_static_friction, law_blowup, accuracy_not_reached (its best "
+                          "answer kept), solver_failure, bad_input (a value the model refuses) or error (docs/errors.md)"));
   c.push_back(text_column("message", "why the point failed; empty when ok"));
   return c;
 }
@@ -349,19 +376,21 @@ std::vector<std::string> evaluate_row(const Plan& plan, const Task& task, std::s
   const std::size_t n_out = task.outputs().size();
   std::string status = "ok", message;
   try {
-    auto out = task.evaluate(plan.settings(i), i);
-    for (auto& c : out) row.push_back(std::move(c));
+    auto out = task.evaluate_point(plan.settings(i), i);
+    for (auto& c : out.cells) row.push_back(std::move(c));
+    status = std::move(out.status);
+    message = std::move(out.message);
   } catch (const InputError& e) {
     status = "bad_input";
     message = e.what();
   } catch (const SolverError& e) {
-    status = "solver_failure";
+    status = e.outcome();
     message = e.what();
   } catch (const std::exception& e) {
     status = "error";
     message = e.what();
   }
-  if (status != "ok") row.resize(1 + plan.keys.size() + n_out);  // empty outputs
+  row.resize(1 + plan.keys.size() + n_out);  // a failed point's outputs are empty (or its best answer's)
   for (char& ch : message)
     if (ch == '\n' || ch == '\r' || ch == '\t') ch = ' ';
   row.push_back(status);
@@ -369,6 +398,8 @@ std::vector<std::string> evaluate_row(const Plan& plan, const Task& task, std::s
   return row;
 }
 
-bool row_failed(const std::vector<std::string>& row) { return row.size() < 2 || row[row.size() - 2] != "ok"; }
+bool row_failed(const std::vector<std::string>& row) {
+  return row.size() < 2 || (row[row.size() - 2] != "ok" && row[row.size() - 2] != "at_rest");
+}
 
 }  // namespace nanopush::sweep

@@ -118,7 +118,8 @@ def _as_scene(scene):
 # ---- run and compare ------------------------------------------------------------------
 
 
-def run(scene, engine=None, method=None, law=None, rtol=None, atol=None, precision=None):
+def run(scene, engine=None, method=None, law=None, rtol=None, atol=None, precision=None, accuracy=None,
+        error_estimate=None):
     """Integrate a scene and return its trajectory (a nanopush.Result).
 
     scene      a nanopush.Scene, a preset name (``"fig3_6a"``) or a scene file
@@ -136,14 +137,22 @@ def run(scene, engine=None, method=None, law=None, rtol=None, atol=None, precisi
                natural scale); default: the scene's
     precision  ``"double"``, ``"long"`` or ``"quad"`` (C++ engine, smooth scenes); default:
                the scene's
+    accuracy   the error asked for of the final pose (docs/accuracy.md), in [1e-14, 0.1]:
+               rtol (and under method auto the method) is chosen to reach it; 0 = none
+               (run at rtol); default: the scene's solver.accuracy. Not reached: SolverError
+               with .outcome "accuracy_not_reached" and .partial the best answer
+    error_estimate  estimate the global error (a companion run at rtol/100, in
+               ``result.error``); default: the scene's solver.error_estimate (true)
 
     The result has NumPy arrays t, x, y, theta, vx, vy, omega, fx, fy, mf (SI, world axes),
-    the counts nfcn, steps, rejected, and to_dict() / to_csv(path). The same numbers, bit
+    the counts nfcn, steps, rejected, the error estimate ``error`` (a dict; ``error_estimate``
+    its norm), ``outcome`` (ok or at_rest), and to_dict() / to_csv(path). The same numbers, bit
     for bit, as ``nanopush run SCENE --engine ... --method ...``. The GIL is released while
     the engine runs. Raises nanopush.InputError (a ValueError) for bad settings and
     nanopush.SolverError when the integrator gives up (with .status and .partial).
     """
-    return _nanopush._run(_as_scene(scene), engine or "", method or "", law or "", rtol, atol, precision or "")
+    return _nanopush._run(_as_scene(scene), engine or "", method or "", law or "", rtol, atol, precision or "",
+                          accuracy, error_estimate)
 
 
 class Comparison:
@@ -195,8 +204,8 @@ class SweepResult:
     """The table of a sweep, one row per point in point order (docs/sweeps.md): columns by
     name (``result["fx"]``: float arrays, NaN where a cell is missing; integer columns as
     int64 when complete; text columns as str arrays), ``columns`` (names, in order),
-    ``units``, ``status`` and ``message`` per point, ``ok`` (a boolean mask), ``failed``
-    (the number of points whose status is not ok) and to_dict()."""
+    ``units``, ``status`` and ``message`` per point, ``ok`` (a boolean mask: status ok or
+    at_rest, the answers), ``failed`` (the number of other points) and to_dict()."""
 
     def __init__(self, names, units, data):
         self.columns, self.units, self._data = list(names), dict(units), data
@@ -220,7 +229,7 @@ class SweepResult:
 
     @property
     def ok(self):
-        return self._data["status"] == "ok"
+        return (self._data["status"] == "ok") | (self._data["status"] == "at_rest")
 
     @property
     def failed(self):
@@ -238,7 +247,7 @@ _TASKS = ("friction", "icor", "estimate-mu")
 
 
 def sweep(task, vary=None, *, vary_log=None, points=None, set=None, jobs=0, engine=None, method=None, law=None,
-          check=False):
+          accuracy=None, error_estimate=None, check=False):
     """Evaluate a task at every point of a plan on C++ threads (the GIL released) and return
     the table as a SweepResult (the rows of ``nanopush sweep``, without files).
 
@@ -252,7 +261,7 @@ def sweep(task, vary=None, *, vary_log=None, points=None, set=None, jobs=0, engi
     set       {key: value}: fixed for every point (scene keys for a run; the task's keys,
               e.g. {"a": 27.5e-9, "b": 50e-9}, otherwise)
     jobs      threads (0: every core); the table is the same for any number
-    engine, method, law   the run task's, as for nanopush.run
+    engine, method, law, accuracy, error_estimate   the run task's, as for nanopush.run
     check     raise nanopush.SolverError if any point failed, with .status the first failed
               point's and .partial the whole table (default: keep the status and message
               of each point in the table)
@@ -270,7 +279,7 @@ def sweep(task, vary=None, *, vary_log=None, points=None, set=None, jobs=0, engi
     axes = [(k, v, False) for k, v in (vary or {}).items()]
     axes += [(k, v, True) for k, v in (vary_log or {}).items()]
     names, units, data = _nanopush._sweep(name, scene, axes, points, dict(set or {}), int(jobs),
-                                         engine or "", method or "", law or "")
+                                         engine or "", method or "", law or "", accuracy, error_estimate)
     res = SweepResult(names, units, data)
     if check and res.failed:
         bad = [i for i, ok in enumerate(res.ok) if not ok]

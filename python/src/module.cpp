@@ -62,6 +62,8 @@ void register_errors(py::module_& m) {
                                 "root finder that did not converge).\n\n"
                                 "Attributes: status (str: too_many_steps, step_underflow, rhs_failed, not_finite, "
                                 "bad_input, or solver_failure when the failure has no integrator status), "
+                                "outcome (str: how the run ended, docs/errors.md: solver_failure, no_static_friction, "
+                                "law_blowup, accuracy_not_reached), "
                                 "status_code (int, the integrator's status as in the C API; None without one), "
                                 "t_reached (float [s] or None), partial (the Result of the samples computed "
                                 "before the failure, or None).",
@@ -88,6 +90,7 @@ void register_errors(py::module_& m) {
       py::object ex = py::handle(g_solver_error)(e.what());
       const auto& st = e.partial().stats;
       ex.attr("status") = status_name(st.status);
+      ex.attr("outcome") = to_string(e.partial().outcome);
       ex.attr("status_code") = static_cast<int>(st.status);
       ex.attr("t_reached") = st.t_reached;
       ex.attr("partial") = make_result(e.partial());
@@ -95,6 +98,7 @@ void register_errors(py::module_& m) {
     } catch (const SolverError& e) {
       py::object ex = py::handle(g_solver_error)(e.what());
       ex.attr("status") = "solver_failure";
+      ex.attr("outcome") = e.outcome();
       ex.attr("status_code") = py::none();
       ex.attr("t_reached") = py::none();
       ex.attr("partial") = py::none();

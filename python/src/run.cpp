@@ -3,6 +3,7 @@
 #include "common.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 
 #include <pybind11/stl/filesystem.h>
@@ -55,9 +56,42 @@ void read_tolerances(const py::object& rtol, const py::object& atol, double& r, 
   }
 }
 
+/// accuracy (None = the scene's; 0 = none; else in [kAccuracyMin, kAccuracyMax]) and
+/// error_estimate (None = the scene's) into the run settings.
+void read_accuracy(const py::object& accuracy, const py::object& error_estimate, RunSettings& rs) {
+  if (!accuracy.is_none()) {
+    rs.accuracy = accuracy.cast<double>();
+    if (rs.accuracy != 0.0) require_range("accuracy", rs.accuracy, kAccuracyMin, kAccuracyMax);
+  }
+  if (!error_estimate.is_none()) rs.error_estimate = error_estimate.cast<bool>();
+}
+
+py::object number_or_none(double v) { return std::isnan(v) ? py::object(py::none()) : py::object(py::float_(v)); }
+
+/// The error estimate as a dict (docs/accuracy.md).
+py::dict error_dict(const ErrorEstimate& e) {
+  py::dict d;
+  d["available"] = e.available;
+  d["estimate"] = number_or_none(e.norm);
+  d["x"] = number_or_none(e.x);
+  d["y"] = number_or_none(e.y);
+  d["theta"] = number_or_none(e.theta);
+  d["trajectory"] = number_or_none(e.trajectory);
+  d["t_stick"] = number_or_none(e.t_stick);
+  d["length_scale"] = e.length_scale;
+  d["basis"] = e.basis;
+  d["companion"] = e.companion;
+  d["companion_rtol"] = e.companion_rtol;
+  d["nfcn"] = e.nfcn;
+  d["note"] = e.note;
+  return d;
+}
+
 RunResult run(const Scene& scene, const std::string& engine, const std::string& method, const std::string& law,
-              const py::object& rtol, const py::object& atol, const std::string& precision) {
+              const py::object& rtol, const py::object& atol, const std::string& precision,
+              const py::object& accuracy, const py::object& error_estimate) {
   RunSettings rs;
+  read_accuracy(accuracy, error_estimate, rs);
   rs.engine = parse_optional_choice<Engine>("engine", engine);  // "" = the scene's (run_engine)
   rs.method = parse_optional_choice<Method>("method", method);
   rs.law = parse_optional_choice<Law>("law", law);
@@ -73,12 +107,8 @@ RunResult run(const Scene& scene, const std::string& engine, const std::string& 
     r.tr = run_engine(own, rs);
     r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   }
-  if (!r.tr.complete) {
-    const auto& st = r.tr.stats;
-    throw RunFailure(scene.name + " (" + r.tr.engine_label + "): " + to_string(st.status) +
-                         (st.message.empty() ? "" : ": " + st.message),
-                     r.tr);
-  }
+  if (!r.tr.complete)
+    throw RunFailure(scene.name + " (" + r.tr.engine_label + "): " + r.tr.outcome_text(), r.tr);
   return r;
 }
 
@@ -97,9 +127,8 @@ py::dict compare(const Scene& scene, const std::string& method, const std::strin
     r = compare_engines(own, cs);
   }
   if (const Trajectory* t = r.failed()) {
-    const auto& st = t->stats;
     throw RunFailure(scene.name + " (" + t->engine_label + (r.failed_run >= 2 ? ", reference run" : "") +
-                         "): " + to_string(st.status) + (st.message.empty() ? "" : ": " + st.message),
+                         "): " + t->outcome_text(),
                      *t);
   }
   auto result = [&](Trajectory& tr) {
@@ -213,6 +242,31 @@ dict of arrays (pandas.DataFrame(result.to_dict())); to_csv(path) writes the CSV
                              "False only for the partial result a SolverError carries.")
       .def_property_readonly("status", [](const RunResult& r) { return status_name(r.tr.stats.status); },
                              "The integrator's status: success, or why it stopped.")
+      .def_property_readonly("outcome", [](const RunResult& r) { return to_string(r.tr.outcome); },
+                             "How the run ended (docs/errors.md): ok or at_rest for an answer; no_static_friction, "
+                             "law_blowup, accuracy_not_reached, solver_failure on a SolverError's partial result.")
+      .def_property_readonly("outcome_message", [](const RunResult& r) { return r.tr.outcome_message; },
+                             "Why, for an outcome other than ok.")
+      .def_property_readonly("error", [](const RunResult& r) { return error_dict(r.tr.error); },
+                             "The estimated global error of the answer (docs/accuracy.md): estimate (the final "
+                             "pose in the accuracy norm), x, y [m], theta [rad] (final pose), trajectory (the norm's "
+                             "max over the output times), t_stick [s], length_scale [m], basis, companion, "
+                             "companion_rtol, nfcn (its cost), note; None where not estimated.")
+      .def_property_readonly("error_estimate", [](const RunResult& r) { return number_or_none(r.tr.error.norm); },
+                             "error['estimate']: the estimated error of the final pose (None if not estimated).")
+      .def_property_readonly(
+          "accuracy",
+          [](const RunResult& r) {
+            py::dict d;
+            d["requested"] = r.tr.accuracy.requested;
+            d["reached"] = r.tr.accuracy.reached;
+            d["rtol_used"] = r.tr.accuracy.rtol_used;
+            d["runs"] = r.tr.accuracy.runs;
+            return d;
+          },
+          "What accuracy= did: requested (0: not asked), reached, rtol_used, runs.")
+      .def_property_readonly("nfcn_total", [](const RunResult& r) { return r.tr.nfcn_total(); },
+                             "Every RHS evaluation the answer cost, the error estimate's included.")
       .def_property_readonly("scene", [](const RunResult& r) { return r.scene; }, "The scene's name.")
       .def_property_readonly("wall_time", [](const RunResult& r) { return r.wall_s; },
                              "Wall time of the integration [s] (as `nanopush run` reports it).")
@@ -236,6 +290,7 @@ dict of arrays (pandas.DataFrame(result.to_dict())); to_csv(path) writes the CSV
 
   m.def("_run", &run, py::arg("scene"), py::arg("engine") = "", py::arg("method") = "", py::arg("law") = "",
         py::arg("rtol") = py::none(), py::arg("atol") = py::none(), py::arg("precision") = "",
+        py::arg("accuracy") = py::none(), py::arg("error_estimate") = py::none(),
         "Integrate a scene (nanopush.run is the documented entry point).");
   m.def("_compare", &compare, py::arg("scene"), py::arg("method") = "faithful", py::arg("law") = "",
         py::arg("rtol") = py::none(), py::arg("atol") = py::none(), py::arg("tolerance") = py::none(),

@@ -77,7 +77,8 @@ py::dict table(const sweep::Plan& plan, const sweep::Task& task, const std::vect
 
 py::tuple run_sweep(const std::string& task_name, const py::object& scene_obj, const py::list& axes,
                     const py::object& points, const py::dict& fixed, unsigned jobs, const std::string& engine,
-                    const std::string& method, const std::string& law) {
+                    const std::string& method, const std::string& law, const py::object& accuracy,
+                    const py::object& error_estimate) {
   std::unique_ptr<sweep::Task> task;
   if (task_name == "run") {
     if (scene_obj.is_none()) throw InputError("task", "run", "a run sweep needs a scene");
@@ -86,6 +87,11 @@ py::tuple run_sweep(const std::string& task_name, const py::object& scene_obj, c
     rs.engine = parse_optional_choice<Engine>("engine", engine);
     rs.method = parse_optional_choice<Method>("method", method);
     rs.law = parse_optional_choice<Law>("law", law);
+    if (!accuracy.is_none()) {
+      rs.accuracy = accuracy.cast<double>();
+      if (rs.accuracy != 0.0) require_range("accuracy", rs.accuracy, kAccuracyMin, kAccuracyMax);
+    }
+    if (!error_estimate.is_none()) rs.error_estimate = error_estimate.cast<bool>();
     if (!fixed.empty()) {
       std::vector<SceneSetting> s;
       for (auto item : fixed) {
@@ -166,7 +172,8 @@ py::tuple run_sweep(const std::string& task_name, const py::object& scene_obj, c
 
 void register_sweep(py::module_& m) {
   m.def("_sweep", &run_sweep, py::arg("task"), py::arg("scene"), py::arg("axes"), py::arg("points"), py::arg("fixed"),
-        py::arg("jobs"), py::arg("engine"), py::arg("method"), py::arg("law"),
+        py::arg("jobs"), py::arg("engine"), py::arg("method"), py::arg("law"), py::arg("accuracy") = py::none(),
+        py::arg("error_estimate") = py::none(),
         "The sweep engine in memory (nanopush.sweep is the documented entry point).");
 }
 

@@ -17,8 +17,8 @@ if(CMAKE_SCRIPT_MODE_FILE)
     endif()
     # Only the thesis law may fail, where it chatters at rest (mu N > F), and it must say where
     # the bar came to rest and that the coulomb law continues.
-    if(NOT LAW STREQUAL "thesis" OR NOT _err MATCHES "^nanopush: solver failure: "
-       OR NOT _err MATCHES "came to rest near t = [0-9.e+-]+ s at x = .* theta = "
+    if(NOT LAW STREQUAL "thesis" OR NOT _err MATCHES "^nanopush: no_static_friction: "
+       OR NOT _err MATCHES "no_static_friction: .*came to rest at t = [0-9.e+-]+ s \\(x = .* theta = "
        OR NOT _err MATCHES "--law coulomb")
       message(FATAL_ERROR "fig3_${_fig} --law ${LAW}: exit 3 without the documented diagnosis:\n${_err}")
     endif()

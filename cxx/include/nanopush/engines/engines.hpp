@@ -11,6 +11,10 @@ namespace nanopush {
 /// InputError for bad settings.
 Trajectory run_engine(const Scene& scene, const RunSettings& settings = {});
 
+/// The engine `resolved.engine` on settings already resolved, the outcome classified
+/// (finish_run with allow_partial): never throws for a failed run.
+Trajectory run_resolved(const Scene& scene, const ResolvedSettings& resolved);
+
 /// The F77 engine alone (BSINT with the F77 right-hand sides); `resolved` from resolve_settings.
 Trajectory run_f77(const Scene& scene, const ResolvedSettings& resolved);
 

@@ -4,6 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace nanopush {
 
@@ -22,9 +23,16 @@ class InputError : public std::runtime_error {
 };
 
 /// A numerical failure (step size underflow, too many steps, non-finite state...).
+/// `outcome` names how the run ended (docs/errors.md: solver_failure, no_static_friction,
+/// law_blowup, accuracy_not_reached).
 class SolverError : public std::runtime_error {
  public:
-  using std::runtime_error::runtime_error;
+  explicit SolverError(const std::string& message, std::string outcome = "solver_failure")
+      : std::runtime_error(message), outcome_(std::move(outcome)) {}
+  [[nodiscard]] const std::string& outcome() const noexcept { return outcome_; }
+
+ private:
+  std::string outcome_;
 };
 
 /// Format a double in the shortest form that reads back exactly, for messages.

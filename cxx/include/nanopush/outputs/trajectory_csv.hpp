@@ -14,6 +14,10 @@ const Columns& trajectory_column_specs();
 
 /// Write a trajectory CSV (header t,x,...,mf) and its sidecar atomically; `scene` names the
 /// scene in the sidecar (default: the process-wide provenance).
+/// What a trajectory's sidecar records of its run ("nanopush"."run"): engine, outcome, rtol,
+/// counts, and the error estimate (docs/accuracy.md).
+RunInfo trajectory_run_info(const Trajectory& tr);
+
 void write_trajectory_csv(const Trajectory& tr, const std::filesystem::path& path, const std::string& scene = {});
 
 }  // namespace nanopush

@@ -38,7 +38,13 @@ struct SolverSettings {
   double h0 = 0;               ///< initial step [s]; 0 = 1% of t_end
   double hmax = 0;             ///< largest step [s]; 0 = none
   long max_steps = 100000;     ///< attempted steps before giving up
+  /// The error asked for of the final pose (docs/accuracy.md); 0 = none: run at rtol.
+  double accuracy = 0;
+  bool error_estimate = true;  ///< estimate the global error (a companion run)
 };
+
+/// The accuracies a run can be asked for (solver.accuracy, --accuracy; 0 = none).
+inline constexpr double kAccuracyMin = 1e-14, kAccuracyMax = 0.1;
 
 /// A value for a scene key: a number, an integer, a string or a flag. Its type must match the
 /// key's (scene_keys.hpp); a number given for an integer key must be a whole number.

@@ -2,7 +2,9 @@
 // between the two, is the engines layer: nanopush/engines/engines.hpp.)
 #pragma once
 #include <array>
+#include <cstdint>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -57,6 +59,12 @@ struct RunSettings {
   std::optional<Precision> precision;
   /// Called at each output sample with the fraction done (for progress display).
   std::function<void(double)> progress;
+  /// Estimate the global error of the answer (a companion run, docs/accuracy.md); unset =
+  /// the scene's solver.error_estimate. run_scene never estimates (the engines layer does).
+  std::optional<bool> error_estimate;
+  /// The error asked for (docs/accuracy.md): > 0 chooses rtol so that the estimated error of
+  /// the final pose is <= accuracy; 0 = none (run at rtol); < 0 = the scene's solver.accuracy.
+  double accuracy = -1;
 };
 
 /// RunSettings resolved against a scene: every choice made (method automatic replaced by the
@@ -69,6 +77,60 @@ struct ResolvedSettings {
   bool allow_partial = false;
   double rtol = 0, atol = 0;
   std::function<void(double)> progress;
+  bool error_estimate = false;
+  double accuracy = 0;  ///< 0 = none
+};
+
+/// How a run ended (docs/errors.md), beside the integrator's own status (stats.status).
+enum class Outcome {
+  ok,                    ///< an answer
+  at_rest,               ///< coulomb law: the push cannot break static friction; the object stays (an answer)
+  no_static_friction,    ///< thesis/printed law: the object is (or came) to rest where the sign law chatters
+  law_blowup,            ///< printed law: its friction injects energy and the run blows up
+  accuracy_not_reached,  ///< --accuracy E could not be met; the best answer and its estimate are kept
+  solver_failure,        ///< the integrator gave up (stats.status says how)
+};
+template <>
+struct NameTable<Outcome> {
+  static constexpr std::array<std::pair<Outcome, std::string_view>, 6> table{
+      {{Outcome::ok, "ok"},
+       {Outcome::at_rest, "at_rest"},
+       {Outcome::no_static_friction, "no_static_friction"},
+       {Outcome::law_blowup, "law_blowup"},
+       {Outcome::accuracy_not_reached, "accuracy_not_reached"},
+       {Outcome::solver_failure, "solver_failure"}}};
+};
+/// An outcome that is an answer (ok, at_rest).
+inline bool is_answer(Outcome o) { return o == Outcome::ok || o == Outcome::at_rest; }
+
+/// The estimated global error of a run's answer (docs/accuracy.md): the difference from a
+/// companion run at a tighter tolerance. NaN where not estimated.
+struct ErrorEstimate {
+  bool available = false;
+  /// The final pose in the accuracy norm: max(|dx|, |dy|) / length_scale and |dtheta| [rad],
+  /// whichever is larger.
+  double norm = std::numeric_limits<double>::quiet_NaN();
+  double x = std::numeric_limits<double>::quiet_NaN();      ///< |dx| at t_end [m]
+  double y = std::numeric_limits<double>::quiet_NaN();      ///< |dy| at t_end [m]
+  double theta = std::numeric_limits<double>::quiet_NaN();  ///< |dtheta| at t_end [rad]
+  double trajectory = std::numeric_limits<double>::quiet_NaN();  ///< the norm's max over the output times
+  double t_stick = std::numeric_limits<double>::quiet_NaN();     ///< |d t_stick| [s] (coulomb law; NaN if none)
+  double length_scale = 0;   ///< [m] max(object length, distance travelled)
+  double companion_rtol = 0;  ///< the tolerance of the companion run
+  /// The run compared with: "companion" (a run rtol/100 tighter than the answer) or "looser"
+  /// (--accuracy: the answer is the tighter run; the estimate bounds the looser one's error).
+  std::string basis = "companion";
+  std::string companion;      ///< its engine label
+  std::int64_t nfcn = 0;      ///< RHS evaluations the estimate cost (companion runs)
+  std::string note;           ///< why unavailable, or its limit (a companion at the precision floor)
+};
+
+/// What --accuracy did: the error asked for, whether reached, the rtol the answer used.
+struct AccuracyRecord {
+  double requested = 0;  ///< 0: not asked
+  bool reached = false;
+  double rtol_used = 0;
+  int runs = 0;  ///< runs made (answer and companions)
 };
 
 struct StickEventRecord {
@@ -91,6 +153,16 @@ struct Trajectory {
   std::vector<double> work_push, work_fric;
   std::vector<StickEventRecord> events;  ///< coulomb law: instants the body came to rest
   bool complete = true;                  ///< false when allow_partial kept a failed run
+  Outcome outcome = Outcome::ok;
+  std::string outcome_message;  ///< why, for an outcome other than ok
+  ErrorEstimate error;          ///< the estimated global error of the answer
+  AccuracyRecord accuracy;
+  /// Every RHS evaluation the answer cost: its own run and the estimate's.
+  [[nodiscard]] std::int64_t nfcn_total() const { return stats.nfcn + error.nfcn; }
+  /// How it ended, for messages: "<outcome>: <why>" ("<status>: <why>" for solver_failure).
+  [[nodiscard]] std::string outcome_text() const {
+    return (outcome == Outcome::solver_failure ? std::string() : to_string(outcome) + ": ") + outcome_message;
+  }
 };
 
 /// Integrate the scene with the C++ engine. Throws SolverError when the integrator fails
@@ -110,6 +182,12 @@ TrajectoryRow make_row(double t, const double* y, const WorldWrench& f = {});
 
 /// The rough-surface model of a rough scene (mass, inertia, contact, mu N, push).
 RoughBarModel rough_model(const Scene& scene);
+
+/// A rough scene that starts at rest with its push inside the coulomb limit surface (static
+/// friction holds it: the coulomb law's at_rest, the thesis and printed laws' no_static_friction).
+bool starts_stuck(const Scene& scene);
+/// The message of the outcome no_static_friction: at rest at t (0: from the start).
+std::string no_static_friction_outcome(const Scene& scene, Law law, double t);
 
 /// Settings as resolved against the scene (choices, rtol and atol filled in and validated);
 /// InputError naming the field a bad value came from.

@@ -67,6 +67,17 @@ class Task {
   /// or SolverError (the integrator gave up) for a point that fails.
   [[nodiscard]] virtual std::vector<std::string> evaluate(const std::vector<SceneSetting>& point,
                                                         std::size_t index) const = 0;
+  /// The same with the point's status: a task whose points can end in an outcome other than
+  /// ok or a failure (a run: at_rest, accuracy_not_reached with its best answer; docs/errors.md)
+  /// overrides it. status "ok" by default.
+  struct PointResult {
+    std::vector<std::string> cells;
+    std::string status = "ok";
+    std::string message;
+  };
+  [[nodiscard]] virtual PointResult evaluate_point(const std::vector<SceneSetting>& point, std::size_t index) const {
+    return {evaluate(point, index)};
+  }
   /// Everything that determines the results, as text (the journal's identity).
   [[nodiscard]] virtual std::string identity() const = 0;
   /// The scene's name (for the sidecar), "" when the task has none.
@@ -94,7 +105,7 @@ Columns table_columns(const Plan& plan, const Task& task);
 /// The row of point i: its inputs, outputs and status (ok | bad_input | solver_failure |
 /// error) with the message; never throws for a failing point.
 std::vector<std::string> evaluate_row(const Plan& plan, const Task& task, std::size_t i);
-/// True when a row's status is not ok.
+/// True when a row's status is not an answer (ok or at_rest).
 bool row_failed(const std::vector<std::string>& row);
 /// A row as one CSV line (cells as formatted, joined by commas), and back (quotes kept).
 std::string join_cells(const std::vector<std::string>& row);
