@@ -143,3 +143,15 @@ target_link_libraries(capi_test_compare_fortran PRIVATE nanopush_fortran nanopus
 set_target_properties(capi_test_compare_fortran PROPERTIES Fortran_MODULE_DIRECTORY ${NANOPUSH_MODDIR}/capi_test_compare_fortran)
 add_test(NAME capi.compare_fortran COMMAND capi_test_compare_fortran ${_capi_scene})
 set_tests_properties(capi.compare_fortran PROPERTIES PASS_REGULAR_EXPRESSION "fortran compare: ok")
+
+# The error estimate, the accuracy asked for and the outcomes, from C and from Fortran.
+set(_capi_rough ${PROJECT_SOURCE_DIR}/drivers/scenes/thesis/fig3_18.toml)
+add_executable(capi_test_accuracy ${_capi_dir}/test_capi_accuracy.c)
+target_link_libraries(capi_test_accuracy PRIVATE nanopush_capi nanopush_warnings m)
+add_test(NAME capi.accuracy_c COMMAND capi_test_accuracy ${_capi_rough})
+set_tests_properties(capi.accuracy_c PROPERTIES PASS_REGULAR_EXPRESSION "capi accuracy: ok")
+add_executable(capi_test_accuracy_fortran ${_capi_dir}/test_fortran_accuracy.f90)
+target_link_libraries(capi_test_accuracy_fortran PRIVATE nanopush_fortran nanopush_warnings)
+set_target_properties(capi_test_accuracy_fortran PROPERTIES Fortran_MODULE_DIRECTORY ${NANOPUSH_MODDIR}/capi_test_accuracy_fortran)
+add_test(NAME capi.accuracy_fortran COMMAND capi_test_accuracy_fortran ${_capi_rough})
+set_tests_properties(capi.accuracy_fortran PROPERTIES PASS_REGULAR_EXPRESSION "fortran accuracy: ok")

@@ -1,0 +1,251 @@
+// nanopush bench-accuracy: how honest the error estimate is and what --accuracy costs, on a
+// seeded Latin hypercube of rough scenes over the physical space (docs/accuracy.md).
+//  1. Honesty: each scene run as a user runs it (method auto, the scene's rtol drawn from
+//     1e-12..1e-4), its error estimate against the true error (a run 100x tighter than the
+//     answer and at most 1e-13, modern Bulirsch-Stoer), under the coulomb and thesis laws;
+//     the outcome of every scene.
+//  2. Cost: --accuracy E for E = 1e-4 .. 1e-10 (coulomb law): the fraction of judged scenes
+//     whose true error is <= E, and the RHS evaluations (estimate included) over those of a
+//     plain run at rtol = E.
+// Writes accuracy_honesty.csv, accuracy_cost.csv (+ sidecars), accuracy.png and accuracy.md;
+// also a reproduce step (fewer scenes) with its section in out/report.md.
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+#include "nanopush/engines/accuracy.hpp"
+#include "nanopush/engines/engines.hpp"
+#include "nanopush/outputs/io.hpp"
+#include "nanopush/outputs/plot.hpp"
+#include "nanopush/scenes/lhs.hpp"
+#include "cli_checks.hpp"
+#include "registry.hpp"
+
+namespace nanopush::cli {
+namespace {
+namespace NANOPUSH_UNITY_ID {
+
+namespace fs = std::filesystem;
+
+struct BenchAccuracyOptions {
+  std::string out = "docs/figures";
+  int scenes = 200;
+  std::uint64_t seed = 2026;
+};
+
+constexpr double kReferenceRtol = 1e-13;
+
+/// The true error of `tr` (accuracy norm), against a modern run 100x tighter than tr's rtol and
+/// at most 1e-13; NaN when no such reference runs (the answer at the floor of double).
+double true_error(const Scene& sc, Law law, const Trajectory& tr) {
+  RunSettings r;
+  r.method = Method::modern;
+  r.law = law;
+  r.rtol = std::min(kReferenceRtol, tr.rtol / 100);
+  r.error_estimate = false;
+  r.allow_partial = true;
+  if (r.rtol < dense_rtol_min<double>() || !tr.error.available) return std::nan("");
+  const Trajectory ref = run_engine(sc, r);
+  if (!ref.complete || ref.rows.size() != tr.rows.size()) return std::nan("");
+  return pose_error_norm(tr.rows.back(), ref.rows.back(), tr.error.length_scale);
+}
+
+double quantile(std::vector<double> v, double q) {
+  if (v.empty()) return std::nan("");
+  std::sort(v.begin(), v.end());
+  return v[static_cast<std::size_t>(q * static_cast<double>(v.size() - 1) + 0.5)];
+}
+
+struct Summary {
+  std::map<std::string, int> outcomes;
+  int judged = 0, dishonest = 0;
+};
+
+/// Both parts; the Markdown summary into `md`. Returns false if a check failed.
+bool bench_accuracy(const BenchAccuracyOptions& o, const fs::path& dir, std::ostream& md, std::ostream& log,
+                    ReproduceContext* ctx) {
+  const Scene base = load_scene(resolve_scene("fig3_18"));
+  const auto scenes = rough_lhs_scenes(base, static_cast<std::size_t>(o.scenes), o.seed);
+  bool ok = true;
+  // ---- 1. honesty ------------------------------------------------------------------------
+  CsvWriter hon(dir / "accuracy_honesty.csv",
+                {text_column("law", "friction law"), count_column("scene", "index in the Latin hypercube"),
+                 {"rtol", "1", "the scene's rtol"}, text_column("outcome", "how the run ended (docs/errors.md)"),
+                 {"estimate", "1", "error estimate of the final pose (accuracy norm)"},
+                 {"true_error", "1", "against the reference run (empty: not judged)"},
+                 {"ratio", "1", "true_error / estimate"},
+                 count_column("nfcn", "RHS evaluations of the answer"),
+                 count_column("nfcn_total", "RHS evaluations with the estimate's")});
+  std::map<std::string, Summary> by_law;
+  std::vector<double> cost_ratio;
+  for (const Law law : {Law::coulomb, Law::thesis}) {
+    Summary& s = by_law[to_string(law)];
+    for (std::size_t i = 0; i < scenes.size(); ++i) {
+      RunSettings rs;
+      rs.law = law;
+      rs.allow_partial = true;
+      const Trajectory tr = run_engine(scenes[i], rs);
+      ++s.outcomes[to_string(tr.outcome)];
+      double truth = std::nan("");
+      if (is_answer(tr.outcome)) truth = true_error(scenes[i], law, tr);
+      if (!std::isnan(truth)) {
+        ++s.judged;
+        if (truth > 10 * tr.error.norm + 1e-11) ++s.dishonest;
+        cost_ratio.push_back(static_cast<double>(tr.nfcn_total()) / static_cast<double>(std::max<std::int64_t>(1, tr.stats.nfcn)));
+      }
+      hon.cells({to_string(law), std::to_string(i), csv_number(tr.rtol), to_string(tr.outcome), csv_number(tr.error.norm),
+                 csv_number(truth), csv_number(truth / tr.error.norm), std::to_string(tr.stats.nfcn),
+                 std::to_string(tr.nfcn_total())});
+    }
+    log << "bench-accuracy: " << to_string(law) << ": " << s.judged << " judged, " << s.dishonest << " dishonest\n";
+    if (s.dishonest * 100 > s.judged) ok = false;
+  }
+  hon.commit();
+  md << "**Honesty of the estimate.** " << o.scenes << " rough scenes of a Latin hypercube over the physical space "
+     << "(seed " << o.seed << "; length 10 nm-10 um, width/length 0.01-1, height 1 nm-1 um, density 1e3-2e4 kg/m^3, "
+     << "push 1e-12-1e-3 N anywhere on the body, mu 1e-3-2, f_vdw 1e-12-1e-3 N, rtol 1e-12-1e-4; fig3_18 "
+     << "otherwise), each run with method auto and its estimate, judged against a modern run 100x tighter (at most "
+     << "1e-13). Target: true error > 10x the estimate at <= 1 % of the judged scenes.\n\n"
+     << "| law | ok | at_rest | no_static_friction | law_blowup | solver_failure | judged | true > 10x estimate |\n"
+     << "|---|---|---|---|---|---|---|---|\n";
+  for (auto& [law, s] : by_law)
+    md << "| " << law << " | " << s.outcomes["ok"] << " | " << s.outcomes["at_rest"] << " | "
+       << s.outcomes["no_static_friction"] << " | " << s.outcomes["law_blowup"] << " | " << s.outcomes["solver_failure"]
+       << " | " << s.judged << " | " << s.dishonest << " |\n";
+  md << "\nThe estimate's cost (all RHS evaluations over the answer's): median " << std::setprecision(3)
+     << quantile(cost_ratio, 0.5) << ", 90th percentile " << quantile(cost_ratio, 0.9) << ".\n\n";
+  // ---- 2. cost of --accuracy ---------------------------------------------------------------
+  CsvWriter cost(dir / "accuracy_cost.csv",
+                 {{"accuracy", "1", "the accuracy asked (E)"}, count_column("scene", "index in the Latin hypercube"),
+                  text_column("outcome", "how the run ended"), {"rtol_used", "1", "the rtol of the answer"},
+                  {"estimate", "1", "its error estimate"}, {"true_error", "1", "against the reference (empty: not judged)"},
+                  count_column("nfcn_total", "RHS evaluations of every run the answer took"),
+                  count_column("nfcn_plain", "RHS evaluations of a plain run at rtol = E"),
+                  {"cost_ratio", "1", "nfcn_total / nfcn_plain"}});
+  md << "**Cost of `--accuracy`** (coulomb law, the first " << scenes.size() / 2
+     << " scenes): the fraction of judged scenes whose true error is <= E, and all RHS evaluations of the answer "
+        "over those of a plain run at rtol = E. Target: >= 99 % met, cost <= 4x.\n\n"
+     << "| E | answered | not reached | judged | met | median cost | 90th pct cost |\n|---|---|---|---|---|---|---|\n";
+  for (const double e : {1e-4, 1e-6, 1e-8, 1e-10}) {
+    int answered = 0, not_reached = 0, judged = 0, met = 0;
+    std::vector<double> ratios;
+    for (std::size_t i = 0; i < scenes.size() / 2; ++i) {
+      RunSettings rs;
+      rs.law = Law::coulomb;
+      rs.allow_partial = true;
+      rs.accuracy = e;
+      const Trajectory tr = run_engine(scenes[i], rs);
+      RunSettings plain;
+      plain.law = Law::coulomb;
+      plain.allow_partial = true;
+      plain.rtol = e;
+      plain.error_estimate = false;
+      const Trajectory pl = run_engine(scenes[i], plain);
+      if (tr.outcome == Outcome::accuracy_not_reached) ++not_reached;
+      double truth = std::nan("");
+      if (is_answer(tr.outcome)) {
+        ++answered;
+        truth = true_error(scenes[i], Law::coulomb, tr);
+        if (!std::isnan(truth)) {
+          ++judged;
+          met += truth <= e ? 1 : 0;
+        }
+      }
+      const double ratio = pl.complete ? static_cast<double>(tr.nfcn_total()) / static_cast<double>(std::max<std::int64_t>(1, pl.stats.nfcn))
+                                       : std::nan("");
+      if (is_answer(tr.outcome) && !std::isnan(ratio)) ratios.push_back(ratio);
+      cost.cells({csv_number(e), std::to_string(i), to_string(tr.outcome), csv_number(tr.rtol), csv_number(tr.error.norm),
+                  csv_number(truth), std::to_string(tr.nfcn_total()), std::to_string(pl.stats.nfcn), csv_number(ratio)});
+    }
+    md << "| " << e << " | " << answered << " | " << not_reached << " | " << judged << " | " << met << " | "
+       << quantile(ratios, 0.5) << " | " << quantile(ratios, 0.9) << " |\n";
+    log << "bench-accuracy: E = " << e << ": " << met << "/" << judged << " met\n";
+  }
+  cost.commit();
+  if (plot::available()) {
+    plot::Figure f;
+    f.title = "error estimate against the true error; cost of --accuracy";
+    f.cols = 2;
+    f.width = 1300;
+    f.height = 600;
+    plot::Panel a;
+    a.title = "honesty (above the dashed line: true > 10x estimate)";
+    a.xlabel = "estimate";
+    a.ylabel = "true error";
+    a.logx = a.logy = true;
+    const fs::path h = dir / "accuracy_honesty.csv";
+    a.series.push_back({h, "5", "(strcol(1) eq 'coulomb' ? $6 : 1/0)", "coulomb", "points pt 7 ps 0.6"});
+    a.series.push_back({h, "5", "(strcol(1) eq 'thesis' ? $6 : 1/0)", "thesis", "points pt 6 ps 0.6"});
+    a.series.push_back({h, "5", "($5*10)", "true = 10 x estimate", "lines dt 2 lc rgb 'black'"});
+    a.extra = "set key top left\n";
+    plot::Panel b;
+    b.title = "--accuracy E: RHS evaluations over a plain run at rtol = E";
+    b.xlabel = "accuracy asked E";
+    b.ylabel = "cost ratio";
+    b.logx = true;
+    b.series.push_back({dir / "accuracy_cost.csv", "1", "9", "scenes", "points pt 7 ps 0.6"});
+    b.extra = "set key top left\n";
+    f.panels = {a, b};
+    const fs::path fig = plot::render(f, dir / "accuracy.png");
+    md << "![accuracy](" << (ctx ? "accuracy/" : "") << fig.filename().string() << ")\n";
+    if (ctx) ctx->produced(fig);
+  }
+  if (ctx) {
+    ctx->produced(dir / "accuracy_honesty.csv");
+    ctx->produced(dir / "accuracy_cost.csv");
+  }
+  return ok;
+}
+
+int run_bench_accuracy(const BenchAccuracyOptions& o) {
+  const fs::path dir = o.out;
+  fs::create_directories(dir);
+  std::ostringstream md;
+  md << "# Accuracy benchmark\n\n";
+  const bool ok = bench_accuracy(o, dir, md, std::cerr, nullptr);
+  write_file_atomic(dir / "accuracy.md", md.str());
+  std::cerr << "bench-accuracy: " << (dir / "accuracy.md").string() << ", accuracy_honesty.csv, accuracy_cost.csv\n";
+  if (!ok) {
+    std::cerr << "bench: the true error exceeds 10x the estimate at more than 1 % of the scenes (accuracy.md)\n";
+    return 4;
+  }
+  return 0;
+}
+
+RegisterCommand reg{{"bench-accuracy",
+                     "Benchmark of the error estimate (honesty) and of --accuracy (met, cost) on a Latin hypercube of "
+                     "rough scenes (docs/accuracy.md)",
+                     94, [](CLI::App& app) -> std::function<int()> {
+                       auto o = std::make_shared<BenchAccuracyOptions>();
+                       app.add_option("--out", o->out, "output directory")->capture_default_str();
+                       app.add_option("--scenes", o->scenes, "scenes of the Latin hypercube")
+                           ->check(count(2, 100000))
+                           ->capture_default_str();
+                       app.add_option("--seed", o->seed, "its seed")
+                           ->check(count(0, 1000000000000))
+                           ->capture_default_str();
+                       return [o] { return run_bench_accuracy(*o); };
+                     }}};
+
+RegisterReproduce step{{"accuracy",
+                        "error estimate against the true error, and the cost of --accuracy, on a Latin hypercube of "
+                        "rough scenes",
+                        80, [](ReproduceContext& c) {
+                          BenchAccuracyOptions o;
+                          o.scenes = c.quick ? 10 : 40;
+                          const fs::path dir = c.out / "accuracy";
+                          fs::create_directories(dir);
+                          c.report << "\n## Accuracy: the error estimate and --accuracy (docs/accuracy.md)\n\n";
+                          std::ostringstream log;
+                          if (!bench_accuracy(o, dir, c.report, log, &c))
+                            c.failures.push_back("accuracy: the true error exceeds 10x the estimate at more than 1 % "
+                                                 "of the judged scenes");
+                        },
+                        6.0}};
+
+}  // namespace NANOPUSH_UNITY_ID
+}  // namespace
+}  // namespace nanopush::cli

@@ -1,0 +1,64 @@
+/* The error estimate, --accuracy and the outcomes from C (docs/accuracy.md, docs/errors.md):
+ * nanopush_run_scene_accuracy, nanopush_trajectory_get_error, nanopush_trajectory_get_outcome
+ * and the statuses NANOPUSH_NO_STATIC_FRICTION / NANOPUSH_ACCURACY_NOT_REACHED.
+ * Usage: test_capi_accuracy ROUGH_SCENE.toml (fig3_18) */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "nanopush.h"
+
+#include "check.h"
+
+int main(int argc, char** argv) {
+  if (argc < 2) {
+    fprintf(stderr, "usage: test_capi_accuracy SCENE.toml\n");
+    return 2;
+  }
+  nanopush_error err = nanopush_new_error();
+  nanopush_scene scene = nanopush_load_scene(err, argv[1]);
+  CHECK(scene != NULL);
+  double e[NANOPUSH_ERROR_SIZE];
+  char outcome[32];
+  /* A plain run estimates its error (the scene's solver.error_estimate, true). */
+  nanopush_trajectory t = nanopush_run_scene_ex(err, scene, NULL, NULL, "coulomb", 0.0, -1.0);
+  CHECK(t != NULL);
+  CHECK(nanopush_trajectory_get_error(err, t, e) == NANOPUSH_OK);
+  CHECK(e[0] > 0.0 && e[0] < 1e-6);          /* the final pose in the accuracy norm */
+  CHECK(e[3] >= 0.0 && e[3] <= e[0] + 1e-300); /* |dtheta| <= the norm */
+  CHECK(e[4] >= e[0]);                        /* the trajectory's max >= the final pose's */
+  CHECK(e[5] == 1e-10);                       /* the scene's rtol */
+  CHECK(e[6] > 0.0);
+  CHECK(nanopush_trajectory_get_outcome(err, t, outcome, sizeof outcome) == 2 && strcmp(outcome, "ok") == 0);
+  nanopush_delete_trajectory(&t);
+  /* Without the estimate: NaN. */
+  t = nanopush_run_scene_accuracy(err, scene, NULL, NULL, "coulomb", NULL, 0.0, -1.0, 0.0, 0);
+  CHECK(t != NULL && nanopush_trajectory_get_error(err, t, e) == NANOPUSH_OK && isnan(e[0]));
+  nanopush_delete_trajectory(&t);
+  /* --accuracy 1e-9: reached, at a tighter rtol. */
+  t = nanopush_run_scene_accuracy(err, scene, NULL, NULL, "coulomb", NULL, 0.0, -1.0, 1e-9, -1);
+  CHECK(t != NULL && nanopush_trajectory_get_error(err, t, e) == NANOPUSH_OK);
+  CHECK(e[0] <= 1e-9 && e[5] < 1e-9);
+  nanopush_delete_trajectory(&t);
+  /* Not reached: a status, the best estimate in the message. */
+  char msg[1024];
+  t = nanopush_run_scene_accuracy(err, scene, NULL, NULL, "coulomb", NULL, 0.0, -1.0, 1e-14, -1);
+  CHECK(t == NULL && nanopush_check_error(err) == NANOPUSH_ACCURACY_NOT_REACHED);
+  CHECK(nanopush_get_error(err, msg, sizeof msg) > 0 && strstr(msg, "accuracy_not_reached") != NULL);
+  CHECK(nanopush_run_scene_accuracy(err, scene, NULL, NULL, NULL, NULL, 0.0, -1.0, 1.0, -1) == NULL &&
+        nanopush_check_error(err) == NANOPUSH_BAD_INPUT);
+  /* A push inside the limit surface: at_rest (coulomb, an answer), no_static_friction (thesis). */
+  CHECK(nanopush_scene_set_real(err, scene, "push.force", 1e-7) == NANOPUSH_OK);
+  t = nanopush_run_scene_ex(err, scene, NULL, NULL, "coulomb", 0.0, -1.0);
+  CHECK(t != NULL);
+  CHECK(nanopush_trajectory_get_outcome(err, t, outcome, sizeof outcome) == 7 && strcmp(outcome, "at_rest") == 0);
+  nanopush_delete_trajectory(&t);
+  t = nanopush_run_scene_ex(err, scene, NULL, NULL, "thesis", 0.0, -1.0);
+  CHECK(t == NULL && nanopush_check_error(err) == NANOPUSH_NO_STATIC_FRICTION);
+  CHECK(strcmp(nanopush_status_name(NANOPUSH_NO_STATIC_FRICTION), "unknown status") != 0);
+  nanopush_delete_scene(&scene);
+  nanopush_delete_error(&err);
+  if (failures) fprintf(stderr, "%d failure(s)\n", failures);
+  else printf("capi accuracy: ok\n");
+  return failures ? 1 : 0;
+}

@@ -1,0 +1,53 @@
+# The error estimate and --accuracy on the command line, and every outcome a run can end in
+# (docs/accuracy.md, docs/errors.md "Outcomes of a run").
+set(_np $<TARGET_FILE:nanopush>)
+set(_env "NANOPUSH_SCENES=${NANOPUSH_SCENES}")
+set(_dir ${CMAKE_CURRENT_BINARY_DIR}/accuracy)
+file(MAKE_DIRECTORY ${_dir})
+
+# Every run's summary carries its estimate; --no-error-estimate skips it.
+add_test(NAME cli.accuracy.estimate COMMAND ${_np} run fig3_17 --out ${_dir}/fig3_17.csv)
+set_tests_properties(cli.accuracy.estimate PROPERTIES ENVIRONMENT "${_env}"
+  PASS_REGULAR_EXPRESSION "error estimate of the final pose [0-9.e+-]+ \\(\\|dx\\| [0-9.e+-]+ m.*companion run \\[cxx-dop853-thesis\\] at rtol 1e-12")
+add_test(NAME cli.accuracy.no_estimate COMMAND ${_np} run fig3_17 --no-error-estimate --out ${_dir}/fig3_17b.csv)
+set_tests_properties(cli.accuracy.no_estimate PROPERTIES ENVIRONMENT "${_env}" FAIL_REGULAR_EXPRESSION "error estimate")
+# The sidecar's run record holds it.
+add_test(NAME cli.accuracy.sidecar COMMAND ${CMAKE_COMMAND} -E cat ${_dir}/fig3_17.schema.json)
+set_tests_properties(cli.accuracy.sidecar PROPERTIES DEPENDS cli.accuracy.estimate
+  PASS_REGULAR_EXPRESSION "\"outcome\": \"ok\".*\"error_estimate\": [0-9]")
+
+# --accuracy reaches its target and says with which rtol; out of range is bad input (exit 2).
+add_test(NAME cli.accuracy.reached COMMAND ${_np} run fig3_18 --law coulomb --accuracy 1e-9 --out ${_dir}/fig3_18.csv)
+set_tests_properties(cli.accuracy.reached PROPERTIES ENVIRONMENT "${_env}"
+  PASS_REGULAR_EXPRESSION "accuracy asked 1e-09: reached with rtol 1e-1[0-9]")
+add_test(NAME cli.accuracy.out_of_range COMMAND ${_np} run fig3_18 --accuracy 1)
+set_tests_properties(cli.accuracy.out_of_range PROPERTIES ENVIRONMENT "${_env}" WILL_FAIL TRUE)
+add_test(NAME cli.accuracy.scene_key_range COMMAND ${_np} run fig3_18 --set solver.accuracy=1e-20)
+set_tests_properties(cli.accuracy.scene_key_range PROPERTIES ENVIRONMENT "${_env}"
+  PASS_REGULAR_EXPRESSION "solver.accuracy = 1e-20: must be in \\[1e-14, 0.1\\]")
+
+# Outcomes: at_rest (coulomb law, a push inside the limit surface: an answer, exit 0) ...
+add_test(NAME cli.accuracy.at_rest COMMAND ${_np} run fig3_18 --law coulomb --set push.force=1e-7 --out ${_dir}/rest.csv)
+set_tests_properties(cli.accuracy.at_rest PROPERTIES ENVIRONMENT "${_env}"
+  PASS_REGULAR_EXPRESSION "at_rest: the push \\(F = 1e-07 N\\) lies inside the limit surface")
+# ... no_static_friction (the same under the thesis law: exit 3 at once, both engines) ...
+foreach(_engine cxx f77)
+  add_test(NAME cli.accuracy.no_static_friction_${_engine}
+           COMMAND ${_np} run fig3_18 --law thesis --engine ${_engine} --set push.force=1e-7 --out ${_dir}/nsf.csv)
+  set_tests_properties(cli.accuracy.no_static_friction_${_engine} PROPERTIES ENVIRONMENT "${_env}"
+    PASS_REGULAR_EXPRESSION "nanopush: no_static_friction: fig3_18 .*starts at rest .*--law coulomb")
+endforeach()
+# ... accuracy_not_reached (exit 3, the best estimate said): 1e-14 is beyond double here.
+add_test(NAME cli.accuracy.not_reached COMMAND ${_np} run fig3_18 --law coulomb --accuracy 1e-14 --out ${_dir}/nr.csv)
+set_tests_properties(cli.accuracy.not_reached PROPERTIES ENVIRONMENT "${_env}"
+  PASS_REGULAR_EXPRESSION "nanopush: accuracy_not_reached: .*the estimated error [0-9.e+-]+ of the final pose is above")
+
+# The outcomes round-trip through a sweep table: at_rest is an answer, no_static_friction a failed row.
+add_test(NAME cli.accuracy.sweep_outcomes
+         COMMAND ${CMAKE_COMMAND} -DNP=${_np} -DOUT=${_dir}/outcomes.csv -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/accuracy_sweep.cmake)
+set_tests_properties(cli.accuracy.sweep_outcomes PROPERTIES ENVIRONMENT "${_env}")
+
+# The benchmark runs on a few scenes and writes its files (structure only, never timings).
+add_test(NAME cli.accuracy.bench COMMAND ${_np} bench-accuracy --scenes 4 --out ${_dir}/bench)
+set_tests_properties(cli.accuracy.bench PROPERTIES ENVIRONMENT "${_env}"
+  PASS_REGULAR_EXPRESSION "accuracy.md, accuracy_honesty.csv, accuracy_cost.csv")

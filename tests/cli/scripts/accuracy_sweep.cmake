@@ -1,0 +1,26 @@
+# A sweep over push.force under both laws: the weak push is at_rest (coulomb; an answer, its
+# outputs filled) or no_static_friction (thesis; a failed row, exit 64 + 1); the strong push is
+# ok with an error estimate in its row.
+foreach(_law coulomb thesis)
+  execute_process(COMMAND ${NP} sweep fig3_18 --law ${_law} --vary push.force=1e-7,5e-6 --out ${OUT}.${_law}.csv --quiet
+                  RESULT_VARIABLE _rc ERROR_VARIABLE _err)
+  file(STRINGS ${OUT}.${_law}.csv _rows)
+  list(GET _rows 0 _header)
+  if(NOT _header MATCHES ",error_estimate,error_x,error_y,error_theta,error_trajectory,rtol_used,nfcn,")
+    message(FATAL_ERROR "${_law}: no error columns in the header: ${_header}")
+  endif()
+  list(GET _rows 1 _weak)
+  list(GET _rows 2 _strong)
+  if(NOT _strong MATCHES "^1,5e-06,[^,]+,.*,ok,$")
+    message(FATAL_ERROR "${_law}: the strong push is not ok: ${_strong}")
+  endif()
+  if(_law STREQUAL "coulomb")
+    if(NOT _rc EQUAL 0 OR NOT _weak MATCHES "^0,1e-07,0,0,0,.*,at_rest,")
+      message(FATAL_ERROR "coulomb: exit ${_rc}, weak push row: ${_weak}\n${_err}")
+    endif()
+  else()
+    if(NOT _rc EQUAL 65 OR NOT _weak MATCHES "^0,1e-07,,,,.*,no_static_friction,\"fig3_18 .*--law coulomb")
+      message(FATAL_ERROR "thesis: exit ${_rc}, weak push row: ${_weak}\n${_err}")
+    endif()
+  endif()
+endforeach()
