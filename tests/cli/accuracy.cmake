@@ -51,3 +51,8 @@ set_tests_properties(cli.accuracy.sweep_outcomes PROPERTIES ENVIRONMENT "${_env}
 add_test(NAME cli.accuracy.bench COMMAND ${_np} bench-accuracy --scenes 4 --out ${_dir}/bench)
 set_tests_properties(cli.accuracy.bench PROPERTIES ENVIRONMENT "${_env}"
   PASS_REGULAR_EXPRESSION "accuracy.md, accuracy_honesty.csv, accuracy_cost.csv")
+
+# The stability atlas runs on a 2 x 2 grid per map and writes its files (structure only).
+add_test(NAME cli.accuracy.atlas COMMAND ${_np} bench-atlas --points 2 --out ${_dir}/atlas)
+set_tests_properties(cli.accuracy.atlas PROPERTIES ENVIRONMENT "${_env}"
+  PASS_REGULAR_EXPRESSION "atlas.md, atlas.csv, atlas_\\*.png")
