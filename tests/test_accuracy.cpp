@@ -137,5 +137,22 @@ TEST_CASE("Accuracy asked for is reached on a Latin hypercube of rough scenes",
   }
 }
 
+TEST_CASE("The printed law's failures are classified: energy injected, or a jump where omega changes sign",
+          "[accuracy][printed][unit]") {
+  // Points of fig3_18's mu x yn grid where the printed law used to end in "step size underflow".
+  for (const double yn : {-21e-9, -9e-9}) {
+    Scene sc = thesis_preset("fig3_18");
+    sc.set({{"surface.mu", 0.005}, {"push.yn", yn}});
+    RunSettings s;
+    s.law = Law::printed;
+    s.allow_partial = true;
+    const Trajectory tr = run_engine(sc, s);
+    INFO("yn " << yn << ": " << tr.outcome_text());
+    CHECK(tr.outcome == Outcome::law_blowup);
+    CHECK_FALSE(tr.complete);
+    CHECK(tr.outcome_message.find("--law thesis or coulomb") != std::string::npos);
+  }
+}
+
 }  // namespace NANOPUSH_UNITY_ID
 }  // namespace

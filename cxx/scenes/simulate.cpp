@@ -188,14 +188,15 @@ std::int64_t set_start_direction(RoughBarModel& m, const double* y) {
 /// watch stops the run there: after an accepted step that reverses the velocity or the spin
 /// while the speed (|v| + |omega| L) is below 1e-3 of the run's largest and within ten steps of
 /// friction's deceleration of zero, and where the rest analysis says the push is inside the
-/// limit surface. It also keeps the largest work of friction (positive: the printed law
-/// injected energy).
+/// limit surface. It also sums the work of friction over the steps where it was positive (the
+/// printed law injecting energy).
 struct RestWatch {
   RoughBarModel coulomb;  ///< the contact under the coulomb law (analyse_rest)
   double accel = 0, spin = 0;  ///< friction's deceleration scales [m/s^2], [rad/s^2]
   double lever = 0;            ///< [m] the body's half-length, the speed's lever for omega
   double max_speed = 0;
-  double max_work_fric = 0;
+  double positive_work = 0;  ///< [J] the work of friction summed over the steps where it was positive
+  double last_omega = 0, max_omega = 0;  ///< [rad/s] at the last accepted step, and the largest |omega|
   bool came_to_rest = false;
   double t_rest = 0;
 
@@ -208,7 +209,9 @@ struct RestWatch {
     spin = m.muN * lever / m.inertia;
   }
   int operator()(double t0, const double* y0, double t1, const double* y1) {
-    max_work_fric = std::max(max_work_fric, y1[kWorkFric]);
+    positive_work += std::max(0.0, y1[kWorkFric] - y0[kWorkFric]);
+    last_omega = y1[kOmega];
+    max_omega = std::max(max_omega, std::fabs(last_omega));
     const double speed = std::hypot(y1[kVx], y1[kVy]) + std::fabs(y1[kOmega]) * lever;
     max_speed = std::max(max_speed, speed);
     const bool reversed = y0[kVx] * y1[kVx] + y0[kVy] * y1[kVy] < 0.0 || y0[kOmega] * y1[kOmega] < 0.0;
@@ -223,7 +226,7 @@ struct RestWatch {
 };
 
 std::string printed_blowup_message(double work, double t) {
-  return "the printed law's friction did +" + fmt_short(work) + " J of work by t = " + fmt_short(t) +
+  return "the printed law's friction did +" + fmt_short(work) + " J of positive work by t = " + fmt_short(t) +
          " s: the signs of eqs 3.45-3.48 as printed inject energy, and the motion blows up until the "
          "integrator gives up (docs/rough.md); --law thesis or coulomb";
 }
@@ -315,9 +318,18 @@ Trajectory run_cxx_rough(const Scene& sc, const ResolvedSettings& s) {
     if (watch.came_to_rest) {
       tr.outcome = Outcome::no_static_friction;
       tr.outcome_message = no_static_friction_message(sc, s.law, watch.t_rest, y[kX], y[kY], y[kTheta]);
-    } else if (!tr.stats.ok() && m.printed && watch.max_work_fric > 0.0) {
+    } else if (!tr.stats.ok() && m.printed && watch.positive_work > 0.0) {
       tr.outcome = Outcome::law_blowup;
-      tr.outcome_message = printed_blowup_message(watch.max_work_fric, tr.stats.t_reached);
+      tr.outcome_message = printed_blowup_message(watch.positive_work, tr.stats.t_reached);
+    } else if (tr.stats.status == BsStatus::step_underflow && m.printed &&
+               std::fabs(watch.last_omega) < 1e-2 * watch.max_omega) {
+      // The printed forms jump where omega changes sign (no sgn(omega) in the printed F3):
+      // the steps shrink onto the jump until they underflow.
+      tr.outcome = Outcome::law_blowup;
+      tr.outcome_message = "step size underflow as omega changes sign (omega = " + fmt_short(watch.last_omega) +
+                           " rad/s, down from " + fmt_short(watch.max_omega) +
+                           "): the printed forms of eqs 3.45-3.48 jump there, and the motion cannot be integrated "
+                           "across it (docs/rough.md); --law thesis or coulomb";
     }
     return tr;
   }
