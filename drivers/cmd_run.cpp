@@ -60,7 +60,8 @@ void print_summary(const Scene& sc, const Trajectory& tr, double seconds, std::o
      << "  t_end = " << last[col::t] << " s: x = " << last[col::x] << " m, y = " << last[col::y] << " m, theta = " << last[col::theta]
      << " rad, omega = " << last[col::omega] << " rad/s\n"
      << "  RHS evaluations " << tr.stats.nfcn << ", accepted steps " << tr.stats.naccpt << ", rejected steps "
-     << tr.stats.nrejct << ", wall time " << std::setprecision(3)
+     << tr.stats.nrejct << (tr.kinks_located > 0 ? ", kinks located " + std::to_string(tr.kinks_located) : std::string())
+     << ", wall time " << std::setprecision(3)
      << (seconds < 1 ? seconds * 1e3 : seconds) << (seconds < 1 ? " ms\n" : " s\n");
   print_error_estimate(tr, os);
 }

@@ -154,5 +154,36 @@ TEST_CASE("The printed law's failures are classified: energy injected, or a jump
   }
 }
 
+TEST_CASE("Thesis law: with its kinks located the achieved error falls with rtol (fig3_17, modern and dop853)",
+          "[accuracy][rough][kinks][numeric]") {
+  const Scene sc = thesis_preset("fig3_17");
+  RunSettings r;
+  r.method = Method::modern;
+  r.law = Law::thesis;
+  r.rtol = 1e-14;
+  r.error_estimate = false;
+  const Trajectory ref = run_engine(sc, r);
+  for (const Method m : {Method::dop853, Method::modern}) {
+    double previous = 1.0;
+    for (const double rtol : {1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12}) {
+      RunSettings s;
+      s.method = m;
+      s.law = Law::thesis;
+      s.rtol = rtol;
+      s.error_estimate = false;
+      const Trajectory tr = run_engine(sc, s);
+      REQUIRE(tr.rows.size() == ref.rows.size());
+      double err = 0;  // theta, the largest over the output times
+      for (std::size_t i = 0; i < tr.rows.size(); ++i)
+        err = std::max(err, std::fabs(tr.rows[i][col::theta] - ref.rows[i][col::theta]));
+      INFO(to_string(m) << " rtol " << rtol << ": max |dtheta| " << err << " (" << tr.kinks_located
+                        << " kinks located, " << tr.stats.nfcn << " RHS evaluations)");
+      CHECK(tr.kinks_located > 0);
+      CHECK(err < previous);
+      previous = err;
+    }
+  }
+}
+
 }  // namespace NANOPUSH_UNITY_ID
 }  // namespace

@@ -11,6 +11,7 @@
 #include "nanopush/models/rigid_body.hpp"
 #include "nanopush/models/rough_bar.hpp"
 #include "nanopush/models/stick_slip.hpp"
+#include "kinks.hpp"
 
 namespace nanopush {
 
@@ -225,6 +226,17 @@ struct RestWatch {
   }
 };
 
+/// The kinks of the thesis law's wrench: the iCOR (-vby/omega, vbx/omega) in body axes crossing
+/// the lines x' = +-a and y' = +-b of the contact's edges, as g = vby^2 - a^2 omega^2 and
+/// vbx^2 - b^2 omega^2 (no division: both keep their sign through omega = 0).
+void thesis_kinks(const RoughBarModel& m, const double* y, double* g) {
+  const double c = std::cos(y[kTheta]), sn = std::sin(y[kTheta]);
+  const double vbx = c * y[kVx] + sn * y[kVy], vby = -sn * y[kVx] + c * y[kVy];
+  const double w2 = y[kOmega] * y[kOmega];
+  g[0] = vby * vby - m.geometry.a * m.geometry.a * w2;
+  g[1] = vbx * vbx - m.geometry.b * m.geometry.b * w2;
+}
+
 std::string printed_blowup_message(double work, double t) {
   return "the printed law's friction did +" + fmt_short(work) + " J of positive work by t = " + fmt_short(t) +
          " s: the signs of eqs 3.45-3.48 as printed inject energy, and the motion blows up until the "
@@ -303,7 +315,31 @@ Trajectory run_cxx_rough(const Scene& sc, const ResolvedSettings& s) {
       tr.outcome_message = no_static_friction_message(sc, s.law, 0.0, y[kX], y[kY], y[kTheta]);
       return tr;
     }
-    if (s.method == Method::dop853) {
+    if (s.law == Law::thesis && s.method != Method::faithful) {
+      // modern and dop853: the kinks of the wrench located (kinks.hpp; faithful keeps the F77
+      // engine's steps).
+      const detail::KinkIntegrate run = [&](double t0, double* yy, std::span<const double> to,
+                                            const detail::KinkObserver& obs, const detail::KinkHook& hook, double h0) {
+        auto o = [&](std::size_t, double t, const double* v) { obs(t, v); };
+        if (s.method == Method::dop853) {
+          auto opt = Dop853Options<double>::make(s.rtol, tr.atol);
+          opt.h0 = h0 > 0 ? h0 : sc.solver.h0;
+          opt.hmax = sc.solver.hmax;
+          opt.maxstp = sc.solver.max_steps;
+          Dop853<double, kRoughStateSize> dp(std::move(opt));
+          return static_cast<IntegrationResult>(dp.integrate(rhs, t0, yy, to, o, std::cref(hook)));
+        }
+        auto opt = options_for(sc, s, tr.atol);
+        if (h0 > 0) opt.h0 = h0;
+        BulirschStoer<double, kRoughStateSize> bs(opt);
+        return static_cast<IntegrationResult>(bs.integrate(rhs, t0, yy, to, o, std::cref(hook)));
+      };
+      const detail::KinkResult kr = detail::integrate_across_kinks(
+          run, [&m](const double* v, double* g) { thesis_kinks(m, v, g); }, 2, y.data(), kRoughStateSize,
+          std::span<const double>(tout), [&](double t, const double* v) { observer(0, t, v); }, std::ref(watch));
+      tr.stats = kr.stats;
+      tr.kinks_located = kr.located;
+    } else if (s.method == Method::dop853) {
       auto opt = Dop853Options<double>::make(s.rtol, tr.atol);
       opt.h0 = sc.solver.h0;
       opt.hmax = sc.solver.hmax;

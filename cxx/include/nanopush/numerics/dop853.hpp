@@ -9,11 +9,10 @@
 // as transcribed with 30 digits in SciPy's scipy/integrate/_ivp/dop853_coefficients.py
 // (BSD); the code is written from the book, not from either program.
 //
-// The integrator follows the contract of integration.hpp (OdeIntegrator; its step hook may
-// stop after a step, never before one). Its own: only the last output time ends a step; the
-// steps are chosen by the error alone and the outputs inside a step come from the dense output
-// (three more RHS evaluations in a step that holds one), so the step sequence does not depend
-// on the output times (tested).
+// The integrator follows the contract of integration.hpp (HookedOdeIntegrator). Its own: only
+// the last output time ends a step; the steps are chosen by the error alone and the outputs
+// inside a step come from the dense output (three more RHS evaluations in a step that holds
+// one), so the step sequence does not depend on the output times (tested).
 // Templated on the scalar S and the dimension N (N = Dynamic for a size chosen at run time).
 // The coefficients are long double literals (30 digits transcribed, ~19 kept): in
 // __float128 the method's order conditions hold to ~1e-19 only, so it is no extended-
@@ -286,9 +285,10 @@ class Dop853 {
   }
 
   /// The same with a step hook, hook(t_old, y_old, t_new, y_new), called after each accepted
-  /// step once its outputs are given. Only kHookStopAfter stops (the step is committed, then
-  /// the integration returns with `stopped_by_hook` set): dop853 locates no events, so a hook
-  /// here classifies a run (the thesis law's chatter at rest), it does not cut steps.
+  /// step before its outputs are given (integration.hpp): kHookStopBefore returns at the
+  /// step's start (y = y_old, t_reached = t_old, t_event_end = t_new, `stopped_by_hook`) with
+  /// no output of the step given, so the caller can locate an event inside it and restart
+  /// there; kHookStopAfter commits the step and its outputs, then returns.
   template <class Rhs, class Observer, class Hook>
   Dop853Result integrate(Rhs&& rhs, Scalar t0, Scalar* y, std::span<const Scalar> tout, Observer&& observer,
                          Hook&& hook) {
@@ -449,6 +449,12 @@ class Dop853 {
       facold = std::max(err, 1e-4);
       if (!eval_at(rhs, tph, static_cast<const Scalar*>(&ynew_[0]), k13, res)) break;
       ++res.naccpt;
+      const int action = hook(t, static_cast<const Scalar*>(&y_[0]), tph, static_cast<const Scalar*>(&ynew_[0]));
+      if (action == kHookStopBefore) {
+        res.stopped_by_hook = true;
+        res.t_event_end = static_cast<double>(tph);
+        break;
+      }
       // Outputs in (t, t + h]: the one at the end is y_new itself, the others come from the
       // interpolant, built at the first of them (three more RHS evaluations).
       bool have_dense = false;
@@ -466,7 +472,6 @@ class Dop853 {
         ++iout;
       }
       if (!res.ok()) break;
-      const int action = hook(t, static_cast<const Scalar*>(&y_[0]), tph, static_cast<const Scalar*>(&ynew_[0]));
       for (int i = 0; i < n; ++i) {
         y_[i] = ynew_[i];
         k1[i] = k13[i];
@@ -643,7 +648,7 @@ class Dop853 {
   }
 };
 
-static_assert(OdeIntegrator<Dop853<double, 6>, double>);
-static_assert(OdeIntegrator<Dop853<double>, double>);
+static_assert(HookedOdeIntegrator<Dop853<double, 6>, double>);
+static_assert(HookedOdeIntegrator<Dop853<double>, double>);
 
 }  // namespace nanopush

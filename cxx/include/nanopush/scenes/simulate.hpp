@@ -156,6 +156,7 @@ struct Trajectory {
   Outcome outcome = Outcome::ok;
   std::string outcome_message;  ///< why, for an outcome other than ok
   ErrorEstimate error;          ///< the estimated global error of the answer
+  std::int64_t kinks_located = 0;  ///< thesis law, modern and dop853: kinks of the wrench located
   AccuracyRecord accuracy;
   /// Every RHS evaluation the answer cost: its own run and the estimate's.
   [[nodiscard]] std::int64_t nfcn_total() const { return stats.nfcn + error.nfcn; }

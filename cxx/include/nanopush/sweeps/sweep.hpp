@@ -76,7 +76,9 @@ class Task {
     std::string message;
   };
   [[nodiscard]] virtual PointResult evaluate_point(const std::vector<SceneSetting>& point, std::size_t index) const {
-    return {evaluate(point, index)};
+    PointResult r;
+    r.cells = evaluate(point, index);
+    return r;
   }
   /// Everything that determines the results, as text (the journal's identity).
   [[nodiscard]] virtual std::string identity() const = 0;

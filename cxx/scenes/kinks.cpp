@@ -1,0 +1,135 @@
+#include "kinks.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace nanopush::detail {
+
+namespace {
+
+constexpr int kMaxKinks = 8;
+/// Kinks located before the run gives up locating (and integrates on across them).
+constexpr std::int64_t kMaxLocated = 100000;
+
+void add_counts(IntegrationResult& into, const IntegrationResult& r) {
+  into.nfcn += r.nfcn;
+  into.naccpt += r.naccpt;
+  into.nrejct += r.nrejct;
+}
+
+}  // namespace
+
+KinkResult integrate_across_kinks(const KinkIntegrate& run, const KinkFunctions& kinks, int nk, double* y, int n,
+                                  std::span<const double> tout, const KinkObserver& observer, const KinkHook& hook) {
+  KinkResult out;
+  nk = std::min(nk, kMaxKinks);
+  double t = 0.0;
+  std::size_t iout = 0;
+  std::vector<double> ystart(static_cast<std::size_t>(n)), yt(static_cast<std::size_t>(n));
+  double g0[kMaxKinks], g1[kMaxKinks];
+  int crossed = -1;
+  double h_next = 0.0;  // the first step after a restart: the step that met the kink
+  const KinkHook no_hook = [](double, const double*, double, const double*) { return static_cast<int>(kHookContinue); };
+  const KinkObserver quiet = [](double, const double*) {};
+  // A step whose start is a located kink sees g there within rounding of zero: only a sign
+  // change from a clearly non-zero value is a crossing.
+  auto crossing = [&](const double* ya, const double* yb) {
+    kinks(ya, g0);
+    kinks(yb, g1);
+    for (int k = 0; k < nk; ++k)
+      if (g0[k] * g1[k] < 0.0 && std::fabs(g0[k]) > 1e-9 * std::fabs(g1[k])) return k;
+    return -1;
+  };
+  while (iout < tout.size()) {
+    std::size_t emitted = 0;
+    const KinkObserver count = [&](double tt, const double* yy) {
+      observer(tt, yy);
+      ++emitted;
+    };
+    const bool locate = out.located < kMaxLocated;
+    const KinkHook step = [&](double ta, const double* ya, double tb, const double* yb) {
+      if (locate) {
+        crossed = crossing(ya, yb);
+        if (crossed >= 0) return static_cast<int>(kHookStopBefore);
+      }
+      return hook ? hook(ta, ya, tb, yb) : static_cast<int>(kHookContinue);
+    };
+    const IntegrationResult r = run(t, y, tout.subspan(iout), count, step, h_next);
+    add_counts(out.stats, r);
+    iout += emitted;
+    out.stats.status = r.status;
+    out.stats.message = r.message;
+    out.stats.rhs_status = r.rhs_status;
+    out.stats.t_reached = r.t_reached;
+    if (!r.ok() || !r.stopped_by_hook) return out;
+    if (crossed < 0) {  // the outer hook stopped the run
+      out.stopped_by_hook = true;
+      return out;
+    }
+    // A kink of g_k inside (t, t1]: locate it by the Illinois variant of regula falsi, each
+    // value from a sub-integration from the step's start.
+    const int k = crossed;
+    const double t0 = r.t_reached, t1 = r.t_event_end;
+    std::copy(y, y + n, ystart.begin());
+    auto g_at = [&](double tc) {
+      std::copy(ystart.begin(), ystart.end(), yt.begin());
+      const double end[1] = {tc};
+      const IntegrationResult s = run(t0, yt.data(), std::span<const double>(end, 1), quiet, no_hook, tc - t0);
+      add_counts(out.stats, s);
+      if (!s.ok()) return std::nan("");
+      double g[kMaxKinks];
+      kinks(yt.data(), g);
+      return g[k];
+    };
+    kinks(ystart.data(), g0);
+    double a = t0, b = t1, ga = g0[k], gb = g_at(b);
+    int side = 0;
+    for (int it = 0; it < 60 && std::isfinite(gb) && (b - a) > 1e-6 * (t1 - t0); ++it) {
+      double c = (a * gb - b * ga) / (gb - ga);
+      if (!(c > a && c < b)) c = 0.5 * (a + b);
+      const double gc = g_at(c);
+      if (!std::isfinite(gc) || gc == 0.0) {
+        a = b = c;
+        break;
+      }
+      if ((gc > 0.0) == (ga > 0.0)) {
+        a = c;
+        ga = gc;
+        if (side == -1) gb *= 0.5;
+        side = -1;
+      } else {
+        b = c;
+        gb = gc;
+        if (side == 1) ga *= 0.5;
+        side = 1;
+      }
+    }
+    // Integrate to the kink's far side b, giving the outputs before it; restart there.
+    std::size_t before = iout;
+    while (before < tout.size() && tout[before] < b) ++before;
+    std::vector<double> span_out(tout.begin() + static_cast<std::ptrdiff_t>(iout),
+                                 tout.begin() + static_cast<std::ptrdiff_t>(before));
+    span_out.push_back(b);
+    std::copy(ystart.begin(), ystart.end(), y);
+    std::size_t given = 0;
+    const KinkObserver to_b = [&](double tt, const double* yy) {
+      if (given++ < span_out.size() - 1) observer(tt, yy);
+    };
+    const IntegrationResult s = run(t0, y, span_out, to_b, no_hook, b - t0);
+    add_counts(out.stats, s);
+    if (!s.ok()) {
+      out.stats.status = s.status;
+      out.stats.message = s.message;
+      out.stats.t_reached = s.t_reached;
+      return out;
+    }
+    iout = before;
+    t = b;
+    h_next = t1 - t0;
+    ++out.located;
+  }
+  return out;
+}
+
+}  // namespace nanopush::detail

@@ -1,0 +1,38 @@
+// Integration across the kinks of a right-hand side (private to the scenes layer): where an
+// event function g_k(y) changes sign the RHS is continuous but not smooth (the thesis law's
+// friction wrench as the iCOR crosses the lines of the contact's edges), an extrapolation or
+// Runge-Kutta step across it loses its order, and the error stops falling with rtol. Each such
+// crossing is located (Illinois regula falsi on sub-integrations from the step's start) and the
+// integration restarted there, so no step straddles a kink (docs/accuracy.md).
+#pragma once
+#include <cstdint>
+#include <functional>
+#include <span>
+
+#include "nanopush/numerics/integration.hpp"
+
+namespace nanopush::detail {
+
+using KinkObserver = std::function<void(double t, const double* y)>;
+using KinkHook = std::function<int(double t0, const double* y0, double t1, const double* y1)>;
+/// One integration from (t0, y) over the output times `tout` with an observer and a step hook,
+/// by a fresh integrator (the method's own options, its first step h0 when h0 > 0); y is left
+/// at the last time reached.
+using KinkIntegrate = std::function<IntegrationResult(double t0, double* y, std::span<const double> tout,
+                                                      const KinkObserver& observer, const KinkHook& hook, double h0)>;
+/// The event functions at a state: g[0..nk).
+using KinkFunctions = std::function<void(const double* y, double* g)>;
+
+struct KinkResult {
+  IntegrationResult stats;   ///< counts summed over every integration, the status of the last
+  std::int64_t located = 0;  ///< kinks located
+  bool stopped_by_hook = false;  ///< `hook` stopped the run (kHookStopAfter)
+};
+
+/// Integrate the state y (n components) from 0 over `tout` as `run` does, locating the sign
+/// changes of the `nk` functions `kinks` and restarting at each. `hook` (optional) sees every
+/// committed step and may stop the run after it.
+KinkResult integrate_across_kinks(const KinkIntegrate& run, const KinkFunctions& kinks, int nk, double* y, int n,
+                                  std::span<const double> tout, const KinkObserver& observer, const KinkHook& hook);
+
+}  // namespace nanopush::detail
