@@ -117,6 +117,9 @@ int run_cmd(const RunOptions& o) {
   if (!o.quiet) {
     print_summary(sc, tr, dt, std::cerr);
     if (tr.outcome == Outcome::at_rest) std::cerr << "  at_rest: " << tr.outcome_message << "\n";
+    if (!tr.handed_over.empty())
+      std::cerr << "  method auto handed over to cvode: modern gave up (" << tr.handed_over
+                << "), a stiff start just outside the limit surface (docs/accuracy.md)\n";
     for (const auto& e : tr.events) {
       if (e.t == 0.0)
         std::cerr << "  at rest at t = 0: " << (e.stuck ? "stays stuck (applied wrench inside the limit surface)" : "the push starts it sliding") << "\n";

@@ -185,5 +185,31 @@ TEST_CASE("Thesis law: with its kinks located the achieved error falls with rtol
   }
 }
 
+TEST_CASE("Coulomb law, method auto: a stiff start just outside the limit surface is handed over to CVODE",
+          "[accuracy][rough][coulomb][regression]") {
+  // Points of fig3_18's mu x yn grid where modern spent its 20,000 steps in the first picoseconds.
+  Scene sc = thesis_preset("fig3_18");
+  sc.set({{"surface.mu", 0.2213333333333333}, {"push.yn", 3.9e-8}});
+  RunSettings s;
+  s.law = Law::coulomb;
+  const Trajectory tr = run_engine(sc, s);
+  CHECK(tr.outcome == Outcome::ok);
+  CHECK(tr.engine_label == "cxx-cvode-coulomb");
+  CHECK_FALSE(tr.handed_over.empty());
+  REQUIRE(tr.error.available);
+  CHECK(tr.error.companion == "cxx-cvode-coulomb");
+  // Against modern with the budget it needs (a million steps): within 10x the estimate.
+  RunSettings m = s;
+  m.method = Method::modern;
+  m.error_estimate = false;
+  sc.set("solver.max_steps", 2000000);
+  const Trajectory ref = run_engine(sc, m);
+  CHECK(pose_error_norm(tr.rows.back(), ref.rows.back(), tr.error.length_scale) <= 10 * tr.error.norm);
+  // An explicit method is not handed over: the failure stays the user's to see.
+  sc.set("solver.max_steps", 20000);
+  m.allow_partial = true;
+  CHECK(run_engine(sc, m).outcome == Outcome::solver_failure);
+}
+
 }  // namespace NANOPUSH_UNITY_ID
 }  // namespace

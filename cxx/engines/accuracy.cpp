@@ -120,7 +120,9 @@ Trajectory run_estimated(const Scene& scene, const ResolvedSettings& s) {
   Trajectory tr = run_resolved(scene, s);
   if (!s.error_estimate || !is_answer(tr.outcome)) return tr;
   std::string note;
-  const ResolvedSettings c = companion_settings(scene, s, note);
+  ResolvedSettings used = s;
+  if (!tr.handed_over.empty()) used.method = Method::cvode;
+  const ResolvedSettings c = companion_settings(scene, used, note);
   const Trajectory ref = run_resolved(scene, c);
   tr.error = estimate_from(scene, tr, ref);
   if (!note.empty()) tr.error.note = note;
@@ -137,6 +139,7 @@ Trajectory run_to_accuracy(const Scene& scene, const RunSettings& settings) {
   const double wanted = resolve_settings(scene, settings).accuracy;
   ResolvedSettings cur_s = first;
   Trajectory best = run_resolved(scene, first);
+  if (!best.handed_over.empty()) cur_s.method = Method::cvode;
   std::int64_t spent = best.stats.nfcn;
   int runs = 1;
   ErrorEstimate best_error;

@@ -86,7 +86,23 @@ Trajectory run_f77(const Scene& sc, const ResolvedSettings& s) {
 Trajectory run_resolved(const Scene& scene, const ResolvedSettings& s) {
   ResolvedSettings keep = s;
   keep.allow_partial = true;
-  return finish_run(scene, keep, s.engine == Engine::f77 ? run_f77(scene, s) : run_cxx(scene, s));
+  Trajectory tr = finish_run(scene, keep, s.engine == Engine::f77 ? run_f77(scene, s) : run_cxx(scene, s));
+  // Method auto under the coulomb law: a push just outside the limit surface starts so slowly
+  // that the velocity's direction relaxes at mu N / (m |V|), stiff while |V| is tiny, and the
+  // explicit Bulirsch-Stoer spends its step budget in the first picoseconds. CVODE's BDF copes:
+  // hand the scene over to it (its cost includes the attempt).
+  if (tr.outcome == Outcome::solver_failure && s.method_automatic && s.method == Method::modern &&
+      s.engine == Engine::cxx && scene.rough() && s.law == Law::coulomb) {
+    ResolvedSettings c = keep;
+    c.method = Method::cvode;
+    Trajectory tc = finish_run(scene, c, run_cxx(scene, c));
+    if (is_answer(tc.outcome)) {
+      tc.stats.nfcn += tr.stats.nfcn;
+      tc.handed_over = tr.outcome_message;
+      return tc;
+    }
+  }
+  return tr;
 }
 
 Trajectory run_engine(const Scene& scene, const RunSettings& settings) {

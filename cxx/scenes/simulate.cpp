@@ -44,6 +44,7 @@ ResolvedSettings resolve_settings(const Scene& scene, const RunSettings& in) {
   const std::string pfield = in.precision ? "precision" : "solver.precision";
   s.precision = in.precision.value_or(scene.solver.precision);
   const bool coulomb = scene.rough() && s.law == Law::coulomb;
+  s.method_automatic = s.method == Method::automatic;
   if (s.method == Method::automatic) {
     // The method that reached the error asked for with the least wall time in the measured
     // work-precision (docs/dop853.md, "Choosing a method"): dop853 down to rtol 1e-11 where it

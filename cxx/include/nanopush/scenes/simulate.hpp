@@ -79,6 +79,7 @@ struct ResolvedSettings {
   std::function<void(double)> progress;
   bool error_estimate = false;
   double accuracy = 0;  ///< 0 = none
+  bool method_automatic = false;  ///< the method was chosen by auto (run_resolved may hand over)
 };
 
 /// How a run ended (docs/errors.md), beside the integrator's own status (stats.status).
@@ -157,6 +158,9 @@ struct Trajectory {
   std::string outcome_message;  ///< why, for an outcome other than ok
   ErrorEstimate error;          ///< the estimated global error of the answer
   std::int64_t kinks_located = 0;  ///< thesis law, modern and dop853: kinks of the wrench located
+  /// Method auto under the coulomb law: modern gave up (a stiff start just outside the limit
+  /// surface) and CVODE (BDF) ran the scene instead; what modern said.
+  std::string handed_over;
   AccuracyRecord accuracy;
   /// Every RHS evaluation the answer cost: its own run and the estimate's.
   [[nodiscard]] std::int64_t nfcn_total() const { return stats.nfcn + error.nfcn; }
