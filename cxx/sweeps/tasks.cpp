@@ -2,6 +2,7 @@
 // the closed-form evaluations (friction wrench, iCOR formulas, mu estimate).
 #include <cmath>
 #include <limits>
+#include <set>
 #include <sstream>
 
 #include "nanopush/engines/engines.hpp"
@@ -61,6 +62,17 @@ class RunTask final : public Task {
     if (k->type == KeyType::string || k->type == KeyType::boolean) c.type = "string";
     if (k->type == KeyType::integer) c.type = "integer";
     return c;
+  }
+
+  /// A text or flag value (a choice such as surface.law, solver.method) is checked on the scene
+  /// before any point runs, each distinct value once: `--vary surface.law=thesis,coulmb` is bad
+  /// input (exit 2), not a sweep whose rows all fail. Numbers are checked where they run (their
+  /// ranges can depend on other keys of the point).
+  void check_input(const std::string& key, const SceneValue& value) const override {
+    if (value.kind() == KeyType::number) return;
+    if (!checked_.insert(key + "=" + value.to_string()).second) return;
+    Scene sc = base_;
+    sc.set(key, value);
   }
 
   [[nodiscard]] std::vector<std::string> evaluate(const std::vector<SceneSetting>& point,
@@ -125,6 +137,7 @@ class RunTask final : public Task {
   Scene base_;
   RunSettings settings_;
   std::filesystem::path trajectories_;
+  mutable std::set<std::string> checked_;  ///< text values already checked (table_columns, one thread)
 };
 
 // ---- closed-form evaluations over named parameters ---------------------------------------

@@ -39,3 +39,13 @@ set_tests_properties(cli.sweep.bad_axis PROPERTIES ENVIRONMENT "${_env}"
   PASS_REGULAR_EXPRESSION "a range is FROM:TO:N")
 add_test(NAME cli.scene_keys COMMAND ${_np} scene-keys)
 set_tests_properties(cli.scene_keys PROPERTIES PASS_REGULAR_EXPRESSION "surface.mu +number")
+
+# A text value of --vary (a choice) that the scene refuses is bad input before any point runs
+# (exit 2, the key and the value named, no table), not a sweep whose every row fails (issue 34).
+add_test(NAME cli.sweep.bad_choice_value
+         COMMAND ${_np} sweep fig3_18 --vary surface.law=thesis,coulmb --out ${CMAKE_CURRENT_BINARY_DIR}/bad_choice.csv)
+set_tests_properties(cli.sweep.bad_choice_value PROPERTIES ENVIRONMENT "NANOPUSH_SCENES=${NANOPUSH_SCENES}"
+  PASS_REGULAR_EXPRESSION "nanopush: error: surface.law = \"coulmb\": must be one of: thesis, printed, coulomb")
+add_test(NAME cli.sweep.bad_choice_value_exit
+         COMMAND ${_np} sweep fig3_18 --vary surface.law=thesis,coulmb --out ${CMAKE_CURRENT_BINARY_DIR}/bad_choice.csv)
+set_tests_properties(cli.sweep.bad_choice_value_exit PROPERTIES ENVIRONMENT "NANOPUSH_SCENES=${NANOPUSH_SCENES}" WILL_FAIL TRUE)
