@@ -90,9 +90,11 @@ Trajectory run_resolved(const Scene& scene, const ResolvedSettings& s) {
   // Method auto under the coulomb law: a push just outside the limit surface starts so slowly
   // that the velocity's direction relaxes at mu N / (m |V|), stiff while |V| is tiny, and the
   // explicit Bulirsch-Stoer spends its step budget in the first picoseconds. CVODE's BDF copes:
-  // hand the scene over to it (its cost includes the attempt).
+  // hand the scene over to it (its cost includes the attempt). Only a failure before the first
+  // output after t = 0 is such a start; a later one (a bar spinning thousands of turns) would
+  // cost CVODE far more than the budget the scene gave modern.
   if (tr.outcome == Outcome::solver_failure && s.method_automatic && s.method == Method::modern &&
-      s.engine == Engine::cxx && scene.rough() && s.law == Law::coulomb) {
+      s.engine == Engine::cxx && scene.rough() && s.law == Law::coulomb && tr.rows.size() <= 1) {
     ResolvedSettings c = keep;
     c.method = Method::cvode;
     Trajectory tc = finish_run(scene, c, run_cxx(scene, c));
