@@ -169,11 +169,19 @@ TEST_CASE("precision other than double is refused where the RHS is double only",
                                                Contains("F77"));
   rs.engine = nanopush::Engine::cxx;
   rs.precision = Precision::long_;
+  // Rough scenes: the modern method under the thesis and coulomb laws (test_rough_extended.cpp);
+  // the printed law's forms, the F77 routine's forms (faithful) and CVODE are double.
+  rs.law = Law::printed;
   CHECK_THROWS_AS(run_engine(rough, rs), InputError);
-  CHECK_THROWS_WITH(run_engine(rough, rs), Contains("precision = long") && Contains("smooth scene"));
+  CHECK_THROWS_WITH(run_engine(rough, rs), Contains("precision = long") && Contains("printed law"));
+  rs.law = Law::thesis;
+  rs.method = Method::faithful;
+  CHECK_THROWS_WITH(run_engine(rough, rs), Contains("precision = long") && Contains("F77 routine's friction forms"));
   rs.law = Law::coulomb;
   rs.method = Method::cvode;
-  CHECK_THROWS_WITH(run_engine(rough, rs), Contains("precision = long") && Contains("smooth scene"));
+  CHECK_THROWS_WITH(run_engine(rough, rs), Contains("precision = long") && Contains("CVODE is double"));
+  rs.method = Method::automatic;
+  CHECK(resolve_settings(rough, rs).method == Method::modern);
   // A name outside the table is refused where it is read (the front ends' parse_choice).
   CHECK_THROWS_AS(parse_optional_choice<Precision>("precision", "bogus"), InputError);
   CHECK_THROWS_WITH(parse_optional_choice<Precision>("precision", "bogus"),
@@ -205,8 +213,11 @@ samples = 5
                     Contains("solver.precision = \"octuple\"") && Contains("double, long, quad"));
   CHECK_THROWS_WITH(parse_scene(base + "precision = \"quad\"\nengine = \"f77\"\n", "s"),
                     Contains("solver.precision = \"quad\"") && Contains("F77"));
-  CHECK_THROWS_WITH(parse_scene(base + "precision = \"quad\"\n[surface]\nkind = \"rough\"\nmu = 0.1\n", "s"),
-                    Contains("solver.precision = \"quad\"") && Contains("smooth surface"));
+  CHECK_THROWS_WITH(
+      parse_scene(base + "precision = \"quad\"\n[surface]\nkind = \"rough\"\nmu = 0.1\nlaw = \"printed\"\n", "s"),
+      Contains("solver.precision = \"quad\"") && Contains("printed law"));
+  CHECK(parse_scene(base + "precision = \"quad\"\n[surface]\nkind = \"rough\"\nmu = 0.1\n", "s").solver.precision ==
+        Precision::quad);
   // Unset takes the scene's precision (and its method, auto: modern in extended precision);
   // the settings' value overrides it.
   RunSettings from_scene;

@@ -141,38 +141,57 @@ RestAnalysis analyse_rest(const RoughBarModel& model, double theta) {
   return r;
 }
 
-static WorldWrench coulomb_friction_cs(const RoughBarModel& model, double c, double s, const double* y,
-                                const std::array<double, 3>& mode) {
-  const double L = length_scale(model);
-  const double vx = y[kVx], vy = y[kVy], om = y[kOmega];
-  if (vx == 0.0 && vy == 0.0 && om == 0.0) return model.friction_cs(c, s, mode[0], mode[1], mode[2] / L);
-  const double g = vx * mode[0] + vy * mode[1] + om * L * mode[2];
-  if (g >= 0.0) return model.friction_cs(c, s, vx, vy, om);
-  return model.friction_cs(c, s, -vx, -vy, -om);
-}
-
-WorldWrench coulomb_friction(const RoughBarModel& model, const double* y, const std::array<double, 3>& mode) {
-  return coulomb_friction_cs(model, std::cos(y[kTheta]), std::sin(y[kTheta]), y, mode);
-}
-
-void coulomb_rhs(const RoughBarModel& model, const double* y, const std::array<double, 3>& mode, double* d) {
-  const double c = std::cos(y[kTheta]), s = std::sin(y[kTheta]);
-  RoughBarModel::rhs_with(model, y, model.applied_cs(c, s), coulomb_friction_cs(model, c, s, y, mode), d);
-}
-
 namespace {
 
-std::array<double, 3> mode_of(const RoughBarModel& m, double vx, double vy, double om) {
-  const double L = length_scale(m);
-  return normalised({vx, vy, om * L});
+template <typename S>
+WorldWrenchT<S> coulomb_friction_cs(const RoughBarModel& model, S c, S s, const S* y, const std::array<S, 3>& mode) {
+  const S L = length_scale(model);
+  const S vx = y[kVx], vy = y[kVy], om = y[kOmega];
+  if (vx == 0.0 && vy == 0.0 && om == 0.0) return model.friction_in(c, s, mode[0], mode[1], S(mode[2] / L));
+  const S g = vx * mode[0] + vy * mode[1] + om * L * mode[2];
+  if (g >= 0.0) return model.friction_in(c, s, vx, vy, om);
+  return model.friction_in(c, s, S(-vx), S(-vy), S(-om));
 }
 
-double speed_scaled(const RoughBarModel& m, const double* y) {
-  const double L = length_scale(m);
-  return std::sqrt(y[kVx] * y[kVx] + y[kVy] * y[kVy] + y[kOmega] * L * y[kOmega] * L);
+template <typename S>
+WorldWrenchT<S> coulomb_friction_t(const RoughBarModel& model, const S* y, const std::array<S, 3>& mode) {
+  return coulomb_friction_cs(model, num::cos(y[kTheta]), num::sin(y[kTheta]), y, mode);
+}
+
+template <typename S>
+void coulomb_rhs_t(const RoughBarModel& model, const S* y, const std::array<S, 3>& mode, S* d) {
+  const S c = num::cos(y[kTheta]), s = num::sin(y[kTheta]);
+  RoughBarModel::rhs_with(model, y, model.applied_in(c, s), coulomb_friction_cs(model, c, s, y, mode), d);
+}
+
+template <typename S>
+std::array<S, 3> mode_of(const RoughBarModel& m, S vx, S vy, S om) {
+  const S L = length_scale(m);
+  const S v[3] = {vx, vy, S(om * L)};
+  const S n = num::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  return {v[0] / n, v[1] / n, v[2] / n};
+}
+
+template <typename S>
+S speed_scaled(const RoughBarModel& m, const S* y) {
+  const S L = length_scale(m);
+  return num::sqrt(y[kVx] * y[kVx] + y[kVy] * y[kVy] + y[kOmega] * L * y[kOmega] * L);
+}
+
+template <typename S>
+WorldWrench to_double(const WorldWrenchT<S>& w) {
+  return {static_cast<double>(w.fx), static_cast<double>(w.fy), static_cast<double>(w.mf)};
 }
 
 }  // namespace
+
+WorldWrench coulomb_friction(const RoughBarModel& model, const double* y, const std::array<double, 3>& mode) {
+  return coulomb_friction_t(model, y, mode);
+}
+
+void coulomb_rhs(const RoughBarModel& model, const double* y, const std::array<double, 3>& mode, double* d) {
+  coulomb_rhs_t(model, y, mode, d);
+}
 
 // One event loop (~250 lines): slide, locate the rest event (a step hook, then a regula falsi
 // whose sub-integrations stop at the main integration's terminal test), decide stick or slide
@@ -181,30 +200,37 @@ double speed_scaled(const RoughBarModel& m, const double* y) {
 // outputs emitted), so its named steps are the helpers above (rest_event, analyse_rest, ...)
 // and the loop stays whole; cutting it further means a StickSlip state object, planned with
 // the event-located iCOR changes of issue 33.
-StickSlipResult integrate_coulomb(const RoughBarModel& model, const BsOptions<double>& options, const double* y0,
-                                  const std::vector<double>& tout, const StickSlipObserver& observer) {
+namespace {
+
+// The loop in any scalar S: double (integrate_coulomb), long double and quad
+// (integrate_coulomb_extended). Times, the rest analysis and the slide-off direction stay in
+// double (docs/accuracy.md, "References with more digits").
+template <typename S, class Observer>
+StickSlipResult integrate_coulomb_t(const RoughBarModel& model, const BsOptions<S>& options, const S* y0,
+                                    const std::vector<double>& tout, const Observer& observer) {
+  using State = std::array<S, kRoughStateSize>;
   StickSlipResult out;
-  const double L = length_scale(model);
-  std::array<double, kRoughStateSize> y{};
+  const S L = length_scale(model);
+  State y{};
   std::copy(y0, y0 + kRoughStateSize, y.begin());
   double t = 0.0;
   std::size_t iout = 0;
-  std::array<double, 3> mode{1, 0, 0};
+  std::array<S, 3> mode{1, 0, 0};
   bool stuck = false;
 
   auto static_friction = [&](double theta) {
-    const WorldWrench ap = model.applied(theta);
+    const WorldWrench ap = model.applied(static_cast<double>(theta));
     return WorldWrench{-ap.fx, -ap.fy, -ap.mf};
   };
   // Enter a rest state at time t: stick, or choose the sliding direction.
   auto at_rest = [&]() {
     y[kVx] = y[kVy] = y[kOmega] = 0.0;
-    const RestAnalysis ra = analyse_rest(model, y[kTheta]);
+    const RestAnalysis ra = analyse_rest(model, static_cast<double>(y[kTheta]));
     out.stats.nfcn += ra.evaluations;
     if (ra.stuck) {
       stuck = true;
     } else {
-      mode = mode_of(model, ra.accel[0], ra.accel[1], ra.accel[2]);
+      mode = mode_of(model, S(ra.accel[0]), S(ra.accel[1]), S(ra.accel[2]));
     }
     return ra.stuck;
   };
@@ -215,16 +241,16 @@ StickSlipResult integrate_coulomb(const RoughBarModel& model, const BsOptions<do
     mode = mode_of(model, y[kVx], y[kVy], y[kOmega]);
   }
 
-  BulirschStoer<double, kRoughStateSize> bs(options);
+  BulirschStoer<S, kRoughStateSize> bs(options);
   // The event location's sub-integrations need the state at their end time only, so they
   // run without dense output: there is nothing to interpolate, and near the velocity's zero
   // (where the friction turns with V/|V| on the time scale |V|/|A|) the interpolant's error
   // control of the modern method held them at steps of 1e-6 of their span until the step
   // budget ran out (stick_mu015, rtol 1e-12). Steps clipped at the end time as in faithful.
-  BsOptions<double> sub_options = options;
+  BsOptions<S> sub_options = options;
   sub_options.dense = false;
-  auto rhs = [&](double, const double* yy, double* d) {
-    coulomb_rhs(model, yy, mode, d);
+  auto rhs = [&](S, const S* yy, S* d) {
+    coulomb_rhs_t(model, yy, mode, d);
     return 0;
   };
   auto accumulate = [&](const BsResult& r) {
@@ -233,12 +259,12 @@ StickSlipResult integrate_coulomb(const RoughBarModel& model, const BsOptions<do
     out.stats.nrejct += r.nrejct;
   };
   // Velocity tolerances: the absolute tolerances of vx, vy, omega (or rtol times the peak).
-  std::array<double, 3> vtol{};
+  std::array<S, 3> vtol{};
   for (int i = 0; i < 3; ++i) {
     const std::size_t k = static_cast<std::size_t>(kVx + i);
     vtol[static_cast<std::size_t>(i)] = options.atol.size() == 1 ? options.atol[0] : options.atol[k];
   }
-  std::array<double, 3> ptol{};  // position and angle tolerances
+  std::array<S, 3> ptol{};  // position and angle tolerances
   for (int i = 0; i < 3; ++i) {
     const std::size_t k = static_cast<std::size_t>(kX + i);
     ptol[static_cast<std::size_t>(i)] = options.atol.size() == 1 ? options.atol[0] : options.atol[k];
@@ -249,21 +275,21 @@ StickSlipResult integrate_coulomb(const RoughBarModel& model, const BsOptions<do
   // the motion still to come is below the tolerances: every velocity component within its
   // absolute tolerance, or (decelerating) the distance and angle still to travel,
   // v^2/(2|a|) and omega^2/(2|alpha|), within the position and angle tolerances.
-  auto terminal = [&](const double* yy) {
-    double d[kRoughStateSize];
-    coulomb_rhs(model, yy, mode, d);
+  auto terminal = [&](const S* yy) {
+    S d[kRoughStateSize];
+    coulomb_rhs_t(model, yy, mode, d);
     ++out.stats.nfcn;  // an RHS evaluation like any other: counted
     // Only a slide that is running down can end: the kinetic energy must be falling. (A
     // slide that has just started from rest has |V| below the tolerances too, but it speeds up.)
-    const double dke = model.mass * (yy[kVx] * d[kVx] + yy[kVy] * d[kVy]) + model.inertia * yy[kOmega] * d[kOmega];
+    const S dke = S(model.mass) * (yy[kVx] * d[kVx] + yy[kVy] * d[kVy]) + S(model.inertia) * yy[kOmega] * d[kOmega];
     if (!(dke < 0.0)) return false;
-    if (std::fabs(yy[kVx]) <= vtol[0] && std::fabs(yy[kVy]) <= vtol[1] && std::fabs(yy[kOmega]) <= vtol[2]) return true;
-    const double v2 = yy[kVx] * yy[kVx] + yy[kVy] * yy[kVy];
-    const double vdotA = yy[kVx] * d[kVx] + yy[kVy] * d[kVy];
-    const double acc = std::hypot(d[kVx], d[kVy]);
+    if (num::abs(yy[kVx]) <= vtol[0] && num::abs(yy[kVy]) <= vtol[1] && num::abs(yy[kOmega]) <= vtol[2]) return true;
+    const S v2 = yy[kVx] * yy[kVx] + yy[kVy] * yy[kVy];
+    const S vdotA = yy[kVx] * d[kVx] + yy[kVy] * d[kVy];
+    const S acc = num::hypot(d[kVx], d[kVy]);
     const bool lin_done = v2 == 0.0 || (vdotA < 0.0 && v2 <= 2.0 * acc * std::min(ptol[0], ptol[1]));
     const bool rot_done = yy[kOmega] == 0.0 || (yy[kOmega] * d[kOmega] < 0.0 &&
-                                               yy[kOmega] * yy[kOmega] <= 2.0 * std::fabs(d[kOmega]) * ptol[2]);
+                                               yy[kOmega] * yy[kOmega] <= 2.0 * num::abs(d[kOmega]) * ptol[2]);
     return lin_done && rot_done;
   };
   constexpr int kMaxEvents = 10000;
@@ -292,21 +318,21 @@ StickSlipResult integrate_coulomb(const RoughBarModel& model, const BsOptions<do
   };
   // Speed below which a sign change of g is taken as "came to rest" (not a rotation of V by
   // more than 90 degrees within one step, which the error control makes implausible anyway).
-  double peak_speed = speed_scaled(model, y.data());
+  S peak_speed = speed_scaled(model, y.data());
 
   while (iout < tout.size()) {
     if (stuck) {
-      const WorldWrench sf = static_friction(y[kTheta]);
+      const WorldWrench sf = static_friction(static_cast<double>(y[kTheta]));
       for (; iout < tout.size(); ++iout) observer(tout[iout], y.data(), sf);
       break;
     }
     // Outputs at the current time.
     while (iout < tout.size() && tout[iout] <= t) {
-      observer(tout[iout], y.data(), coulomb_friction(model, y.data(), mode));
+      observer(tout[iout], y.data(), to_double(coulomb_friction_t(model, y.data(), mode)));
       ++iout;
     }
     if (iout >= tout.size()) break;
-    std::span<const double> rest(tout.data() + iout, tout.size() - iout);
+    const std::vector<S> rest(tout.begin() + static_cast<std::ptrdiff_t>(iout), tout.end());
     std::size_t emitted = 0;
     // After each accepted step: (1) g = V·mode < 0 means the velocity passed through zero
     // inside the step: stop before it and locate the instant; (2) a velocity below the
@@ -315,23 +341,23 @@ StickSlipResult integrate_coulomb(const RoughBarModel& model, const BsOptions<do
     // without this the steps would shrink geometrically without ever reaching the zero);
     // (3) otherwise the mode follows the velocity.
     bool snapped = false;
-    const auto hook_and_track = [&](double, const double*, double, const double* yn) {
-      const double g = yn[kVx] * mode[0] + yn[kVy] * mode[1] + yn[kOmega] * L * mode[2];
+    const auto hook_and_track = [&](S, const S*, S, const S* yn) {
+      const S g = yn[kVx] * mode[0] + yn[kVy] * mode[1] + yn[kOmega] * L * mode[2];
       if (g < 0.0) return static_cast<int>(kHookStopBefore);
       ++steps_in_slide;
       if (terminal(yn)) {
         snapped = true;
         return static_cast<int>(kHookStopAfter);
       }
-      const double sp = std::sqrt(yn[kVx] * yn[kVx] + yn[kVy] * yn[kVy] + yn[kOmega] * L * yn[kOmega] * L);
+      const S sp = num::sqrt(yn[kVx] * yn[kVx] + yn[kVy] * yn[kVy] + yn[kOmega] * L * yn[kOmega] * L);
       peak_speed = std::max(peak_speed, sp);
       if (sp > 0.0) mode = {yn[kVx] / sp, yn[kVy] / sp, yn[kOmega] * L / sp};
       return static_cast<int>(kHookContinue);
     };
     BsResult r = bs.integrate(
-        rhs, t, y.data(), rest,
-        [&](std::size_t, double tt, const double* yy) {
-          observer(tt, yy, coulomb_friction(model, yy, mode));
+        rhs, S(t), y.data(), std::span<const S>(rest),
+        [&](std::size_t, S tt, const S* yy) {
+          observer(static_cast<double>(tt), yy, to_double(coulomb_friction_t(model, yy, mode)));
           ++emitted;
         },
         hook_and_track);
@@ -360,18 +386,18 @@ StickSlipResult integrate_coulomb(const RoughBarModel& model, const BsOptions<do
     // a tight rtol took 20000 steps of 1e-20 s (fig3_31, coulomb law at rtol 1e-14, push
     // rounded 4 ulps up) before the search could reach the zero itself.
     const double t0 = t, t1 = r.t_event_end;
-    const std::array<double, kRoughStateSize> ystart = y;
+    const State ystart = y;
     bool rest_found = false;  // a sub-integration met the terminal test at t_rest
     double t_rest = t0;
-    std::array<double, kRoughStateSize> y_rest{};
-    auto g_at = [&](double tt, std::array<double, kRoughStateSize>& yt) {
+    State y_rest{};
+    auto g_at = [&](double tt, State& yt) {
       yt = ystart;
       if (tt > t0) {
-        BulirschStoer<double, kRoughStateSize> sub(sub_options);
-        const double end[1] = {tt};
+        BulirschStoer<S, kRoughStateSize> sub(sub_options);
+        const S end[1] = {S(tt)};
         BsResult rr = sub.integrate(
-            rhs, t0, yt.data(), std::span<const double>(end, 1), [](std::size_t, double, const double*) {},
-            [&](double, const double*, double, const double* yn) {
+            rhs, S(t0), yt.data(), std::span<const S>(end, 1), [](std::size_t, S, const S*) {},
+            [&](S, const S*, S, const S* yn) {
               return static_cast<int>(terminal(yn) ? kHookStopAfter : kHookContinue);
             });
         accumulate(rr);
@@ -385,14 +411,14 @@ StickSlipResult integrate_coulomb(const RoughBarModel& model, const BsOptions<do
       }
       return yt[kVx] * mode[0] + yt[kVy] * mode[1] + yt[kOmega] * L * mode[2];
     };
-    std::array<double, kRoughStateSize> ya{}, yb{}, yc{};
+    State ya{}, yb{}, yc{};
     double a = t0, b = t1;
-    double ga = g_at(a, ya), gb = g_at(b, yb);
+    S ga = g_at(a, ya), gb = g_at(b, yb);
     int side = 0;
     for (int it = 0; it < 100 && !rest_found && (b - a) > 4 * 2.2e-16 * std::max(std::fabs(b), 1e-300); ++it) {
-      double c = (a * gb - b * ga) / (gb - ga);
+      double c = static_cast<double>((a * gb - b * ga) / (gb - ga));
       if (!(c > a && c < b)) c = 0.5 * (a + b);
-      const double gc = g_at(c, yc);
+      const S gc = g_at(c, yc);
       if (gc == 0.0) {
         a = b = c;
         ya = yb = yc;
@@ -423,8 +449,8 @@ StickSlipResult integrate_coulomb(const RoughBarModel& model, const BsOptions<do
     // The rest instant: the end of the bracket on the g >= 0 side, velocity set to zero.
     t = a;
     y = ya;
-    const double sp = speed_scaled(model, y.data());
-    if (sp > 1e-6 * std::max(peak_speed, 1e-300)) {
+    const S sp = speed_scaled(model, y.data());
+    if (sp > 1e-6 * std::max(peak_speed, S(1e-300))) {
       // Not a rest: the velocity turned by more than 90 degrees within a step. Follow it.
       mode = mode_of(model, y[kVx], y[kVy], y[kOmega]);
       continue;
@@ -434,5 +460,25 @@ StickSlipResult integrate_coulomb(const RoughBarModel& model, const BsOptions<do
   out.stuck_at_end = stuck;
   return out;
 }
+
+}  // namespace
+
+StickSlipResult integrate_coulomb(const RoughBarModel& model, const BsOptions<double>& options, const double* y0,
+                                  const std::vector<double>& tout, const StickSlipObserver& observer) {
+  return integrate_coulomb_t<double>(model, options, y0, tout, observer);
+}
+
+template <typename S>
+StickSlipResult integrate_coulomb_extended(const RoughBarModel& model, const BsOptions<S>& options, const S* y0,
+                                           const std::vector<double>& tout, const StickSlipObserverT<S>& observer) {
+  return integrate_coulomb_t<S>(model, options, y0, tout, observer);
+}
+
+template StickSlipResult integrate_coulomb_extended<long double>(const RoughBarModel&, const BsOptions<long double>&,
+                                                                 const long double*, const std::vector<double>&,
+                                                                 const StickSlipObserverT<long double>&);
+template StickSlipResult integrate_coulomb_extended<num::quad>(const RoughBarModel&, const BsOptions<num::quad>&,
+                                                               const num::quad*, const std::vector<double>&,
+                                                               const StickSlipObserverT<num::quad>&);
 
 }  // namespace nanopush

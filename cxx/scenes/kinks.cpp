@@ -4,6 +4,8 @@
 #include <cmath>
 #include <vector>
 
+#include "nanopush/numerics/scalar.hpp"
+
 namespace nanopush::detail {
 
 namespace {
@@ -20,35 +22,37 @@ void add_counts(IntegrationResult& into, const IntegrationResult& r) {
 
 }  // namespace
 
-KinkResult integrate_across_kinks(const KinkIntegrate& run, const KinkFunctions& kinks, int nk, double* y, int n,
-                                  std::span<const double> tout, const KinkObserver& observer, const KinkHook& hook) {
+template <typename S>
+KinkResult integrate_across_kinks(const KinkIntegrateT<S>& run, const KinkFunctionsT<S>& kinks, int nk, S* y, int n,
+                                  std::span<const double> tout, const KinkObserverT<S>& observer,
+                                  const KinkHookT<S>& hook) {
   KinkResult out;
   nk = std::min(nk, kMaxKinks);
   double t = 0.0;
   std::size_t iout = 0;
-  std::vector<double> ystart(static_cast<std::size_t>(n)), yt(static_cast<std::size_t>(n));
-  double g0[kMaxKinks], g1[kMaxKinks];
+  std::vector<S> ystart(static_cast<std::size_t>(n)), yt(static_cast<std::size_t>(n));
+  S g0[kMaxKinks], g1[kMaxKinks];
   int crossed = -1;
   double h_next = 0.0;  // the first step after a restart: the step that met the kink
-  const KinkHook no_hook = [](double, const double*, double, const double*) { return static_cast<int>(kHookContinue); };
-  const KinkObserver quiet = [](double, const double*) {};
+  const KinkHookT<S> no_hook = [](double, const S*, double, const S*) { return static_cast<int>(kHookContinue); };
+  const KinkObserverT<S> quiet = [](double, const S*) {};
   // A step whose start is a located kink sees g there within rounding of zero: only a sign
   // change from a clearly non-zero value is a crossing.
-  auto crossing = [&](const double* ya, const double* yb) {
+  auto crossing = [&](const S* ya, const S* yb) {
     kinks(ya, g0);
     kinks(yb, g1);
     for (int k = 0; k < nk; ++k)
-      if (g0[k] * g1[k] < 0.0 && std::fabs(g0[k]) > 1e-9 * std::fabs(g1[k])) return k;
+      if (g0[k] * g1[k] < 0.0 && num::abs(g0[k]) > 1e-9 * num::abs(g1[k])) return k;
     return -1;
   };
   while (iout < tout.size()) {
     std::size_t emitted = 0;
-    const KinkObserver count = [&](double tt, const double* yy) {
+    const KinkObserverT<S> count = [&](double tt, const S* yy) {
       observer(tt, yy);
       ++emitted;
     };
     const bool locate = out.located < kMaxLocated;
-    const KinkHook step = [&](double ta, const double* ya, double tb, const double* yb) {
+    const KinkHookT<S> step = [&](double ta, const S* ya, double tb, const S* yb) {
       if (locate) {
         crossed = crossing(ya, yb);
         if (crossed >= 0) return static_cast<int>(kHookStopBefore);
@@ -78,12 +82,12 @@ KinkResult integrate_across_kinks(const KinkIntegrate& run, const KinkFunctions&
       const IntegrationResult s = run(t0, yt.data(), std::span<const double>(end, 1), quiet, no_hook, tc - t0);
       add_counts(out.stats, s);
       if (!s.ok()) return std::nan("");
-      double g[kMaxKinks];
+      S g[kMaxKinks];
       kinks(yt.data(), g);
-      return g[k];
+      return static_cast<double>(g[k]);
     };
     kinks(ystart.data(), g0);
-    double a = t0, b = t1, ga = g0[k], gb = g_at(b);
+    double a = t0, b = t1, ga = static_cast<double>(g0[k]), gb = g_at(b);
     int side = 0;
     for (int it = 0; it < 60 && std::isfinite(gb) && (b - a) > 1e-6 * (t1 - t0); ++it) {
       double c = (a * gb - b * ga) / (gb - ga);
@@ -113,7 +117,7 @@ KinkResult integrate_across_kinks(const KinkIntegrate& run, const KinkFunctions&
     span_out.push_back(b);
     std::copy(ystart.begin(), ystart.end(), y);
     std::size_t given = 0;
-    const KinkObserver to_b = [&](double tt, const double* yy) {
+    const KinkObserverT<S> to_b = [&](double tt, const S* yy) {
       if (given++ < span_out.size() - 1) observer(tt, yy);
     };
     const IntegrationResult s = run(t0, y, span_out, to_b, no_hook, b - t0);
@@ -131,5 +135,17 @@ KinkResult integrate_across_kinks(const KinkIntegrate& run, const KinkFunctions&
   }
   return out;
 }
+
+template KinkResult integrate_across_kinks<double>(const KinkIntegrateT<double>&, const KinkFunctionsT<double>&, int,
+                                                   double*, int, std::span<const double>, const KinkObserverT<double>&,
+                                                   const KinkHookT<double>&);
+template KinkResult integrate_across_kinks<long double>(const KinkIntegrateT<long double>&,
+                                                        const KinkFunctionsT<long double>&, int, long double*, int,
+                                                        std::span<const double>, const KinkObserverT<long double>&,
+                                                        const KinkHookT<long double>&);
+template KinkResult integrate_across_kinks<num::quad>(const KinkIntegrateT<num::quad>&,
+                                                      const KinkFunctionsT<num::quad>&, int, num::quad*, int,
+                                                      std::span<const double>, const KinkObserverT<num::quad>&,
+                                                      const KinkHookT<num::quad>&);
 
 }  // namespace nanopush::detail

@@ -13,15 +13,26 @@
 
 namespace nanopush::detail {
 
-using KinkObserver = std::function<void(double t, const double* y)>;
-using KinkHook = std::function<int(double t0, const double* y0, double t1, const double* y1)>;
+/// The state in scalar S (double; long double and quad for the extended-precision runs); times
+/// in double.
+template <typename S>
+using KinkObserverT = std::function<void(double t, const S* y)>;
+template <typename S>
+using KinkHookT = std::function<int(double t0, const S* y0, double t1, const S* y1)>;
 /// One integration from (t0, y) over the output times `tout` with an observer and a step hook,
 /// by a fresh integrator (the method's own options, its first step h0 when h0 > 0); y is left
 /// at the last time reached.
-using KinkIntegrate = std::function<IntegrationResult(double t0, double* y, std::span<const double> tout,
-                                                      const KinkObserver& observer, const KinkHook& hook, double h0)>;
+template <typename S>
+using KinkIntegrateT = std::function<IntegrationResult(double t0, S* y, std::span<const double> tout,
+                                                       const KinkObserverT<S>& observer, const KinkHookT<S>& hook,
+                                                       double h0)>;
 /// The event functions at a state: g[0..nk).
-using KinkFunctions = std::function<void(const double* y, double* g)>;
+template <typename S>
+using KinkFunctionsT = std::function<void(const S* y, S* g)>;
+using KinkObserver = KinkObserverT<double>;
+using KinkHook = KinkHookT<double>;
+using KinkIntegrate = KinkIntegrateT<double>;
+using KinkFunctions = KinkFunctionsT<double>;
 
 struct KinkResult {
   IntegrationResult stats;   ///< counts summed over every integration, the status of the last
@@ -31,8 +42,10 @@ struct KinkResult {
 
 /// Integrate the state y (n components) from 0 over `tout` as `run` does, locating the sign
 /// changes of the `nk` functions `kinks` and restarting at each. `hook` (optional) sees every
-/// committed step and may stop the run after it.
-KinkResult integrate_across_kinks(const KinkIntegrate& run, const KinkFunctions& kinks, int nk, double* y, int n,
-                                  std::span<const double> tout, const KinkObserver& observer, const KinkHook& hook);
+/// committed step and may stop the run after it. Instantiated for double, long double and quad.
+template <typename S>
+KinkResult integrate_across_kinks(const KinkIntegrateT<S>& run, const KinkFunctionsT<S>& kinks, int nk, S* y, int n,
+                                  std::span<const double> tout, const KinkObserverT<S>& observer,
+                                  const KinkHookT<S>& hook);
 
 }  // namespace nanopush::detail

@@ -167,15 +167,19 @@ void check_representable(const Scene& sc) {
 
 }  // namespace
 
-std::string extended_precision_obstacle(bool rough, Engine engine, Method method) {
-  const std::string need = "long and quad need engine = cxx, method faithful or modern, on a smooth scene (smooth surface)";
-  if (rough) return need + " (the rough-surface friction is computed in double)";
+std::string extended_precision_obstacle(bool rough, Law law, Engine engine, Method method) {
+  const std::string need =
+      "long and quad need engine = cxx, method faithful or modern, on a smooth scene (smooth surface), or method "
+      "modern on a rough scene under the thesis or coulomb law";
   if (engine != Engine::cxx) return need + " (the F77 engine is REAL*8)";
   if (method == Method::dop853)
     return need + " (dop853 is double only: its coefficients are tabulated to long double, so its order conditions "
                   "hold to ~1e-19)";
   // auto picks modern in extended precision (resolve_settings).
   if (method == Method::cvode) return need + " (CVODE is double)";
+  if (rough && law == Law::printed) return need + " (the printed law's forms are evaluated in double)";
+  if (rough && method == Method::faithful)
+    return need + " (faithful evaluates the F77 routine's friction forms, in double)";
   return "";
 }
 
@@ -387,7 +391,7 @@ void read_solver(const toml::table& root, Scene& sc) {
   sc.solver.precision =
       scene_choice<Precision>("solver.precision", opt_string(t, "solver", "precision").value_or("double"));
   if (sc.solver.precision != Precision::double_) {
-    const std::string why = extended_precision_obstacle(sc.rough(), sc.solver.engine, sc.solver.method);
+    const std::string why = extended_precision_obstacle(sc.rough(), sc.surface.law, sc.solver.engine, sc.solver.method);
     if (!why.empty()) throw InputError("solver.precision", "\"" + to_string(sc.solver.precision) + "\"", why);
   }
   if (auto h = opt_number(t, "solver", "h0")) {

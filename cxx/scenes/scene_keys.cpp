@@ -85,7 +85,8 @@ const std::vector<SceneKey>& scene_keys() {
        "docs/dop853.md: double, not the coulomb law); cvode: rough scenes, coulomb law; auto (default; faithful "
        "with engine f77): dop853 for rtol >= 1e-11 where it runs, else modern"},
       {"solver.precision", K::string, "", "double", precisions, "all",
-       "scalar of the integration; long and quad: engine cxx, faithful or modern, smooth surface"},
+       "scalar of the integration; long and quad: engine cxx, faithful or modern on a smooth surface, modern on a "
+       "rough one (thesis or coulomb law)"},
       {"solver.h0", K::number, "s", "0 (1% of t_end)", ">= 0", "all", "initial step"},
       {"solver.hmax", K::number, "s", "0 (none)", ">= 0", "all", "largest step"},
       {"solver.max_steps", K::integer, "1", "100000", "[1, 1000000000]", "all",

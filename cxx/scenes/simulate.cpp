@@ -69,7 +69,7 @@ ResolvedSettings resolve_settings(const Scene& scene, const RunSettings& in) {
   if (s.engine == Engine::f77 && coulomb)
     throw InputError("engine", "f77", "the F77 engine implements the thesis friction law only (use --engine cxx)");
   if (s.precision != Precision::double_) {
-    const std::string why = extended_precision_obstacle(scene.rough(), s.engine, s.method);
+    const std::string why = extended_precision_obstacle(scene.rough(), s.law, s.engine, s.method);
     if (!why.empty()) throw InputError(pfield, to_string(s.precision), why);
   }
   if (s.method == Method::dop853 && s.rtol < dop853_rtol_min<double>())
@@ -230,12 +230,13 @@ struct RestWatch {
 /// The kinks of the thesis law's wrench: the iCOR (-vby/omega, vbx/omega) in body axes crossing
 /// the lines x' = +-a and y' = +-b of the contact's edges, as g = vby^2 - a^2 omega^2 and
 /// vbx^2 - b^2 omega^2 (no division: both keep their sign through omega = 0).
-void thesis_kinks(const RoughBarModel& m, const double* y, double* g) {
-  const double c = std::cos(y[kTheta]), sn = std::sin(y[kTheta]);
-  const double vbx = c * y[kVx] + sn * y[kVy], vby = -sn * y[kVx] + c * y[kVy];
-  const double w2 = y[kOmega] * y[kOmega];
-  g[0] = vby * vby - m.geometry.a * m.geometry.a * w2;
-  g[1] = vbx * vbx - m.geometry.b * m.geometry.b * w2;
+template <typename S>
+void thesis_kinks(const RoughBarModel& m, const S* y, S* g) {
+  const S c = num::cos(y[kTheta]), sn = num::sin(y[kTheta]);
+  const S vbx = c * y[kVx] + sn * y[kVy], vby = -sn * y[kVx] + c * y[kVy];
+  const S w2 = y[kOmega] * y[kOmega];
+  g[0] = vby * vby - S(m.geometry.a) * S(m.geometry.a) * w2;
+  g[1] = vbx * vbx - S(m.geometry.b) * S(m.geometry.b) * w2;
 }
 
 std::string printed_blowup_message(double work, double t) {
@@ -269,28 +270,65 @@ std::string no_static_friction_outcome(const Scene& sc, Law law, double t) {
 
 namespace {
 
-std::array<double, kRoughStateSize> rough_initial(const Scene& sc) {
-  std::array<double, kRoughStateSize> y{};
+template <typename S>
+std::array<S, kRoughStateSize> rough_initial(const Scene& sc) {
+  std::array<S, kRoughStateSize> y{};
   std::copy(sc.initial.begin(), sc.initial.end(), y.begin());
   return y;
 }
 
+/// A state in scalar S rounded to double (a copy only when S is not double).
+template <typename S>
+struct AsDouble {
+  std::array<double, kRoughStateSize> buf{};
+  const double* p;
+  explicit AsDouble(const S* y) {
+    if constexpr (std::is_same_v<S, double>) {
+      p = y;
+    } else {
+      for (int i = 0; i < kRoughStateSize; ++i) buf[static_cast<std::size_t>(i)] = static_cast<double>(y[i]);
+      p = buf.data();
+    }
+  }
+};
+
+/// The rough bar in the C++ engine in scalar S: double (every method), long double and quad
+/// (modern, the thesis and coulomb laws; resolve_settings refuses the rest). Rows in double;
+/// extended runs also keep the pose and velocity in quad (Trajectory::extended).
+template <typename S>
 Trajectory run_cxx_rough(const Scene& sc, const ResolvedSettings& s) {
+  constexpr bool extended = !std::is_same_v<S, double>;
   Trajectory tr;
   tr.engine_label = "cxx-" + to_string(s.method) + "-" + to_string(s.law);
+  tr.precision = num::name<S>();
+  if constexpr (extended) tr.engine_label += "-" + tr.precision;
   tr.rtol = s.rtol;
   tr.atol = sc.atol_vector(s.rtol, s.atol, kRoughStateSize);
+  const std::vector<S> atol(tr.atol.begin(), tr.atol.end());
   RoughBarModel model = rough_model(sc);
   model.printed = s.law == Law::printed;
   model.f77_forms = s.method == Method::faithful;
   const auto tout = sc.output_times();
-  auto y = rough_initial(sc);
+  auto y = rough_initial<S>(sc);
   const double n = static_cast<double>(tout.size());
-  auto record = [&](double t, const double* yy, const WorldWrench& f) {
-    tr.rows.push_back(make_row(t, yy, f));
-    tr.work_push.push_back(yy[kWorkPush]);
-    tr.work_fric.push_back(yy[kWorkFric]);
+  auto record = [&](double t, const S* yy, const WorldWrench& f) {
+    const AsDouble<S> yd(yy);
+    tr.rows.push_back(make_row(t, yd.p, f));
+    tr.work_push.push_back(yd.p[kWorkPush]);
+    tr.work_fric.push_back(yd.p[kWorkFric]);
+    if constexpr (extended) {
+      std::array<num::quad, kStateSize> yq;
+      for (int c = 0; c < kStateSize; ++c) yq[static_cast<std::size_t>(c)] = static_cast<num::quad>(yy[c]);
+      tr.extended.push_back(yq);
+    }
     if (s.progress) s.progress(static_cast<double>(tr.rows.size()) / n);
+  };
+  // The rest watch sees states in double.
+  auto watch_hook = [](RestWatch& w) {
+    return [&w](double t0, const S* y0, double t1, const S* y1) {
+      const AsDouble<S> a(y0), b(y1);
+      return w(t0, a.p, t1, b.p);
+    };
   };
   if (s.law == Law::thesis || s.law == Law::printed) {
     // Started from rest, eq 3.40 gives no friction direction at t = 0, so the first step sees
@@ -303,58 +341,72 @@ Trajectory run_cxx_rough(const Scene& sc, const ResolvedSettings& s) {
     std::int64_t start_evaluations = 0;
     // The printed law keeps zero friction at rest with every method (its wrench has no
     // right limit to take from the coulomb analysis: the printed forms are not a limit surface).
-    if (s.method != Method::faithful && !m.printed) start_evaluations = set_start_direction(m, y.data());
+    const auto y_start = rough_initial<double>(sc);
+    if (s.method != Method::faithful && !m.printed) start_evaluations = set_start_direction(m, y_start.data());
     const RoughBarThesisRhs rhs{m};
-    auto observer = [&](std::size_t, double t, const double* yy) {
-      record(t, yy, model.friction(yy[kTheta], yy[kVx], yy[kVy], yy[kOmega]));
+    auto observer = [&](double t, const S* yy) {
+      const WorldWrenchT<S> f = model.friction_in(num::cos(yy[kTheta]), num::sin(yy[kTheta]), yy[kVx], yy[kVy], yy[kOmega]);
+      record(t, yy, {static_cast<double>(f.fx), static_cast<double>(f.fy), static_cast<double>(f.mf)});
     };
     RestWatch watch(model);
     if (starts_stuck(sc)) {
       record(0.0, y.data(), WorldWrench{});
       tr.stats.t_reached = 0.0;
       tr.outcome = Outcome::no_static_friction;
-      tr.outcome_message = no_static_friction_message(sc, s.law, 0.0, y[kX], y[kY], y[kTheta]);
+      tr.outcome_message = no_static_friction_message(sc, s.law, 0.0, sc.initial[kX], sc.initial[kY], sc.initial[kTheta]);
       return tr;
     }
     if (s.law == Law::thesis && s.method != Method::faithful) {
       // modern and dop853: the kinks of the wrench located (kinks.hpp; faithful keeps the F77
       // engine's steps).
-      const detail::KinkIntegrate run = [&](double t0, double* yy, std::span<const double> to,
-                                            const detail::KinkObserver& obs, const detail::KinkHook& hook, double h0) {
-        auto o = [&](std::size_t, double t, const double* v) { obs(t, v); };
-        if (s.method == Method::dop853) {
-          auto opt = Dop853Options<double>::make(s.rtol, tr.atol);
-          opt.h0 = h0 > 0 ? h0 : sc.solver.h0;
-          opt.hmax = sc.solver.hmax;
-          opt.maxstp = sc.solver.max_steps;
-          Dop853<double, kRoughStateSize> dp(std::move(opt));
-          return static_cast<IntegrationResult>(dp.integrate(rhs, t0, yy, to, o, std::cref(hook)));
+      const detail::KinkIntegrateT<S> run = [&](double t0, S* yy, std::span<const double> to,
+                                                const detail::KinkObserverT<S>& obs, const detail::KinkHookT<S>& hook,
+                                                double h0) {
+        auto o = [&](std::size_t, S t, const S* v) { obs(static_cast<double>(t), v); };
+        if constexpr (!extended) {
+          if (s.method == Method::dop853) {
+            auto opt = Dop853Options<double>::make(s.rtol, tr.atol);
+            opt.h0 = h0 > 0 ? h0 : sc.solver.h0;
+            opt.hmax = sc.solver.hmax;
+            opt.maxstp = sc.solver.max_steps;
+            Dop853<double, kRoughStateSize> dp(std::move(opt));
+            return static_cast<IntegrationResult>(dp.integrate(rhs, t0, yy, to, o, std::cref(hook)));
+          }
         }
-        auto opt = options_for(sc, s, tr.atol);
-        if (h0 > 0) opt.h0 = h0;
-        BulirschStoer<double, kRoughStateSize> bs(opt);
-        return static_cast<IntegrationResult>(bs.integrate(rhs, t0, yy, to, o, std::cref(hook)));
+        auto opt = options_for<S>(sc, s, atol);
+        if (h0 > 0) opt.h0 = S(h0);
+        BulirschStoer<S, kRoughStateSize> bs(opt);
+        const std::vector<S> to_s(to.begin(), to.end());
+        auto h = [&hook](S ta, const S* ya, S tb, const S* yb) {
+          return hook(static_cast<double>(ta), ya, static_cast<double>(tb), yb);
+        };
+        return static_cast<IntegrationResult>(bs.integrate(rhs, S(t0), yy, std::span<const S>(to_s), o, h));
       };
-      const detail::KinkResult kr = detail::integrate_across_kinks(
-          run, [&m](const double* v, double* g) { thesis_kinks(m, v, g); }, 2, y.data(), kRoughStateSize,
-          std::span<const double>(tout), [&](double t, const double* v) { observer(0, t, v); }, std::ref(watch));
+      const detail::KinkResult kr = detail::integrate_across_kinks<S>(
+          run, [&m](const S* v, S* g) { thesis_kinks(m, v, g); }, 2, y.data(), kRoughStateSize,
+          std::span<const double>(tout), observer, watch_hook(watch));
       tr.stats = kr.stats;
       tr.kinks_located = kr.located;
+    } else if constexpr (extended) {
+      throw std::logic_error("run_cxx_rough: extended precision outside modern + thesis/coulomb (resolve_settings)");
     } else if (s.method == Method::dop853) {
       auto opt = Dop853Options<double>::make(s.rtol, tr.atol);
       opt.h0 = sc.solver.h0;
       opt.hmax = sc.solver.hmax;
       opt.maxstp = sc.solver.max_steps;
       Dop853<double, kRoughStateSize> dp(std::move(opt));
-      tr.stats = dp.integrate(rhs, 0.0, y.data(), std::span<const double>(tout), observer, std::ref(watch));
+      auto o = [&](std::size_t, double t, const double* v) { observer(t, v); };
+      tr.stats = dp.integrate(rhs, 0.0, y.data(), std::span<const double>(tout), o, std::ref(watch));
     } else {
+      auto o = [&](std::size_t, double t, const double* v) { observer(t, v); };
       BulirschStoer<double, kRoughStateSize> bs(options_for(sc, s, tr.atol));
-      tr.stats = bs.integrate(rhs, 0.0, y.data(), std::span<const double>(tout), observer, std::ref(watch));
+      tr.stats = bs.integrate(rhs, 0.0, y.data(), std::span<const double>(tout), o, std::ref(watch));
     }
     tr.stats.nfcn += start_evaluations;
     if (watch.came_to_rest) {
       tr.outcome = Outcome::no_static_friction;
-      tr.outcome_message = no_static_friction_message(sc, s.law, watch.t_rest, y[kX], y[kY], y[kTheta]);
+      const AsDouble<S> yd(y.data());
+      tr.outcome_message = no_static_friction_message(sc, s.law, watch.t_rest, yd.p[kX], yd.p[kY], yd.p[kTheta]);
     } else if (!tr.stats.ok() && m.printed && watch.positive_work > 0.0) {
       tr.outcome = Outcome::law_blowup;
       tr.outcome_message = printed_blowup_message(watch.positive_work, tr.stats.t_reached);
@@ -372,7 +424,9 @@ Trajectory run_cxx_rough(const Scene& sc, const ResolvedSettings& s) {
   }
   StickSlipResult r;
   try {
-    if (s.method == Method::cvode)
+    if constexpr (extended)
+      r = integrate_coulomb_extended<S>(model, options_for<S>(sc, s, atol), y.data(), tout, record);
+    else if (s.method == Method::cvode)
       r = integrate_coulomb_cvode(model, s.rtol, tr.atol, y.data(), tout, record);
     else
       r = integrate_coulomb(model, options_for(sc, s, tr.atol), y.data(), tout, record);
@@ -409,7 +463,11 @@ Trajectory run_scene(const Scene& scene, const RunSettings& settings) {
 }
 
 Trajectory run_cxx(const Scene& scene, const ResolvedSettings& s) {
-  if (scene.rough()) return run_cxx_rough(scene, s);
+  if (scene.rough()) {
+    if (s.precision == Precision::long_) return run_cxx_rough<long double>(scene, s);
+    if (s.precision == Precision::quad) return run_cxx_rough<num::quad>(scene, s);
+    return run_cxx_rough<double>(scene, s);
+  }
   if (s.precision == Precision::long_) return run_cxx_smooth<long double>(scene, s);
   if (s.precision == Precision::quad) return run_cxx_smooth<num::quad>(scene, s);
   return run_cxx_smooth<double>(scene, s);

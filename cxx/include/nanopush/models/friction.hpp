@@ -41,6 +41,8 @@
 
 #include <cassert>
 #include <cmath>
+
+#include "nanopush/numerics/scalar.hpp"
 #if defined(__GNUC__) && defined(__SSE2__)
 #include <emmintrin.h>
 #endif
@@ -74,22 +76,31 @@ namespace friction_detail {
 
 /// log(1 + x), accurate for small x (Kahan's device), spelled as in fortran/rectfr.f (FRLG1P)
 /// so that the C++ and FORTRAN 77 engines round identically.
-inline double log1p_kahan(double x) noexcept {
-  const double u = 1.0 + x;
-  return (u == 1.0) ? x : std::log(u) * (x / (u - 1.0));
+/// Templated on the scalar for the extended-precision path (friction_extended.hpp); in double
+/// the operations are those of FRLG1P.
+template <typename S>
+inline S log1p_kahan(S x) noexcept {
+  const S u = 1.0 + x;
+  return (u == 1.0) ? x : num::log(u) * (x / (u - 1.0));
 }
 
 /// asinh(q) accurate over the whole range, as FRASNH in fortran/rectfr.f.
-inline double asinh_portable(double q) noexcept {
-  const double aq = std::fabs(q);
-  double t;
-  if (aq > 1e8)
-    t = std::log(2.0 * aq) + 0.25 / (aq * aq);
-  else if (aq >= 0.5)
-    t = std::log(aq + std::sqrt(aq * aq + 1.0));
-  else
-    t = log1p_kahan(aq + aq * aq / (1.0 + std::sqrt(1.0 + aq * aq)));
-  return std::copysign(t, q);
+/// In long double and quad the library's asinh (already accurate over the whole range).
+template <typename S>
+inline S asinh_portable(S q) noexcept {
+  if constexpr (!std::is_same_v<S, double>) {
+    return num::asinh(q);
+  } else {
+    const double aq = std::fabs(q);
+    double t;
+    if (aq > 1e8)
+      t = std::log(2.0 * aq) + 0.25 / (aq * aq);
+    else if (aq >= 0.5)
+      t = std::log(aq + std::sqrt(aq * aq + 1.0));
+    else
+      t = log1p_kahan(aq + aq * aq / (1.0 + std::sqrt(1.0 + aq * aq)));
+    return std::copysign(t, q);
+  }
 }
 
 /// sqrt(x^2 + y^2) without overflow, as FRHYPT in fortran/rectfr.f.
@@ -139,20 +150,23 @@ inline Lane2 lane_sqrt(Lane2 x) noexcept { return {std::sqrt(x[0]), std::sqrt(x[
 #endif
 
 /// u^2 asinh(v/|u|), continuous with value 0 at u = 0; never NaN for finite u, v.
-inline double sq_asinh(double u, double v) noexcept {
-  const double au = std::fabs(u);
+template <typename S>
+inline S sq_asinh(S u, S v) noexcept {
+  const S au = num::abs(u);
   if (au == 0.0) return 0.0;
-  const double q = v / au;
-  if (std::fabs(q) < 1e150) return u * u * asinh_portable(q);
+  const S q = v / au;
+  if (num::abs(q) < 1e150) return u * u * asinh_portable(q);
   // asinh(q) = sign(q) (ln 2|q| + O(q^-2)); ln|v| - ln|u| avoids overflow of q.
-  return std::copysign(u * u * (std::log(2.0 * std::fabs(v)) - std::log(au)), v);
+  return num::copysign(u * u * (num::log(S(2.0) * num::abs(v)) - num::log(au)), v);
 }
 
 /// The three rectangle integrals, scaled by the area:
 ///   ix = <X/r>, iy = <Y/r>, km = <(x X + y Y)/r>   (<.> = mean over the rectangle)
-struct MeanIntegrals {
-  double ix, iy, km;
+template <typename S>
+struct MeanIntegralsT {
+  S ix, iy, km;
 };
+using MeanIntegrals = MeanIntegralsT<double>;
 
 /// Differences across y of the corner antiderivatives at fixed X, y0 = yc - b, y1 = yc + b:
 ///   gx = FX(X, y1) - FX(X, y0), gy = FY(...) - FY(...), gr = Fr(...) - Fr(...),
@@ -161,23 +175,25 @@ struct MeanIntegrals {
 /// one sign the asinh addition formula
 ///   asinh(y1/|X|) - asinh(y0/|X|) = asinh(4 b yc/(y1 r0 + y0 r1)),
 ///   asinh(X/|y1|) - asinh(X/|y0|) = asinh(-4 b yc X/(y0 y1 (r0 + r1))).
-struct YDifference {
-  double gx, gy, gr;
+template <typename S>
+struct YDifferenceT {
+  S gx, gy, gr;
 };
-inline YDifference y_difference(double X, double yc, double b) noexcept {
-  const double y0 = yc - b, y1 = yc + b;
-  const double r0 = std::sqrt(X * X + y0 * y0), r1 = std::sqrt(X * X + y1 * y1);
-  const double rs = r0 + r1;
-  const double dr = rs > 0.0 ? 4.0 * b * yc / rs : 0.0;  // r1 - r0
-  const double dyr = b * rs + yc * dr;                   // y1 r1 - y0 r0
-  double x2da, dy2b, dy3b;  // X^2 D[asinh(Y/|X|)], D[Y^2 asinh(X/|Y|)], D[Y^3 asinh(X/|Y|)]
-  const double ax = std::fabs(X);
-  const double ymin = std::fmin(std::fabs(y0), std::fabs(y1));
+template <typename S>
+inline YDifferenceT<S> y_difference(S X, S yc, S b) noexcept {
+  const S y0 = yc - b, y1 = yc + b;
+  const S r0 = num::sqrt(X * X + y0 * y0), r1 = num::sqrt(X * X + y1 * y1);
+  const S rs = r0 + r1;
+  const S dr = rs > 0.0 ? S(4.0 * b * yc / rs) : S(0.0);  // r1 - r0
+  const S dyr = b * rs + yc * dr;                         // y1 r1 - y0 r0
+  S x2da, dy2b, dy3b;  // X^2 D[asinh(Y/|X|)], D[Y^2 asinh(X/|Y|)], D[Y^3 asinh(X/|Y|)]
+  const S ax = num::abs(X);
+  const S ymin = num::abs(y0) < num::abs(y1) ? num::abs(y0) : num::abs(y1);
   if ((y0 > 0.0 || y1 < 0.0) && ymin >= 1e-150 * ax) {
-    const double y01 = y0 * y1;  // > 0
-    const double da = asinh_portable(4.0 * b * yc / (y1 * r0 + y0 * r1));
-    const double b0 = asinh_portable(X / std::fabs(y0)), b1 = asinh_portable(X / std::fabs(y1));
-    const double db = asinh_portable(-4.0 * b * yc * X / (y01 * rs));
+    const S y01 = y0 * y1;  // > 0
+    const S da = asinh_portable(S(4.0 * b * yc / (y1 * r0 + y0 * r1)));
+    const S b0 = asinh_portable(S(X / num::abs(y0))), b1 = asinh_portable(S(X / num::abs(y1)));
+    const S db = asinh_portable(S(-4.0 * b * yc * X / (y01 * rs)));
     x2da = X * X * da;
     dy2b = 2.0 * b * yc * (b1 + b0) + 0.5 * (y1 * y1 + y0 * y0) * db;
     dy3b = b * (y1 * y1 + y1 * y0 + y0 * y0) * (b1 + b0) + 0.5 * (y1 * y1 * y1 + y0 * y0 * y0) * db;
@@ -186,7 +202,7 @@ inline YDifference y_difference(double X, double yc, double b) noexcept {
     dy2b = sq_asinh(y1, X) - sq_asinh(y0, X);
     dy3b = y1 * sq_asinh(y1, X) - y0 * sq_asinh(y0, X);
   }
-  return {0.5 * (dyr + x2da), 0.5 * (X * dr + dy2b), X * dyr / 3.0 + (X * x2da + dy3b) / 6.0};
+  return {S(0.5 * (dyr + x2da)), S(0.5 * (X * dr + dy2b)), S(X * dyr / 3.0 + (X * x2da + dy3b) / 6.0)};
 }
 
 /// Form 1 as the F77 routine evaluates it (the faithful method's form, kept for the tests and
@@ -194,15 +210,16 @@ inline YDifference y_difference(double X, double yc, double b) noexcept {
 /// Delta_x Delta_y F with the y difference taken across the thinner side (transposing x and y
 /// when a < b) by y_difference, so a thin contact loses no digits; the x difference cancels
 /// like (R/max(a,b))^2 only. 21 log/sqrt calls. Lengths in units of max(a, b).
-inline MeanIntegrals closed_form_reference(double a, double b, double xc, double yc) noexcept {
+template <typename S>
+inline MeanIntegralsT<S> closed_form_reference(S a, S b, S xc, S yc) noexcept {
   const bool transpose = a < b;
-  const double ta = transpose ? b : a, tb = transpose ? a : b;
-  const double txc = transpose ? yc : xc, tyc = transpose ? xc : yc;
-  const YDifference g1 = y_difference(txc + ta, tyc, tb), g0 = y_difference(txc - ta, tyc, tb);
-  const double area = 4.0 * a * b;
-  const double tix = (g1.gx - g0.gx) / area, tiy = (g1.gy - g0.gy) / area;
-  const double km = (g1.gr - g0.gr) / area - txc * tix - tyc * tiy;
-  return transpose ? MeanIntegrals{tiy, tix, km} : MeanIntegrals{tix, tiy, km};
+  const S ta = transpose ? b : a, tb = transpose ? a : b;
+  const S txc = transpose ? yc : xc, tyc = transpose ? xc : yc;
+  const YDifferenceT<S> g1 = y_difference(S(txc + ta), tyc, tb), g0 = y_difference(S(txc - ta), tyc, tb);
+  const S area = 4.0 * a * b;
+  const S tix = (g1.gx - g0.gx) / area, tiy = (g1.gy - g0.gy) / area;
+  const S km = (g1.gr - g0.gr) / area - txc * tix - tyc * tiy;
+  return transpose ? MeanIntegralsT<S>{tiy, tix, km} : MeanIntegralsT<S>{tix, tiy, km};
 }
 
 /// The plain corner sum +F(x1,y1) - F(x0,y1) - F(x1,y0) + F(x0,y0) (for tests and docs:
@@ -355,27 +372,27 @@ inline constexpr double kGl12w[6] = {0.2491470458134027850005624, 0.233492536538
 /// gx, gw: the h positive nodes and weights of a 2h-point Gauss-Legendre rule.
 /// As the F77 routine evaluates it (three square roots and three divisions per pair: the
 /// faithful method's form); far_field is the production form.
-inline MeanIntegrals far_field_reference(double a, double b, double xc, double yc, const double* gx,
-                                         const double* gw, int h) noexcept {
-  const double r = std::sqrt(xc * xc + yc * yc), inv_r2 = 1.0 / (r * r);
-  double sx = 0.0, sy = 0.0, sk = 0.0;
+template <typename S>
+inline MeanIntegralsT<S> far_field_reference(S a, S b, S xc, S yc, const S* gx, const S* gw, int h) noexcept {
+  const S r = num::sqrt(xc * xc + yc * yc), inv_r2 = 1.0 / (r * r);
+  S sx = 0.0, sy = 0.0, sk = 0.0;
   for (int i = 0; i < h; ++i) {
-    const double x = a * gx[i];
-    double tx = 0.0, ty = 0.0, tk = 0.0;
+    const S x = a * gx[i];
+    S tx = 0.0, ty = 0.0, tk = 0.0;
     for (int j = 0; j < 2 * h; ++j) {
-      const double y = (j < h) ? b * gx[j] : -b * gx[j - h];
-      const double wy = (j < h) ? gw[j] : gw[j - h];
-      const double xp = xc + x, yp = yc + y, xm = xc - x, ym = yc - y;
-      const double rp = std::sqrt(xp * xp + yp * yp), rm = std::sqrt(xm * xm + ym * ym);
-      const double ip = 1.0 / rp, im = 1.0 / rm;
-      const double d = x * xc + y * yc, e = x * yc - y * xc;  // rho.c and rho x c
-      const double rho = std::sqrt(x * x + y * y);
-      const double rr = rp * rm;
+      const S y = (j < h) ? S(b * gx[j]) : S(-b * gx[j - h]);
+      const S wy = (j < h) ? gw[j] : gw[j - h];
+      const S xp = xc + x, yp = yc + y, xm = xc - x, ym = yc - y;
+      const S rp = num::sqrt(xp * xp + yp * yp), rm = num::sqrt(xm * xm + ym * ym);
+      const S ip = 1.0 / rp, im = 1.0 / rm;
+      const S d = x * xc + y * yc, e = x * yc - y * xc;  // rho.c and rho x c
+      const S rho = num::sqrt(x * x + y * y);
+      const S rr = rp * rm;
       tx += wy * (xp * ip + xm * im);
       ty += wy * (yp * ip + ym * im);
       // h(+) + h(-) = e^2/R^2 (1/r+ + 1/r-) + 8 d^2 e^2 / (R^2 r+ r- (r+ + r-)(r+ r- + R^2 - rho^2)):
       // both terms >= 0, so no cancellation at any orientation (docs/friction.md).
-      const double ee = e * e * inv_r2;
+      const S ee = e * e * inv_r2;
       tk += wy * (ee * (ip + im) + 8.0 * d * d * ee / (rr * (rp + rm) * (rr + (r - rho) * (r + rho))));
     }
     sx += gw[i] * tx;
@@ -384,7 +401,7 @@ inline MeanIntegrals far_field_reference(double a, double b, double xc, double y
   }
   // Sum of weights over [-1,1]^2 is 4; each symmetric pair was summed over half the x nodes,
   // so the mean is (pair sum)/(2 * 4) * 2 = pair sum / 4.
-  return {0.25 * sx, 0.25 * sy, 0.25 * sk};
+  return {S(0.25 * sx), S(0.25 * sy), S(0.25 * sk)};
 }
 
 /// Form 2 (production): the integrands of far_field_reference, two node pairs at a time (the

@@ -11,16 +11,19 @@
 #include <cmath>
 
 #include "nanopush/models/friction.hpp"
+#include "nanopush/models/friction_extended.hpp"
 #include "nanopush/models/rigid_body.hpp"
 
 namespace nanopush {
 
 inline constexpr int kWorkPush = 6, kWorkFric = 7, kRoughStateSize = 8;
 
-/// Friction wrench in world axes (fx, fy) [N] and mf [N m].
-struct WorldWrench {
-  double fx = 0, fy = 0, mf = 0;
+/// Friction wrench in world axes (fx, fy) [N] and mf [N m], in scalar S.
+template <typename S>
+struct WorldWrenchT {
+  S fx = 0, fy = 0, mf = 0;
 };
+using WorldWrench = WorldWrenchT<double>;
 
 struct RoughBarModel {
   double mass = 0, inertia = 0;
@@ -58,6 +61,21 @@ struct RoughBarModel {
     return {c * fb.fx - s * fb.fy, s * fb.fx + c * fb.fy, fb.mf};
   }
 
+  /// friction_cs in scalar S: the production forms in double, friction_extended.hpp's in long
+  /// double and quad (the thesis and coulomb laws; the printed law and the F77 forms are double).
+  template <typename S>
+  [[nodiscard]] WorldWrenchT<S> friction_in(S c, S s, S vx, S vy, S omega) const {
+    if constexpr (std::is_same_v<S, double>) {
+      return friction_cs(c, s, vx, vy, omega);
+    } else {
+      if (muN == 0.0) return {};
+      const S vbx = c * vx + s * vy, vby = -s * vx + c * vy;
+      const FrictionWrenchT<S> fb =
+          rectangle_friction_from_velocity_extended<S>(S(geometry.a), S(geometry.b), S(muN), vbx, vby, omega);
+      return {c * fb.fx - s * fb.fy, s * fb.fx + c * fb.fy, fb.mf};
+    }
+  }
+
   /// Applied push wrench in world axes at orientation theta.
   [[nodiscard]] WorldWrench applied(double theta) const noexcept {
     return applied_cs(std::cos(theta), std::sin(theta));
@@ -66,9 +84,19 @@ struct RoughBarModel {
     return {push.force * std::cos(push.beta), push.force * std::sin(push.beta), push.torque_cs(c, s)};
   }
 
+  /// applied_cs in scalar S (the push's components computed in S).
+  template <typename S>
+  [[nodiscard]] WorldWrenchT<S> applied_in(S c, S s) const {
+    if constexpr (std::is_same_v<S, double>)
+      return applied_cs(c, s);
+    else
+      return {S(push.force) * num::cos(S(push.beta)), S(push.force) * num::sin(S(push.beta)), push.torque_cs(c, s)};
+  }
+
   /// Right-hand side with a given friction wrench (shared by every friction law).
-  static void rhs_with(const RoughBarModel& m, const double* y, const WorldWrench& ap, const WorldWrench& fr,
-                       double* d) noexcept {
+  template <typename S>
+  static void rhs_with(const RoughBarModel& m, const S* y, const WorldWrenchT<S>& ap, const WorldWrenchT<S>& fr,
+                       S* d) noexcept {
     d[kX] = y[kVx];
     d[kY] = y[kVy];
     d[kTheta] = y[kOmega];
@@ -79,8 +107,9 @@ struct RoughBarModel {
     d[kWorkFric] = fr.fx * y[kVx] + fr.fy * y[kVy] + fr.mf * y[kOmega];
   }
 
-  [[nodiscard]] double kinetic_energy(const double* y) const noexcept {
-    return 0.5 * mass * (y[kVx] * y[kVx] + y[kVy] * y[kVy]) + 0.5 * inertia * y[kOmega] * y[kOmega];
+  template <typename S>
+  [[nodiscard]] S kinetic_energy(const S* y) const noexcept {
+    return 0.5 * S(mass) * (y[kVx] * y[kVx] + y[kVy] * y[kVy]) + 0.5 * S(inertia) * y[kOmega] * y[kOmega];
   }
 };
 
@@ -91,13 +120,15 @@ struct RoughBarModel {
 /// With model.printed set it is the `printed` law: the same ODE with the printed wrench.
 struct RoughBarThesisRhs {
   RoughBarModel model;
-  int operator()(double, const double* y, double* d) const noexcept {
-    const double c = std::cos(y[kTheta]), s = std::sin(y[kTheta]);
-    const WorldWrench ap = model.applied_cs(c, s);
+  /// In any scalar S (the printed law in double only).
+  template <typename S>
+  int operator()(S, const S* y, S* d) const noexcept {
+    const S c = num::cos(y[kTheta]), s = num::sin(y[kTheta]);
+    const WorldWrenchT<S> ap = model.applied_in(c, s);
     const bool at_rest = y[kVx] == 0.0 && y[kVy] == 0.0 && y[kOmega] == 0.0;
-    const WorldWrench fr =
-        at_rest ? model.friction_cs(c, s, model.rest_direction[0], model.rest_direction[1], model.rest_direction[2])
-                : model.friction_cs(c, s, y[kVx], y[kVy], y[kOmega]);
+    const auto& rd = model.rest_direction;
+    const WorldWrenchT<S> fr = at_rest ? model.friction_in(c, s, S(rd[0]), S(rd[1]), S(rd[2]))
+                                       : model.friction_in(c, s, y[kVx], y[kVy], y[kOmega]);
     RoughBarModel::rhs_with(model, y, ap, fr, d);
     return 0;
   }

@@ -69,12 +69,22 @@ struct StickSlipResult {
 
 /// Per-output callback: time, 8-state, and the friction wrench acting at that instant
 /// (static friction when stuck).
-using StickSlipObserver = std::function<void(double t, const double* y, const WorldWrench& friction)>;
+/// The state in the run's scalar S (double, or long double / quad for extended precision).
+template <typename S>
+using StickSlipObserverT = std::function<void(double t, const S* y, const WorldWrench& friction)>;
+using StickSlipObserver = StickSlipObserverT<double>;
 
 /// Integrate the rough-surface nanobar under the `coulomb` law with the C++ Bulirsch–Stoer
 /// engine (options as for any run). y0: 8-state. Throws SolverError on integrator failure.
 StickSlipResult integrate_coulomb(const RoughBarModel& model, const BsOptions<double>& options, const double* y0,
                                   const std::vector<double>& tout, const StickSlipObserver& observer);
+
+/// The same in long double or quad (S): the state, the right-hand side and the friction wrench
+/// (friction_extended.hpp) in S; times, the rest analysis and the direction of a slide that
+/// starts from rest in double. Instantiated for long double and num::quad.
+template <typename S>
+StickSlipResult integrate_coulomb_extended(const RoughBarModel& model, const BsOptions<S>& options, const S* y0,
+                                           const std::vector<double>& tout, const StickSlipObserverT<S>& observer);
 
 /// The same with SUNDIALS CVODE (BDF, Newton, dense Jacobian) and CVODE's root finding,
 /// as an independent cross-check. Available when built with SUNDIALS.

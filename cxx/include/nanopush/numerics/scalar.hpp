@@ -23,6 +23,18 @@ inline quad pow(quad x, quad y) { return powq(x, y); }
 inline double log10(double x) { return std::log10(x); }
 inline long double log10(long double x) { return std::log10(x); }
 inline quad log10(quad x) { return log10q(x); }
+inline double log(double x) { return std::log(x); }
+inline long double log(long double x) { return std::log(x); }
+inline quad log(quad x) { return logq(x); }
+inline double asinh(double x) { return std::asinh(x); }
+inline long double asinh(long double x) { return std::asinh(x); }
+inline quad asinh(quad x) { return asinhq(x); }
+inline double copysign(double x, double y) { return std::copysign(x, y); }
+inline long double copysign(long double x, long double y) { return std::copysign(x, y); }
+inline quad copysign(quad x, quad y) { return copysignq(x, y); }
+inline double hypot(double x, double y) { return std::hypot(x, y); }
+inline long double hypot(long double x, long double y) { return std::hypot(x, y); }
+inline quad hypot(quad x, quad y) { return hypotq(x, y); }
 inline double sin(double x) { return std::sin(x); }
 inline long double sin(long double x) { return std::sin(x); }
 inline quad sin(quad x) { return sinq(x); }

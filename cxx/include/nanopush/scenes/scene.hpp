@@ -135,10 +135,11 @@ class SceneBuilder {
   toml::table doc_;
 };
 
-/// Why extended precision (long, quad) cannot run with this surface, engine and method, or
-/// "" when it can: the right-hand side must be templated on the scalar (the smooth bar in the
-/// C++ Bulirsch–Stoer). One rule for scene files and run settings.
-std::string extended_precision_obstacle(bool rough, Engine engine, Method method);
+/// Why extended precision (long, quad) cannot run with this surface, friction law, engine and
+/// method, or "" when it can: the right-hand side must be templated on the scalar (the C++
+/// Bulirsch-Stoer; on a rough surface the modern method under the thesis or coulomb law). One
+/// rule for scene files and run settings.
+std::string extended_precision_obstacle(bool rough, Law law, Engine engine, Method method);
 
 /// The largest scene file load_scene reads [bytes].
 inline constexpr std::size_t kMaxSceneBytes = 1u << 20;
