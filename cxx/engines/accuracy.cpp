@@ -102,8 +102,10 @@ ResolvedSettings companion_settings(const Scene& scene, const ResolvedSettings& 
     c.method = Method::modern;
   }
   if (c.method == Method::dop853 && c.rtol < rtol_floor(c)) c.method = Method::modern;
-  if (c.rtol < rtol_floor(c) && !scene.rough() && c.engine == Engine::cxx &&
-      (c.method == Method::modern || c.method == Method::faithful)) {
+  // At the floor of double, more digits where the right-hand side runs in them (smooth scenes;
+  // rough ones under the thesis and coulomb laws with the modern method).
+  if (c.rtol < rtol_floor(c) && c.precision != Precision::quad &&
+      extended_precision_obstacle(scene.rough(), c.law, c.engine, c.method).empty()) {
     c.precision = c.precision == Precision::double_ ? Precision::long_ : Precision::quad;
     if (c.rtol < rtol_floor(c)) c.precision = Precision::quad;
   }
