@@ -19,6 +19,7 @@ struct CompareOptions {
   std::vector<std::string> sets;  ///< --set KEY=VALUE
   double rtol = 0, atol = -1;
   double tolerance = 0;
+  double accuracy = 0;
 };
 
 /// The same-steps table: per column max |diff|, unit, max |diff|/scale and scale.
@@ -57,6 +58,9 @@ int compare_cmd(const CompareOptions& o) {
   cs.rtol = o.rtol;
   cs.atol = o.atol;
   cs.tolerance = o.tolerance;
+  cs.accuracy = o.accuracy;
+  if (o.accuracy > 0 && o.rtol > 0)
+    throw InputError("--rtol", fmt(o.rtol), "--accuracy chooses the rtol: give one of --rtol and --accuracy");
   const EngineComparison r = compare_engines(sc, cs);
   if (r.law_from_coulomb)
     std::cout << "note: " << sc.name
@@ -74,6 +78,9 @@ int compare_cmd(const CompareOptions& o) {
   }
   std::cout << "compare " << sc.name << ": " << r.cxx.engine_label << " vs " << r.f77.engine_label << " (rtol "
             << r.rtol << ")\n";
+  if (r.accuracy.requested > 0)
+    std::cout << "  accuracy asked " << r.accuracy.requested << ": " << r.cxx.engine_label << " reaches it at rtol "
+              << r.accuracy.rtol_used << " (" << r.accuracy.runs << " runs); both engines run there\n";
   std::cout << "  RHS evaluations " << r.cxx.stats.nfcn << " vs " << r.f77.stats.nfcn << ", accepted "
             << r.cxx.stats.naccpt << " vs " << r.f77.stats.naccpt << ", rejected " << r.cxx.stats.nrejct << " vs "
             << r.f77.stats.nrejct << "\n";
@@ -118,6 +125,11 @@ RegisterCommand reg_compare{{"compare",
                                               "faithful (same steps); other methods get a convergence test instead: each "
                                               "engine re-run at rtol 1e-14 (docs/rough.md)")
                                    ->check(positive());
+                               app.add_option("--accuracy", o->accuracy,
+                                              "run both engines at the rtol at which the C++ configuration reaches "
+                                              "this error of the final pose, in [1e-14, 0.1] (docs/accuracy.md); "
+                                              "instead of --rtol")
+                                   ->check(CLI::Range(kAccuracyMin, kAccuracyMax));
                                return [o] { return compare_cmd(*o); };
                              }}};
 

@@ -26,7 +26,7 @@ namespace fs = std::filesystem;
 struct FitCliOptions {
   std::string scene, data, law, json, out = ".", synthesize, gradients = "auto", format = "png";
   std::vector<std::string> sets, free, sigma;
-  double rtol = 1e-10;
+  double rtol = 1e-10, accuracy = 0;
   int max_evaluations = 100;
   std::uint64_t seed = 1;
   bool no_plot = false, quiet = false;
@@ -144,6 +144,10 @@ std::string summary_text(const fit::FitResult& r, const fit::Observations& obs, 
     << "  " << r.status << " after " << r.iterations << " iterations, " << r.n_forward_solves << " forward solves ("
     << r.n_sensitivity_solves << " with sensitivities), " << std::setprecision(3) << r.wall_seconds << " s\n";
   if (!r.identifiability.identifiable) s << "  identifiability: " << r.identifiability.message << "\n";
+  if (r.accuracy.requested > 0)
+    s << "  accuracy asked " << std::setprecision(3) << r.accuracy.requested << " of the model's poses: "
+      << (r.accuracy.reached ? "reached" : "NOT reached") << " with rtol " << r.accuracy.rtol_used << " (estimate "
+      << r.accuracy.estimate << " at the estimate)\n";
   return s.str();
 }
 
@@ -188,6 +192,7 @@ int run_fit(const FitCliOptions& o) {
   fo.free = o.free;
   fo.law = parse_optional_choice<Law>("--law", o.law);
   fo.rtol = o.rtol;
+  fo.accuracy = o.accuracy;
   fo.gradients = o.gradients;
   fo.max_evaluations = o.max_evaluations;
   const fit::FitResult r = fit::fit_trajectory(sc, obs, fo);
@@ -207,6 +212,12 @@ int run_fit(const FitCliOptions& o) {
               << "); the outputs hold its last state, marked converged = false\n";
     return 3;
   }
+  if (r.accuracy.requested > 0 && !r.accuracy.reached) {
+    std::cerr << "nanopush: accuracy_not_reached: the model's error at the estimate is " << r.accuracy.estimate
+              << " at rtol " << r.accuracy.rtol_used << " (asked " << r.accuracy.requested
+              << "); the outputs hold the fit at that rtol\n";
+    return 3;
+  }
   return 0;
 }
 
@@ -222,6 +233,11 @@ RegisterCommand reg_fit{{"fit", "Fit scene keys (e.g. surface.mu) to an observed
                                ->check(is_choice<Law>({Law::thesis, Law::coulomb}));
                            app.add_option("--rtol", o->rtol, "relative tolerance of the forward solves (default 1e-10)")
                                ->check(real_in(1e-14, 1e-3));
+                           app.add_option("--accuracy", o->accuracy,
+                                          "the error asked for of the model's poses at the observation times "
+                                          "(docs/accuracy.md's norm), in [1e-14, 0.1]: the forward solves' rtol is "
+                                          "chosen to reach it (instead of --rtol) and checked at the estimate")
+                               ->check(CLI::Range(kAccuracyMin, kAccuracyMax));
                            app.add_option("--gradients", o->gradients,
                                           "auto (sensitivities where the right-hand side is smooth, differences under the "
                                           "coulomb law) | sensitivities | differences")

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "nanopush/engines/accuracy.hpp"
 #include "nanopush/engines/engines.hpp"
 #include "nanopush/numerics/error.hpp"
 
@@ -125,6 +126,20 @@ EngineComparison compare_engines(const Scene& scene, const CompareSettings& cs) 
   // The verdict has its own references (below): no companion runs for error estimates.
   a.error_estimate = b.error_estimate = false;
   a.accuracy = b.accuracy = 0;
+  if (cs.accuracy > 0) {
+    // The rtol at which the C++ configuration reaches the accuracy asked for; both engines run there.
+    RunSettings want = a;
+    want.accuracy = cs.accuracy;
+    const Trajectory chosen = run_to_accuracy(scene, want);
+    r.accuracy = chosen.accuracy;
+    if (!chosen.accuracy.reached || !is_answer(chosen.outcome)) {
+      r.cxx = chosen;
+      r.complete = false;
+      r.failed_run = 0;
+      return r;
+    }
+    a.rtol = b.rtol = chosen.accuracy.rtol_used;
+  }
   r.rtol = resolve_settings(scene, a).rtol;
   r.cxx = run_engine(scene, a);
   r.f77 = run_engine(scene, b);

@@ -398,11 +398,17 @@ void explain_undetermined(const Scene& scene, const FitOptions& options, const s
 
 }  // namespace
 
-FitResult fit_trajectory(const Scene& scene, const Observations& obs, const FitOptions& options) {
+FitResult fit_trajectory(const Scene& scene, const Observations& obs, const FitOptions& options_in) {
   const auto t0 = std::chrono::steady_clock::now();
-  const Law law = detail::fit_law(scene, options.law);
+  const Law law = detail::fit_law(scene, options_in.law);
+  FitOptions options = options_in;
   const std::string gradients = checked_gradients(scene, options, law);
   check_observations(obs, scene, options.free.size());
+  FitAccuracy accuracy;
+  if (options.accuracy != 0) {
+    accuracy = choose_forward_rtol(scene, obs.t, law, options.accuracy);
+    options.rtol = accuracy.rtol_used;
+  }
 
   const std::size_t np = options.free.size();
   const auto m = static_cast<int>(obs.count());
@@ -413,6 +419,7 @@ FitResult fit_trajectory(const Scene& scene, const Observations& obs, const FitO
   FitResult res;
   res.gradients = gradients;
   res.law = scene.rough() ? to_string(law) : "";
+  res.accuracy = accuracy;
   Eigen::VectorXd u = start_point(scene, options, prob, res);
   // The start must run: its failure is the user's to see, not a point to step away from.
   (void)prob.evaluate(u, false);
@@ -447,6 +454,10 @@ FitResult fit_trajectory(const Scene& scene, const Observations& obs, const FitO
 
   const Svd svd = identifiability(J, options, crel, res);
   if (!res.identifiability.identifiable) explain_undetermined(scene, options, p, crel, svd, res);
+  if (accuracy.requested > 0) {  // the accuracy at the estimate, where the answer is
+    res.accuracy.estimate = forward_error(res.scene, obs.t, law, options.rtol);
+    res.accuracy.reached = res.accuracy.estimate <= accuracy.requested;
+  }
   res.n_forward_solves = prob.solves;
   res.n_sensitivity_solves = prob.sens_solves;
   res.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -479,6 +490,10 @@ std::string fit_json(const FitResult& r) {
     << ",\n  \"iterations\": " << r.iterations << ",\n  \"n_forward_solves\": " << r.n_forward_solves
     << ",\n  \"n_sensitivity_solves\": " << r.n_sensitivity_solves << ",\n  \"gradients\": " << json_string(r.gradients)
     << ",\n  \"law\": " << json_string(r.law) << ",\n  \"n_observations\": " << r.t.size();
+  if (r.accuracy.requested > 0)
+    s << ",\n  \"accuracy\": {\"requested\": " << jnum(r.accuracy.requested) << ", \"rtol_used\": "
+      << jnum(r.accuracy.rtol_used) << ", \"estimate\": " << jnum(r.accuracy.estimate)
+      << ", \"reached\": " << (r.accuracy.reached ? "true" : "false") << "}";
   const auto& id = r.identifiability;
   s << ",\n  \"identifiability\": {\"identifiable\": " << (id.identifiable ? "true" : "false") << ", \"condition\": "
     << jnum(id.condition) << ", \"singular_values\": [";

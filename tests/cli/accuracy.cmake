@@ -20,6 +20,9 @@ set_tests_properties(cli.accuracy.sidecar PROPERTIES DEPENDS cli.accuracy.estima
 add_test(NAME cli.accuracy.reached COMMAND ${_np} run fig3_18 --law coulomb --accuracy 1e-9 --out ${_dir}/fig3_18.csv)
 set_tests_properties(cli.accuracy.reached PROPERTIES ENVIRONMENT "${_env}"
   PASS_REGULAR_EXPRESSION "accuracy asked 1e-09: reached with rtol 1e-1[0-9]")
+add_test(NAME cli.accuracy.reached_in_long COMMAND ${_np} run fig3_18 --law coulomb --accuracy 1e-14 --out ${_dir}/long.csv)
+set_tests_properties(cli.accuracy.reached_in_long PROPERTIES ENVIRONMENT "${_env}"
+  PASS_REGULAR_EXPRESSION "cxx-modern-coulomb-long.*accuracy asked 1e-14: reached with rtol 1e-1[6-9]")
 add_test(NAME cli.accuracy.out_of_range COMMAND ${_np} run fig3_18 --accuracy 1)
 set_tests_properties(cli.accuracy.out_of_range PROPERTIES ENVIRONMENT "${_env}" WILL_FAIL TRUE)
 add_test(NAME cli.accuracy.scene_key_range COMMAND ${_np} run fig3_18 --set solver.accuracy=1e-20)
@@ -37,8 +40,9 @@ foreach(_engine cxx f77)
   set_tests_properties(cli.accuracy.no_static_friction_${_engine} PROPERTIES ENVIRONMENT "${_env}"
     PASS_REGULAR_EXPRESSION "nanopush: no_static_friction: fig3_18 .*starts at rest .*--law coulomb")
 endforeach()
-# ... accuracy_not_reached (exit 3, the best estimate said): 1e-14 is beyond double here.
-add_test(NAME cli.accuracy.not_reached COMMAND ${_np} run fig3_18 --law coulomb --accuracy 1e-14 --out ${_dir}/nr.csv)
+# ... accuracy_not_reached (exit 3, the best estimate said): the printed law runs in double only,
+# and 1e-14 is beyond its floor (the coulomb law goes on in long double: cli.accuracy.reached_in_long).
+add_test(NAME cli.accuracy.not_reached COMMAND ${_np} run fig3_17 --law printed --accuracy 1e-14 --out ${_dir}/nr.csv)
 set_tests_properties(cli.accuracy.not_reached PROPERTIES ENVIRONMENT "${_env}"
   PASS_REGULAR_EXPRESSION "nanopush: accuracy_not_reached: .*the estimated error [0-9.e+-]+ of the final pose is above")
 
@@ -56,3 +60,23 @@ set_tests_properties(cli.accuracy.bench PROPERTIES ENVIRONMENT "${_env}"
 add_test(NAME cli.accuracy.atlas COMMAND ${_np} bench-atlas --points 2 --out ${_dir}/atlas)
 set_tests_properties(cli.accuracy.atlas PROPERTIES ENVIRONMENT "${_env}"
   PASS_REGULAR_EXPRESSION "atlas.md, atlas.csv, atlas_\\*.png")
+
+# compare --accuracy: both engines run at the rtol where the C++ configuration reaches it.
+add_test(NAME cli.accuracy.compare COMMAND ${_np} compare fig3_17 --accuracy 1e-7)
+set_tests_properties(cli.accuracy.compare PROPERTIES ENVIRONMENT "${_env}"
+  PASS_REGULAR_EXPRESSION "accuracy asked 1e-07: cxx-faithful-thesis reaches it at rtol 1e-[0-9]+ \\([0-9]+ runs\\); both engines run there.*engines agree")
+add_test(NAME cli.accuracy.compare_with_rtol COMMAND ${_np} compare fig3_17 --accuracy 1e-7 --rtol 1e-9)
+set_tests_properties(cli.accuracy.compare_with_rtol PROPERTIES ENVIRONMENT "${_env}"
+  PASS_REGULAR_EXPRESSION "--rtol = 1e-09: --accuracy chooses the rtol")
+
+# fit --accuracy: the forward solves' rtol chosen, checked at the estimate (text and JSON).
+add_test(NAME cli.accuracy.fit
+         COMMAND ${_np} fit fig3_20 ${CMAKE_CURRENT_BINARY_DIR}/fit/data.csv --set solver.t_end=0.4e-9 --set surface.mu=0.1
+                 --free surface.mu --accuracy 1e-8 --out ${_dir}/fit --no-plot)
+set_tests_properties(cli.accuracy.fit PROPERTIES ENVIRONMENT "${_env}" FIXTURES_REQUIRED fit_data
+  PASS_REGULAR_EXPRESSION "accuracy asked 1e-08 of the model's poses: reached with rtol 1e-[0-9]+ \\(estimate [0-9.e-]+ at the estimate\\)")
+add_test(NAME cli.accuracy.fit_json
+         COMMAND ${_np} fit fig3_20 ${CMAKE_CURRENT_BINARY_DIR}/fit/data.csv --set solver.t_end=0.4e-9 --set surface.mu=0.1
+                 --free surface.mu --accuracy 1e-8 --json - --out ${_dir}/fit2 --no-plot)
+set_tests_properties(cli.accuracy.fit_json PROPERTIES ENVIRONMENT "${_env}" FIXTURES_REQUIRED fit_data
+  PASS_REGULAR_EXPRESSION "\"accuracy\": {\"requested\": 1e-08, \"rtol_used\": [0-9.e-]+, \"estimate\": [0-9.e-]+, \"reached\": true}")

@@ -30,6 +30,9 @@ struct CompareSettings {
   double rtol = 0;                  ///< 0 = the scene's
   double atol = -1;                 ///< < 0 = the scene's
   double tolerance = 0;             ///< > 0: judge by same steps against it; 0 = by the method
+  /// > 0: the rtol of both engines is the one at which the C++ configuration reaches this
+  /// error of the final pose (run_to_accuracy, docs/accuracy.md); rtol is then ignored.
+  double accuracy = 0;
 };
 
 enum class CompareKind { same_steps, convergence };
@@ -50,6 +53,7 @@ struct EngineComparison {
   Law law = Law::thesis;           ///< the law both engines ran
   bool law_from_coulomb = false;   ///< the scene asked for coulomb; compared under thesis instead
   double rtol = 0;                 ///< the resolved rtol of the runs
+  AccuracyRecord accuracy;         ///< with CompareSettings::accuracy: how the rtol was chosen
   double tolerance = 0;            ///< same steps: the bound on relative; convergence: 0
   double rtol_tight = 0;           ///< convergence: the reference rtol
   bool tolerance_from_tight = false;  ///< not faithful, but rtol within 10x of the reference: same-steps rule

@@ -57,6 +57,11 @@ struct FitOptions {
   std::map<std::string, std::array<double, 2>> bounds;
   std::optional<Law> law;        ///< unset = the scene's surface.law (rough scenes): thesis | coulomb
   double rtol = 1e-10;           ///< forward solves (and sensitivities)
+  /// > 0: the error asked for of the model's poses at the observation times, in
+  /// [kAccuracyMin, kAccuracyMax] (docs/accuracy.md's norm): the forward solves' rtol is chosen
+  /// to reach it at the start values (choose_forward_rtol) and rtol is ignored; checked again
+  /// at the estimate (FitResult::accuracy).
+  double accuracy = 0;
   std::string gradients = "auto";
   int max_evaluations = 100;     ///< Levenberg-Marquardt function evaluations
   double xtol = 1e-8, ftol = 1e-10;  ///< Levenberg-Marquardt: relative step and reduction of chi2
@@ -92,6 +97,23 @@ struct Identifiability {
   std::string message;                    ///< plain words, "" when identifiable
 };
 
+/// How the forward solves' rtol was chosen for an accuracy (FitOptions::accuracy).
+struct FitAccuracy {
+  double requested = 0;  ///< 0: not asked
+  double rtol_used = 0;
+  double estimate = 0;   ///< the model's error at the observation times at rtol_used
+  bool reached = false;
+};
+
+/// The error of the model's poses at `times` solved at rtol (max over the times of the pose
+/// norm of docs/accuracy.md) against a solve 100x tighter (not below 1e-14, where the estimate
+/// claims no less than rtol).
+double forward_error(const Scene& scene, const std::vector<double>& times, std::optional<Law> law, double rtol);
+/// The loosest rtol (from the accuracy down by 100 to 1e-14) whose forward_error is within
+/// `accuracy`, or the tightest tried with reached = false.
+FitAccuracy choose_forward_rtol(const Scene& scene, const std::vector<double>& times, std::optional<Law> law,
+                                double accuracy);
+
 struct FitResult {
   std::vector<ParameterEstimate> parameters;
   std::vector<std::vector<double>> correlation;  ///< NaN entries for undetermined keys
@@ -105,6 +127,7 @@ struct FitResult {
   double wall_seconds = 0;
   std::string gradients;           ///< sensitivities | differences
   std::string law;                 ///< the law used (rough scenes), "" on smooth
+  FitAccuracy accuracy;            ///< with FitOptions::accuracy: rtol chosen, estimate at the estimate
   Identifiability identifiability;
   std::vector<double> t;                          ///< observation times
   std::vector<std::array<double, 3>> fitted;      ///< model pose at t with the estimates
