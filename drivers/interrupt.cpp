@@ -17,10 +17,24 @@ void say(const char* s) {
   if (n) (void)!::write(2, s, n);
 }
 
+const char* signal_name(int sig) {
+  switch (sig) {
+    case SIGINT: return "SIGINT";
+    case SIGTERM: return "SIGTERM";
+    case SIGHUP: return "SIGHUP";
+    case SIGPIPE: return "SIGPIPE";
+    case SIGQUIT: return "SIGQUIT";
+    case SIGUSR1: return "SIGUSR1";
+    case SIGUSR2: return "SIGUSR2";
+    default: return "a signal";
+  }
+}
+
 extern "C" void on_interrupt(int sig) {
   remove_temporary_files();
-  say(sig == SIGINT ? "\nnanopush: interrupted (SIGINT): outputs not yet complete were removed; completed files are kept\n"
-                    : "\nnanopush: terminated (SIGTERM): outputs not yet complete were removed; completed files are kept\n");
+  say(sig == SIGINT ? "\nnanopush: interrupted (" : "\nnanopush: terminated (");
+  say(signal_name(sig));
+  say("): outputs not yet complete were removed; completed files are kept\n");
   if (g_note[0]) {
     say("nanopush: ");
     say(g_note);
@@ -29,16 +43,22 @@ extern "C" void on_interrupt(int sig) {
   ::_exit(128 + sig);
 }
 
+constexpr int kSignals[] = {SIGINT, SIGTERM, SIGHUP, SIGPIPE, SIGQUIT, SIGUSR1, SIGUSR2};
+
 }  // namespace
 
 void install_interrupt_handler() {
   struct sigaction sa {};
   sa.sa_handler = on_interrupt;
   sigemptyset(&sa.sa_mask);
-  sigaddset(&sa.sa_mask, SIGINT);
-  sigaddset(&sa.sa_mask, SIGTERM);
-  ::sigaction(SIGINT, &sa, nullptr);
-  ::sigaction(SIGTERM, &sa, nullptr);
+  for (int s : kSignals) sigaddset(&sa.sa_mask, s);
+  for (int s : kSignals) {
+    // SIGHUP or SIGPIPE ignored by the caller (nohup; a parent that wants EPIPE) stays ignored.
+    // (A shell starts background jobs with SIGINT and SIGQUIT ignored: those are caught anyway.)
+    struct sigaction old {};
+    if ((s == SIGHUP || s == SIGPIPE) && ::sigaction(s, nullptr, &old) == 0 && old.sa_handler == SIG_IGN) continue;
+    ::sigaction(s, &sa, nullptr);
+  }
 }
 
 void set_interrupt_note(const std::string& note) {

@@ -1,6 +1,8 @@
-// SIGINT and SIGTERM for every subcommand (sweep installs its own, which lets points in flight
-// finish): remove the temporary files of outputs never completed, say so on stderr, and exit
-// 130 (SIGINT) or 143 (SIGTERM). Files already completed stay; a command whose outputs form a
+// SIGINT, SIGTERM, SIGHUP, SIGPIPE, SIGQUIT, SIGUSR1 and SIGUSR2 for every subcommand (sweep
+// installs its own for SIGINT and SIGTERM, which lets points in flight finish): remove the
+// temporary files of outputs never completed, say so on stderr, and exit 128 + the signal
+// (130 SIGINT, 143 SIGTERM, 129 SIGHUP, 141 SIGPIPE, ...); SIGHUP or SIGPIPE that the caller
+// ignores (nohup) stays ignored. Files already completed stay; a command whose outputs form a
 // whole (reproduce) sets a note saying where the incomplete result is.
 #pragma once
 #include <string>

@@ -25,8 +25,8 @@ int main(int argc, char** argv) {
   app.footer(
       "Exit status: 0 ok; 1 a comparison past its tolerance (compare, legacy); 2 bad input (nothing written);\n"
       "3 solver failure; 4 a check against the thesis failed (reproduce, bench); 5 system error (a file or a\n"
-      "program); 64+k sweep with k failed points (127: 63 or more); 70 internal error; 130/143 interrupted\n"
-      "(SIGINT/SIGTERM). docs/errors.md has the details.");
+      "program); 64+k sweep with k failed points (127: 63 or more); 70 internal error; 128+N ended by\n"
+      "signal N (130 SIGINT, 143 SIGTERM, 129 SIGHUP, 141 SIGPIPE, ...). docs/errors.md has the details.");
   auto& cmds = cli::commands();
   std::stable_sort(cmds.begin(), cmds.end(), [](auto& a, auto& b) { return a.order < b.order; });
   std::function<int()> action;
@@ -35,7 +35,7 @@ int main(int argc, char** argv) {
     auto act = c.setup(*sub);
     sub->callback([&action, act] { action = act; });
   }
-  cli::install_interrupt_handler();  // temporaries removed, exit 130/143 (interrupt.hpp)
+  cli::install_interrupt_handler();  // temporaries removed, exit 128 + signal (interrupt.hpp)
   cli::harden(app);  // reals finite, counts bounded, everywhere (cli_checks.hpp)
   const auto known = [&](const char* name) {
     for (const auto& c : cmds)

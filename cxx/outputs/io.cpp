@@ -10,6 +10,10 @@
 #include <sstream>
 #include <stdexcept>
 #include <system_error>
+#include <cerrno>
+#include <csignal>
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "nanopush/numerics/error.hpp"
@@ -64,58 +68,202 @@ void TemporaryPath::release() {
   slot_ = -2;
 }
 
-void require_replaceable(const std::filesystem::path& target) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  const fs::file_status st = fs::symlink_status(target, ec);
-  if (ec || st.type() == fs::file_type::not_found || st.type() == fs::file_type::regular) return;
-  const char* what = st.type() == fs::file_type::symlink     ? "a symbolic link"
-                     : st.type() == fs::file_type::directory ? "a directory"
-                     : st.type() == fs::file_type::fifo      ? "a FIFO"
-                     : st.type() == fs::file_type::character || st.type() == fs::file_type::block ? "a device"
-                                                                                                 : "not a regular file";
-  throw InputError("output", target.string(),
-                   std::string("is ") + what +
-                       ": nanopush writes a file whole and renames it into place, which would replace it; give "
-                       "the path of a regular file or of one that does not exist");
+// ---- where an output goes ------------------------------------------------------------------
+
+namespace {
+
+/// A buffer over a file descriptor that keeps the errno of a failed write.
+class FdBuf : public std::streambuf {
+ public:
+  explicit FdBuf(int fd) : fd_(fd) { setp(buf_, buf_ + sizeof buf_); }
+  [[nodiscard]] int error() const { return err_; }
+
+ protected:
+  int_type overflow(int_type c) override {
+    if (drain() != 0) return traits_type::eof();
+    if (!traits_type::eq_int_type(c, traits_type::eof())) {
+      *pptr() = traits_type::to_char_type(c);
+      pbump(1);
+    }
+    return traits_type::not_eof(c);
+  }
+  int sync() override { return drain(); }
+
+ private:
+  int drain() {
+    const char* p = pbase();
+    std::size_t n = static_cast<std::size_t>(pptr() - pbase());
+    while (n > 0) {
+      const ssize_t w = ::write(fd_, p, n);
+      if (w < 0) {
+        if (errno == EINTR) continue;
+        err_ = errno;
+        return -1;
+      }
+      p += w;
+      n -= static_cast<std::size_t>(w);
+    }
+    setp(buf_, buf_ + sizeof buf_);
+    return 0;
+  }
+  int fd_;
+  int err_ = 0;
+  char buf_[1 << 16];
+};
+
+std::string errno_text(int e) { return std::strerror(e); }
+
+/// A descriptor this process already holds, named as a path: written through whatever it is.
+bool names_own_descriptor(const std::string& s) {
+  return s == "/dev/stdout" || s == "/dev/stderr" || s.rfind("/dev/fd/", 0) == 0 || s.rfind("/proc/self/fd/", 0) == 0;
+}
+
+const char* kind_of(mode_t m) {
+  return S_ISDIR(m) ? "a directory" : S_ISFIFO(m) ? "a FIFO" : S_ISSOCK(m) ? "a socket" : S_ISBLK(m) ? "a block device" : "not a regular file";
+}
+
+[[noreturn]] void refuse(const std::filesystem::path& target, const std::filesystem::path& resolved, mode_t m) {
+  std::string shown = target.string();
+  if (resolved != target) shown += " (a link to " + resolved.string() + ")";
+  throw OutputError("output = " + shown + ": is " + kind_of(m) +
+                    ": an output is a file written whole; give the path of a regular file, of one that does not "
+                    "exist, or of a character device such as /dev/null");
+}
+
+/// Follow `p` while it is a symbolic link (at most 40 hops); the path it ends at.
+std::filesystem::path follow_links(const std::filesystem::path& target) {
+  std::filesystem::path p = target;
+  for (int hop = 0; hop < 40; ++hop) {
+    struct stat st {};
+    if (::lstat(p.c_str(), &st) != 0 || !S_ISLNK(st.st_mode)) return p;
+    std::error_code ec;
+    const std::filesystem::path to = std::filesystem::read_symlink(p, ec);
+    if (ec) throw OutputError("output = " + target.string() + ": its link cannot be read: " + ec.message());
+    p = to.is_absolute() ? to : p.parent_path() / to;
+  }
+  throw OutputError("output = " + target.string() + ": too many levels of symbolic links");
+}
+
+}  // namespace
+
+OutputTarget resolve_output(const std::filesystem::path& target) {
+  const std::string s = target.string();
+  if (s.empty()) throw OutputError("output = \"\" (empty): give a file name");
+  struct stat st {};
+  if (names_own_descriptor(s)) {
+    if (::stat(s.c_str(), &st) != 0)
+      throw OutputError("output = " + s + ": not an open descriptor of this process (" + errno_text(errno) + ")");
+    if (S_ISDIR(st.st_mode)) refuse(target, target, st.st_mode);
+    return {target, true};
+  }
+  const std::filesystem::path p = follow_links(target);
+  if (::lstat(p.c_str(), &st) != 0) {
+    if (errno == ENOENT) return {p, false};  // a new file (its directory is made if need be)
+    throw OutputError("output = " + s + ": cannot be written (" + errno_text(errno) + ")");
+  }
+  if (S_ISREG(st.st_mode)) return {p, false};
+  if (S_ISCHR(st.st_mode)) return {p, true};
+  refuse(target, p, st.st_mode);
+}
+
+void remove_stale_temporaries(const std::filesystem::path& target) noexcept {
+  try {
+    namespace fs = std::filesystem;
+    const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
+    const std::string prefix = target.filename().string() + ".tmp.";
+    std::error_code ec;
+    for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+      const std::string name = it->path().filename().string();
+      if (name.size() <= prefix.size() || name.compare(0, prefix.size(), prefix) != 0) continue;
+      std::size_t k = prefix.size();
+      long long pid = 0;
+      while (k < name.size() && name[k] >= '0' && name[k] <= '9' && pid < (1LL << 40)) pid = pid * 10 + (name[k++] - '0');
+      if (k == prefix.size() || (k < name.size() && name[k] != '.') || pid <= 0 || pid >= (1LL << 31)) continue;
+      if (pid == ::getpid()) continue;
+      if (::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH) continue;  // its writer may still run
+      struct stat st {};
+      if (::lstat(it->path().c_str(), &st) == 0 && S_ISREG(st.st_mode)) ::unlink(it->path().c_str());
+    }
+  } catch (...) {
+  }
 }
 
 AtomicFile::AtomicFile(std::filesystem::path target) : target_(std::move(target)) {
-  require_replaceable(target_);
-  if (target_.has_parent_path()) std::filesystem::create_directories(target_.parent_path());
-  tmp_ = target_;
-  tmp_ += ".tmp." + std::to_string(::getpid());
-  slot_ = register_temporary(tmp_);  // before the file exists: a signal may come at any time
-  out_.open(tmp_, std::ios::out | std::ios::trunc);
-  if (!out_) {
-    unregister_temporary(slot_);
-    throw std::runtime_error("cannot write " + tmp_.string());
+  const OutputTarget t = resolve_output(target_);
+  final_ = t.path;
+  through_ = t.write_through;
+  if (through_) {
+    // Opened in place: never created, never truncated or renamed over; O_NONBLOCK so that a
+    // FIFO behind a descriptor path cannot block the open.
+    fd_ = ::open(final_.c_str(), O_WRONLY | O_APPEND | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
+    if (fd_ < 0) throw OutputError("output = " + target_.string() + ": cannot be opened for writing (" + errno_text(errno) + ")");
+    struct stat st {};
+    if (::fstat(fd_, &st) != 0 || S_ISDIR(st.st_mode) ||
+        (!S_ISCHR(st.st_mode) && !names_own_descriptor(target_.string()))) {
+      const mode_t m = st.st_mode;
+      ::close(fd_);
+      fd_ = -1;
+      refuse(target_, final_, m);  // it changed since it was looked at
+    }
+    const int fl = ::fcntl(fd_, F_GETFL);
+    if (fl >= 0) ::fcntl(fd_, F_SETFL, fl & ~O_NONBLOCK);
+  } else {
+    struct stat old {};
+    const bool replaces = ::lstat(final_.c_str(), &old) == 0 && S_ISREG(old.st_mode);
+    if (final_.has_parent_path()) {
+      std::error_code ec;
+      std::filesystem::create_directories(final_.parent_path(), ec);
+      if (ec) throw OutputError("output = " + target_.string() + ": its directory cannot be made (" + ec.message() + ")");
+    }
+    remove_stale_temporaries(final_);
+    tmp_ = final_;
+    tmp_ += ".tmp." + std::to_string(::getpid());
+    slot_ = register_temporary(tmp_);  // before the file exists: a signal may come at any time
+    ::unlink(tmp_.c_str());             // a leftover of this pid, whatever it is
+    fd_ = ::open(tmp_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+    if (fd_ < 0) {
+      const int e = errno;
+      unregister_temporary(slot_);
+      slot_ = -1;
+      throw OutputError("output = " + target_.string() + ": cannot write " + tmp_.string() + " (" + errno_text(e) + ")");
+    }
+    if (replaces) (void)::fchmod(fd_, old.st_mode & 07777);  // the replaced file's permissions
   }
+  buf_ = std::make_unique<FdBuf>(fd_);
+  out_ = std::make_unique<std::ostream>(buf_.get());
 }
 
 AtomicFile::~AtomicFile() {
-  if (!committed_) {
-    out_.close();
-    std::error_code ec;
-    std::filesystem::remove(tmp_, ec);
-  }
+  if (fd_ >= 0) ::close(fd_);
+  if (!committed_ && !tmp_.empty()) ::unlink(tmp_.c_str());
   unregister_temporary(slot_);
 }
 
 void AtomicFile::finish() {
   if (finished_) return;
-  out_.flush();
-  if (!out_) throw std::runtime_error("write failed: " + tmp_.string());
-  out_.close();
+  out_->flush();
+  const bool ok = static_cast<bool>(*out_);
+  const int err = static_cast<FdBuf*>(buf_.get())->error();
+  const int rc = ::close(fd_);
+  const int cerr = errno;
+  fd_ = -1;
   finished_ = true;
+  if (!ok || rc != 0)
+    throw OutputError("output = " + target_.string() + ": write failed (" + errno_text(!ok ? err : cerr) + ")");
 }
 
 void AtomicFile::commit() {
   finish();
-  require_replaceable(target_);  // again: the path may have changed while the file was written
-  std::error_code ec;
-  std::filesystem::rename(tmp_, target_, ec);
-  if (ec) throw std::runtime_error("cannot rename " + tmp_.string() + " to " + target_.string() + ": " + ec.message());
+  if (through_) {
+    committed_ = true;
+    return;
+  }
+  // Again: the path may have changed while the file was written.
+  struct stat st {};
+  if (::lstat(final_.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) refuse(target_, final_, st.st_mode);
+  if (::rename(tmp_.c_str(), final_.c_str()) != 0)
+    throw OutputError("output = " + target_.string() + ": cannot rename " + tmp_.string() + " into place (" +
+                      errno_text(errno) + ")");
   committed_ = true;
   unregister_temporary(slot_);
   slot_ = -1;
@@ -297,6 +445,10 @@ std::string join_cells(const std::vector<std::string>& cells) {
 /// Write the sidecar's temporary, then rename the CSV, then the sidecar.
 void commit_with_schema(AtomicFile& csv, const Columns& columns, const std::string& scene, const RunInfo& run) {
   csv.finish();
+  if (csv.write_through()) {  // a device or a descriptor: the table only, as on standard output
+    csv.commit();
+    return;
+  }
   AtomicFile schema(schema_path(csv.target()));
   schema.stream() << table_schema_json(columns, scene, run);
   schema.finish();

@@ -240,7 +240,8 @@ std::size_t merge_tables(const std::vector<std::filesystem::path>& shards, const
   std::string text = header + "\n";
   for (const auto& [i, l] : lines) text += l + "\n";
   write_file_atomic(out, text);
-  if (!schema.empty()) write_file_atomic(schema_path(out), schema);
+  // A device or a descriptor (written through) gets the table only, as standard output does.
+  if (!schema.empty() && !resolve_output(out).write_through) write_file_atomic(schema_path(out), schema);
   return failed;
 }
 
@@ -301,6 +302,7 @@ Result run_local(const Plan& plan, const Task& task, const Options& o) {
                      "must be i/n with 0 <= i < n");
   (void)table_columns(plan, task);  // every varied key is the task's, before any work
   const auto pts = shard_points(plan.size(), o.shard_index, o.shard_count);
+  (void)resolve_output(o.out);  // a directory or a FIFO as --out: refused before any point (exit 5)
   Journal journal(o.out.string() + ".journal", sweep_identity(plan, task, o.shard_index, o.shard_count));
   std::map<std::size_t, std::vector<std::string>> rows;
   std::vector<std::size_t> pending;

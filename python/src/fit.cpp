@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "nanopush/fitting/fit.hpp"
+#include "nanopush/outputs/io.hpp"
 
 namespace nanopush::python {
 
@@ -146,11 +147,7 @@ raise. Bad data or keys raise nanopush.InputError naming the row and column or t
           py::gil_scoped_release release;
           text = fit::observations_csv(fit::synthesize(scene, sigma, seed, parse_optional_choice<Law>("law", law)));
         }
-        if (!path.is_none()) {
-          std::ofstream out(py::str(path).cast<std::string>());
-          out << text;
-          if (!out) throw InputError("path", py::str(path).cast<std::string>(), "cannot be written");
-        }
+        if (!path.is_none()) write_file_atomic(py::str(path).cast<std::string>(), text);  // as every output
         return text;
       },
       py::arg("scene"), py::arg("sigma"), py::arg("seed") = 1, py::kw_only(), py::arg("law") = "",

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "nanopush/numerics/bulirsch_stoer.hpp"
+#include "nanopush/outputs/io.hpp"
 
 namespace nanopush::python {
 
@@ -95,6 +96,10 @@ void register_errors(py::module_& m) {
       ex.attr("t_reached") = st.t_reached;
       ex.attr("partial") = make_result(e.partial());
       PyErr_SetObject(g_solver_error, ex.ptr());
+    } catch (const OutputError& e) {
+      // An output that cannot be written (a directory or a FIFO as the path, a failed write):
+      // a system error, as exit 5 is on the command line.
+      PyErr_SetString(PyExc_OSError, e.what());
     } catch (const SolverError& e) {
       py::object ex = py::handle(g_solver_error)(e.what());
       ex.attr("status") = "solver_failure";

@@ -11,19 +11,48 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <memory>
+#include <ostream>
+#include <stdexcept>
+#include <streambuf>
 #include <string>
 #include <vector>
 
 namespace nanopush {
 
 /// Remove every temporary file an AtomicFile of this process has open (their CSVs were never
-/// committed). Async-signal-safe: for a SIGINT/SIGTERM handler, which then exits.
+/// committed). Async-signal-safe: for a signal handler, which then exits.
 void remove_temporary_files() noexcept;
 
-/// InputError when `target` exists and is not a regular file (a device, FIFO, directory or
-/// symbolic link): an output never replaces what is not its own.
-void require_replaceable(const std::filesystem::path& target);
+/// An output that cannot be written where it was asked to go (a directory or a FIFO where a
+/// file is expected, a write or rename that fails): a system error, exit 5 on the command
+/// line (docs/errors.md), OSError in Python.
+class OutputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
 
+/// Where an output named `target` goes (docs/errors.md, "Outputs"):
+///  - a regular file, or a path that does not exist: replaced whole, by a temporary in its
+///    directory renamed over it (`write_through` false, `path` the target);
+///  - a symbolic link: followed (every hop); its final target is replaced the same way, in
+///    the target's directory, and the link is kept (`path` the final target);
+///  - a character device (/dev/null, a terminal), or a descriptor of this process
+///    (/dev/stdout, /dev/stderr, /dev/fd/N, /proc/self/fd/N): written through, opened and
+///    written in place, never renamed over (`write_through` true; such a CSV has no sidecar);
+///  - a directory, a FIFO, a socket or a block device: OutputError, nothing touched.
+struct OutputTarget {
+  std::filesystem::path path;
+  bool write_through = false;
+};
+OutputTarget resolve_output(const std::filesystem::path& target);
+
+/// Remove the temporaries `NAME.tmp.PID[.EXT]` of `target` left in its directory by a process
+/// that no longer exists (killed with SIGKILL): the next write of the same output sweeps them.
+void remove_stale_temporaries(const std::filesystem::path& target) noexcept;
+
+/// An output file: whole or not at all (see resolve_output). Writes go to a temporary that
+/// commit() renames over the target; a written-through target receives them directly.
 class AtomicFile {
  public:
   explicit AtomicFile(std::filesystem::path target);
@@ -31,18 +60,22 @@ class AtomicFile {
   AtomicFile& operator=(const AtomicFile&) = delete;
   ~AtomicFile();  // removes the temporary if commit() was never called
 
-  std::ofstream& stream() { return out_; }
+  std::ostream& stream() { return *out_; }
   [[nodiscard]] const std::filesystem::path& temp_path() const { return tmp_; }
   [[nodiscard]] const std::filesystem::path& target() const { return target_; }
-  /// Flush and close the temporary, leaving it in place (throws on a write error); commit() renames.
+  /// True when the target is a device or descriptor written in place (no temporary, no sidecar).
+  [[nodiscard]] bool write_through() const { return through_; }
+  /// Flush and close the temporary, leaving it in place (OutputError on a write error); commit() renames.
   void finish();
-  /// Flush, close and rename onto the target. Throws std::runtime_error on failure.
+  /// Flush, close and rename onto the target. Throws OutputError on failure.
   void commit();
 
  private:
-  std::filesystem::path target_, tmp_;
-  std::ofstream out_;
-  bool finished_ = false, committed_ = false;
+  std::filesystem::path target_, final_, tmp_;
+  std::unique_ptr<std::streambuf> buf_;
+  std::unique_ptr<std::ostream> out_;
+  bool through_ = false, finished_ = false, committed_ = false;
+  int fd_ = -1;
   int slot_ = -1;  ///< where remove_temporary_files() finds tmp_ (-1: not registered)
 };
 
