@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "nanopush/engines/accuracy.hpp"
 #include "nanopush/engines/engines.hpp"
@@ -209,6 +211,63 @@ TEST_CASE("Coulomb law, method auto: a stiff start just outside the limit surfac
   sc.set("solver.max_steps", 20000);
   m.allow_partial = true;
   CHECK(run_engine(sc, m).outcome == Outcome::solver_failure);
+}
+
+TEST_CASE("Thesis law, method auto: the same stiff start is handed over and classified where it comes to rest",
+          "[accuracy][rough][regression]") {
+  // While the body slides the thesis law's wrench is the coulomb law's: CVODE's coulomb-law run
+  // is the thesis trajectory up to its first rest, where the thesis law has no static friction.
+  Scene sc = thesis_preset("fig3_18");
+  sc.set({{"surface.mu", 0.2213333333333333}, {"push.yn", 3.9e-8}});
+  RunSettings s;
+  s.law = Law::thesis;
+  s.allow_partial = true;
+  const Trajectory tr = run_engine(sc, s);
+  CHECK(tr.outcome == Outcome::no_static_friction);
+  CHECK(tr.engine_label == "cxx-cvode-thesis");
+  CHECK_FALSE(tr.handed_over.empty());
+  CHECK_THAT(tr.outcome_message, Catch::Contains("came to rest at t = 2.9"));
+  REQUIRE(tr.rows.size() > 50);  // 75 of the 401 samples, to t = 2.98e-10 s
+  // The motion up to the rest: modern with the budget it needs reaches the same pose there.
+  RunSettings m = s;
+  m.method = Method::modern;
+  m.error_estimate = false;
+  sc.set("solver.max_steps", 2000000);
+  const Trajectory ref = run_engine(sc, m);
+  const std::size_t k = std::min(ref.rows.size(), tr.rows.size()) - 1;
+  REQUIRE(k + 3 >= tr.rows.size());
+  const auto& a = tr.rows[k];
+  const auto& b = ref.rows[k];
+  CHECK(std::fabs(a[col::x] - b[col::x]) <= 1e-6 * sc.length);
+  CHECK(std::fabs(a[col::theta] - b[col::theta]) <= 1e-6);
+}
+
+TEST_CASE("fig3_18's mu x yn grid ends in an answer or a reason under every law",
+          "[accuracy][rough][regression]") {
+  // A 16 x 16 grid over the thesis' ranges (mu 0.005-0.3, yn +-45 nm), plus the two points of the
+  // 40 x 40 grid where modern ran down to rest too stiffly (handed over to CVODE).
+  std::vector<std::pair<double, double>> points = {{0.16384615384615384, -1.9615384615384614e-08},
+                                                   {0.16384615384615384, 1.961538461538462e-08}};
+  for (int i = 0; i < 16; ++i)
+    for (int j = 0; j < 16; ++j) points.emplace_back(0.005 + 0.295 * i / 15, -45e-9 + 90e-9 * j / 15);
+  Scene sc = thesis_preset("fig3_18");
+  for (const Law law : {Law::coulomb, Law::thesis, Law::printed}) {
+    int failures = 0;
+    for (const auto& [mu, yn] : points) {
+      sc.set({{"surface.mu", mu}, {"push.yn", yn}});
+      RunSettings s;
+      s.law = law;
+      s.allow_partial = true;
+      s.error_estimate = false;
+      const Trajectory tr = run_engine(sc, s);
+      if (tr.outcome == Outcome::solver_failure) {
+        ++failures;
+        UNSCOPED_INFO(to_string(law) << " mu " << mu << " yn " << yn << ": " << tr.outcome_message);
+      }
+      if (law == Law::coulomb) CHECK(is_answer(tr.outcome));
+    }
+    CHECK(failures == 0);
+  }
 }
 
 }  // namespace NANOPUSH_UNITY_ID

@@ -123,7 +123,7 @@ Trajectory run_estimated(const Scene& scene, const ResolvedSettings& s) {
   if (!s.error_estimate || !is_answer(tr.outcome)) return tr;
   std::string note;
   ResolvedSettings used = s;
-  if (!tr.handed_over.empty()) used.method = Method::cvode;
+  if (!tr.handed_over.empty()) handed_over_settings(used);
   const ResolvedSettings c = companion_settings(scene, used, note);
   const Trajectory ref = run_resolved(scene, c);
   tr.error = estimate_from(scene, tr, ref);
@@ -141,7 +141,7 @@ Trajectory run_to_accuracy(const Scene& scene, const RunSettings& settings) {
   const double wanted = resolve_settings(scene, settings).accuracy;
   ResolvedSettings cur_s = first;
   Trajectory best = run_resolved(scene, first);
-  if (!best.handed_over.empty()) cur_s.method = Method::cvode;
+  if (!best.handed_over.empty()) handed_over_settings(cur_s);
   std::int64_t spent = best.stats.nfcn;
   int runs = 1;
   ErrorEstimate best_error;

@@ -4,6 +4,7 @@
 #include "nanopush/engines/accuracy.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -27,7 +28,8 @@ Trajectory run_f77(const Scene& sc, const ResolvedSettings& s) {
     tr.work_push.push_back(0.0);
     tr.work_fric.push_back(0.0);
     tr.outcome = Outcome::no_static_friction;
-    tr.outcome_message = no_static_friction_outcome(sc, s.law, 0.0);
+    tr.outcome_message =
+        no_static_friction_message(sc, s.law, 0.0, sc.initial[kX], sc.initial[kY], sc.initial[kTheta]);
     return tr;
   }
   std::vector<double> yout(tout.size() * static_cast<std::size_t>(n));
@@ -83,6 +85,24 @@ Trajectory run_f77(const Scene& sc, const ResolvedSettings& s) {
   return tr;
 }
 
+namespace {
+
+/// A failure at a stiff start or a stiff run down to rest: before the first output, or with the
+/// speed |v| + |omega| L/2 falling over the last outputs at a rate that reaches zero within
+/// kRunDownOutputs more of them.
+constexpr double kRunDownOutputs = 10;
+bool stiff_failure(const Scene& scene, const Trajectory& tr) {
+  const std::size_t n = tr.rows.size();
+  if (n <= 1) return true;
+  auto speed = [&](const TrajectoryRow& r) {
+    return std::hypot(r[col::vx], r[col::vy]) + std::fabs(r[col::omega]) * 0.5 * scene.length;
+  };
+  const double s1 = speed(tr.rows[n - 1]), s0 = speed(tr.rows[n - 2]);
+  return s1 < s0 && s1 <= kRunDownOutputs * (s0 - s1);
+}
+
+}  // namespace
+
 Trajectory run_resolved(const Scene& scene, const ResolvedSettings& s) {
   ResolvedSettings keep = s;
   keep.allow_partial = true;
@@ -90,21 +110,48 @@ Trajectory run_resolved(const Scene& scene, const ResolvedSettings& s) {
   // Method auto under the coulomb law: a push just outside the limit surface starts so slowly
   // that the velocity's direction relaxes at mu N / (m |V|), stiff while |V| is tiny, and the
   // explicit Bulirsch-Stoer spends its step budget in the first picoseconds. CVODE's BDF copes:
-  // hand the scene over to it (its cost includes the attempt). Only a failure before the first
-  // output after t = 0 is such a start; a later one (a bar spinning thousands of turns) would
-  // cost CVODE far more than the budget the scene gave modern.
-  if (tr.outcome == Outcome::solver_failure && s.method_automatic && s.method == Method::modern &&
-      s.engine == Engine::cxx && scene.rough() && s.law == Law::coulomb && tr.rows.size() <= 1) {
+  // hand the scene over to it (its cost includes the attempt). The same stiffness returns where
+  // a slide runs down to rest. Only a failure before the first output after t = 0, or one where
+  // the body was slowing to rest within a few outputs, is such a case; another (a bar spinning
+  // thousands of turns) would cost CVODE far more than the budget the scene gave modern.
+  // The thesis law slides as the coulomb law does (the same wrench while V != 0): its stiff
+  // start goes to CVODE's coulomb-law integration too, kept where that run never comes to rest
+  // after t = 0 (so it is the thesis law's trajectory).
+  const bool thesis = s.law == Law::thesis && (s.method == Method::modern || s.method == Method::dop853);
+  if (tr.outcome == Outcome::solver_failure && s.method_automatic && s.engine == Engine::cxx && scene.rough() &&
+      ((s.law == Law::coulomb && s.method == Method::modern) || thesis) && stiff_failure(scene, tr)) {
     ResolvedSettings c = keep;
-    c.method = Method::cvode;
+    handed_over_settings(c);
     Trajectory tc = finish_run(scene, c, run_cxx(scene, c));
-    if (is_answer(tc.outcome)) {
+    // Under the thesis law: the first rest after t = 0 ends the trajectory it shares with the
+    // coulomb law. Stuck there, the thesis law has no static friction to hold it (classified);
+    // sliding off, the two laws part (the failure stands).
+    const auto rest = std::find_if(tc.events.begin(), tc.events.end(), [](const StickEventRecord& e) { return e.t > 0.0; });
+    if (is_answer(tc.outcome) && (s.law == Law::coulomb || rest == tc.events.end() || rest->stuck)) {
       tc.stats.nfcn += tr.stats.nfcn;
       tc.handed_over = tr.outcome_message;
+      if (thesis) {
+        tc.engine_label = "cxx-cvode-thesis";
+        if (rest != tc.events.end()) {
+          while (tc.rows.size() > 1 && tc.rows.back()[col::t] > rest->t) tc.rows.pop_back();
+          tc.work_push.resize(std::min(tc.work_push.size(), tc.rows.size()));
+          tc.work_fric.resize(std::min(tc.work_fric.size(), tc.rows.size()));
+          const auto& r = tc.rows.back();
+          tc.outcome = Outcome::no_static_friction;
+          tc.outcome_message = no_static_friction_message(scene, s.law, rest->t, r[col::x], r[col::y], r[col::theta]);
+          tc.complete = false;
+          tc.events.erase(rest, tc.events.end());
+        }
+      }
       return tc;
     }
   }
   return tr;
+}
+
+void handed_over_settings(ResolvedSettings& s) {
+  s.method = Method::cvode;
+  s.law = Law::coulomb;
 }
 
 Trajectory run_engine(const Scene& scene, const RunSettings& settings) {

@@ -245,6 +245,15 @@ std::string printed_blowup_message(double work, double t) {
          "integrator gives up (docs/rough.md); --law thesis or coulomb";
 }
 
+}  // namespace
+
+bool starts_stuck(const Scene& sc) {
+  if (!sc.rough() || sc.friction_limit() == 0.0) return false;
+  if (sc.initial[kVx] != 0.0 || sc.initial[kVy] != 0.0 || sc.initial[kOmega] != 0.0) return false;
+  const RestWatch watch(rough_model(sc));
+  return analyse_rest(watch.coulomb, sc.initial[kTheta]).stuck;
+}
+
 std::string no_static_friction_message(const Scene& sc, Law law, double t, double x, double y, double theta) {
   return "the object " +
          std::string(t > 0.0 ? "came to rest at t = " + fmt_short(t) + " s" : "starts at rest") + " (x = " + fmt_short(x) +
@@ -255,18 +264,6 @@ std::string no_static_friction_message(const Scene& sc, Law law, double t, doubl
          "integrator would chatter there; --law coulomb holds it (event-located stick-slip, docs/rough.md)";
 }
 
-}  // namespace
-
-bool starts_stuck(const Scene& sc) {
-  if (!sc.rough() || sc.friction_limit() == 0.0) return false;
-  if (sc.initial[kVx] != 0.0 || sc.initial[kVy] != 0.0 || sc.initial[kOmega] != 0.0) return false;
-  const RestWatch watch(rough_model(sc));
-  return analyse_rest(watch.coulomb, sc.initial[kTheta]).stuck;
-}
-
-std::string no_static_friction_outcome(const Scene& sc, Law law, double t) {
-  return no_static_friction_message(sc, law, t, sc.initial[kX], sc.initial[kY], sc.initial[kTheta]);
-}
 
 namespace {
 

@@ -13,7 +13,13 @@ Trajectory run_engine(const Scene& scene, const RunSettings& settings = {});
 
 /// The engine `resolved.engine` on settings already resolved, the outcome classified
 /// (finish_run with allow_partial): never throws for a failed run.
+/// Method auto hands a stiff start (a failure before the first output: a push just outside the
+/// limit surface) of the coulomb or thesis law over to CVODE's coulomb-law integration
+/// (Trajectory::handed_over says so).
 Trajectory run_resolved(const Scene& scene, const ResolvedSettings& resolved);
+
+/// The settings a handed-over run used (method cvode, law coulomb): its companions' settings.
+void handed_over_settings(ResolvedSettings& s);
 
 /// The F77 engine alone (BSINT with the F77 right-hand sides); `resolved` from resolve_settings.
 Trajectory run_f77(const Scene& scene, const ResolvedSettings& resolved);

@@ -191,8 +191,9 @@ RoughBarModel rough_model(const Scene& scene);
 /// A rough scene that starts at rest with its push inside the coulomb limit surface (static
 /// friction holds it: the coulomb law's at_rest, the thesis and printed laws' no_static_friction).
 bool starts_stuck(const Scene& scene);
-/// The message of the outcome no_static_friction: at rest at t (0: from the start).
-std::string no_static_friction_outcome(const Scene& scene, Law law, double t);
+/// The message of the outcome no_static_friction: at rest at t (0: from the start) at the pose
+/// (x, y, theta) [m, m, rad].
+std::string no_static_friction_message(const Scene& scene, Law law, double t, double x, double y, double theta);
 
 /// Settings as resolved against the scene (choices, rtol and atol filled in and validated);
 /// InputError naming the field a bad value came from.
