@@ -10,6 +10,7 @@
 
 #include "nanopush/fitting/fit.hpp"
 #include "nanopush/outputs/csv_reader.hpp"
+#include "nanopush/outputs/input_file.hpp"
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/outputs/io.hpp"
 
@@ -136,17 +137,8 @@ Observations parse_observations(std::string_view text, const std::string& source
 }
 
 Observations read_observations(const std::filesystem::path& path, const SigmaOverrides& sigma) {
-  std::error_code ec;
-  const auto st = std::filesystem::status(path, ec);
-  if (ec || !std::filesystem::exists(st)) throw InputError("DATA", path.string(), "no such file");
-  if (!std::filesystem::is_regular_file(st)) throw InputError("DATA", path.string(), "must be a regular file");
-  const auto size = std::filesystem::file_size(path, ec);
-  if (ec || size > (64u << 20)) throw InputError("DATA", path.string(), "must be a file of at most 64 MiB");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read " + path.string());
-  std::ostringstream s;
-  s << in.rdbuf();
-  return parse_observations(s.str(), path.filename().string(), sigma);
+  // The guarded reader: a regular file of at most 64 MiB (never a FIFO, /dev/zero, a directory).
+  return parse_observations(read_input_file(path, "DATA", kMaxDataBytes), path.filename().string(), sigma);
 }
 
 void check_observations(const Observations& obs, const Scene& scene, std::size_t n_free) {

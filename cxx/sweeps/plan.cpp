@@ -6,12 +6,13 @@
 
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/outputs/csv_reader.hpp"
+#include "nanopush/outputs/input_file.hpp"
 #include "nanopush/sweeps/sweep.hpp"
 
 namespace nanopush::sweep {
 namespace {
 
-constexpr std::size_t kMaxPoints = 100000000;  // 1e8: a plan larger than this is a typo
+constexpr std::size_t kMaxPoints = kMaxPlanPoints;  // 1e8: a plan larger than this is a typo
 
 std::vector<std::string> split(const std::string& s, char sep) {
   std::vector<std::string> out;
@@ -132,11 +133,11 @@ Plan cartesian(const std::vector<Axis>& axes) {
 }
 
 Plan points_from_csv(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError("--points", path.string(), "cannot open the file");
+  // Through the guarded reader: a regular file of at most 4 GiB (never a FIFO or /dev/zero).
+  InputFile file(path, "--points", kMaxTableBytes);
   // One record at a time (RFC 4180: quoted keys and values, CRLF, a byte order mark; blank
   // lines skipped), so the file is never held whole.
-  csv::Reader reader(in, "--points " + path.string());
+  csv::Reader reader(file.stream(), "--points " + path.string());
   csv::Record rec;
   Plan p;
   if (!reader.next(rec)) throw InputError("--points", path.string(), "empty file: the first line names the keys");

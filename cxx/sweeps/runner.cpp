@@ -16,6 +16,7 @@
 #include <thread>
 
 #include "nanopush/numerics/error.hpp"
+#include "nanopush/outputs/input_file.hpp"
 #include "nanopush/sweeps/sweep.hpp"
 
 namespace nanopush::sweep {
@@ -72,34 +73,58 @@ std::vector<std::string> split_cells(const std::string& line) {
 
 Journal::Journal(std::filesystem::path path, const std::string& identity) : path_(std::move(path)) {
   const std::string header = std::string(kJournalMagic) + " " + hex(fnv1a(identity));
-  std::error_code ec;
-  if (std::filesystem::exists(path_, ec)) {
-    std::ifstream in(path_, std::ios::binary);
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    const auto first = text.find('\n');
-    if (first == std::string::npos || text.substr(0, first) != header)
+  if (input_exists(path_)) {
+    // Through the guarded reader (a regular file: a FIFO or a device is refused, never
+    // opened), one record at a time.
+    InputFile file(path_, "journal", kMaxJournalBytes);
+    std::streambuf* sb = file.stream().rdbuf();
+    // One line into `line` (at most kMaxInputLine bytes kept; a longer one is marked bad);
+    // `bytes` counts what was consumed. False at the end; `ended` says whether it had its LF.
+    std::uint64_t bytes = 0, complete = 0;
+    std::string line;
+    bool ended = false, overlong = false;
+    auto next_line = [&]() {
+      line.clear();
+      ended = overlong = false;
+      bool any = false;
+      for (;;) {
+        const auto c = sb->sbumpc();
+        if (std::char_traits<char>::eq_int_type(c, std::char_traits<char>::eof())) break;
+        any = true;
+        ++bytes;
+        const char ch = std::char_traits<char>::to_char_type(c);
+        if (ch == '\n') {
+          ended = true;
+          break;
+        }
+        if (line.size() < kMaxInputLine) line.push_back(ch);
+        else overlong = true;
+      }
+      return any;
+    };
+    if (!next_line() || !ended || overlong || line != header)
       throw InputError("journal", path_.string(),
                        "belongs to a different sweep (scene, axes, task, options or shard differ): remove it to "
                        "start this sweep afresh");
-    // Records: "index<TAB>checksum<TAB>row\n"; keep only complete records that match.
-    std::size_t pos = first + 1, complete = pos;
-    while (pos < text.size()) {
-      const auto end = text.find('\n', pos);
-      if (end == std::string::npos) break;  // a record cut short by a kill
-      const std::string line = text.substr(pos, end - pos);
-      pos = end + 1;
-      complete = pos;
+    complete = bytes;
+    // Records: "index<TAB>checksum<TAB>row\n"; keep only complete records that match (any other
+    // line is skipped, and its point computed again).
+    while (next_line()) {
+      if (!ended) break;  // a record cut short by a kill
+      complete = bytes;
+      if (overlong) continue;
       const auto t1 = line.find('\t'), t2 = t1 == std::string::npos ? t1 : line.find('\t', t1 + 1);
       if (t2 == std::string::npos) continue;
-      const std::string idx = line.substr(0, t1), sum = line.substr(t1 + 1, t2 - t1 - 1), row = line.substr(t2 + 1);
-      if (idx.empty() || idx.find_first_not_of("0123456789") != std::string::npos) continue;
-      const std::size_t index = std::stoull(idx);
-      if (sum != hex(fnv1a(record_text(index, row)))) continue;
-      resumed_[index] = split_cells(row);
+      const std::string sum = line.substr(t1 + 1, t2 - t1 - 1), row = line.substr(t2 + 1);
+      const auto index = parse_count(std::string_view(line).substr(0, t1), kMaxPlanPoints - 1);
+      if (!index) continue;  // not a point index of any plan (text, or out of range)
+      if (sum != hex(fnv1a(record_text(*index, row)))) continue;
+      resumed_[*index] = split_cells(row);
     }
+    const std::uint64_t size = bytes;
     fd_ = ::open(path_.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
     if (fd_ < 0) throw InputError("journal", path_.string(), "cannot be opened for appending");
-    if (complete < text.size() && ::ftruncate(fd_, static_cast<off_t>(complete)) != 0)
+    if (complete < size && ::ftruncate(fd_, static_cast<off_t>(complete)) != 0)
       throw InputError("journal", path_.string(), "cannot drop its incomplete last record");
   } else {
     fd_ = ::open(path_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_APPEND | O_CLOEXEC, 0644);
@@ -182,21 +207,27 @@ std::size_t merge_tables(const std::vector<std::filesystem::path>& shards, const
   std::map<std::size_t, std::string> lines;
   std::size_t failed = 0;
   for (const auto& path : shards) {
-    std::ifstream in(path);
-    if (!in) throw InputError("--merge", path.string(), "cannot open the shard table");
+    InputFile file(path, "--merge", kMaxTableBytes);  // a regular file (never a FIFO or a device)
     std::string h, line;
-    if (!std::getline(in, h)) throw InputError("--merge", path.string(), "empty file");
+    std::size_t lineno = 1;
+    if (!read_line(file.stream(), h, "--merge", path.string(), lineno))
+      throw InputError("--merge", path.string(), "empty file");
     if (header.empty()) header = h;
     if (h != header)
       throw InputError("--merge", path.string(), "its columns differ from " + shards.front().string() + "'s");
-    while (std::getline(in, line)) {
+    while (read_line(file.stream(), line, "--merge", path.string(), ++lineno)) {
       if (line.empty()) continue;
       const auto comma = line.find(',');
       const std::string idx = line.substr(0, comma);
+      const std::string where = path.string() + ":" + std::to_string(lineno);
       if (idx.empty() || idx.find_first_not_of("0123456789") != std::string::npos)
-        throw InputError("--merge", path.string(), "a row without a point index: " + line.substr(0, 40));
-      const std::size_t i = std::stoull(idx);
-      if (!lines.emplace(i, line).second)
+        throw InputError("--merge", where, "a row without a point index: " + line.substr(0, 40));
+      const auto i = parse_count(idx, kMaxPlanPoints - 1);
+      if (!i)
+        throw InputError("--merge", where,
+                         "point index = " + idx.substr(0, 40) + (idx.size() > 40 ? "..." : "") +
+                             ": must be a whole number in [0, " + std::to_string(kMaxPlanPoints - 1) + "]");
+      if (!lines.emplace(*i, line).second)
         throw InputError("--merge", path.string(), "point " + idx + " appears in more than one shard");
       if (row_failed(split_cells(line))) ++failed;
     }
@@ -213,11 +244,11 @@ std::size_t merge_tables(const std::vector<std::filesystem::path>& shards, const
   // merged table's; the plan's size recorded there says whether trailing points are missing.
   const auto side = schema_path(shards.front());
   std::string schema;
-  std::error_code ec;
-  if (std::filesystem::exists(side, ec)) {
-    std::ifstream in(side);
+  if (input_exists(side)) {
+    InputFile file(side, "--merge sidecar", kMaxSidecarBytes);
     std::string line;
-    while (std::getline(in, line)) {
+    std::size_t lineno = 0;
+    while (read_line(file.stream(), line, "--merge sidecar", side.string(), ++lineno)) {
       const auto at = line.find("\"run\": {");
       if (at == std::string::npos) {
         schema += line + "\n";
@@ -225,10 +256,15 @@ std::size_t merge_tables(const std::vector<std::filesystem::path>& shards, const
       }
       const auto pp = line.find("\"plan_points\": ");
       if (pp != std::string::npos) {
-        const std::size_t n = std::stoull(line.substr(pp + 15));
-        if (n != lines.size())
+        const std::string digits = line.substr(pp + 15, line.find_first_of(",}", pp + 15) - (pp + 15));
+        const auto n = parse_count(digits, kMaxPlanPoints);
+        if (!n)
+          throw InputError("--merge", side.string() + ":" + std::to_string(lineno),
+                           "plan_points = " + digits.substr(0, 40) + ": must be a whole number in [0, " +
+                               std::to_string(kMaxPlanPoints) + "]");
+        if (*n != lines.size())
           throw InputError("--merge", std::to_string(lines.size()) + " points",
-                           "the plan has " + std::to_string(n) + ": give every shard's table");
+                           "the plan has " + std::to_string(*n) + ": give every shard's table");
       }
       const auto task = line.find("\"task\": ");
       const std::string task_name = task == std::string::npos ? "\"\"" : line.substr(task + 8, line.find(',', task) - task - 8);

@@ -55,6 +55,11 @@ resume)  # killed with SIGKILL mid-way, then resumed: the same table as an unint
   [ ! -e killed.csv ] || fail "a table appeared for an unfinished sweep"
   n=$(wc -l < killed.csv.journal)
   [ "$n" -ge 2 ] && [ "$n" -lt 401 ] || fail "journal has $n lines"
+  # A record whose point index is out of any range (an integer past 2^64) is skipped and its
+  # point computed again; so is a line of text.
+  sed -i '2s/^[0-9]*\t/99999999999999999999999\t/' killed.csv.journal
+  grep -q $'^99999999999999999999999\t' killed.csv.journal || fail "the journal was not tampered"
+  printf 'not a record\n' >> killed.csv.journal
   # A record cut short (as by a kill mid-write) is ignored.
   printf '123\tdeadbeef\t123,0.1,trunc' >> killed.csv.journal
   set +e; "$np" sweep "${big[@]}" --out killed.csv; set -e
@@ -97,6 +102,43 @@ tasks)  # sweeps of closed-form evaluations
   [ "$(status "$np" sweep --task friction --vary R=1e-8,abc --out bad.csv --quiet 2> err.txt)" = 2 ] || fail "a word for a number accepted"
   grep -q "R = abc: must be a number" err.txt || fail "message: $(cat err.txt)"
   [ ! -e bad.csv ] || fail "a refused sweep left a table" ;;
+inputs)  # every input through the guarded reader: a FIFO never blocks, /dev/zero never grows, integers are range-checked
+  # refused CODE REGEX ARGS...: nanopush ARGS exits CODE within 10 s, stderr matches REGEX
+  refused() {
+    local code=$1 re=$2; shift 2
+    set +e; timeout 10 "$np" "$@" > out.txt 2> err.txt; local rc=$?; set -e
+    [ "$rc" = "$code" ] || fail "nanopush $* -> exit $rc, expected $code (124: it blocked); stderr: $(head -c 400 err.txt)"
+    grep -Eq -- "$re" err.txt || fail "nanopush $* -> stderr lacks /$re/: $(head -c 400 err.txt)"
+  }
+  fr=(--task friction --set a=27.5e-9 --set b=50e-9 --quiet)
+  mkfifo pipe.csv
+  printf 'R\n1e-8\n' > points.csv
+  refused 2 '^nanopush: error: --points = pipe\.csv: is a FIFO' sweep "${fr[@]}" --points pipe.csv --out p.csv
+  refused 2 '^nanopush: error: --points = /dev/zero: is a character device' sweep "${fr[@]}" --points /dev/zero --out p.csv
+  refused 2 '^nanopush: error: --points = \.: is a directory' sweep "${fr[@]}" --points . --out p.csv
+  [ ! -e p.csv ] && [ ! -e p.csv.journal ] || fail "a refused --points left files"
+  "$np" sweep "${fr[@]}" --vary R=1e-8,2e-8,3e-8 --shard 0/2 --out s0.csv
+  "$np" sweep "${fr[@]}" --vary R=1e-8,2e-8,3e-8 --shard 1/2 --out s1.csv
+  refused 2 '^nanopush: error: --merge = pipe\.csv: is a FIFO' sweep --merge s0.csv pipe.csv --out m.csv --quiet
+  refused 2 '^nanopush: error: --merge = /dev/zero: is a character device' sweep --merge s0.csv /dev/zero --out m.csv --quiet
+  { head -1 s1.csv; echo '99999999999999999999999,2e-08,0,0,0,ok,'; } > huge.csv
+  refused 2 '^nanopush: error: --merge = huge\.csv:2: point index = 99999999999999999999999: must be a whole number in \[0, 99999999\]' \
+    sweep --merge s0.csv huge.csv --out m.csv --quiet
+  cp s0.csv t0.csv
+  sed 's/"plan_points": 3/"plan_points": 18446744073709551616/' s0.schema.json > t0.schema.json
+  grep -q 18446744073709551616 t0.schema.json || fail "the sidecar was not tampered"
+  refused 2 '^nanopush: error: --merge = t0\.schema\.json:[0-9]+: plan_points = 18446744073709551616: must be a whole number in \[0, 100000000\]' \
+    sweep --merge t0.csv s1.csv --out m.csv --quiet
+  [ ! -e m.csv ] || fail "a refused merge wrote a table"
+  "$np" sweep --merge s0.csv s1.csv --out m.csv --quiet
+  [ "$(wc -l < m.csv)" = 4 ] || fail "the merge of good shards: $(cat m.csv)"
+  # The journal: a FIFO or a device there is refused before any point (never opened).
+  mkfifo j.csv.journal
+  refused 2 '^nanopush: error: journal = j\.csv\.journal: is a FIFO' sweep "${fr[@]}" --vary R=1e-8,2e-8 --out j.csv
+  [ -p j.csv.journal ] && [ ! -e j.csv ] || fail "the FIFO journal was replaced, or a table written"
+  # Fit data through the same reader.
+  refused 2 '^nanopush: error: DATA = pipe\.csv: is a FIFO' fit fig3_20 pipe.csv --free surface.mu
+  refused 2 '^nanopush: error: DATA = /dev/zero: is a character device' fit fig3_20 /dev/zero --free surface.mu ;;
 *) fail "unknown mode $mode" ;;
 esac
 echo "sweep check $mode: ok"

@@ -41,6 +41,9 @@ struct Plan {
   [[nodiscard]] std::vector<SceneSetting> settings(std::size_t i) const;
 };
 
+/// The most points a plan may have (a grid, a --points table): 1e8; larger is a typo.
+inline constexpr std::size_t kMaxPlanPoints = 100000000;
+
 /// The cartesian product of the axes, the last axis varying fastest.
 Plan cartesian(const std::vector<Axis>& axes);
 /// A list of points from a CSV file: the header names the keys, each row is a point.
