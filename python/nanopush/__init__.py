@@ -26,6 +26,7 @@ InputError (a ValueError), SolverError (a RuntimeError)   the library's errors
 docs/python.md in the source tree has the install and the examples.
 """
 
+import operator as _operator
 import os as _os
 import pathlib as _pathlib
 
@@ -75,6 +76,17 @@ def _input_error(message, field=""):
     return e
 
 
+def _count(name, value):
+    """A whole number >= 0 (int, NumPy integer or 0-d array); InputError naming `name` otherwise."""
+    try:
+        v = _operator.index(value)
+    except TypeError:
+        raise _input_error(f"{name} = {value!r:.80}: must be a whole number >= 0", name) from None
+    if v < 0:
+        raise _input_error(f"{name} = {v}: must be a whole number >= 0", name)
+    return v
+
+
 def _resolve_preset(name):
     """The file of a preset name, found by the rule of ``nanopush run`` (the library's
     find_preset: NAME.toml or NAME under scenes_dir(), then its thesis/, bench/ and examples/
@@ -112,7 +124,7 @@ def _as_scene(scene):
         if p.is_file():
             return Scene.from_file(str(p))
         return _preset(str(scene))
-    raise TypeError(f"scene must be a nanopush.Scene, a preset name or a file, not {type(scene).__name__}")
+    raise _input_error(f"scene = {scene!r:.80}: must be a nanopush.Scene, a preset name or a scene file", "scene")
 
 
 # ---- run and compare ------------------------------------------------------------------
@@ -278,7 +290,7 @@ def sweep(task, vary=None, *, vary_log=None, points=None, set=None, jobs=0, engi
         scene, name = _as_scene(task), "run"
     axes = [(k, v, False) for k, v in (vary or {}).items()]
     axes += [(k, v, True) for k, v in (vary_log or {}).items()]
-    names, units, data = _nanopush._sweep(name, scene, axes, points, dict(set or {}), int(jobs),
+    names, units, data = _nanopush._sweep(name, scene, axes, points, dict(set or {}), _count("jobs", jobs),
                                          engine or "", method or "", law or "", accuracy, error_estimate)
     res = SweepResult(names, units, data)
     if check and res.failed:

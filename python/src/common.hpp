@@ -54,6 +54,19 @@ using DArray = py::array_t<double, py::array::forcecast>;
 /// `obj` as a float64 array; InputError naming `name` if it is not numeric.
 DArray as_double_array(const py::handle& obj, const char* name);
 
+/// Arguments converted with checks, as every front end does (issue 34, item 5): a NumPy scalar
+/// or a 0-d array is its Python value; anything of the wrong type is an InputError naming the
+/// argument (nanopush.InputError), never pybind11's "Unable to cast".
+/// `v` itself, or the Python value of a NumPy scalar or 0-d array (InputError naming `name` for
+/// an array of one or more dimensions: not one value).
+py::object plain_value(const py::handle& v, const std::string& name);
+/// A real number (int, float, NumPy number, 0-d array; not bool, not text).
+double arg_double(const py::handle& v, const std::string& name);
+/// True or False (or numpy.bool_).
+bool arg_bool(const py::handle& v, const std::string& name);
+/// Text (str, or a path-like object for paths).
+std::string arg_text(const py::handle& v, const std::string& name);
+
 /// A NumPy scalar for a 0-d result, else the array itself.
 py::object scalar_or_array(const py::array_t<double>& a);
 

@@ -18,6 +18,8 @@ struct Estimate {
 
 Estimate estimate(double force, double sigma_force, const py::object& yn, double sigma_yn, const py::object& R,
                   double sigma_R, double sigma_L, double sigma_H, const py::object& rod_obj) {
+  if (!rod_obj.is_none() && !py::isinstance<icor::Rod>(rod_obj))
+    throw InputError("rod", py::repr(rod_obj).cast<std::string>(), "must be a nanopush.Rod (or None: the thesis' nanorod)");
   const icor::Rod rod = rod_obj.is_none() ? icor::nanorod() : rod_obj.cast<icor::Rod>();
   if (yn.is_none() == R.is_none())
     throw InputError("yn/R", yn.is_none() ? "neither given" : "both given",
@@ -25,10 +27,10 @@ Estimate estimate(double force, double sigma_force, const py::object& yn, double
   Estimate out;
   if (!yn.is_none()) {
     out.basis = "force";
-    out.e = icor::estimate_mu_from_force(rod, {force, sigma_force}, {yn.cast<double>(), sigma_yn}, sigma_L, sigma_H);
+    out.e = icor::estimate_mu_from_force(rod, {force, sigma_force}, {arg_double(yn, "yn"), sigma_yn}, sigma_L, sigma_H);
   } else {
     out.basis = "icor";
-    out.e = icor::estimate_mu_from_icor(rod, {force, sigma_force}, {R.cast<double>(), sigma_R}, sigma_L, sigma_H);
+    out.e = icor::estimate_mu_from_icor(rod, {force, sigma_force}, {arg_double(R, "R"), sigma_R}, sigma_L, sigma_H);
   }
   return out;
 }

@@ -16,13 +16,22 @@ namespace {
 fit::SigmaOverrides sigma_of(const py::object& sigma) {
   fit::SigmaOverrides out;
   if (sigma.is_none()) return out;
-  for (const auto& [k, v] : sigma.cast<py::dict>()) out[py::str(k).cast<std::string>()] = v.cast<double>();
+  if (!py::isinstance<py::dict>(sigma))
+    throw InputError("sigma", py::repr(sigma).cast<std::string>(), "must be a dict {column: standard uncertainty}");
+  for (const auto& [k, v] : sigma.cast<py::dict>()) {
+    const std::string key = arg_text(k, "sigma key");
+    out[key] = arg_double(v, "sigma[" + key + "]");
+  }
   return out;
 }
 
 std::vector<std::string> keys_of(const py::object& free) {
   if (py::isinstance<py::str>(free)) return {free.cast<std::string>()};
-  return free.cast<std::vector<std::string>>();
+  if (!py::isinstance<py::iterable>(free))
+    throw InputError("free", py::repr(free).cast<std::string>(), "must be a scene key or a list of scene keys");
+  std::vector<std::string> out;
+  for (auto k : free) out.push_back(arg_text(k, "free"));
+  return out;
 }
 
 fit::FitResult fit_scene(const Scene& scene, const py::object& data, const py::object& free, const std::string& law,
@@ -34,7 +43,7 @@ fit::FitResult fit_scene(const Scene& scene, const py::object& data, const py::o
   o.rtol = rtol;
   o.max_evaluations = max_evaluations;
   const auto overrides = sigma_of(sigma);
-  const std::string path = py::str(data).cast<std::string>();
+  const std::string path = arg_text(data, "data");
   py::gil_scoped_release release;
   const fit::Observations obs = fit::read_observations(path, overrides);
   return fit::fit_trajectory(scene, obs, o);
@@ -147,7 +156,7 @@ raise. Bad data or keys raise nanopush.InputError naming the row and column or t
           py::gil_scoped_release release;
           text = fit::observations_csv(fit::synthesize(scene, sigma, seed, parse_optional_choice<Law>("law", law)));
         }
-        if (!path.is_none()) write_file_atomic(py::str(path).cast<std::string>(), text);  // as every output
+        if (!path.is_none()) write_file_atomic(arg_text(path, "path"), text);  // as every output
         return text;
       },
       py::arg("scene"), py::arg("sigma"), py::arg("seed") = 1, py::kw_only(), py::arg("law") = "",

@@ -42,6 +42,8 @@ Batch estimate_batch(const py::object& force, const py::object& sigma_force, con
                      const py::object& sigma_yn, const py::object& R, const py::object& sigma_R,
                      const std::string& pressure, double sigma_L, double sigma_H, double alpha,
                      const py::object& rod_obj) {
+  if (!rod_obj.is_none() && !py::isinstance<icor::Rod>(rod_obj))
+    throw InputError("rod", py::repr(rod_obj).cast<std::string>(), "must be a nanopush.Rod (or None: the thesis' nanorod)");
   const icor::Rod rod = rod_obj.is_none() ? icor::nanorod() : rod_obj.cast<icor::Rod>();
   const icor::Pressure p = icor::parse_pressure(pressure);
   const DArray f = as_double_array(force, "force");

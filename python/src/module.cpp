@@ -19,6 +19,55 @@ DArray as_double_array(const py::handle& obj, const char* name) {
   return a;
 }
 
+py::object plain_value(const py::handle& v, const std::string& name) {
+  const py::module_ np = py::module_::import("numpy");
+  if (py::isinstance(v, np.attr("ndarray"))) {
+    const auto nd = v.attr("ndim").cast<long>();
+    if (nd != 0)
+      throw InputError(name, "an array of shape " + py::str(v.attr("shape")).cast<std::string>(),
+                       "must be one value (a number, a NumPy scalar or a 0-d array)");
+    return v.attr("item")();
+  }
+  if (py::isinstance(v, np.attr("generic"))) return v.attr("item")();
+  return py::reinterpret_borrow<py::object>(v);
+}
+
+namespace {
+std::string shown(const py::handle& v) {
+  std::string r = py::repr(v).cast<std::string>();
+  if (r.size() > 80) r = r.substr(0, 77) + "...";
+  return r;
+}
+}  // namespace
+
+double arg_double(const py::handle& obj, const std::string& name) {
+  const py::object v = plain_value(obj, name);
+  if (v.is_none()) throw InputError(name, "None", "must be a real number");
+  if (PyBool_Check(v.ptr())) throw InputError(name, shown(v), "must be a real number (not a flag)");
+  if (PyUnicode_Check(v.ptr()) || PyBytes_Check(v.ptr())) throw InputError(name, shown(v), "must be a real number (not text)");
+  if (!PyFloat_Check(v.ptr()) && !PyLong_Check(v.ptr()) && !PyNumber_Check(v.ptr()))
+    throw InputError(name, shown(v), "must be a real number");
+  const double d = PyFloat_AsDouble(v.ptr());
+  if (d == -1.0 && PyErr_Occurred()) {
+    PyErr_Clear();
+    throw InputError(name, shown(v), "must be a real number (representable as a double)");
+  }
+  return d;
+}
+
+bool arg_bool(const py::handle& obj, const std::string& name) {
+  const py::object v = plain_value(obj, name);
+  if (!PyBool_Check(v.ptr())) throw InputError(name, shown(v), "must be True or False");
+  return v.ptr() == Py_True;
+}
+
+std::string arg_text(const py::handle& obj, const std::string& name) {
+  if (PyUnicode_Check(obj.ptr())) return obj.cast<std::string>();
+  if (py::isinstance(obj, py::module_::import("os").attr("PathLike")))
+    return py::module_::import("os").attr("fspath")(obj).cast<std::string>();
+  throw InputError(name, shown(obj), "must be text");
+}
+
 std::string status_name(BsStatus s) {
   switch (s) {
     case BsStatus::success: return "success";
@@ -96,6 +145,12 @@ void register_errors(py::module_& m) {
       ex.attr("t_reached") = st.t_reached;
       ex.attr("partial") = make_result(e.partial());
       PyErr_SetObject(g_solver_error, ex.ptr());
+    } catch (const py::cast_error& e) {
+      // A conversion no argument check caught: bad input all the same (never RuntimeError).
+      py::object ex = py::handle(g_input_error)(std::string("an argument of the wrong type: ") + e.what());
+      ex.attr("field") = "";
+      ex.attr("index") = py::none();
+      PyErr_SetObject(g_input_error, ex.ptr());
     } catch (const OutputError& e) {
       // An output that cannot be written (a directory or a FIFO as the path, a failed write):
       // a system error, as exit 5 is on the command line.

@@ -47,11 +47,11 @@ void read_tolerances(const py::object& rtol, const py::object& atol, double& r, 
   r = 0.0;
   a = -1.0;
   if (!rtol.is_none()) {
-    r = rtol.cast<double>();
+    r = arg_double(rtol, "rtol");
     require_positive("rtol", r);
   }
   if (!atol.is_none()) {
-    a = atol.cast<double>();
+    a = arg_double(atol, "atol");
     require_nonnegative("atol", a);
   }
 }
@@ -60,10 +60,10 @@ void read_tolerances(const py::object& rtol, const py::object& atol, double& r, 
 /// error_estimate (None = the scene's) into the run settings.
 void read_accuracy(const py::object& accuracy, const py::object& error_estimate, RunSettings& rs) {
   if (!accuracy.is_none()) {
-    rs.accuracy = accuracy.cast<double>();
+    rs.accuracy = arg_double(accuracy, "accuracy");
     if (rs.accuracy != 0.0) require_range("accuracy", rs.accuracy, kAccuracyMin, kAccuracyMax);
   }
-  if (!error_estimate.is_none()) rs.error_estimate = error_estimate.cast<bool>();
+  if (!error_estimate.is_none()) rs.error_estimate = arg_bool(error_estimate, "error_estimate");
 }
 
 py::object number_or_none(double v) { return std::isnan(v) ? py::object(py::none()) : py::object(py::float_(v)); }
@@ -119,7 +119,7 @@ py::dict compare(const Scene& scene, const std::string& method, const std::strin
   cs.method = method.empty() ? Method::faithful : parse_choice<Method>("method", method);
   cs.law = parse_optional_choice<Law>("law", law);
   read_tolerances(rtol, atol, cs.rtol, cs.atol);
-  if (!tolerance.is_none()) cs.tolerance = tolerance.cast<double>();
+  if (!tolerance.is_none()) cs.tolerance = arg_double(tolerance, "tolerance");
   EngineComparison r;
   const Scene own = scene;
   {

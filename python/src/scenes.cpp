@@ -16,18 +16,33 @@ namespace {
 
 /// A Python value for scene key `key`: bool, integer, real, or text read as the key's type
 /// (the command line's KEY=VALUE: "coulomb", "0.1").
-SceneValue to_scene_value(const std::string& key, const py::handle& v) {
-  if (py::isinstance<py::bool_>(v) || py::isinstance(v, py::module_::import("numpy").attr("bool_")))
-    return SceneValue(v.cast<bool>());
+SceneValue to_scene_value(const std::string& key, const py::handle& obj) {
+  // A NumPy scalar or 0-d array is its Python value; a larger array is refused (InputError).
+  const py::object v = plain_value(obj, key);
+  if (PyBool_Check(v.ptr())) return SceneValue(v.ptr() == Py_True);
   if (py::isinstance<py::str>(v)) return SceneValue::from_text(key, v.cast<std::string>());
-  if (PyIndex_Check(v.ptr())) {
-    const long long i = py::reinterpret_steal<py::int_>(PyNumber_Index(v.ptr())).cast<long long>();
+  if (PyLong_Check(v.ptr())) {
+    int overflow = 0;
+    const long long i = PyLong_AsLongLongAndOverflow(v.ptr(), &overflow);
+    if (i == -1 && PyErr_Occurred()) throw py::error_already_set();
+    if (overflow != 0)
+      throw InputError(key, py::str(v).cast<std::string>(),
+                       "an integer outside [-9223372036854775808, 9223372036854775807]: give a value in the key's range "
+                       "(nanopush.scene_keys())");
     return SceneValue(static_cast<long>(i));
   }
-  if (PyFloat_Check(v.ptr()) || PyNumber_Check(v.ptr())) {
-    const double d = PyFloat_AsDouble(v.ptr());
-    if (d == -1.0 && PyErr_Occurred()) throw py::error_already_set();
-    return SceneValue(d);
+  if (PyFloat_Check(v.ptr())) return SceneValue(PyFloat_AsDouble(v.ptr()));
+  // Another number type (fractions.Fraction, decimal.Decimal, ...): as a real number.
+  if (PyNumber_Check(v.ptr()) && !PyIndex_Check(v.ptr()) && Py_TYPE(v.ptr())->tp_as_number &&
+      Py_TYPE(v.ptr())->tp_as_number->nb_float)
+    return SceneValue(arg_double(v, key));
+  if (PyIndex_Check(v.ptr())) {  // an integer-like type that is not int
+    const py::object i = py::reinterpret_steal<py::object>(PyNumber_Index(v.ptr()));
+    if (!i) {
+      PyErr_Clear();
+      throw InputError(key, py::repr(v).cast<std::string>(), "must be a number, an integer, a flag or text");
+    }
+    return to_scene_value(key, i);
   }
   throw InputError(key, py::repr(v).cast<std::string>(), "must be a number, an integer, a flag or text");
 }

@@ -12,13 +12,12 @@ namespace nanopush::python {
 namespace {
 
 /// A plan value as the command line's parse_axis reads it: a number, a flag or text.
-SceneValue plan_value(const std::string& key, const py::handle& v) {
-  if (py::isinstance<py::bool_>(v) || py::isinstance(v, py::module_::import("numpy").attr("bool_")))
-    return SceneValue(v.cast<bool>());
+SceneValue plan_value(const std::string& key, const py::handle& obj) {
+  const py::object v = plain_value(obj, key);  // a NumPy scalar or 0-d array: its value
+  if (PyBool_Check(v.ptr())) return SceneValue(v.ptr() == Py_True);
   if (py::isinstance<py::str>(v)) return SceneValue(v.cast<std::string>());
   if (PyNumber_Check(v.ptr())) {
-    const double d = PyFloat_AsDouble(v.ptr());
-    if (d == -1.0 && PyErr_Occurred()) throw py::error_already_set();
+    const double d = arg_double(v, key);
     require_finite(key, d);
     return SceneValue(d);
   }
@@ -82,16 +81,18 @@ py::tuple run_sweep(const std::string& task_name, const py::object& scene_obj, c
   std::unique_ptr<sweep::Task> task;
   if (task_name == "run") {
     if (scene_obj.is_none()) throw InputError("task", "run", "a run sweep needs a scene");
+    if (!py::isinstance<Scene>(scene_obj))
+      throw InputError("scene", py::repr(scene_obj).cast<std::string>(), "must be a nanopush.Scene");
     Scene sc = scene_obj.cast<Scene>();
     RunSettings rs;
     rs.engine = parse_optional_choice<Engine>("engine", engine);
     rs.method = parse_optional_choice<Method>("method", method);
     rs.law = parse_optional_choice<Law>("law", law);
     if (!accuracy.is_none()) {
-      rs.accuracy = accuracy.cast<double>();
+      rs.accuracy = arg_double(accuracy, "accuracy");
       if (rs.accuracy != 0.0) require_range("accuracy", rs.accuracy, kAccuracyMin, kAccuracyMax);
     }
-    if (!error_estimate.is_none()) rs.error_estimate = error_estimate.cast<bool>();
+    if (!error_estimate.is_none()) rs.error_estimate = arg_bool(error_estimate, "error_estimate");
     if (!fixed.empty()) {
       std::vector<SceneSetting> s;
       for (auto item : fixed) {

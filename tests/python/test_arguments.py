@@ -1,0 +1,129 @@
+"""Python like every other front end (issue 34, item 5): every argument converted with checks.
+NumPy scalars and 0-d arrays are numbers (Scene.set('push.force', np.array(1e-6)) was a
+segfault); any other type raises nanopush.InputError naming the argument, never RuntimeError
+"Unable to cast"."""
+
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+import nanopush
+
+
+def fresh():
+    return nanopush.Scene.preset("fig3_6a")
+
+
+def test_numpy_array_in_scene_set_does_not_crash():
+    # In a child interpreter first: a crash there fails this test instead of killing pytest.
+    code = ("import numpy as np, nanopush\n"
+            "s = nanopush.Scene.preset('fig3_6a')\n"
+            "s.set('push.force', np.array(1e-6))\n"
+            "print(s.info()['push']['force'])\n")
+    p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    assert p.returncode == 0, f"exit {p.returncode}: {p.stderr[-2000:]}"
+    assert float(p.stdout.strip()) == 1e-6
+
+
+@pytest.mark.parametrize("value", [np.array(1e-6), np.float64(1e-6), np.array([1e-6])[0],
+                                   np.array(1e-6, dtype=np.float64)[()], np.float32(1e-6), np.array(1e-6, np.float32)])
+def test_numpy_numbers_are_numbers_in_scene_set(value):
+    a, b = fresh(), fresh()
+    a.set("push.force", value)
+    b.set("push.force", float(value))  # the same number as a Python float (float32: its exact value)
+    assert a.info()["push"]["force"] == b.info()["push"]["force"] == float(value)
+    assert abs(float(value) - 1e-6) < 1e-13
+
+
+def test_numpy_integers_and_flags():
+    a, b = fresh(), fresh()
+    a.set({"solver.samples": np.int64(11), "solver.error_estimate": np.bool_(False)})
+    b.set({"solver.samples": 11, "solver.error_estimate": False})
+    a.set("solver.t_end", np.array(1e-9))
+    b.set("solver.t_end", 1e-9)
+    assert a.info()["solver"] == b.info()["solver"]
+    c = fresh()
+    c.set("solver.samples", np.array(11))  # a 0-d integer array
+    assert c.info()["solver"]["samples"] == 11
+    r_np, r_py = nanopush.run(a), nanopush.run(b)
+    assert np.array_equal(r_np.array, r_py.array)
+
+
+@pytest.mark.parametrize("value, says", [
+    (np.array([1e-6, 2e-6]), r"push\.force = an array of shape \(2,\): must be one value"),
+    (np.zeros((1, 1)), r"push\.force = an array of shape \(1, 1\): must be one value"),
+    ([1e-6], r"push\.force = \[1e-06\]: must be a number, an integer, a flag or text"),
+    (object(), r"push\.force = <object object at .*>: must be a number"),
+    (None, r"push\.force = None: must be a number"),
+])
+def test_wrong_types_in_scene_set_are_input_errors(value, says):
+    s = fresh()
+    before = s.info()
+    with pytest.raises(nanopush.InputError, match=says) as e:
+        s.set("push.force", value)
+    assert e.value.field == "push.force"
+    assert s.info() == before  # left unchanged
+
+
+def test_huge_integer_is_an_input_error():
+    with pytest.raises(nanopush.InputError, match=r"solver\.samples = 1000000000000000000000000000000: an integer outside"):
+        fresh().set("solver.samples", 10**30)
+
+
+def test_run_arguments():
+    s = fresh()
+    s.set({"solver.samples": 11, "solver.t_end": 1e-9})
+    ref = nanopush.run(s, rtol=1e-8)
+    for rtol in (np.float64(1e-8), np.array(1e-8)):
+        r = nanopush.run(s, rtol=rtol)
+        assert np.array_equal(r.array, ref.array) and r.rtol == ref.rtol
+    with pytest.raises(nanopush.InputError, match=r"^rtol = 'abc': must be a real number \(not text\)") as e:
+        nanopush.run(s, rtol="abc")
+    assert e.value.field == "rtol"
+    with pytest.raises(nanopush.InputError, match=r"^atol = \[1e-09\]: must be a real number"):
+        nanopush.run(s, atol=[1e-9])
+    with pytest.raises(nanopush.InputError, match=r"^rtol = an array of shape \(2,\): must be one value"):
+        nanopush.run(s, rtol=np.array([1e-8, 1e-9]))
+    with pytest.raises(nanopush.InputError, match=r"^error_estimate = 'yes': must be True or False"):
+        nanopush.run(s, error_estimate="yes")
+    with pytest.raises(nanopush.InputError, match=r"^accuracy = True: must be a real number \(not a flag\)"):
+        nanopush.run(s, accuracy=True)
+    with pytest.raises(nanopush.InputError, match=r"^scene = 42: must be a nanopush\.Scene") as e:
+        nanopush.run(42)
+    assert e.value.field == "scene"
+    with pytest.raises(nanopush.InputError, match=r"^tolerance = 'x': must be a real number"):
+        nanopush.compare(s, tolerance="x")
+
+
+def test_sweep_and_estimate_mu_arguments():
+    a = nanopush.sweep("friction", vary={"R": np.array([1e-8, 2e-8])}, set={"a": np.float64(27.5e-9), "b": 50e-9},
+                       jobs=np.int64(1))
+    b = nanopush.sweep("friction", vary={"R": [1e-8, 2e-8]}, set={"a": 27.5e-9, "b": 50e-9}, jobs=1)
+    assert a.to_dict().keys() == b.to_dict().keys()
+    for k in b.to_dict():
+        assert np.array_equal(a[k], b[k]), k
+    with pytest.raises(nanopush.InputError, match=r"^jobs = 'two': must be a whole number >= 0"):
+        nanopush.sweep("friction", vary={"R": [1e-8]}, jobs="two")
+    with pytest.raises(nanopush.InputError, match=r"^R = an array of shape \(1,\): must be one value"):
+        nanopush.sweep("friction", vary={"R": [np.array([1e-8])]})
+    e1 = nanopush.estimate_mu(1e-6, 3e-8, yn=np.array(1e-7))
+    e2 = nanopush.estimate_mu(1e-6, 3e-8, yn=1e-7)
+    assert e1.mu == e2.mu
+    with pytest.raises(nanopush.InputError, match=r"^yn = '1e-7': must be a real number \(not text\)"):
+        nanopush.estimate_mu(1e-6, yn="1e-7")
+    with pytest.raises(nanopush.InputError, match=r"^rod = 'nanorod': must be a nanopush\.Rod"):
+        nanopush.estimate_mu(1e-6, yn=1e-7, rod="nanorod")
+
+
+def test_fit_arguments(tmp_path):
+    s = fresh()
+    data = tmp_path / "d.csv"
+    data.write_text("t,x\n0,0\n")
+    with pytest.raises(nanopush.InputError, match=r"^free = 3: must be a scene key or a list of scene keys"):
+        nanopush.fit(s, data, 3)
+    with pytest.raises(nanopush.InputError, match=r"^sigma = 0\.1: must be a dict"):
+        nanopush.fit(s, data, "surface.mu", sigma=0.1)
+    with pytest.raises(nanopush.InputError, match=r"^sigma\[x\] = 'a': must be a real number"):
+        nanopush.fit(s, data, "surface.mu", sigma={"x": "a"})
