@@ -274,6 +274,18 @@ TEST_CASE("No NaN for any finite input; roots at infinity are counted", "[icor][
   CHECK(s.at_infinity == 1);
   const auto t = icor::solve_constrained_cubic(tiny, kL, kK2, CubicMethod::Brent);
   CHECK(t.at_infinity == 1);
+  // Between, the runaway root lies near the overflow threshold (1e299-1e308): the companion
+  // matrix is scaled so that its QR iteration does not overflow (it failed for yn in
+  // [1.3e-314, 2.1e-313]); the physical roots stay Brent's.
+  for (const double yn : {1.3e-314, 2e-314, 5e-314, 1e-313, 2.1e-313, 3e-313}) {
+    INFO("yn = " << yn);
+    const auto e = icor::solve_constrained_cubic(yn, kL, kK2, CubicMethod::Eigen);
+    const auto b = icor::solve_constrained_cubic(yn, kL, kK2, CubicMethod::Brent);
+    REQUIRE(e.negative.has_value());
+    REQUIRE(b.negative.has_value());
+    CHECK(std::fabs(*e.negative - *b.negative) <= 1e-12 * std::fabs(*b.negative));
+    CHECK(e.real_roots.size() + static_cast<std::size_t>(e.complex_roots + e.at_infinity) == 3);
+  }
 }
 
 TEST_CASE("Bad input is rejected with a clear error (C++ and F77)", "[icor][unit]") {

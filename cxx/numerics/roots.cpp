@@ -1,6 +1,8 @@
 // Polynomial roots from the balanced companion matrix (see roots.hpp for the contract).
 #include "nanopush/numerics/roots.hpp"
 
+#include <cmath>
+
 #include <Eigen/Dense>
 
 namespace nanopush::roots {
@@ -55,10 +57,23 @@ std::vector<std::complex<double>> companion_eigenvalues(const std::vector<double
   Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n, n);
   for (int j = 0; j < n; ++j) A(0, j) = -c[static_cast<std::size_t>(n - 1 - j)] / c[static_cast<std::size_t>(n)];
   for (int i = 1; i < n; ++i) A(i, i - 1) = 1.0;
+  // A root near the overflow threshold (the constrained cubic at a subnormal yn: ~1e300) leaves
+  // entries whose squares overflow in the balancing and the QR iteration, which then fails.
+  // Scaled by a power of two to a largest entry of order 1, the eigenvalues scale exactly;
+  // they are scaled back.
+  int scale = 0;
+  const double amax = A.cwiseAbs().maxCoeff();
+  if (amax > 1e150) {
+    scale = std::ilogb(amax);
+    A *= std::ldexp(1.0, -scale);
+  }
   balance_matrix(A);
   Eigen::EigenSolver<Eigen::MatrixXd> es(A, /*computeEigenvectors=*/false);
   if (es.info() != Eigen::Success) throw SolverError("companion-matrix eigenvalues: Eigen's QR iteration did not converge");
-  for (int i = 0; i < n; ++i) out.push_back(es.eigenvalues()(i));
+  for (int i = 0; i < n; ++i) {
+    const std::complex<double> ev = es.eigenvalues()(i);
+    out.emplace_back(std::ldexp(ev.real(), scale), std::ldexp(ev.imag(), scale));
+  }
   return out;
 }
 }  // namespace
