@@ -172,8 +172,8 @@ int sweep_cmd(SweepOptions o) {
 
   const auto r = sweep::run_local(plan, *task, opt);
   if (!r.complete) {
-    std::cerr << "sweep: interrupted: " << r.done << " of " << r.points << " points are in " << opt.out.string()
-              << ".journal; run the same command again to resume\n";
+    std::cerr << "sweep: interrupted: " << r.done << " of " << r.points << " points are in "
+              << sweep::journal_path(opt.out).string() << "; run the same command again to resume\n";
     return 128 + (g_signal ? static_cast<int>(g_signal) : SIGINT);
   }
   if (!o.quiet) {

@@ -199,7 +199,7 @@ int run_mpi_sweep(const sweep::Plan& plan, const sweep::Task& task, const sweep:
     // The coordinator: journal, the list of pending points, the rows.
     const auto pts = sweep::shard_points(plan.size(), o.shard_index, o.shard_count);
     (void)sweep::table_columns(plan, task);
-    sweep::Journal journal(o.out.string() + ".journal",
+    sweep::Journal journal(sweep::journal_path(o.out),
                            sweep::sweep_identity(plan, task, o.shard_index, o.shard_count));
     std::map<std::size_t, std::vector<std::string>> rows;
     const std::set<std::size_t> mine(pts.begin(), pts.end());

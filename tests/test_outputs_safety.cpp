@@ -19,6 +19,7 @@
 
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/outputs/io.hpp"
+#include "nanopush/sweeps/sweep.hpp"
 
 using namespace nanopush;
 namespace fs = std::filesystem;
@@ -200,5 +201,19 @@ TEST_CASE("outputs: a regular file is replaced whole, a failed writer leaves not
   write_file_atomic(target, "new\n");
   CHECK(read_all(target) == "new\n");
   CHECK(temporaries(dir) == 0);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("outputs: a sweep's journal is never put beside a device", "[outputs][sweep][unit]") {
+  const fs::path dir = scratch("journal");
+  CHECK(sweep::journal_path(dir / "t.csv") == fs::path((dir / "t.csv").string() + ".journal"));
+  fs::create_symlink("t.csv", dir / "l.csv");
+  CHECK(sweep::journal_path(dir / "l.csv") == fs::path((dir / "l.csv").string() + ".journal"));
+  CHECK(sweep::journal_path("/dev/stdout") == fs::path("stdout.journal"));  // the working directory
+  const fs::path null = dir / "null.csv";
+  if (::mknod(null.c_str(), S_IFCHR | 0600, makedev(1, 3)) == 0) CHECK(sweep::journal_path(null) == fs::path("null.csv.journal"));
+  const fs::path fifo = dir / "pipe.csv";
+  REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+  CHECK_THROWS_AS(sweep::journal_path(fifo), OutputError);
   fs::remove_all(dir);
 }

@@ -134,6 +134,10 @@ std::filesystem::path render_script(const std::string& body, const std::filesyst
   const std::filesystem::path dir = png.parent_path();
   if (!dir.empty()) std::filesystem::create_directories(dir);
   const std::string pid = std::to_string(::getpid());
+  // Where the figure goes (a directory or a FIFO is refused before gnuplot runs); the
+  // temporaries of a killed run are swept up.
+  const OutputTarget target = resolve_output(png);
+  remove_stale_temporaries(png);
   TemporaryPath tmp_png(png.string() + ".tmp." + pid + png.extension().string());
   std::filesystem::path script = png;
   script.replace_extension(".gp");
@@ -165,8 +169,16 @@ std::filesystem::path render_script(const std::string& body, const std::filesyst
   if (rc != 0 || !std::filesystem::exists(tmp_png.path()))
     throw std::runtime_error("gnuplot failed for " + png.string() + " (gnuplot " + describe_exit(rc) + "): " + err);
   write_file_atomic(script, kept);
-  std::filesystem::rename(tmp_png.path(), png);
-  tmp_png.release();
+  if (target.write_through || target.path != png) {
+    // A link (its target replaced, the link kept) or a device (written through): as every output.
+    std::ifstream in(tmp_png.path(), std::ios::binary);
+    std::ostringstream bytes;
+    bytes << in.rdbuf();
+    write_file_atomic(png, bytes.str());
+  } else {
+    std::filesystem::rename(tmp_png.path(), png);
+    tmp_png.release();
+  }
   return png;
 }
 

@@ -161,6 +161,11 @@ void Journal::remove() {
   std::filesystem::remove(path_, ec);
 }
 
+std::filesystem::path journal_path(const std::filesystem::path& out) {
+  if (resolve_output(out).write_through) return std::filesystem::path(out.filename().string() + ".journal");
+  return std::filesystem::path(out.string() + ".journal");
+}
+
 std::string sweep_identity(const Plan& plan, const Task& task, std::size_t shard_index, std::size_t shard_count) {
   std::ostringstream s;
   s << task.identity() << "\nshard " << shard_index << "/" << shard_count << "\nkeys";
@@ -338,8 +343,8 @@ Result run_local(const Plan& plan, const Task& task, const Options& o) {
                      "must be i/n with 0 <= i < n");
   (void)table_columns(plan, task);  // every varied key is the task's, before any work
   const auto pts = shard_points(plan.size(), o.shard_index, o.shard_count);
-  (void)resolve_output(o.out);  // a directory or a FIFO as --out: refused before any point (exit 5)
-  Journal journal(o.out.string() + ".journal", sweep_identity(plan, task, o.shard_index, o.shard_count));
+  // journal_path: a directory or a FIFO as --out is refused before any point (exit 5).
+  Journal journal(journal_path(o.out), sweep_identity(plan, task, o.shard_index, o.shard_count));
   std::map<std::size_t, std::vector<std::string>> rows;
   std::vector<std::size_t> pending;
   const std::set<std::size_t> mine(pts.begin(), pts.end());

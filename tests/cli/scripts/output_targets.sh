@@ -48,6 +48,10 @@ if mknod nul c 1 3 2>/dev/null && mknod full c 1 7 2>/dev/null; then
   [ -c full ] || fail "the device node full was replaced"
   run 0 '' icor formulas --n 5 --out nul
   [ -c nul ] || fail "icor replaced the device"
+  # A sweep's table on a device: its journal goes to the working directory, never beside the device.
+  mkdir devs && mknod devs/nul c 1 3
+  run 0 '' sweep --task friction --vary R=1e-8,2e-8 --out devs/nul --quiet
+  [ -c devs/nul ] && [ "$(ls -A devs)" = nul ] || fail "the sweep wrote beside the device: $(ls -A devs)"
   echo "devices: scratch nodes"
 else
   rm -f nul full
@@ -55,6 +59,17 @@ else
   [ -c /dev/null ] || fail "/dev/null is no longer a device"
   [ ! -e /dev/null.schema.json ] || fail "a sidecar beside /dev/null"
   echo "devices: /dev/null only (not root: no scratch device nodes)"
+fi
+# A figure through a link: the link kept, its target drawn; a killed run's temporary swept up.
+if command -v gnuplot > /dev/null; then
+  mkdir -p R/fig3_6 elsewhere
+  ln -s ../../elsewhere/fig.svg R/fig3_6/fig3_6.svg
+  sh -c 'exit 0' & dead=$!; wait $dead
+  echo stale > "R/fig3_6/fig3_6.svg.tmp.$dead.svg"
+  run 0 '' reproduce --quick --only fig3_6 --format svg --no-bench --out R
+  [ -L R/fig3_6/fig3_6.svg ] || fail "the figure's link was replaced"
+  grep -q '<svg' elsewhere/fig.svg || fail "the link's target holds no figure"
+  [ ! -e "R/fig3_6/fig3_6.svg.tmp.$dead.svg" ] || fail "a killed run's figure temporary survived"
 fi
 # /dev/stdout is written through whatever it is (here a pipe).
 "$np" run fig3_6c --out /dev/stdout --quiet | head -1 | grep -q '^t,x,y,theta' || fail "--out /dev/stdout through a pipe"

@@ -145,6 +145,11 @@ class Journal {
   std::map<std::size_t, std::vector<std::string>> resumed_;
 };
 
+/// The journal of a sweep whose table is `out`: OUT.journal beside it; for a table written
+/// through (a device such as /dev/null, /dev/stdout) NAME.journal in the working directory,
+/// never beside the device. OutputError (exit 5) if `out` is a directory or a FIFO.
+std::filesystem::path journal_path(const std::filesystem::path& out);
+
 /// The identity of a sweep: task, plan and shard, as text (hashed into the journal's header).
 std::string sweep_identity(const Plan& plan, const Task& task, std::size_t shard_index, std::size_t shard_count);
 
