@@ -163,9 +163,10 @@ Observations synthesize(const Scene& scene, const std::array<double, 3>& sigma, 
   std::normal_distribution<double> normal(0.0, 1.0);
   for (int c = 0; c < 3; ++c) {
     const auto cu = static_cast<std::size_t>(c);
+    // NaN is bad input, never a column silently left out (issue 34, item 11); <= 0: not observed.
+    require_finite(std::string("sigma_") + kPoseColumns[cu], sigma[cu]);
     obs.has[cu] = sigma[cu] > 0;
     if (!obs.has[cu]) continue;
-    require_finite(std::string("sigma_") + kPoseColumns[cu], sigma[cu]);
   }
   for (std::size_t i = 0; i < obs.t.size(); ++i)
     for (int c = 0; c < 3; ++c) {

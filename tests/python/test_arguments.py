@@ -127,3 +127,14 @@ def test_fit_arguments(tmp_path):
         nanopush.fit(s, data, "surface.mu", sigma=0.1)
     with pytest.raises(nanopush.InputError, match=r"^sigma\[x\] = 'a': must be a real number"):
         nanopush.fit(s, data, "surface.mu", sigma={"x": "a"})
+
+
+def test_synthesize_refuses_a_nan_sigma():
+    s = fresh()
+    s.set({"solver.samples": 5, "solver.t_end": 1e-9})
+    with pytest.raises(nanopush.InputError, match=r"^sigma_x = nan: must be a finite number"):
+        nanopush.synthesize(s, (float("nan"), 0.0, 0.0), 3)
+    with pytest.raises(nanopush.InputError, match=r"^sigma_theta = inf: must be a finite number"):
+        nanopush.synthesize(s, (1e-9, 0.0, float("inf")), 3)
+    text = nanopush.synthesize(s, (np.float64(1e-9), 0.0, 0.0), 3)  # <= 0: not observed
+    assert text.splitlines()[0].split(",")[:2] == ["t", "x"] and "theta" not in text.splitlines()[0]
