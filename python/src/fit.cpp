@@ -35,8 +35,10 @@ std::vector<std::string> keys_of(const py::object& free) {
 }
 
 fit::FitResult fit_scene(const Scene& scene, const py::object& data, const py::object& free, const std::string& law,
-                         const py::object& sigma, const std::string& gradients, double rtol, int max_evaluations) {
+                         const py::object& sigma, const std::string& gradients, double rtol, int max_evaluations,
+                         double accuracy) {
   fit::FitOptions o;
+  o.accuracy = accuracy;
   o.free = keys_of(free);
   o.law = parse_optional_choice<Law>("--law", law);
   o.gradients = gradients;
@@ -66,6 +68,7 @@ parameters   dict key -> {'value', 'stderr' (NaN when the data do not determine 
              separately, or not converged), 'start', 'lower', 'upper', 'at_bound', 'unit'}
 correlation  NumPy (k, k) correlation matrix of the estimates (NaN for undetermined keys)
 chi2, chi2_dof, dof, converged, status, iterations, n_forward_solves, gradients, law
+accuracy     with fit(accuracy=E): dict requested, rtol_used, estimate, reached; else None
 identifiable, identifiability_message, determined (list of (name, value, stderr_relative))
 t, fitted    observation times [s] and the model's pose (x, y, theta) there, NumPy (n, 3)
 residuals    (observed - model) / sigma, NumPy (n, 3), NaN where not observed
@@ -105,6 +108,16 @@ json         the JSON summary of `nanopush fit --json`)doc")
       .def_readonly("n_forward_solves", &fit::FitResult::n_forward_solves)
       .def_readonly("gradients", &fit::FitResult::gradients)
       .def_readonly("law", &fit::FitResult::law)
+      .def_property_readonly("accuracy",
+                             [](const fit::FitResult& r) -> py::object {
+                               if (r.accuracy.requested <= 0) return py::none();
+                               py::dict d;
+                               d["requested"] = r.accuracy.requested;
+                               d["rtol_used"] = r.accuracy.rtol_used;
+                               d["estimate"] = r.accuracy.estimate;
+                               d["reached"] = r.accuracy.reached;
+                               return d;
+                             })
       .def_property_readonly("identifiable", [](const fit::FitResult& r) { return r.identifiability.identifiable; })
       .def_property_readonly("identifiability_message",
                              [](const fit::FitResult& r) { return r.identifiability.message; })
@@ -132,7 +145,7 @@ json         the JSON summary of `nanopush fit --json`)doc")
 
   m.def("fit", &fit_scene, py::arg("scene"), py::arg("data"), py::arg("free"), py::kw_only(), py::arg("law") = "",
         py::arg("sigma") = py::none(), py::arg("gradients") = "auto", py::arg("rtol") = 1e-10,
-        py::arg("max_evaluations") = 100,
+        py::arg("max_evaluations") = 100, py::arg("accuracy") = 0.0,
         R"doc(Fit scene keys to observed motion (`nanopush fit`; docs/fitting.md).
 
 scene        nanopush.Scene: the model and the starting values (not changed)
@@ -143,6 +156,10 @@ law          rough scenes: 'thesis' or 'coulomb' ('' = the scene's)
 sigma        dict column -> standard deviation for columns without a sigma column
 gradients    'auto' | 'sensitivities' | 'differences'; rtol of the forward solves;
 max_evaluations of Levenberg-Marquardt
+accuracy     > 0: the error asked for of the model's poses at the observation times, in
+             [1e-14, 0.1] (docs/accuracy.md's norm): the forward solves' rtol is chosen to reach
+             it (rtol is then ignored) and checked at the estimate (FitResult.accuracy: dict
+             requested, rtol_used, estimate, reached; None when not asked)
 
 Returns a FitResult; a fit that does not converge says so (converged False), it does not
 raise. Bad data or keys raise nanopush.InputError naming the row and column or the key.)doc");

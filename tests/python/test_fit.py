@@ -52,3 +52,21 @@ def test_fit_bad_input(tmp_path):
     with pytest.raises(nanopush.InputError, match="row 2"):
         nanopush.fit(s, bad, "push.force")
     assert math.isfinite(nanopush.fit(s, data, "push.force").chi2)
+
+
+def test_fit_accuracy(tmp_path):
+    """fit(accuracy=E): the forward solves' rtol chosen for E, checked at the estimate; the
+    same rtol and estimate as the C++ library's FitResult says in its JSON."""
+    truth = short_scene()
+    data = tmp_path / "data.csv"
+    nanopush.synthesize(truth, (2e-9, 0.0, 0.0), 3, path=data)
+    start = truth.copy()
+    start.set("push.force", 4e-6)
+    r = nanopush.fit(start, data, "push.force", accuracy=1e-9)
+    assert r.converged
+    a = r.accuracy
+    assert a["requested"] == 1e-9 and a["reached"] and a["estimate"] <= 1e-9 and a["rtol_used"] <= 1e-9
+    assert json.loads(r.json)["accuracy"]["rtol_used"] == a["rtol_used"]
+    assert nanopush.fit(start, data, "push.force").accuracy is None
+    with pytest.raises(nanopush.InputError, match=r"^accuracy = 1: must be in \[1e-14, 0.1\]"):
+        nanopush.fit(start, data, "push.force", accuracy=1.0)
