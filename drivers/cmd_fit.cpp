@@ -26,7 +26,7 @@ namespace fs = std::filesystem;
 struct FitCliOptions {
   std::string scene, data, law, json, out = ".", synthesize, gradients = "auto", format = "png";
   std::vector<std::string> sets, free, sigma;
-  double rtol = 1e-10, accuracy = 0;
+  double rtol = 1e-10, accuracy = -1;  // -1: the scene's solver.accuracy
   int max_evaluations = 100;
   std::uint64_t seed = 1;
   bool no_plot = false, quiet = false;

@@ -405,6 +405,7 @@ FitResult fit_trajectory(const Scene& scene, const Observations& obs, const FitO
   const std::string gradients = checked_gradients(scene, options, law);
   check_observations(obs, scene, options.free.size());
   FitAccuracy accuracy;
+  if (options.accuracy < 0) options.accuracy = scene.solver.accuracy;
   if (options.accuracy != 0) {
     accuracy = choose_forward_rtol(scene, obs.t, law, options.accuracy);
     options.rtol = accuracy.rtol_used;

@@ -145,7 +145,7 @@ json         the JSON summary of `nanopush fit --json`)doc")
 
   m.def("fit", &fit_scene, py::arg("scene"), py::arg("data"), py::arg("free"), py::kw_only(), py::arg("law") = "",
         py::arg("sigma") = py::none(), py::arg("gradients") = "auto", py::arg("rtol") = 1e-10,
-        py::arg("max_evaluations") = 100, py::arg("accuracy") = 0.0,
+        py::arg("max_evaluations") = 100, py::arg("accuracy") = -1.0,
         R"doc(Fit scene keys to observed motion (`nanopush fit`; docs/fitting.md).
 
 scene        nanopush.Scene: the model and the starting values (not changed)
@@ -159,7 +159,8 @@ max_evaluations of Levenberg-Marquardt
 accuracy     > 0: the error asked for of the model's poses at the observation times, in
              [1e-14, 0.1] (docs/accuracy.md's norm): the forward solves' rtol is chosen to reach
              it (rtol is then ignored) and checked at the estimate (FitResult.accuracy: dict
-             requested, rtol_used, estimate, reached; None when not asked)
+             requested, rtol_used, estimate, reached; None when not asked); 0 = none;
+             default: the scene's solver.accuracy
 
 Returns a FitResult; a fit that does not converge says so (converged False), it does not
 raise. Bad data or keys raise nanopush.InputError naming the row and column or the key.)doc");

@@ -86,6 +86,17 @@ int main(int argc, char** argv) {
   check(std::string(json.data()).find("\"parameters\": {\n    \"push.force\": {\"value\": ") != std::string::npos &&
             std::string(json.data()).find("\"converged\": true") != std::string::npos,
         "fit: JSON shape");
+  // The scene's solver.accuracy is the fit's: its rtol chosen, the record in the JSON.
+  check(nanopush_scene_set_real(err, scene, "solver.accuracy", 1e-9) == NANOPUSH_OK, "set solver.accuracy");
+  std::vector<char> json_acc(1 << 16);
+  check(nanopush_fit_trajectory(err, scene, data.c_str(), "push.force", nullptr, nullptr, 1, nullptr, nullptr, nullptr,
+                                nullptr, json_acc.data(), static_cast<int>(json_acc.size()), &len2) == NANOPUSH_OK &&
+            len2 < static_cast<int>(json_acc.size()),
+        "fit with accuracy");
+  check(std::string(json_acc.data()).find("\"accuracy\": {\"requested\": 1e-09") != std::string::npos &&
+            std::string(json_acc.data()).find("\"reached\": true}") != std::string::npos,
+        "fit: accuracy record");
+  check(nanopush_scene_set_real(err, scene, "solver.accuracy", 0.0) == NANOPUSH_OK, "unset solver.accuracy");
 
   // Bad input: the status, the message, nothing written.
   double v = 42, s = 42;

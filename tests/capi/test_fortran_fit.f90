@@ -44,6 +44,11 @@ program test_fortran_fit
   end if
   call check(conv .and. chi < 1e-3_dp .and. summary(5) >= 2 .and. summary(6) == 1, "fit: converged, chi2/dof ~ 0")
   call check(index(json, '"parameters": {') > 0 .and. index(json, '"converged": true') > 0, "fit: JSON")
+  ! The scene's solver.accuracy is the fit's: its rtol chosen, the record in the JSON.
+  call nanopush_scene_set(scene, "solver.accuracy", 1e-9_dp)
+  call nanopush_fit(scene, data, "push.force", values, stderrs, json=json, stat=stat, errmsg=msg)
+  call check(stat == NANOPUSH_OK .and. index(json, '"accuracy": {"requested": 1e-09') > 0, "fit: accuracy " // msg)
+  call nanopush_scene_set(scene, "solver.accuracy", 0.0_dp)
 
   call nanopush_fit(scene, data, "push.nonsense", values, stderrs, stat=stat, errmsg=msg)
   call check(stat == NANOPUSH_BAD_INPUT .and. index(msg, "push.nonsense") > 0 .and. size(values) == 0, &

@@ -60,8 +60,9 @@ struct FitOptions {
   /// > 0: the error asked for of the model's poses at the observation times, in
   /// [kAccuracyMin, kAccuracyMax] (docs/accuracy.md's norm): the forward solves' rtol is chosen
   /// to reach it at the start values (choose_forward_rtol) and rtol is ignored; checked again
-  /// at the estimate (FitResult::accuracy).
-  double accuracy = 0;
+  /// at the estimate (FitResult::accuracy). 0: run at rtol; < 0: the scene's solver.accuracy
+  /// (so C and Fortran, whose fit has no such argument, set it on the scene).
+  double accuracy = -1;
   std::string gradients = "auto";
   int max_evaluations = 100;     ///< Levenberg-Marquardt function evaluations
   double xtol = 1e-8, ftol = 1e-10;  ///< Levenberg-Marquardt: relative step and reduction of chi2
