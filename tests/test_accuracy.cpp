@@ -26,6 +26,14 @@ Scene thesis_preset(const std::string& name) {
 }
 
 /// The reference of a rough scene: the modern Bulirsch-Stoer at rtol 1e-13, no estimate.
+/// fig3_18 at a push just outside the limit surface, one of the points of its mu x yn grid
+/// where an explicit method spent its 20,000 steps in the first picoseconds.
+Scene stiff_start_scene() {
+  Scene sc = thesis_preset("fig3_18");
+  sc.set({{"surface.mu", 0.2213333333333333}, {"push.yn", 3.9e-8}});
+  return sc;
+}
+
 Trajectory reference_of(const Scene& sc, Law law) {
   RunSettings r;
   r.method = Method::modern;
@@ -189,9 +197,7 @@ TEST_CASE("Thesis law: with its kinks located the achieved error falls with rtol
 
 TEST_CASE("Coulomb law, method auto: a stiff start just outside the limit surface is handed over to CVODE",
           "[accuracy][rough][coulomb][regression]") {
-  // Points of fig3_18's mu x yn grid where modern spent its 20,000 steps in the first picoseconds.
-  Scene sc = thesis_preset("fig3_18");
-  sc.set({{"surface.mu", 0.2213333333333333}, {"push.yn", 3.9e-8}});
+  Scene sc = stiff_start_scene();
   RunSettings s;
   s.law = Law::coulomb;
   const Trajectory tr = run_engine(sc, s);
@@ -217,8 +223,7 @@ TEST_CASE("Thesis law, method auto: the same stiff start is handed over and clas
           "[accuracy][rough][regression]") {
   // While the body slides the thesis law's wrench is the coulomb law's: CVODE's coulomb-law run
   // is the thesis trajectory up to its first rest, where the thesis law has no static friction.
-  Scene sc = thesis_preset("fig3_18");
-  sc.set({{"surface.mu", 0.2213333333333333}, {"push.yn", 3.9e-8}});
+  Scene sc = stiff_start_scene();
   RunSettings s;
   s.law = Law::thesis;
   s.allow_partial = true;

@@ -6,6 +6,8 @@
 // FIFOs live in a scratch directory; /dev/zero is only looked at (stat), never opened.
 #include <catch2/catch.hpp>
 
+#include "support/support.hpp"
+
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -22,12 +24,7 @@ namespace fs = std::filesystem;
 
 namespace {
 namespace NANOPUSH_UNITY_ID {
-fs::path scratch(const std::string& what) {
-  const fs::path dir = fs::temp_directory_path() / ("nanopush_inputs_" + what + "_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path scratch(const std::string& what) { return test::scratch_dir("inputs_" + what); }
 }  // namespace NANOPUSH_UNITY_ID
 }  // namespace
 using namespace NANOPUSH_UNITY_ID;

@@ -7,6 +7,8 @@
 // directory when running as root).
 #include <catch2/catch.hpp>
 
+#include "support/support.hpp"
+
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -37,12 +39,7 @@ std::size_t temporaries(const fs::path& dir) {
   for (const auto& e : fs::recursive_directory_iterator(dir)) n += e.path().filename().string().find(".tmp.") != std::string::npos;
   return n;
 }
-fs::path scratch(const std::string& what) {
-  const fs::path dir = fs::temp_directory_path() / ("nanopush_outputs_" + what + "_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path scratch(const std::string& what) { return test::scratch_dir("outputs_" + what); }
 }  // namespace NANOPUSH_UNITY_ID
 }  // namespace
 using namespace NANOPUSH_UNITY_ID;
@@ -133,16 +130,10 @@ TEST_CASE("outputs: a character device is written through, never replaced", "[ou
   const fs::path dir = scratch("devices");
   const fs::path null = dir / "null.csv", full = dir / "full.csv";
   if (::mknod(null.c_str(), S_IFCHR | 0600, makedev(1, 3)) != 0 || ::mknod(full.c_str(), S_IFCHR | 0600, makedev(1, 7)) != 0) {
-    // Not root: the machine's /dev/null, opened for writing only (it takes anything; nothing
-    // there is renamed, created or removed, which the checks below confirm).
-    const OutputTarget t = resolve_output("/dev/null");
-    CHECK(t.write_through);
-    write_file_atomic("/dev/null", "x\n");
-    CHECK(fs::is_character_file("/dev/null"));
-    write_csv_atomic("/dev/null", {{"a", "1", "a count", "integer"}}, {{"1"}});
-    CHECK_FALSE(fs::exists("/dev/null.schema.json"));
-    CHECK(fs::is_character_file("/dev/null"));
-    WARN("not root: the device checks ran on /dev/null only (no /dev/full node in the scratch directory)");
+    // Not root: no device node can be made in the scratch directory, and nothing is ever
+    // written to the machine's /dev. Only the classification of /dev/null is checked (a stat).
+    CHECK(resolve_output("/dev/null").write_through);
+    WARN("not root: no scratch device nodes; the writes through a device were not exercised");
     fs::remove_all(dir);
     return;
   }

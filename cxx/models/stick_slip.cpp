@@ -332,7 +332,15 @@ StickSlipResult integrate_coulomb_t(const RoughBarModel& model, const BsOptions<
       ++iout;
     }
     if (iout >= tout.size()) break;
-    const std::vector<S> rest(tout.begin() + static_cast<std::ptrdiff_t>(iout), tout.end());
+    // The output times still to come, in S (a view of tout in double, a copy otherwise).
+    std::vector<S> rest_s;
+    std::span<const S> rest;
+    if constexpr (std::is_same_v<S, double>) {
+      rest = std::span<const double>(tout.data() + iout, tout.size() - iout);
+    } else {
+      rest_s.assign(tout.begin() + static_cast<std::ptrdiff_t>(iout), tout.end());
+      rest = rest_s;
+    }
     std::size_t emitted = 0;
     // After each accepted step: (1) g = V·mode < 0 means the velocity passed through zero
     // inside the step: stop before it and locate the instant; (2) a velocity below the
@@ -355,7 +363,7 @@ StickSlipResult integrate_coulomb_t(const RoughBarModel& model, const BsOptions<
       return static_cast<int>(kHookContinue);
     };
     BsResult r = bs.integrate(
-        rhs, S(t), y.data(), std::span<const S>(rest),
+        rhs, S(t), y.data(), rest,
         [&](std::size_t, S tt, const S* yy) {
           observer(static_cast<double>(tt), yy, to_double(coulomb_friction_t(model, yy, mode)));
           ++emitted;

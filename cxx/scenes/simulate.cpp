@@ -373,11 +373,15 @@ Trajectory run_cxx_rough(const Scene& sc, const ResolvedSettings& s) {
         auto opt = options_for<S>(sc, s, atol);
         if (h0 > 0) opt.h0 = S(h0);
         BulirschStoer<S, kRoughStateSize> bs(opt);
-        const std::vector<S> to_s(to.begin(), to.end());
-        auto h = [&hook](S ta, const S* ya, S tb, const S* yb) {
-          return hook(static_cast<double>(ta), ya, static_cast<double>(tb), yb);
-        };
-        return static_cast<IntegrationResult>(bs.integrate(rhs, S(t0), yy, std::span<const S>(to_s), o, h));
+        if constexpr (!extended) {
+          return static_cast<IntegrationResult>(bs.integrate(rhs, t0, yy, to, o, std::cref(hook)));
+        } else {  // output times and hook times in S
+          const std::vector<S> to_s(to.begin(), to.end());
+          auto h = [&hook](S ta, const S* ya, S tb, const S* yb) {
+            return hook(static_cast<double>(ta), ya, static_cast<double>(tb), yb);
+          };
+          return static_cast<IntegrationResult>(bs.integrate(rhs, S(t0), yy, std::span<const S>(to_s), o, h));
+        }
       };
       const detail::KinkResult kr = detail::integrate_across_kinks<S>(
           run, [&m](const S* v, S* g) { thesis_kinks(m, v, g); }, 2, y.data(), kRoughStateSize,

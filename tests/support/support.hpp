@@ -4,8 +4,11 @@
 #pragma once
 #include <catch2/catch.hpp>
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <limits>
 #include <string>
 
@@ -99,6 +102,18 @@ inline Scene preset(const std::string& rel_path) {
 
 /// The thesis preset of Fig 3.`fig` (drivers/scenes/thesis/fig3_<fig>.toml).
 inline Scene thesis_preset(int fig) { return preset("thesis/fig3_" + std::to_string(fig) + ".toml"); }
+
+// ---- Scratch directories ----------------------------------------------------------------
+
+/// An empty scratch directory of this process under the system's temporary directory
+/// (nanopush_<what>_<pid>): device nodes, FIFOs and links of a test are made there only.
+inline std::filesystem::path scratch_dir(const std::string& what) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("nanopush_" + what + "_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
 
 // ---- Errors -----------------------------------------------------------------------------
 
