@@ -178,8 +178,11 @@ int nanopush_compare(nanopush_error error, nanopush_scene scene, const char* met
     const nanopush::EngineComparison r = nanopush::compare_engines(scene->scene, cs);
     if (const nanopush::Trajectory* t = r.failed())
       throw nanopush::SolverError(scene->scene.name + " (" + t->engine_label +
-                                  (r.failed_run >= 2 ? ", reference run" : "") + "): " + t->outcome_text(),
+                                  (r.failed_run >= 2 ? ", reference run" : "") + "): " + t->outcome_text() +
+                                      "; cannot judge: " + r.cannot_judge,
                                   to_string(t->outcome));
+    if (!r.cannot_judge.empty())
+      throw nanopush::SolverError(scene->scene.name + ": cannot judge: " + r.cannot_judge);
     *agree = r.agree ? 1 : 0;
     const bool same = r.kind == nanopush::CompareKind::same_steps;
     if (kind) *kind = same ? 0 : 1;

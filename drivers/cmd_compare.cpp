@@ -72,8 +72,8 @@ int compare_cmd(const CompareOptions& o) {
               << (reference ? ", the reference run at rtol " + fmt(r.rtol_tight) : std::string()) << "): "
               << t->outcome_message << "\n";
     if (t->outcome == Outcome::solver_failure) print_rest_diagnosis(sc, r.law, *t, std::cerr);
-    std::cerr << (reference ? "  no reference to judge the engines against: nothing to compare\n"
-                            : "  nothing to compare\n");
+    std::cerr << "nanopush: cannot judge: " << r.cannot_judge
+              << (reference ? " (no reference to judge the engines against)\n" : "\n");
     return 3;
   }
   std::cout << "compare " << sc.name << ": " << r.cxx.engine_label << " vs " << r.f77.engine_label << " (rtol "
@@ -96,6 +96,10 @@ int compare_cmd(const CompareOptions& o) {
     print_same_steps(r);
   } else {
     print_convergence(r);
+  }
+  if (!r.cannot_judge.empty()) {
+    std::cerr << "nanopush: cannot judge: " << sc.name << ": " << r.cannot_judge << "\n";
+    return 3;
   }
   return r.agree ? 0 : 1;
 }

@@ -31,10 +31,31 @@ double group_scale(const std::vector<std::size_t>& g, const Trajectory& a, const
   return s;
 }
 
+/// max |a - b| over the samples of column c; NaN if any difference is NaN (never swallowed).
 double max_diff(const Trajectory& a, const Trajectory& b, std::size_t c) {
   double m = 0;
-  for (std::size_t i = 0; i < a.rows.size(); ++i) m = std::max(m, std::fabs(a.rows[i][c] - b.rows[i][c]));
+  for (std::size_t i = 0; i < a.rows.size(); ++i) {
+    const double d = std::fabs(a.rows[i][c] - b.rows[i][c]);
+    if (std::isnan(d)) return d;
+    m = std::max(m, d);
+  }
   return m;
+}
+
+/// A verdict needs finite figures: the first column whose deviation, scale or error is not
+/// finite makes the comparison unjudgeable (cannot_judge says which), never "agree".
+void check_finite(EngineComparison& r) {
+  for (const ColumnVerdict& v : r.columns) {
+    for (double x : {v.scale, v.max_abs_diff, v.relative, v.error_cxx, v.error_f77, v.diff, v.diff_tight}) {
+      if (!std::isfinite(x)) {
+        r.agree = false;
+        r.cannot_judge = "the deviation of column " + v.name + " is not finite (max |cxx - f77| = " +
+                         fmt(v.max_abs_diff) + ", scale " + fmt(v.scale) +
+                         "): a run left the finite numbers";
+        return;
+      }
+    }
+  }
 }
 
 void judge_same_steps(EngineComparison& r) {
@@ -83,8 +104,11 @@ void judge_convergence(EngineComparison& r) {
 bool all_complete(EngineComparison& r, std::initializer_list<int> runs) {
   for (int i : runs) {
     r.failed_run = i;
-    if (!r.failed()->complete) {
+    if (const Trajectory* t = r.failed(); !t->complete) {
       r.complete = false;
+      r.cannot_judge = "the " + t->engine_label + " run" +
+                       (i >= 2 ? " (the reference at rtol " + fmt(kCompareTightRtol) + ")" : std::string()) +
+                       " did not complete: " + t->outcome_text();
       return false;
     }
   }
@@ -136,6 +160,7 @@ EngineComparison compare_engines(const Scene& scene, const CompareSettings& cs) 
       r.cxx = chosen;
       r.complete = false;
       r.failed_run = 0;
+      r.cannot_judge = "the accuracy asked for was not reached: " + chosen.outcome_text();
       return r;
     }
     a.rtol = b.rtol = chosen.accuracy.rtol_used;
@@ -158,6 +183,7 @@ EngineComparison compare_engines(const Scene& scene, const CompareSettings& cs) 
     r.tolerance_from_tight = cs.method != Method::faithful && cs.tolerance <= 0;
     r.tolerance = cs.tolerance > 0 ? cs.tolerance : 100 * r.rtol;
     judge_same_steps(r);
+    check_finite(r);
     return r;
   }
   r.kind = CompareKind::convergence;
@@ -169,6 +195,7 @@ EngineComparison compare_engines(const Scene& scene, const CompareSettings& cs) 
   r.f77_tight = run_engine(scene, b2);
   if (!all_complete(r, {2, 3})) return r;
   judge_convergence(r);
+  check_finite(r);
   return r;
 }
 

@@ -44,7 +44,7 @@ Trajectory run_f77(const Scene& sc, const ResolvedSettings& s) {
                                sc.friction_limit(), 0.0, 0.0, 0.0};
     st = np_f77_bsint_rough_bar_law(n, 0.0, y.data(), static_cast<int>(tout.size()), tout.data(), yout.data(),
                                     s.rtol, tr.atol.data(), sc.solver.h0, sc.solver.hmax, 8, 1, maxstp, params,
-                                    printed ? 1 : 0, nstat);
+                                    printed ? 1 + printed_reading_index(sc.surface.printed) : 0, nstat);
   } else {
     const double params[6] = {sc.mass, sc.inertia, sc.push.force, sc.push.beta, sc.push.pbx, sc.push.pby};
     st = np_f77_bsint_smooth_bar(n, 0.0, y.data(), static_cast<int>(tout.size()), tout.data(), yout.data(), s.rtol,

@@ -103,18 +103,50 @@ FrictionWrench thesis_corrected_friction(double a, double b, double R, double al
 
 namespace {
 
-/// h^2 ln(u/v), one corner term of the printed forms, taken as 0 where the printed logarithm is
-/// undefined: that happens only on an edge line of the contact (or within rounding of it),
-/// where h -> 0 and the term's limit is 0 (the thesis' "lim h ln(1/h) = 0", errata F4).
-double printed_term(double h, double u, double v) noexcept {
+/// h^k ln(u/v) (k = 2, or 3 with cube), one corner term of the printed forms, taken as 0 where
+/// the printed logarithm is undefined: that happens only on an edge line of the contact (or
+/// within rounding of it), where h -> 0 and the term's limit is 0 (the thesis' "lim h ln(1/h) =
+/// 0", errata F4).
+double printed_term(double h, double u, double v, bool cube = false) noexcept {
   if (h == 0.0 || !(u > 0.0) || !(v > 0.0)) return 0.0;
-  return h * h * std::log(u / v);
+  return cube ? h * h * h * std::log(u / v) : h * h * std::log(u / v);
 }
 
 }  // namespace
 
+PrintedReading printed_reading(int index) {
+  PrintedReading r;
+  r.fy_sign = (index & 1) == 0;
+  r.omega_sign = (index & 2) == 0;
+  r.c4_squares = (index & 4) == 0;
+  r.eq3_50 = (index & 8) != 0;
+  return r;
+}
+
+int printed_reading_index(const PrintedReading& r) {
+  return (r.fy_sign ? 0 : 1) + (r.omega_sign ? 0 : 2) + (r.c4_squares ? 0 : 4) + (r.eq3_50 ? 8 : 0);
+}
+
+std::optional<PrintedReading> printed_reading_named(std::string_view name) {
+  for (const auto& [n, i] : kPrintedReadingNames)
+    if (n == name) return printed_reading(i);
+  return std::nullopt;
+}
+
+std::string_view printed_reading_name(const PrintedReading& r) {
+  for (const auto& [n, i] : kPrintedReadingNames)
+    if (printed_reading(i) == r) return n;
+  return "";
+}
+
+std::string printed_reading_text(const PrintedReading& r) {
+  return std::string("F1 ") + (r.fy_sign ? "printed" : "corrected") + ", F3 " +
+         (r.omega_sign ? "printed" : "corrected") + ", C4 " + (r.c4_squares ? "squares (nm)" : "cubes") + ", 3.50 " +
+         (r.eq3_50 ? "printed" : "corrected");
+}
+
 FrictionWrench thesis_printed_friction_from_velocity(double a, double b, double muN, double vx, double vy,
-                                                     double omega) noexcept {
+                                                     double omega, const PrintedReading& reading) noexcept {
   const double v = friction_detail::hypot_portable(vx, vy);
   if (omega == 0.0) {  // R = infinity: pure translation, the limit the thesis states (§3.4.3.3)
     if (!(v > 0.0)) return {0.0, 0.0, 0.0};
@@ -141,13 +173,16 @@ FrictionWrench thesis_printed_friction_from_velocity(double a, double b, double 
   const double b46 = h1 * (s14 - s12) + h3 * (s23 - s34) + printed_term(h2, s23 + h3, s12 + h1) -
                      printed_term(h4, s34 + h3, s14 + h1);
   const double c3 = -h1 * h2 * s12 + h2 * h3 * s23 - h3 * h4 * s34 + h1 * h4 * s14;
-  const double c4 = printed_term(h1, s12 - h2, s14 - h4) + printed_term(h2, s23 + h3, s12 + h1) +
-                    printed_term(h3, s34 - h4, s23 - h2) + printed_term(h4, s14 + h1, s34 + h3);
+  const bool cube = !reading.c4_squares;  // F2
+  const double c4 = printed_term(h1, s12 - h2, s14 - h4, cube) + printed_term(h2, s23 + h3, s12 + h1, cube) +
+                    printed_term(h3, s34 - h4, s23 - h2, cube) + printed_term(h4, s14 + h1, s34 + h3, cube);
   const double ab = a * b;
   const double fxb = muN * sg * b45 / (8.0 * ab);  // (3.45)
-  const double fyb = muN * sg * b46 / (8.0 * ab);  // (3.46), printed sign (F1)
-  // (3.47) with (3.48): no sign(theta-dot) (F3), C4 with squares (F2); C1 = [3.46], C2 = [3.45].
-  const double mf = U * muN * (xc * b46 / 2.0 + yc * b45 / 2.0 - c3 / 3.0 - c4 / 6.0) / (4.0 * ab);
+  double fyb = muN * sg * b46 / (8.0 * ab);        // (3.46), printed sign (F1)
+  if (!reading.fy_sign) fyb = -fyb;                // the sign of (3.43)
+  // (3.47) with (3.48): C1 = [3.46], C2 = [3.45]; as printed without sign(theta-dot) (F3).
+  double mf = U * muN * (xc * b46 / 2.0 + yc * b45 / 2.0 - c3 / 3.0 - c4 / 6.0) / (4.0 * ab);
+  if (!reading.omega_sign) mf = sg * mf;
   return {fxb, fyb, mf};
 }
 

@@ -323,6 +323,30 @@ void read_initial(const toml::table& root, Scene& sc) {
   }
 }
 
+/// [surface.printed]: the printed law's reading, then each switch given over it.
+PrintedReading read_printed_reading(const toml::table& t) {
+  check_keys(t, "surface.printed", scene_table_keys("surface.printed"));
+  PrintedReading r;
+  if (auto name = opt_string(t, "surface.printed", "reading")) {
+    const auto named = printed_reading_named(*name);
+    if (!named) {
+      std::string names;
+      for (const auto& [n, i] : kPrintedReadingNames) names += (names.empty() ? "" : ", ") + std::string(n);
+      throw InputError("surface.printed.reading", "\"" + *name + "\"", "must be one of: " + names);
+    }
+    r = *named;
+  }
+  r.fy_sign = opt_bool(t, "surface.printed", "fy_sign").value_or(r.fy_sign);
+  r.omega_sign = opt_bool(t, "surface.printed", "omega_sign").value_or(r.omega_sign);
+  r.eq3_50 = opt_bool(t, "surface.printed", "eq3_50").value_or(r.eq3_50);
+  if (auto c4 = opt_string(t, "surface.printed", "c4")) {
+    if (*c4 != "squares_nm" && *c4 != "cubes")
+      throw InputError("surface.printed.c4", "\"" + *c4 + "\"", "must be one of: squares_nm, cubes");
+    r.c4_squares = *c4 == "squares_nm";
+  }
+  return r;
+}
+
 /// [surface]: smooth, or rough with its friction coefficient, load terms and law.
 void read_surface(const toml::table& root, Scene& sc) {
   if (root.get("surface")) {
@@ -331,7 +355,7 @@ void read_surface(const toml::table& root, Scene& sc) {
     sc.model = opt_string(t, "surface", "kind").value_or("smooth");
     sc.surface.kind = scene_choice<SurfaceKind>("surface.kind", sc.model);
     if (sc.surface.kind == SurfaceKind::smooth) {
-      for (const char* k : {"mu", "f_vdw", "g", "normal_load", "law"})
+      for (const char* k : {"mu", "f_vdw", "g", "normal_load", "law", "printed"})
         if (t.get(k)) throw InputError(std::string("surface.") + k, "(present)", "only meaningful with surface.kind = \"rough\"");
     } else {
       sc.surface.mu = number(t, "surface", "mu");
@@ -345,6 +369,10 @@ void read_surface(const toml::table& root, Scene& sc) {
         sc.surface.normal_load = *nl;
       }
       sc.surface.law = scene_choice<Law>("surface.law", opt_string(t, "surface", "law").value_or("thesis"));
+      if (const toml::node* p = t.get("printed")) {
+        if (!p->is_table()) throw InputError("surface.printed", node_text(*p), "must be a table of the printed law's switches");
+        sc.surface.printed = read_printed_reading(*p->as_table());
+      }
     }
   }
 }

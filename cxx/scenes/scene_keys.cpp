@@ -67,6 +67,16 @@ const std::vector<SceneKey>& scene_keys() {
       {"surface.law", K::string, "", "thesis", laws, "rough",
        "friction law: the eq 3.40 sign law, the same with eqs 3.45-3.48 as printed, or event-located "
        "stick-slip"},
+      {"surface.printed.reading", K::string, "", "literal", "literal, consistent, corrected", "rough",
+       "the printed law's reading of the slips (docs/rough.md); the four keys below override it"},
+      {"surface.printed.fy_sign", K::boolean, "", "the reading's (true)", "true, false", "rough",
+       "printed law: eq 3.46's sign of fy' as printed (errata F1); false: the sign of eq 3.43"},
+      {"surface.printed.omega_sign", K::boolean, "", "the reading's (true)", "true, false", "rough",
+       "printed law: eq 3.47 without sign(theta-dot) as printed (F3); false: mf times sign(theta-dot)"},
+      {"surface.printed.c4", K::string, "", "the reading's (squares_nm)", "squares_nm, cubes", "rough",
+       "printed law: eq 3.48's C4 with squares, lengths in nm, as printed (F2); cubes: dimensionally consistent"},
+      {"surface.printed.eq3_50", K::boolean, "", "the reading's (false)", "true, false", "rough",
+       "printed law: eq 3.50's fy = fx' sin - fy' cos as printed; false: erratum 3's +"},
 
       {"solver.t_end", K::number, "s", "required", "> 0", "all", "end time"},
       {"solver.samples", K::integer, "1", "401", "[2, 10000000]", "all",

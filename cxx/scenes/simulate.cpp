@@ -102,6 +102,7 @@ RoughBarModel rough_model(const Scene& sc) {
   m.geometry = sc.geometry;
   m.muN = sc.friction_limit();
   m.push = sc.push;
+  m.reading = sc.surface.printed;
   return m;
 }
 

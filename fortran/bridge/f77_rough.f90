@@ -34,21 +34,36 @@ contains
                                                         kmax, iextr, maxstp, params, 0_c_int, nstat)
   end function np_f77_bsint_rough_bar
 
-  !> np_f77_rough_bar_rhs under a friction law: 0 thesis, 1 printed (RGBAR's IPAR(1)).
+  !> RGBAR's IPAR from a law code: 0 thesis; 1 + i the printed law under reading i (0..15: bit 0
+  !> corrects F1, bit 1 F3, bit 2 takes cubes in C4, bit 3 prints eq 3.50; nanopush::printed_reading).
+  pure function law_ipar(law) result(ipar)
+    integer(c_int), intent(in) :: law
+    integer :: ipar(5), i
+    ipar = 0
+    if (law < 1) return
+    i = int(law) - 1
+    ipar(1) = 1
+    ipar(2) = 1 - ibits(i, 0, 1)
+    ipar(3) = 1 - ibits(i, 1, 1)
+    ipar(4) = 1 - ibits(i, 2, 1)
+    ipar(5) = ibits(i, 3, 1)
+  end function law_ipar
+
+  !> np_f77_rough_bar_rhs under a friction law code (law_ipar).
   integer(c_int) function np_f77_rough_bar_rhs_law(t, y, dydt, params, law) bind(C, name="np_f77_rough_bar_rhs_law")
     real(c_double), value, intent(in) :: t
     real(c_double), intent(in) :: y(8)
     real(c_double), intent(out) :: dydt(8)
     real(c_double), intent(in) :: params(12)
     integer(c_int), value, intent(in) :: law
-    integer :: ipar(1), ierr
-    ipar(1) = int(law)
+    integer :: ipar(5), ierr
+    ipar = law_ipar(law)
     ierr = 0
     call rgbar(8, t, y, dydt, params, ipar, ierr)
     np_f77_rough_bar_rhs_law = int(ierr, c_int)
   end function np_f77_rough_bar_rhs_law
 
-  !> np_f77_bsint_rough_bar under a friction law: 0 thesis, 1 printed (RGBAR's IPAR(1)).
+  !> np_f77_bsint_rough_bar under a friction law code (law_ipar); returns 1 for a bad n or code.
   integer(c_int) function np_f77_bsint_rough_bar_law(n, t0, y, nout, tout, yout, rtol, atol, h0, &
                                                      hmax, kmax, iextr, maxstp, params, law, nstat) &
       bind(C, name="np_f77_bsint_rough_bar_law")
@@ -59,13 +74,13 @@ contains
     real(c_double), intent(inout) :: yout(*)
     real(c_double), intent(in) :: params(12)
     integer(c_int), intent(out) :: nstat(3)
-    integer :: ipar(1), ist(3), ierr
+    integer :: ipar(5), ist(3), ierr
     nstat = 0_c_int
-    if (n /= 8 .or. law < 0 .or. law > 1) then
+    if (n /= 8 .or. law < 0 .or. law > 16) then
       np_f77_bsint_rough_bar_law = 1_c_int
       return
     end if
-    ipar(1) = int(law)
+    ipar = law_ipar(law)
     call bsint(rgbar, int(n), t0, y, int(nout), tout, yout, rtol, atol, h0, hmax, int(kmax), &
                int(iextr), int(maxstp), params, ipar, ist, ierr)
     nstat = int(ist, c_int)

@@ -21,9 +21,10 @@ int np_f77_bsint_rough_bar(int n, double t0, double* y, int nout, const double* 
                            const double* atol, double h0, double hmax, int kmax, int iextr, int maxstp,
                            const double* params, int* nstat);
 
-/* The same under a friction law: law = 0 the thesis law, 1 the printed law (eqs 3.45-3.48 exactly
- * as printed, FRPRNT in fortran/rgbar.f; docs/rough.md). np_f77_bsint_rough_bar_law returns 1
- * for a law outside 0..1. */
+/* The same under a friction law code: 0 the thesis law; 1 + i the printed law (eqs 3.45-3.50,
+ * FRPRNT in fortran/rgbar.f; docs/rough.md) under reading i = 0..15 (nanopush::printed_reading:
+ * bit 0 corrects F1, bit 1 F3, bit 2 takes cubes in C4, bit 3 prints eq 3.50; 1 is the literal
+ * reading). np_f77_bsint_rough_bar_law returns 1 for a code outside 0..16. */
 int np_f77_rough_bar_rhs_law(double t, const double* y, double* dydt, const double* params, int law);
 int np_f77_bsint_rough_bar_law(int n, double t0, double* y, int nout, const double* tout, double* yout,
                                double rtol, const double* atol, double h0, double hmax, int kmax, int iextr,

@@ -128,9 +128,10 @@ py::dict compare(const Scene& scene, const std::string& method, const std::strin
   }
   if (const Trajectory* t = r.failed()) {
     throw RunFailure(scene.name + " (" + t->engine_label + (r.failed_run >= 2 ? ", reference run" : "") +
-                         "): " + t->outcome_text(),
+                         "): " + t->outcome_text() + "; cannot judge: " + r.cannot_judge,
                      *t);
   }
+  if (!r.cannot_judge.empty()) throw RunFailure(scene.name + ": cannot judge: " + r.cannot_judge, r.cxx);
   auto result = [&](Trajectory& tr) {
     RunResult rr;
     rr.tr = std::move(tr);

@@ -67,6 +67,10 @@ struct EngineComparison {
     const Trajectory* runs[] = {&cxx, &f77, &cxx_tight, &f77_tight};
     return failed_run >= 0 ? runs[failed_run] : nullptr;
   }
+  /// Non-empty: no verdict could be made, and why (a run or a reference run did not complete,
+  /// or a deviation is not finite); agree is then false. Every front end reports it as
+  /// "cannot judge" (the CLI exits 3), never as agreement or disagreement.
+  std::string cannot_judge;
   bool same_length = true;         ///< both runs returned the same number of samples
   std::vector<ColumnVerdict> columns;
   bool agree = false;

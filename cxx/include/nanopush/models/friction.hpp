@@ -42,6 +42,7 @@
 #include <cassert>
 #include <cmath>
 
+#include "nanopush/models/printed_reading.hpp"
 #include "nanopush/numerics/scalar.hpp"
 #if defined(__GNUC__) && defined(__SSE2__)
 #include <emmintrin.h>
@@ -586,19 +587,20 @@ FrictionWrench thesis_printed_friction(double a, double b, double R, double alph
 /// defined and R is moderate, NaN on iCOR edge lines, cancelling as R grows. For the errata tests.
 FrictionWrench thesis_corrected_friction(double a, double b, double R, double alpha, int sense);
 
-/// The `printed` friction law (docs/rough.md): the wrench of eqs (3.45)-(3.48) exactly as printed
-/// (fy' with the printed sign, mf without sign(theta-dot) and with squares in C4: errata F1-F3),
-/// at the iCOR implied by the body-axis velocity (vx, vy, omega) as in
-/// rectangle_friction_from_velocity, SI in and out. C4 with squares is not dimensionally
+/// The `printed` friction law (docs/rough.md): the wrench of eqs (3.45)-(3.48) under a reading of
+/// their slips (by default exactly as printed: fy' with the printed sign, mf without
+/// sign(theta-dot) and with squares in C4: errata F1-F3), at the iCOR implied by the body-axis
+/// velocity (vx, vy, omega) as in rectangle_friction_from_velocity, SI in and out, body axes
+/// (eq 3.50 is the rotation to world axes: RoughBarModel). C4 with squares is not dimensionally
 /// consistent: the forms are evaluated with lengths in kPrintedLengthUnit (nanometres, the unit of
 /// every length in the thesis' captions; in metres the moment is ~1e6 times too large and no run
-/// leaves t = 0, docs/rough.md). On an edge line of the contact a
-/// corner term h^2 ln(u/v) whose logarithm is undefined is taken as its limit 0 (errata F4); at
-/// omega = 0 (R = infinity) pure translation f = -muN v/|v|, mf = 0; zero at rest. The printed
-/// forms cancel as R grows (errata F5), as the thesis' program would have. Body axes.
-/// Bit-identical to FRPRNT (fortran/rgbar.f).
+/// leaves t = 0, docs/rough.md); cubes are consistent and evaluated in the same unit. On an edge
+/// line of the contact a corner term h^k ln(u/v) whose logarithm is undefined is taken as its
+/// limit 0 (errata F4); at omega = 0 (R = infinity) pure translation f = -muN v/|v|, mf = 0; zero
+/// at rest. The printed forms cancel as R grows (errata F5), as the thesis' program would have.
+/// Bit-identical to FRPRNT (fortran/rgbar.f) under every reading.
 FrictionWrench thesis_printed_friction_from_velocity(double a, double b, double muN, double vx, double vy,
-                                                     double omega) noexcept;
+                                                     double omega, const PrintedReading& reading = {}) noexcept;
 /// The unit of length in which the printed forms are evaluated [m] (FRPRNT: the same constant).
 inline constexpr double kPrintedLengthUnit = 1e-9;
 

@@ -37,6 +37,9 @@ struct RoughBarModel {
   /// (thesis_printed_friction_from_velocity) instead of the corrected wrench; false for the
   /// `thesis` and `coulomb` laws.
   bool printed = false;
+  /// The printed law's reading of the slips (friction.hpp); eq 3.50 applies here, in the
+  /// rotation to world axes.
+  PrintedReading reading;
   /// Evaluate the wrench with the F77 routine's forms (friction_detail::*_reference) instead
   /// of the production ones: the same values within a few ulps, at 2-2.5 x the cost. The
   /// faithful method sets it, so that its steps stay the F77 engine's bit for bit.
@@ -53,9 +56,13 @@ struct RoughBarModel {
   [[nodiscard]] WorldWrench friction_cs(double c, double s, double vx, double vy, double omega) const noexcept {
     if (muN == 0.0) return {};
     const double vbx = c * vx + s * vy, vby = -s * vx + c * vy;
+    if (printed) {
+      const FrictionWrench fb = thesis_printed_friction_from_velocity(geometry.a, geometry.b, muN, vbx, vby, omega, reading);
+      // eq 3.50 as printed: fy = fx' sin(theta) - fy' cos(theta) (erratum 3 corrects the sign)
+      return {c * fb.fx - s * fb.fy, reading.eq3_50 ? s * fb.fx - c * fb.fy : s * fb.fx + c * fb.fy, fb.mf};
+    }
     const FrictionWrench fb =
-        printed     ? thesis_printed_friction_from_velocity(geometry.a, geometry.b, muN, vbx, vby, omega)
-        : f77_forms ? friction_detail::rectangle_friction_from_velocity_reference(geometry.a, geometry.b, muN, vbx,
+        f77_forms ? friction_detail::rectangle_friction_from_velocity_reference(geometry.a, geometry.b, muN, vbx,
                                                                                   vby, omega)
                     : rectangle_friction_from_velocity(geometry.a, geometry.b, muN, vbx, vby, omega);
     return {c * fb.fx - s * fb.fy, s * fb.fx + c * fb.fy, fb.mf};

@@ -11,6 +11,7 @@
 
 #include <toml++/toml.h>
 
+#include "nanopush/models/printed_reading.hpp"
 #include "nanopush/models/rigid_body.hpp"
 #include "nanopush/scenes/choices.hpp"
 #include "nanopush/scenes/scene_keys.hpp"
@@ -25,6 +26,7 @@ struct SurfaceSettings {
   double g = 9.81;              ///< gravity [m/s^2]
   double normal_load = 0;       ///< N [N]; 0 = m g + f_vdw
   Law law = Law::thesis;        ///< rough surfaces: the friction law
+  PrintedReading printed;       ///< the printed law's reading of the slips ([surface.printed])
 };
 
 struct SolverSettings {
