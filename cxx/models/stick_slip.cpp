@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "nanopush/numerics/error.hpp"
+#include "nanopush/numerics/regula_falsi.hpp"
 
 namespace nanopush {
 namespace {
@@ -421,31 +422,15 @@ StickSlipResult integrate_coulomb_t(const RoughBarModel& model, const BsOptions<
     };
     State ya{}, yb{}, yc{};
     double a = t0, b = t1;
-    S ga = g_at(a, ya), gb = g_at(b, yb);
-    int side = 0;
-    for (int it = 0; it < 100 && !rest_found && (b - a) > 4 * 2.2e-16 * std::max(std::fabs(b), 1e-300); ++it) {
-      double c = static_cast<double>((a * gb - b * ga) / (gb - ga));
-      if (!(c > a && c < b)) c = 0.5 * (a + b);
-      const S gc = g_at(c, yc);
-      if (gc == 0.0) {
-        a = b = c;
-        ya = yb = yc;
-        break;
-      }
-      if ((gc > 0.0) == (ga > 0.0)) {
-        a = c;
-        ga = gc;
-        ya = yc;
-        if (side == -1) gb *= 0.5;
-        side = -1;
-      } else {
-        b = c;
-        gb = gc;
-        yb = yc;
-        if (side == 1) ga *= 0.5;
-        side = 1;
-      }
-    }
+    const S ga = g_at(a, ya), gb = g_at(b, yb);
+    roots::illinois(
+        a, b, ga, gb, 100,
+        [&](double lo, double hi) { return !rest_found && (hi - lo) > 4 * 2.2e-16 * std::max(std::fabs(hi), 1e-300); },
+        [&](double c) { return g_at(c, yc); },
+        [&](int side) {
+          if (side <= 0) ya = yc;
+          if (side >= 0) yb = yc;
+        });
     if (rest_found) {
       // Rest within the tolerances at t_rest, as when the main integration snaps (above).
       t = t_rest;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include "nanopush/numerics/regula_falsi.hpp"
 #include "nanopush/numerics/scalar.hpp"
 
 namespace nanopush::detail {
@@ -87,28 +88,17 @@ KinkResult integrate_across_kinks(const KinkIntegrateT<S>& run, const KinkFuncti
       return static_cast<double>(g[k]);
     };
     kinks(ystart.data(), g0);
-    double a = t0, b = t1, ga = static_cast<double>(g0[k]), gb = g_at(b);
-    int side = 0;
-    for (int it = 0; it < 60 && std::isfinite(gb) && (b - a) > 1e-6 * (t1 - t0); ++it) {
-      double c = (a * gb - b * ga) / (gb - ga);
-      if (!(c > a && c < b)) c = 0.5 * (a + b);
-      const double gc = g_at(c);
-      if (!std::isfinite(gc) || gc == 0.0) {
-        a = b = c;
-        break;
-      }
-      if ((gc > 0.0) == (ga > 0.0)) {
-        a = c;
-        ga = gc;
-        if (side == -1) gb *= 0.5;
-        side = -1;
-      } else {
-        b = c;
-        gb = gc;
-        if (side == 1) ga *= 0.5;
-        side = 1;
-      }
-    }
+    double a = t0, b = t1;
+    const double gb = g_at(b);
+    // A failed sub-integration (g not finite) ends the search where it was tried.
+    if (std::isfinite(gb))
+      roots::illinois(
+          a, b, static_cast<double>(g0[k]), gb, 60, [&](double lo, double hi) { return (hi - lo) > 1e-6 * (t1 - t0); },
+          [&](double tc) {
+            const double gc = g_at(tc);
+            return std::isfinite(gc) ? gc : 0.0;
+          },
+          [](int) {});
     // Integrate to the kink's far side b, giving the outputs before it; restart there.
     std::size_t before = iout;
     while (before < tout.size() && tout[before] < b) ++before;
