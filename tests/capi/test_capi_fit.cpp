@@ -10,26 +10,16 @@
 #include <string>
 #include <vector>
 
+#include "../support/capi_check.hpp"
 #include "nanopush.h"
 #include "nanopush/fitting/fit.hpp"
 #include "nanopush/scenes/scene.hpp"
 
 namespace {
 
-int failures = 0, checks = 0;
-void check(bool ok, const std::string& what) {
-  ++checks;
-  if (!ok) {
-    ++failures;
-    std::fprintf(stderr, "FAIL: %s\n", what.c_str());
-  }
-}
-bool same(double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); }
-std::string message(nanopush_error err) {
-  char buf[1024];
-  nanopush_get_error(err, buf, sizeof buf);
-  return buf;
-}
+using nanopush_capi_test::check;
+using nanopush_capi_test::message;
+using nanopush_capi_test::same;
 
 }  // namespace
 
@@ -129,8 +119,5 @@ int main(int argc, char** argv) {
 
   nanopush_delete_scene(&scene);
   nanopush_delete_error(&err);
-  std::printf("%d checks, %d failures\n", checks, failures);
-  if (failures) return 1;
-  std::printf("capi fit: all checks hold\n");
-  return 0;
+  return nanopush_capi_test::finish("capi fit: all checks hold");
 }

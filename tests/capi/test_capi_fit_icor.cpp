@@ -7,26 +7,16 @@
 #include <string>
 #include <vector>
 
+#include "../support/capi_check.hpp"
 #include "nanopush.h"
 #include "nanopush/models/icor.hpp"
 #include "nanopush/models/icor_batch.hpp"
 
 namespace {
 
-int failures = 0, checks = 0;
-void check(bool ok, const std::string& what) {
-  ++checks;
-  if (!ok) {
-    ++failures;
-    std::fprintf(stderr, "FAIL: %s\n", what.c_str());
-  }
-}
-bool same(double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); }
-std::string message(nanopush_error err) {
-  char buf[512];
-  nanopush_get_error(err, buf, sizeof buf);
-  return buf;
-}
+using nanopush_capi_test::check;
+using nanopush_capi_test::message;
+using nanopush_capi_test::same;
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 }  // namespace
@@ -136,8 +126,5 @@ int main() {
     check(res[0] == 42.0, "failed calls write nothing");
   }
   nanopush_delete_error(&err);
-  std::printf("%d checks, %d failures\n", checks, failures);
-  if (failures) return 1;
-  std::printf("capi fit-icor: all checks hold\n");
-  return 0;
+  return nanopush_capi_test::finish("capi fit-icor: all checks hold");
 }

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/capi_check.hpp"
 #include "nanopush.h"
 #include "nanopush/models/friction.hpp"
 #include "nanopush/models/icor.hpp"
@@ -22,20 +23,9 @@
 
 namespace {
 
-int failures = 0, checks = 0;
-void check(bool ok, const std::string& what) {
-  ++checks;
-  if (!ok) {
-    ++failures;
-    std::fprintf(stderr, "FAIL: %s\n", what.c_str());
-  }
-}
-bool same(double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); }
-std::string message(nanopush_error err) {
-  char buf[512];
-  nanopush_get_error(err, buf, sizeof buf);
-  return buf;
-}
+using nanopush_capi_test::check;
+using nanopush_capi_test::message;
+using nanopush_capi_test::same;
 
 constexpr double kBarA = 27.5e-9, kBarB = 50e-9;  // the thesis nanobar (docs/models.md A)
 constexpr double kPi = 3.14159265358979323846;
@@ -353,8 +343,7 @@ int main(int argc, char** argv) {
   icor_matches_library();
   estimate_mu_matches_library();
   bad_input();
-  std::printf("%d checks, %d failures\n", checks, failures);
-  if (failures) return 1;
+  if (nanopush_capi_test::finish() != 0) return 1;
   if (argc == 4) return write_reference(argv[1], std::atoi(argv[2]), argv[3]);
   return 0;
 }

@@ -58,25 +58,25 @@ program test_fortran_errors
   ! Integrator arguments.
   p%mu = 1
   y = [2.0_dp, 0.0_dp]
-  call nanopush_integrate(vdp_rhs, 0.0_dp, y, [1.0_dp, 0.5_dp], yout, ctx=p, stat=stat, errmsg=msg)
+  call nanopush_integrate(ode_rhs, 0.0_dp, y, [1.0_dp, 0.5_dp], yout, ctx=p, stat=stat, errmsg=msg)
   call expect(stat, NANOPUSH_BAD_INPUT, msg, "non-decreasing", "decreasing output times")
-  call nanopush_integrate(vdp_rhs, 0.0_dp, y, [1.0_dp], yout, atol=[1e-9_dp, 1e-9_dp, 1e-9_dp], &
+  call nanopush_integrate(ode_rhs, 0.0_dp, y, [1.0_dp], yout, atol=[1e-9_dp, 1e-9_dp, 1e-9_dp], &
                           ctx=p, stat=stat, errmsg=msg)
   call expect(stat, NANOPUSH_BAD_INPUT, msg, "natol = 3: must be 1 or n = 2", "atol of the wrong size")
-  call nanopush_integrate(vdp_rhs, 0.0_dp, y, [1.0_dp], yout, method="euler", ctx=p, stat=stat, errmsg=msg)
+  call nanopush_integrate(ode_rhs, 0.0_dp, y, [1.0_dp], yout, method="euler", ctx=p, stat=stat, errmsg=msg)
   call expect(stat, NANOPUSH_BAD_INPUT, msg, "method = ""euler""", "bad method")
-  call nanopush_integrate(vdp_rhs, 0.0_dp, y, [1.0_dp], yout, kmax=20, ctx=p, stat=stat, errmsg=msg)
+  call nanopush_integrate(ode_rhs, 0.0_dp, y, [1.0_dp], yout, kmax=20, ctx=p, stat=stat, errmsg=msg)
   call expect(stat, NANOPUSH_BAD_INPUT, msg, "kmax = 20: must be in [3, 12]", "bad kmax")
-  call nanopush_integrate(vdp_rhs, 0.0_dp, y, [1.0_dp], yout, rtol=-1e-3_dp, ctx=p, stat=stat, errmsg=msg)
+  call nanopush_integrate(ode_rhs, 0.0_dp, y, [1.0_dp], yout, rtol=-1e-3_dp, ctx=p, stat=stat, errmsg=msg)
   call expect(stat, NANOPUSH_BAD_INPUT, msg, "rtol = -0.001: must be >= 0", "negative rtol")
   ! The checks SUNDIALS' CVODE makes before its first step, under their Fortran names.
-  call nanopush_integrate(vdp_rhs, 0.0_dp, y, [1.0_dp], yout, rtol=1e-300_dp, atol=[0.0_dp], ctx=p, &
+  call nanopush_integrate(ode_rhs, 0.0_dp, y, [1.0_dp], yout, rtol=1e-300_dp, atol=[0.0_dp], ctx=p, &
                           stat=stat, errmsg=msg)
   call expect(stat, NANOPUSH_TOO_MUCH_ACCURACY, msg, "more accuracy than double precision", "rtol 1e-300")
-  call nanopush_integrate(vdp_rhs, 0.0_dp, y, [1.0_dp, nearest(1.0_dp, 2.0_dp)], yout, ctx=p, stat=stat, errmsg=msg)
+  call nanopush_integrate(ode_rhs, 0.0_dp, y, [1.0_dp, nearest(1.0_dp, 2.0_dp)], yout, ctx=p, stat=stat, errmsg=msg)
   call expect(stat, NANOPUSH_TOUT_TOO_CLOSE, msg, "is too close to tout[0] = 1", "tout one ulp apart")
   call check(NANOPUSH_TOO_MUCH_ACCURACY == 11 .and. NANOPUSH_TOUT_TOO_CLOSE == 12, "status values as in nanopush.h")
-  call nanopush_integrate(vdp_rhs, 0.0_dp, y, [100.0_dp], yout, maxstp=5, ctx=p, stat=stat, errmsg=msg)
+  call nanopush_integrate(ode_rhs, 0.0_dp, y, [100.0_dp], yout, maxstp=5, ctx=p, stat=stat, errmsg=msg)
   call expect(stat, NANOPUSH_TOO_MANY_STEPS, msg, "more than 5 steps", "maxstp exceeded")
   ! The RHS reports a failure (stat = 7 once t > 0.5): the integration stops with status 4.
   y = [2.0_dp, 0.0_dp]
@@ -150,25 +150,12 @@ program test_fortran_errors
 
 contains
 
-  subroutine vdp_rhs(t, y, dydt, ctx, stat)
-    real(dp), intent(in) :: t, y(:)
-    real(dp), intent(out) :: dydt(:)
-    class(nanopush_context), intent(inout) :: ctx
-    integer, intent(inout) :: stat
-    select type (ctx)
-    type is (ode_params)
-      call van_der_pol(y, dydt, ctx%mu)
-    class default
-      stat = 99
-    end select
-  end subroutine vdp_rhs
-
   subroutine failing_rhs(t, y, dydt, ctx, stat)
     real(dp), intent(in) :: t, y(:)
     real(dp), intent(out) :: dydt(:)
     class(nanopush_context), intent(inout) :: ctx
     integer, intent(inout) :: stat
-    call vdp_rhs(t, y, dydt, ctx, stat)
+    call ode_rhs(t, y, dydt, ctx, stat)
     if (t > 0.5_dp) stat = 7
   end subroutine failing_rhs
 

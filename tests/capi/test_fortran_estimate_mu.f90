@@ -11,7 +11,7 @@
 program test_fortran_estimate_mu
   use nanopush
   use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
-  use test_support, only: check, finish
+  use test_support, only: check, finish, same, argument, fields
   implicit none
   integer :: i
   real(dp) :: rod(6), F, sF, x, sx, sL, sH
@@ -78,7 +78,7 @@ contains
       if (ios /= 0) exit
       rows = rows + 1
       name = field(line, 1)
-      call fields(line, c)
+      call fields(line, c, first=2)
       select case (name)
       case ("mu")
         call same(mu, c(1), "mu")
@@ -201,54 +201,6 @@ contains
                where // ": outputs NaN after '" // want // "'")
   end subroutine expect
 
-  subroutine same(got, want, what)
-    real(dp), intent(in) :: got, want
-    character(len=*), intent(in) :: what
-    logical :: ok
-    ok = got == want .or. (ieee_is_nan(got) .and. ieee_is_nan(want))
-    if (.not. ok) print '(a,": got ",es25.17," want ",es25.17)', what, got, want
-    call check(ok, what)
-  end subroutine same
-
-
-  !> The i-th comma-separated field of a CSV line (no quoting in these files).
-  function field(line, i) result(f)
-    character(len=*), intent(in) :: line
-    integer, intent(in) :: i
-    character(len=:), allocatable :: f
-    integer :: k, start, comma
-    start = 1
-    do k = 1, i - 1
-      comma = index(line(start:), ",")
-      if (comma == 0) then
-        f = ""
-        return
-      end if
-      start = start + comma
-    end do
-    comma = index(line(start:), ",")
-    if (comma == 0) then
-      f = trim(line(start:))
-    else
-      f = line(start:start + comma - 2)
-    end if
-  end function field
-
-  !> Fields 2..5 as numbers (value, sigma, dmu_dinput, contribution); empty fields become NaN.
-  subroutine fields(line, v)
-    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
-    character(len=*), intent(in) :: line
-    real(dp), intent(out) :: v(4)
-    integer :: j, ios
-    character(len=:), allocatable :: f
-    do j = 1, 4
-      f = field(line, j + 1)
-      v(j) = ieee_value(0.0_dp, ieee_quiet_nan)
-      if (len_trim(f) == 0) cycle
-      read (f, *, iostat=ios) v(j)
-      if (ios /= 0) v(j) = ieee_value(0.0_dp, ieee_quiet_nan)
-    end do
-  end subroutine fields
 
   real(dp) function number(i)
     integer, intent(in) :: i
@@ -257,14 +209,5 @@ contains
     read (arg, *, iostat=ios) number
     if (ios /= 0) error stop "test_fortran_estimate_mu: argument is not a number"
   end function number
-
-  function argument(i) result(a)
-    integer, intent(in) :: i
-    character(len=:), allocatable :: a
-    integer :: length
-    call get_command_argument(i, length=length)
-    allocate (character(len=length) :: a)
-    call get_command_argument(i, a)
-  end function argument
 
 end program test_fortran_estimate_mu

@@ -9,8 +9,8 @@
 !> thesis derives 4.13 from), to a few ulps.
 program test_fortran_friction_icor
   use nanopush
-  use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_value, ieee_quiet_nan
-  use test_support, only: check, finish
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
+  use test_support, only: check, finish, same, argument, fields
   implicit none
   real(dp) :: rod(6), L, k2, W, mu, ratio
   real(dp), parameter :: a_bar = 27.5e-9_dp, b_bar = 50e-9_dp
@@ -166,62 +166,5 @@ contains
     print '(a,i0,a,i0)', "friction: ", rows, " points, sense ", sense
   end subroutine compare_friction
 
-  subroutine same(got, want, what)
-    real(dp), intent(in) :: got, want
-    character(len=*), intent(in) :: what
-    logical :: ok
-    ok = got == want .or. (ieee_is_nan(got) .and. ieee_is_nan(want))
-    if (.not. ok) print '(a,": got ",es25.17," want ",es25.17)', what, got, want
-    call check(ok, what)
-  end subroutine same
-
-
-  !> The i-th comma-separated field of a CSV line (no quoting in these files).
-  function field(line, i) result(f)
-    character(len=*), intent(in) :: line
-    integer, intent(in) :: i
-    character(len=:), allocatable :: f
-    integer :: k, start, comma
-    start = 1
-    do k = 1, i - 1
-      comma = index(line(start:), ",")
-      if (comma == 0) then
-        f = ""
-        return
-      end if
-      start = start + comma
-    end do
-    comma = index(line(start:), ",")
-    if (comma == 0) then
-      f = trim(line(start:))
-    else
-      f = line(start:start + comma - 2)
-    end if
-  end function field
-
-  !> All fields as numbers; empty or non-numeric fields (a branch that does not exist, a label)
-  !> become NaN.
-  subroutine fields(line, v)
-    character(len=*), intent(in) :: line
-    real(dp), intent(out) :: v(:)
-    integer :: i, ios
-    character(len=:), allocatable :: f
-    do i = 1, size(v)
-      f = field(line, i)
-      v(i) = ieee_value(0.0_dp, ieee_quiet_nan)
-      if (len_trim(f) == 0) cycle
-      read (f, *, iostat=ios) v(i)
-      if (ios /= 0) v(i) = ieee_value(0.0_dp, ieee_quiet_nan)
-    end do
-  end subroutine fields
-
-  function argument(i) result(a)
-    integer, intent(in) :: i
-    character(len=:), allocatable :: a
-    integer :: length
-    call get_command_argument(i, length=length)
-    allocate (character(len=length) :: a)
-    call get_command_argument(i, a)
-  end function argument
 
 end program test_fortran_friction_icor

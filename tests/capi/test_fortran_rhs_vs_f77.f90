@@ -11,7 +11,7 @@ program test_fortran_rhs_vs_f77
   use test_support, only: check, finish, tol_agree
   implicit none
   real(dp), parameter :: pi = acos(-1.0_dp)
-  external :: f77_kepler, f77_vdp
+  external :: f77_problem
 
   call compare_kepler(0.6_dp, 1e-10_dp)
   call compare_kepler(0.9_dp, 1e-12_dp)
@@ -20,34 +20,6 @@ program test_fortran_rhs_vs_f77
   print '(a)', "all checks hold"
 
 contains
-
-  subroutine kepler_rhs(t, y, dydt, ctx, stat)
-    real(dp), intent(in) :: t, y(:)
-    real(dp), intent(out) :: dydt(:)
-    class(nanopush_context), intent(inout) :: ctx
-    integer, intent(inout) :: stat
-    select type (ctx)
-    type is (ode_params)
-      call kepler(y, dydt, ctx%mu)
-      ctx%evaluations = ctx%evaluations + 1
-    class default
-      stat = 99
-    end select
-  end subroutine kepler_rhs
-
-  subroutine vdp_rhs(t, y, dydt, ctx, stat)
-    real(dp), intent(in) :: t, y(:)
-    real(dp), intent(out) :: dydt(:)
-    class(nanopush_context), intent(inout) :: ctx
-    integer, intent(inout) :: stat
-    select type (ctx)
-    type is (ode_params)
-      call van_der_pol(y, dydt, ctx%mu)
-      ctx%evaluations = ctx%evaluations + 1
-    class default
-      stat = 99
-    end select
-  end subroutine vdp_rhs
 
 
   !> Largest deviation of a from b, per component relative to max(|b(i,:)|), over all outputs.
@@ -74,13 +46,13 @@ contains
     atol = rtol
     p%mu = 1
     y = kepler_start(e)
-    call nanopush_integrate(kepler_rhs, 0.0_dp, y, tout, yout, rtol=rtol, atol=atol, ctx=p, &
+    call nanopush_integrate(ode_rhs, 0.0_dp, y, tout, yout, rtol=rtol, atol=atol, ctx=p, &
                             counts=counts, stat=stat, errmsg=msg)
     call check(stat == NANOPUSH_OK, "kepler: nanopush_integrate status 0, got " // msg)
     y77 = kepler_start(e)
     rpar(1) = 1
     ipar(1) = 0
-    call bsint(f77_kepler, 4, 0.0_dp, y77, nout, tout, yout77, rtol, atol, 0.0_dp, 0.0_dp, 8, 1, &
+    call bsint(f77_problem, 4, 0.0_dp, y77, nout, tout, yout77, rtol, atol, 0.0_dp, 0.0_dp, 8, 1, &
                100000, rpar, ipar, nstat, ierr)
     call check(ierr == 0, "kepler: BSINT ierr 0")
     dev = max_rel_dev(yout, yout77)
@@ -111,13 +83,13 @@ contains
     atol = rtol
     p%mu = mu
     y = [2.0_dp, 0.0_dp]
-    call nanopush_integrate(vdp_rhs, 0.0_dp, y, tout, yout, rtol=rtol, atol=atol, ctx=p, &
+    call nanopush_integrate(ode_rhs, 0.0_dp, y, tout, yout, rtol=rtol, atol=atol, ctx=p, &
                             counts=counts, stat=stat)
     call check(stat == NANOPUSH_OK, "vdp: nanopush_integrate status 0")
     y77 = [2.0_dp, 0.0_dp]
     rpar(1) = mu
     ipar(1) = 0
-    call bsint(f77_vdp, 2, 0.0_dp, y77, nout, tout, yout77, rtol, atol, 0.0_dp, 0.0_dp, 8, 1, &
+    call bsint(f77_problem, 2, 0.0_dp, y77, nout, tout, yout77, rtol, atol, 0.0_dp, 0.0_dp, 8, 1, &
                100000, rpar, ipar, nstat, ierr)
     call check(ierr == 0, "vdp: BSINT ierr 0")
     dev = max_rel_dev(yout, yout77)
@@ -129,23 +101,3 @@ contains
 
 end program test_fortran_rhs_vs_f77
 
-!> F77-style EXTERNAL derivative routines for BSINT (rpar(1) = mu).
-subroutine f77_kepler(n, t, y, dydt, rpar, ipar, ierr)
-  use capi_test_problems, only: kepler
-  implicit none
-  integer, intent(in) :: n
-  double precision, intent(in) :: t, y(n), rpar(*)
-  double precision, intent(out) :: dydt(n)
-  integer, intent(inout) :: ipar(*), ierr
-  call kepler(y, dydt, rpar(1))
-end subroutine f77_kepler
-
-subroutine f77_vdp(n, t, y, dydt, rpar, ipar, ierr)
-  use capi_test_problems, only: van_der_pol
-  implicit none
-  integer, intent(in) :: n
-  double precision, intent(in) :: t, y(n), rpar(*)
-  double precision, intent(out) :: dydt(n)
-  integer, intent(inout) :: ipar(*), ierr
-  call van_der_pol(y, dydt, rpar(1))
-end subroutine f77_vdp

@@ -5,6 +5,7 @@
 !> Usage: capi_test_rough SCENE.toml LAW REFERENCE.csv
 program test_fortran_rough
   use nanopush
+  use test_support, only: argument
   implicit none
   type(nanopush_scene) :: scene
   real(dp), allocatable :: traj(:, :), other(:, :)
@@ -56,16 +57,5 @@ program test_fortran_rough
   if (allocated(law)) deallocate(law)
   if (allocated(other_law)) deallocate(other_law)
   if (allocated(msg)) deallocate(msg)
-
-contains
-
-  function argument(i) result(a)
-    integer, intent(in) :: i
-    character(len=:), allocatable :: a
-    integer :: length
-    call get_command_argument(i, length=length)
-    allocate (character(len=length) :: a)
-    call get_command_argument(i, a)
-  end function argument
 
 end program test_fortran_rough

@@ -28,47 +28,19 @@ contains
       allocate (y(2))
       y(:) = [2.0_dp, 0.0_dp]
       tout = [(20.0_dp * (i - 1) / (nout - 1), i = 1, nout)]
-      call nanopush_integrate(vdp, 0.0_dp, y, tout, yout, rtol=1e-12_dp, atol=[1e-12_dp], ctx=p, &
+      call nanopush_integrate(ode_rhs, 0.0_dp, y, tout, yout, rtol=1e-12_dp, atol=[1e-12_dp], ctx=p, &
                               counts=counts, stat=stat)
     else
       p%mu = 1
       allocate (y(4))
       y(:) = kepler_start(0.8_dp)
       tout = [(4 * pi * (i - 1) / (nout - 1), i = 1, nout)]
-      call nanopush_integrate(kep, 0.0_dp, y, tout, yout, rtol=1e-12_dp, atol=[1e-12_dp], &
+      call nanopush_integrate(ode_rhs, 0.0_dp, y, tout, yout, rtol=1e-12_dp, atol=[1e-12_dp], &
                               method="modern", ctx=p, counts=counts, stat=stat)
     end if
     if (p%evaluations /= counts(1)) stat = -1
     yout_flat(1:size(yout)) = reshape(yout, [size(yout)])
     np_test_solve = int(stat, c_int)
   end function np_test_solve
-
-  subroutine vdp(t, y, dydt, ctx, stat)
-    real(dp), intent(in) :: t, y(:)
-    real(dp), intent(out) :: dydt(:)
-    class(nanopush_context), intent(inout) :: ctx
-    integer, intent(inout) :: stat
-    select type (ctx)
-    type is (ode_params)
-      call van_der_pol(y, dydt, ctx%mu)
-      ctx%evaluations = ctx%evaluations + 1
-    class default
-      stat = 99
-    end select
-  end subroutine vdp
-
-  subroutine kep(t, y, dydt, ctx, stat)
-    real(dp), intent(in) :: t, y(:)
-    real(dp), intent(out) :: dydt(:)
-    class(nanopush_context), intent(inout) :: ctx
-    integer, intent(inout) :: stat
-    select type (ctx)
-    type is (ode_params)
-      call kepler(y, dydt, ctx%mu)
-      ctx%evaluations = ctx%evaluations + 1
-    class default
-      stat = 99
-    end select
-  end subroutine kep
 
 end module capi_threads_problem

@@ -7,6 +7,7 @@
 !> b = 50 nm, muN = 1, sense +1) it also checks nanopush_friction_wrench at every row, exactly.
 program consumer_fortran
   use nanopush
+  use test_support, only: argument
   implicit none
   type(nanopush_scene) :: scene
   real(dp), allocatable :: traj(:, :)
@@ -77,14 +78,5 @@ contains
     if (rows == 0 .or. bad /= 0) error stop "consumer_fortran: friction wrench differs from nanopush friction"
     print '(a)', "consumer_fortran: friction wrench identical to nanopush friction"
   end subroutine check_friction
-
-  function argument(i) result(a)
-    integer, intent(in) :: i
-    character(len=:), allocatable :: a
-    integer :: length
-    call get_command_argument(i, length=length)
-    allocate (character(len=length) :: a)
-    call get_command_argument(i, a)
-  end function argument
 
 end program consumer_fortran

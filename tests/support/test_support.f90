@@ -1,11 +1,13 @@
 !> What every Fortran test program shares (tests/CMakeLists.txt links it into each):
 !> check() counts and reports failed checks, finish() ends the program with a nonzero status
-!> when any failed, and the thresholds below name the agreement the tests ask for.
+!> when any failed, and the thresholds below name the agreement the tests ask for; same()
+!> checks two doubles are the same (NaN equals NaN), argument() reads a command-line argument,
+!> field() and fields() read the comma-separated fields of a CSV line (no quoting).
 module test_support
   use, intrinsic :: iso_fortran_env, only: real64
   implicit none
   private
-  public :: check, finish, failures, checks, tol_agree, tol_round_trip
+  public :: check, finish, failures, checks, tol_agree, tol_round_trip, same, argument, field, fields
 
   !> Two implementations of the same double-precision computation (C++ against F77, Brent
   !> against LAPACK, one integration through two front ends): the arithmetic is reordered, so
@@ -38,5 +40,69 @@ contains
     print '(i0,a,i0,a)', checks, " checks, ", failures, " failures"
     if (failures > 0) error stop program_name // ": failures above"
   end subroutine finish
+
+  !> Checks that `got` is the same double as `want` (or both NaN); prints both when not.
+  subroutine same(got, want, what)
+    use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
+    real(real64), intent(in) :: got, want
+    character(len=*), intent(in) :: what
+    logical :: ok
+    ok = got == want .or. (ieee_is_nan(got) .and. ieee_is_nan(want))
+    if (.not. ok) print '(a,": got ",es25.17," want ",es25.17)', what, got, want
+    call check(ok, what)
+  end subroutine same
+
+  !> The i-th command-line argument, as long as it is.
+  function argument(i) result(a)
+    integer, intent(in) :: i
+    character(len=:), allocatable :: a
+    integer :: length
+    call get_command_argument(i, length=length)
+    allocate (character(len=length) :: a)
+    call get_command_argument(i, a)
+  end function argument
+
+  !> The i-th comma-separated field of a CSV line (no quoting in these files); "" past the last.
+  function field(line, i) result(f)
+    character(len=*), intent(in) :: line
+    integer, intent(in) :: i
+    character(len=:), allocatable :: f
+    integer :: k, start, comma
+    start = 1
+    do k = 1, i - 1
+      comma = index(line(start:), ",")
+      if (comma == 0) then
+        f = ""
+        return
+      end if
+      start = start + comma
+    end do
+    comma = index(line(start:), ",")
+    if (comma == 0) then
+      f = trim(line(start:))
+    else
+      f = line(start:start + comma - 2)
+    end if
+  end function field
+
+  !> Fields first, first + 1, ... (first defaults to 1) as numbers, size(v) of them; empty or
+  !> non-numeric fields (a branch that does not exist, a label) become NaN.
+  subroutine fields(line, v, first)
+    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+    character(len=*), intent(in) :: line
+    real(real64), intent(out) :: v(:)
+    integer, intent(in), optional :: first
+    integer :: i, ios, offset
+    character(len=:), allocatable :: f
+    offset = 0
+    if (present(first)) offset = first - 1
+    do i = 1, size(v)
+      f = field(line, i + offset)
+      v(i) = ieee_value(0.0_real64, ieee_quiet_nan)
+      if (len_trim(f) == 0) cycle
+      read (f, *, iostat=ios) v(i)
+      if (ios /= 0) v(i) = ieee_value(0.0_real64, ieee_quiet_nan)
+    end do
+  end subroutine fields
 
 end module test_support

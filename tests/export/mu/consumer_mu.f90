@@ -5,6 +5,7 @@
 !> Usage: consumer_mu force|icor MU.csv
 program consumer_mu
   use nanopush
+  use test_support, only: argument
   implicit none
   character(len=:), allocatable :: kind, path, msg
   character(len=512) :: line
@@ -117,14 +118,5 @@ contains
       read (s, *) number
     end if
   end function number
-
-  function argument(i) result(a)
-    integer, intent(in) :: i
-    character(len=:), allocatable :: a
-    integer :: length
-    call get_command_argument(i, length=length)
-    allocate (character(len=length) :: a)
-    call get_command_argument(i, a)
-  end function argument
 
 end program consumer_mu
