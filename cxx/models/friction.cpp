@@ -21,6 +21,11 @@ void check_rectangle(double a, double b) {
 
 void check_muN(double muN) { require_nonnegative("muN", muN, "N, friction coefficient times normal load"); }
 
+void check_velocity(double vx, double vy) {
+  require_finite("vx", vx, "m/s");
+  require_finite("vy", vy, "m/s");
+}
+
 }  // namespace
 
 FrictionWrench rectangle_friction_wrench_checked(double a, double b, double muN, double R, double alpha,
@@ -36,8 +41,7 @@ FrictionWrench rectangle_friction_wrench_checked(double a, double b, double muN,
 
 FrictionWrench rectangle_friction_translation_checked(double muN, double vx, double vy) {
   check_muN(muN);
-  require_finite("vx", vx, "m/s");
-  require_finite("vy", vy, "m/s");
+  check_velocity(vx, vy);
   return rectangle_friction_translation(muN, vx, vy);
 }
 
@@ -45,8 +49,7 @@ FrictionWrench rectangle_friction_from_velocity_checked(double a, double b, doub
                                                         double omega) {
   check_rectangle(a, b);
   check_muN(muN);
-  require_finite("vx", vx, "m/s");
-  require_finite("vy", vy, "m/s");
+  check_velocity(vx, vy);
   require_finite("omega", omega, "rad/s");
   return rectangle_friction_from_velocity(a, b, muN, vx, vy, omega);
 }

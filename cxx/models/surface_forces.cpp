@@ -413,27 +413,35 @@ void check_liquid(double gammaL, double theta) {
   require_nonnegative("surface tension", gammaL, "N/m");
   require_range("contact angle", theta, 0.0, kPi / 2.0, "rad");
 }
-}  // namespace
-double capillary_force_max(double R, double gammaL, double theta) {
+/// Counts a capillary evaluation and checks a sphere of radius R under the liquid.
+void check_sphere(double R, double gammaL, double theta) {
   count(Model::capillary);
   require_positive("sphere radius R", R, "m");
   check_liquid(gammaL, theta);
+}
+/// Checks the meniscus radius r1 and the separation D (> 0 where the model divides by it, else
+/// >= 0); returns the meniscus height d = 2 r1 cos(theta).
+double meniscus_height(double theta, double r1, double D, bool D_positive = false) {
+  require_nonnegative("meniscus radius r1", r1, "m");
+  if (D_positive)
+    require_positive("separation D", D, "m");
+  else
+    require_nonnegative("separation D", D, "m");
+  return 2.0 * r1 * std::cos(theta);
+}
+}  // namespace
+double capillary_force_max(double R, double gammaL, double theta) {
+  check_sphere(R, gammaL, theta);
   return 4.0 * kPi * R * gammaL * std::cos(theta);
 }
 double capillary_force_sphere(double R, double gammaL, double theta, double r1, double D) {
-  count(Model::capillary);
-  require_positive("sphere radius R", R, "m");
-  check_liquid(gammaL, theta);
-  require_nonnegative("meniscus radius r1", r1, "m");
-  require_nonnegative("separation D", D, "m");
-  const double d = 2.0 * r1 * std::cos(theta);
+  check_sphere(R, gammaL, theta);
+  const double d = meniscus_height(theta, r1, D);
   if (d == 0.0) return 0.0;
   return 4.0 * kPi * R * gammaL * std::cos(theta) / (1.0 + D / d);
 }
 double capillary_force_with_solid_contact(double R, double gammaL, double theta, double gamma_SL) {
-  count(Model::capillary);
-  require_positive("sphere radius R", R, "m");
-  check_liquid(gammaL, theta);
+  check_sphere(R, gammaL, theta);
   require_nonnegative("solid-liquid energy gamma_SL", gamma_SL, "J/m^2");
   return 4.0 * kPi * R * (gammaL * std::cos(theta) + gamma_SL);
 }
@@ -442,9 +450,7 @@ double capillary_force_cylinder(double R, double L, double gammaL, double theta,
   require_positive("cylinder radius R", R, "m");
   require_positive("cylinder length L", L, "m");
   check_liquid(gammaL, theta);
-  require_nonnegative("meniscus radius r1", r1, "m");
-  require_nonnegative("separation D", D, "m");
-  const double d = 2.0 * r1 * std::cos(theta);
+  const double d = meniscus_height(theta, r1, D);
   if (D >= d || r1 == 0.0) return 0.0;
   const double xm = std::sqrt(2.0 * R * (d - D));
   return 2.0 * xm * L * gammaL / r1;
@@ -453,9 +459,7 @@ double capillary_force_plate(double Ac, double gammaL, double theta, double r1, 
   count(Model::capillary);
   require_nonnegative("contact area", Ac, "m^2");
   check_liquid(gammaL, theta);
-  require_nonnegative("meniscus radius r1", r1, "m");
-  require_positive("separation D", D, "m");
-  const double d = 2.0 * r1 * std::cos(theta);
+  const double d = meniscus_height(theta, r1, D, true);
   if (D >= d) return 0.0;
   return 2.0 * gammaL * std::cos(theta) / D * Ac;
 }

@@ -6,21 +6,39 @@ module nanopush_f77_interfaces
   implicit none
   public
 
+  abstract interface
+    !> A derivative routine BSINT calls (EXTERNAL fcn of fortran/bsint.f): dydt = f(t, y), rpar
+    !> and ipar passed through, ierr /= 0 stops the integration.
+    subroutine f77_rhs(n, t, y, dydt, rpar, ipar, ierr)
+      integer, intent(in) :: n
+      double precision, intent(in) :: t
+      double precision, intent(in) :: y(n)
+      double precision, intent(out) :: dydt(n)
+      double precision, intent(in) :: rpar(*)
+      integer, intent(inout) :: ipar(*)
+      integer, intent(inout) :: ierr
+    end subroutine f77_rhs
+
+    !> An iCOR formula of fortran/icor.f: r from the push point yn and one rod parameter p
+    !> (its length, or k^2 for icr505).
+    subroutine f77_icor_formula(yn, p, r, ierr)
+      double precision, intent(in) :: yn, p
+      double precision, intent(out) :: r
+      integer, intent(out) :: ierr
+    end subroutine f77_icor_formula
+  end interface
+
+  !> FORTRAN 77 smooth-nanobar RHS (fortran/smbar.f) and rough-surface nanobar RHS (fortran/rgbar.f).
+  procedure(f77_rhs) :: smbar, rgbar
+  !> FORTRAN 77 iCOR formulas (fortran/icor.f): eqs 4.1, 4.2, 4.3, 4.13 (rl = L) and 5.5 (rk2 = k^2).
+  procedure(f77_icor_formula) :: icr401, icr402, icr403, icr413, icr505
+
   interface
     !> FORTRAN 77 driver (fortran/bsint.f); argument list documented there.
     subroutine bsint(fcn, n, t0, y, nout, tout, yout, rtol, atol, h0, hmax, kmax, iextr, &
                      maxstp, rpar, ipar, nstat, ierr)
-      interface
-        subroutine fcn(n, t, y, dydt, rpar, ipar, ierr)
-          integer, intent(in) :: n
-          double precision, intent(in) :: t
-          double precision, intent(in) :: y(n)
-          double precision, intent(out) :: dydt(n)
-          double precision, intent(in) :: rpar(*)
-          integer, intent(inout) :: ipar(*)
-          integer, intent(inout) :: ierr
-        end subroutine fcn
-      end interface
+      import :: f77_rhs
+      procedure(f77_rhs) :: fcn
       integer, intent(in) :: n, nout, kmax, iextr, maxstp
       double precision, intent(in) :: t0, tout(*), rtol, atol(*), h0, hmax
       double precision, intent(inout) :: y(*)
@@ -30,34 +48,10 @@ module nanopush_f77_interfaces
       integer, intent(out) :: nstat(3), ierr
     end subroutine bsint
 
-    !> FORTRAN 77 smooth-nanobar RHS (fortran/smbar.f).
-    subroutine smbar(n, t, y, dydt, rpar, ipar, ierr)
-      integer, intent(in) :: n
-      double precision, intent(in) :: t
-      double precision, intent(in) :: y(n)
-      double precision, intent(out) :: dydt(n)
-      double precision, intent(in) :: rpar(*)
-      integer, intent(inout) :: ipar(*)
-      integer, intent(inout) :: ierr
-    end subroutine smbar
-
     !> Sets rpar(7:8), the push force of smbar, from rpar(3:4) (fortran/smbar.f).
     subroutine smbarp(rpar)
       double precision, intent(inout) :: rpar(8)
     end subroutine smbarp
-  end interface
-
-  interface
-    !> FORTRAN 77 rough-surface nanobar RHS (fortran/rgbar.f).
-    subroutine rgbar(n, t, y, dydt, rpar, ipar, ierr)
-      integer, intent(in) :: n
-      double precision, intent(in) :: t
-      double precision, intent(in) :: y(n)
-      double precision, intent(out) :: dydt(n)
-      double precision, intent(in) :: rpar(*)
-      integer, intent(inout) :: ipar(*)
-      integer, intent(inout) :: ierr
-    end subroutine rgbar
   end interface
 
   !> FORTRAN 77 rolling formulas (fortran/rolling.f).
@@ -107,32 +101,8 @@ module nanopush_f77_interfaces
       integer, intent(out) :: ierr
     end subroutine rectfv
 
-    !> FORTRAN 77 iCOR formulas and cubics (fortran/icor.f, fortran/brent.f).
-    subroutine icr401(yn, rl, r, ierr)
-      double precision, intent(in) :: yn, rl
-      double precision, intent(out) :: r
-      integer, intent(out) :: ierr
-    end subroutine icr401
-    subroutine icr402(yn, rl, r, ierr)
-      double precision, intent(in) :: yn, rl
-      double precision, intent(out) :: r
-      integer, intent(out) :: ierr
-    end subroutine icr402
-    subroutine icr403(yn, rl, r, ierr)
-      double precision, intent(in) :: yn, rl
-      double precision, intent(out) :: r
-      integer, intent(out) :: ierr
-    end subroutine icr403
-    subroutine icr413(yn, rl, r, ierr)
-      double precision, intent(in) :: yn, rl
-      double precision, intent(out) :: r
-      integer, intent(out) :: ierr
-    end subroutine icr413
-    subroutine icr505(yn, rk2, r, ierr)
-      double precision, intent(in) :: yn, rk2
-      double precision, intent(out) :: r
-      integer, intent(out) :: ierr
-    end subroutine icr505
+    !> FORTRAN 77 iCOR formulas and cubics (fortran/icor.f, fortran/brent.f); the formulas of one
+    !> rod parameter are declared above (f77_icor_formula).
     subroutine icr407(rmu, w, yn, f, rl, r, ierr)
       double precision, intent(in) :: rmu, w, yn, f, rl
       double precision, intent(out) :: r

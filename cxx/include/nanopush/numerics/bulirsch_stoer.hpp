@@ -70,23 +70,12 @@ struct BsOptions {
 
   /// The thesis-era configuration; takes the F77 engine's steps exactly.
   static BsOptions faithful(Scalar rtol, std::vector<Scalar> atol) {
-    BsOptions o;
-    o.rtol = rtol;
-    o.atol = std::move(atol);
-    o.kmax = 8;
-    o.extrapolation = Extrapolation::rational;
-    return o;
+    return {.rtol = rtol, .atol = std::move(atol), .kmax = 8, .extrapolation = Extrapolation::rational};
   }
   /// Polynomial extrapolation (no poles), more columns for tight tolerances, dense output
   /// (steps not bound to the output times).
   static BsOptions modern(Scalar rtol, std::vector<Scalar> atol) {
-    BsOptions o;
-    o.rtol = rtol;
-    o.atol = std::move(atol);
-    o.kmax = 10;
-    o.extrapolation = Extrapolation::polynomial;
-    o.dense = true;
-    return o;
+    return {.rtol = rtol, .atol = std::move(atol), .kmax = 10, .extrapolation = Extrapolation::polynomial, .dense = true};
   }
 };
 
