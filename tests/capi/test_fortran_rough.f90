@@ -5,14 +5,12 @@
 !> Usage: capi_test_rough SCENE.toml LAW REFERENCE.csv
 program test_fortran_rough
   use nanopush
-  use test_support, only: argument
+  use test_support, only: argument, compare_with_run
   implicit none
   type(nanopush_scene) :: scene
   real(dp), allocatable :: traj(:, :), other(:, :)
-  real(dp) :: row(NANOPUSH_TRAJECTORY_COLUMNS)
   character(len=:), allocatable :: law, other_law, msg
-  character(len=512) :: header
-  integer :: unit, ios, nref, differ, stat
+  integer :: stat
 
   if (command_argument_count() /= 3) error stop "usage: capi_test_rough SCENE.toml LAW REFERENCE.csv"
   law = argument(2)
@@ -32,22 +30,7 @@ program test_fortran_rough
     if (all(other == traj)) error stop "test_fortran_rough: both laws gave the same trajectory"
   end if
 
-  open (newunit=unit, file=argument(3), status="old", action="read")
-  read (unit, '(a)') header
-  if (trim(header) /= "t,x,y,theta,vx,vy,omega,fx,fy,mf") error stop "test_fortran_rough: unexpected CSV header"
-  nref = 0
-  differ = 0
-  do
-    read (unit, *, iostat=ios) row
-    if (ios /= 0) exit
-    nref = nref + 1
-    if (nref > size(traj, 2)) exit
-    if (any(row /= traj(:, nref))) differ = differ + 1
-  end do
-  close (unit)
-  print '(a,i0,a,i0)', "reference rows ", nref, ", rows that differ ", differ
-  if (nref /= size(traj, 2)) error stop "test_fortran_rough: row count differs from nanopush run"
-  if (differ /= 0) error stop "test_fortran_rough: numbers differ from nanopush run"
+  call compare_with_run(traj, argument(3), "test_fortran_rough")
   print '(3a)', "rough scene, law ", law, ": identical to nanopush run"
 
   ! Main-program allocatables live until the end (they are implicitly saved): free them so

@@ -7,14 +7,13 @@
 !> b = 50 nm, muN = 1, sense +1) it also checks nanopush_friction_wrench at every row, exactly.
 program consumer_fortran
   use nanopush
-  use test_support, only: argument
+  use test_support, only: argument, compare_with_run
   implicit none
   type(nanopush_scene) :: scene
   real(dp), allocatable :: traj(:, :)
-  real(dp) :: row(NANOPUSH_TRAJECTORY_COLUMNS), worst
   character(len=:), allocatable :: scene_path, engine, ref_path
   character(len=512) :: header
-  integer :: unit, ios, nref, differ
+  integer :: ios
 
   if (command_argument_count() < 3) error stop "usage: consumer_fortran SCENE.toml ENGINE REFERENCE.csv [FRICTION.csv]"
   scene_path = argument(1)
@@ -27,24 +26,7 @@ program consumer_fortran
   print '(a,i0,a,a)', "consumer_fortran: ", size(traj, 2), " rows from engine ", engine
   print '(a,10es25.16e3)', "last row: ", traj(:, size(traj, 2))
 
-  open (newunit=unit, file=ref_path, status="old", action="read")
-  read (unit, '(a)') header
-  if (trim(header) /= "t,x,y,theta,vx,vy,omega,fx,fy,mf") error stop "consumer_fortran: unexpected CSV header"
-  nref = 0
-  differ = 0
-  worst = 0
-  do
-    read (unit, *, iostat=ios) row
-    if (ios /= 0) exit
-    nref = nref + 1
-    if (nref > size(traj, 2)) exit
-    if (any(row /= traj(:, nref))) differ = differ + 1
-    worst = max(worst, maxval(abs(row - traj(:, nref))))
-  end do
-  close (unit)
-  print '(a,i0,a,i0,a,es10.3)', "reference rows ", nref, ", rows that differ ", differ, ", largest |difference| ", worst
-  if (nref /= size(traj, 2)) error stop "consumer_fortran: row count differs from nanopush run"
-  if (differ /= 0) error stop "consumer_fortran: numbers differ from nanopush run"
+  call compare_with_run(traj, ref_path, "consumer_fortran")
   print '(a)', "consumer_fortran: identical to nanopush run"
   if (command_argument_count() >= 4) call check_friction(argument(4))
 

@@ -2,12 +2,14 @@
 !> check() counts and reports failed checks, finish() ends the program with a nonzero status
 !> when any failed, and the thresholds below name the agreement the tests ask for; same()
 !> checks two doubles are the same (NaN equals NaN), argument() reads a command-line argument,
-!> field() and fields() read the comma-separated fields of a CSV line (no quoting).
+!> field() and fields() read the comma-separated fields of a CSV line (no quoting), and
+!> compare_with_run() holds a trajectory to the CSV `nanopush run` wrote, number for number.
 module test_support
   use, intrinsic :: iso_fortran_env, only: real64
   implicit none
   private
-  public :: check, finish, failures, checks, tol_agree, tol_round_trip, same, argument, field, fields
+  public :: check, finish, failures, checks, tol_agree, tol_round_trip, same, argument, field, fields, &
+            compare_with_run
 
   !> Two implementations of the same double-precision computation (C++ against F77, Brent
   !> against LAPACK, one integration through two front ends): the arithmetic is reordered, so
@@ -104,5 +106,35 @@ contains
       if (ios /= 0) v(i) = ieee_value(0.0_real64, ieee_quiet_nan)
     end do
   end subroutine fields
+
+  !> Compares the trajectory traj(10, rows) with the CSV `nanopush run --out` wrote at `path`
+  !> (17 significant digits, so equal doubles read back equal): prints the rows read, the rows
+  !> that differ and the largest difference, and error-stops, naming `program_name`, when the
+  !> header, the row count or any number differs.
+  subroutine compare_with_run(traj, path, program_name)
+    real(real64), intent(in) :: traj(:, :)
+    character(len=*), intent(in) :: path, program_name
+    character(len=512) :: header
+    real(real64) :: row(size(traj, 1)), worst
+    integer :: unit, ios, nref, differ
+    open (newunit=unit, file=path, status="old", action="read")
+    read (unit, '(a)') header
+    if (trim(header) /= "t,x,y,theta,vx,vy,omega,fx,fy,mf") error stop program_name // ": unexpected CSV header"
+    nref = 0
+    differ = 0
+    worst = 0
+    do
+      read (unit, *, iostat=ios) row
+      if (ios /= 0) exit
+      nref = nref + 1
+      if (nref > size(traj, 2)) exit
+      if (any(row /= traj(:, nref))) differ = differ + 1
+      worst = max(worst, maxval(abs(row - traj(:, nref))))
+    end do
+    close (unit)
+    print '(a,i0,a,i0,a,es10.3)', "reference rows ", nref, ", rows that differ ", differ, ", largest |difference| ", worst
+    if (nref /= size(traj, 2)) error stop program_name // ": row count differs from nanopush run"
+    if (differ /= 0) error stop program_name // ": numbers differ from nanopush run"
+  end subroutine compare_with_run
 
 end module test_support
