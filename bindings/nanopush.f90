@@ -1096,22 +1096,8 @@ contains
     real(dp), intent(out), optional :: load, derivatives(4)
     integer, intent(out), optional :: stat
     character(len=:), allocatable, intent(out), optional :: errmsg
-    type(c_ptr) :: err
-    character(len=:), allocatable :: msg
-    real(c_double) :: m, s, w, d(4)
-    m = nan()
-    s = nan()
-    w = nan()
-    d = nan()
-    err = c_new_error()
-    if (c_estimate_mu_from_force(err, rod, force, sigma_force, yn, sigma_yn, opt_real(sigma_L, 0.0_dp), &
-                                 opt_real(sigma_H, 0.0_dp), m, s, w, d) /= 0) continue  ! the status is in err
-    mu = m
-    sigma = s
-    if (present(load)) load = w
-    if (present(derivatives)) derivatives = d
-    call finish(err, "nanopush_estimate_mu_from_force", msg, stat)
-    if (present(errmsg)) errmsg = msg
+    call estimate_mu_single(.false., rod, force, sigma_force, yn, sigma_yn, mu, sigma, sigma_L, sigma_H, load, &
+                            derivatives, stat, errmsg)
   end subroutine nanopush_estimate_mu_from_force
 
   !> Fig 4.5 (eq 4.10 inverted): mu = F b / (W R) from a push force F and the observed CM-to-iCOR
@@ -1124,23 +1110,45 @@ contains
     real(dp), intent(out), optional :: load, derivatives(4)
     integer, intent(out), optional :: stat
     character(len=:), allocatable, intent(out), optional :: errmsg
+    call estimate_mu_single(.true., rod, force, sigma_force, R, sigma_R, mu, sigma, sigma_L, sigma_H, load, &
+                            derivatives, stat, errmsg)
+  end subroutine nanopush_estimate_mu_from_icor
+
+  !> The two single-measurement estimates: from the minimum force at yn = x (from_icor false) or
+  !> from the force and the observed iCOR at R = x (from_icor true); outputs NaN on failure.
+  subroutine estimate_mu_single(from_icor, rod, force, sigma_force, x, sigma_x, mu, sigma, sigma_L, sigma_H, &
+                                load, derivatives, stat, errmsg)
+    logical, intent(in) :: from_icor
+    real(dp), intent(in) :: rod(6), force, sigma_force, x, sigma_x
+    real(dp), intent(out) :: mu, sigma
+    real(dp), intent(in), optional :: sigma_L, sigma_H
+    real(dp), intent(out), optional :: load, derivatives(4)
+    integer, intent(out), optional :: stat
+    character(len=:), allocatable, intent(out), optional :: errmsg
     type(c_ptr) :: err
     character(len=:), allocatable :: msg
-    real(c_double) :: m, s, w, d(4)
+    real(c_double) :: m, s, w, d(4), sL, sH
     m = nan()
     s = nan()
     w = nan()
     d = nan()
+    sL = opt_real(sigma_L, 0.0_dp)
+    sH = opt_real(sigma_H, 0.0_dp)
     err = c_new_error()
-    if (c_estimate_mu_from_icor(err, rod, force, sigma_force, R, sigma_R, opt_real(sigma_L, 0.0_dp), &
-                                opt_real(sigma_H, 0.0_dp), m, s, w, d) /= 0) continue  ! the status is in err
+    ! The C status is in err, which finish reads.
+    if (from_icor) then
+      if (c_estimate_mu_from_icor(err, rod, force, sigma_force, x, sigma_x, sL, sH, m, s, w, d) /= 0) continue
+      call finish(err, "nanopush_estimate_mu_from_icor", msg, stat)
+    else
+      if (c_estimate_mu_from_force(err, rod, force, sigma_force, x, sigma_x, sL, sH, m, s, w, d) /= 0) continue
+      call finish(err, "nanopush_estimate_mu_from_force", msg, stat)
+    end if
     mu = m
     sigma = s
     if (present(load)) load = w
     if (present(derivatives)) derivatives = d
-    call finish(err, "nanopush_estimate_mu_from_icor", msg, stat)
     if (present(errmsg)) errmsg = msg
-  end subroutine nanopush_estimate_mu_from_icor
+  end subroutine estimate_mu_single
 
   !> N observations combined (C: nanopush_estimate_mu_batch; docs/fitting.md, `nanopush fit-icor`).
   !> force(n), sigma_force(n) [N]; yn, sigma_yn and R, sigma_R [m] optional arrays of size n (a NaN

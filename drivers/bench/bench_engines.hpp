@@ -331,7 +331,14 @@ struct SunObjects {
   SUNNonlinearSolver NLS = nullptr;
   void* mem = nullptr;
   void (*free_mem)(void**) = nullptr;
-  SunObjects() = default;
+  /// The context and the vectors y (= p.y0) and atol (= atol_values) of a problem.
+  SunObjects(const Problem& p, const std::vector<double>& atol_values) {
+    SUNContext_Create(nullptr, &ctx);
+    y = N_VNew_Serial(p.n, ctx);
+    atol = N_VNew_Serial(p.n, ctx);
+    std::copy(p.y0.begin(), p.y0.end(), N_VGetArrayPointer(y));
+    std::copy(atol_values.begin(), atol_values.end(), N_VGetArrayPointer(atol));
+  }
   SunObjects(const SunObjects&) = delete;
   SunObjects& operator=(const SunObjects&) = delete;
   ~SunObjects() {
@@ -344,6 +351,19 @@ struct SunObjects {
     if (ctx) SUNContext_Free(&ctx);
   }
 };
+
+/// Steps to every output time of p with evolve(tout, &t) (CVode, ERKStepEvolve), copying y into
+/// yout; stops at the first negative flag. Returns the last flag (`flag` if no step was taken).
+template <class Evolve>
+int to_outputs(const Problem& p, N_Vector y, std::vector<double>& yout, int flag, Evolve&& evolve) {
+  const std::size_t nu = static_cast<std::size_t>(p.n);
+  realtype t = p.t0;
+  for (std::size_t k = 0; k < p.nout() && flag >= 0; ++k) {
+    if (p.tout[k] > t) flag = evolve(p.tout[k], &t);
+    if (flag >= 0) std::copy(N_VGetArrayPointer(y), N_VGetArrayPointer(y) + p.n, &yout[k * nu]);
+  }
+  return flag;
+}
 }  // namespace detail
 
 /// CVODE Adams (fixed-point) or BDF (Newton + dense), outputs by CVODE's interpolation (CV_NORMAL).
@@ -356,12 +376,7 @@ Solve solve_cvode(const Problem& p, const Rhs& rhs, double rtol, bool bdf, doubl
   Solve s;
   const auto t0 = detail::Clock::now();
   {
-    detail::SunObjects o;
-    SUNContext_Create(nullptr, &o.ctx);
-    o.y = N_VNew_Serial(n, o.ctx);
-    o.atol = N_VNew_Serial(n, o.ctx);
-    std::copy(p.y0.begin(), p.y0.end(), N_VGetArrayPointer(o.y));
-    std::copy(atol.begin(), atol.end(), N_VGetArrayPointer(o.atol));
+    detail::SunObjects o(p, atol);
     o.mem = CVodeCreate(bdf ? CV_BDF : CV_ADAMS, o.ctx);
     o.free_mem = &CVodeFree;
     int flag = CVodeInit(o.mem, &detail::sun_rhs<Rhs>, p.t0, o.y);
@@ -379,11 +394,9 @@ Solve solve_cvode(const Problem& p, const Rhs& rhs, double rtol, bool bdf, doubl
         flag = CVodeSetNonlinearSolver(o.mem, o.NLS);
       }
     }
-    realtype t = p.t0;
-    for (std::size_t k = 0; k < p.nout() && flag >= 0; ++k) {
-      if (p.tout[k] > t) flag = CVode(o.mem, p.tout[k], o.y, &t, CV_NORMAL);
-      if (flag >= 0) std::copy(N_VGetArrayPointer(o.y), N_VGetArrayPointer(o.y) + n, &yout[k * nu]);
-    }
+    flag = detail::to_outputs(p, o.y, yout, flag, [&](realtype tout, realtype* t) {
+      return CVode(o.mem, tout, o.y, t, CV_NORMAL);
+    });
     if (seconds) *seconds = detail::seconds_since(t0);
     s.status = flag < 0 ? -flag : 0;
     if (flag < 0) s.message = "CVODE: " + detail::flag_name(CVodeGetReturnFlagName(flag));
@@ -411,12 +424,7 @@ Solve solve_arkode_erk8(const Problem& p, const Rhs& rhs, double rtol, double* s
   Solve s;
   const auto t0 = detail::Clock::now();
   {
-    detail::SunObjects o;
-    SUNContext_Create(nullptr, &o.ctx);
-    o.y = N_VNew_Serial(n, o.ctx);
-    o.atol = N_VNew_Serial(n, o.ctx);
-    std::copy(p.y0.begin(), p.y0.end(), N_VGetArrayPointer(o.y));
-    std::copy(atol.begin(), atol.end(), N_VGetArrayPointer(o.atol));
+    detail::SunObjects o(p, atol);
     o.mem = ERKStepCreate(&detail::sun_rhs<Rhs>, p.t0, o.y, o.ctx);
     o.free_mem = &ERKStepFree;
     int flag = ERKStepSetErrFile(o.mem, nullptr);
@@ -424,11 +432,9 @@ Solve solve_arkode_erk8(const Problem& p, const Rhs& rhs, double rtol, double* s
     if (flag == 0) flag = ERKStepSetUserData(o.mem, const_cast<void*>(static_cast<const void*>(&rhs)));
     if (flag == 0) flag = ERKStepSetTableNum(o.mem, ARKODE_FEHLBERG_13_7_8);
     if (flag == 0) flag = ERKStepSetMaxNumSteps(o.mem, 100000);  // the budget of every engine
-    realtype t = p.t0;
-    for (std::size_t k = 0; k < p.nout() && flag >= 0; ++k) {
-      if (p.tout[k] > t) flag = ERKStepEvolve(o.mem, p.tout[k], o.y, &t, ARK_NORMAL);
-      if (flag >= 0) std::copy(N_VGetArrayPointer(o.y), N_VGetArrayPointer(o.y) + n, &yout[k * nu]);
-    }
+    flag = detail::to_outputs(p, o.y, yout, flag, [&](realtype tout, realtype* t) {
+      return ERKStepEvolve(o.mem, tout, o.y, t, ARK_NORMAL);
+    });
     if (seconds) *seconds = detail::seconds_since(t0);
     s.status = flag < 0 ? -flag : 0;
     if (flag < 0) s.message = "ARKODE: " + detail::flag_name(ERKStepGetReturnFlagName(flag));
