@@ -180,6 +180,19 @@ void store(Solve& s, const std::vector<S>& yout) {
   for (std::size_t i = 0; i < yout.size(); ++i) s.y[i] = static_cast<quad>(yout[i]);
 }
 
+/// The solve of an F77 BSINT bridge call: its status (named after `routine` when not 0), the
+/// counts nstat = (nfcn, naccpt, nrejct) and the outputs.
+inline Solve f77_solve(const char* routine, int st, const int (&nstat)[3], const std::vector<double>& yout) {
+  Solve s;
+  s.status = st;
+  if (st != 0) s.message = std::string(routine) + " returned status " + std::to_string(st);
+  s.nfcn = nstat[0];
+  s.naccpt = nstat[1];
+  s.nrejct = nstat[2];
+  store(s, yout);
+  return s;
+}
+
 }  // namespace detail
 
 /// Samples for RHS timing: states along the reference trajectory (double).
@@ -296,14 +309,7 @@ Solve solve_f77_callback(const Problem& p, const Rhs& rhs, double rtol, double* 
                                   rtol, atol.data(), 0.0, 0.0, 8, 1, 0, &detail::f77_fcn<Rhs>,
                                   const_cast<void*>(static_cast<const void*>(&rhs)), nstat);
   if (seconds) *seconds = detail::seconds_since(t0);
-  Solve s;
-  s.status = st;
-  if (st != 0) s.message = "np_f77_bsint_fcn returned status " + std::to_string(st);
-  s.nfcn = nstat[0];
-  s.naccpt = nstat[1];
-  s.nrejct = nstat[2];
-  detail::store(s, yout);
-  return s;
+  return detail::f77_solve("np_f77_bsint_fcn", st, nstat, yout);
 }
 
 #ifdef NANOPUSH_HAVE_SUNDIALS

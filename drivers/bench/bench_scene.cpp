@@ -94,14 +94,9 @@ Solve solve_f77_native(const Problem& p, const std::array<double, 6>& params, do
   const auto t0 = detail::Clock::now();
   const int st = np_f77_bsint_smooth_bar(kStateSize, p.t0, y.data(), static_cast<int>(p.nout()), p.tout.data(),
                                          yout.data(), rtol, atol.data(), 0.0, 0.0, 8, 1, 0, params.data(), nstat);
-  Solve s;
-  s.seconds = detail::seconds_since(t0);
-  s.status = st;
-  if (st != 0) s.message = "np_f77_bsint_smooth_bar returned status " + std::to_string(st);
-  s.nfcn = nstat[0];
-  s.naccpt = nstat[1];
-  s.nrejct = nstat[2];
-  detail::store(s, yout);
+  const double seconds = detail::seconds_since(t0);
+  Solve s = detail::f77_solve("np_f77_bsint_smooth_bar", st, nstat, yout);
+  s.seconds = seconds;
   return s;
 }
 
