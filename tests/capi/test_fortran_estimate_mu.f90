@@ -144,63 +144,53 @@ contains
   !> Each bad input: stat = NANOPUSH_BAD_INPUT, errmsg the library's message, outputs NaN.
   subroutine bad_input()
     real(dp) :: bad(6)
-    call expect_force(rod, 0.0_dp, 0.0_dp, 1e-7_dp, 0.0_dp, 0.0_dp, 0.0_dp, "F = 0: must be > 0 (N)")
-    call expect_force(rod, -1e-6_dp, 0.0_dp, 1e-7_dp, 0.0_dp, 0.0_dp, 0.0_dp, "F = -1e-06: must be > 0 (N)")
-    call expect_force(rod, 1e-6_dp, -1e-8_dp, 1e-7_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
-                      "F uncertainty = -1e-08: must be >= 0 (N)")
-    call expect_force(rod, 1e-6_dp, 0.0_dp, -1e-9_dp, 0.0_dp, 0.0_dp, 0.0_dp, "yn = -1e-09: must be >= 0 (m)")
-    call expect_force(rod, 1e-6_dp, 0.0_dp, 1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, "yn = 1: must be in [0, ")
-    call expect_force(rod, 1e-6_dp, 0.0_dp, 1e-7_dp, -5e-9_dp, 0.0_dp, 0.0_dp, &
-                      "yn uncertainty = -5e-09: must be >= 0 (m)")
-    call expect_force(rod, 1e-6_dp, 0.0_dp, 1e-7_dp, 0.0_dp, -1e-9_dp, 0.0_dp, &
-                      "L uncertainty = -1e-09: must be >= 0 (m)")
-    call expect_force(rod, 1e-6_dp, 0.0_dp, 1e-7_dp, 0.0_dp, 0.0_dp, -1e-20_dp, &
-                      "H uncertainty = -1e-20: must be >= 0 (J)")
-    call expect_icor(rod, 0.0_dp, 0.0_dp, 1e-7_dp, 0.0_dp, 0.0_dp, 0.0_dp, "F = 0: must be > 0 (N)")
-    call expect_icor(rod, 1e-6_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, "R = 0: must be > 0 (m)")
-    call expect_icor(rod, 1e-6_dp, 0.0_dp, -1e-7_dp, 0.0_dp, 0.0_dp, 0.0_dp, "R = -1e-07: must be > 0 (m)")
-    call expect_icor(rod, 1e-6_dp, 0.0_dp, 1e-7_dp, -1e-9_dp, 0.0_dp, 0.0_dp, &
-                     "R uncertainty = -1e-09: must be >= 0 (m)")
-    call expect_icor(rod, 1e-6_dp, 0.0_dp, 1e-7_dp, 0.0_dp, 0.0_dp, -1e-20_dp, &
-                     "H uncertainty = -1e-20: must be >= 0 (J)")
+    call expect_bad("force", rod, 0.0_dp, 0.0_dp, 1e-7_dp, 0.0_dp, 0.0_dp, 0.0_dp, "F = 0: must be > 0 (N)")
+    call expect_bad("force", rod, -1e-6_dp, 0.0_dp, 1e-7_dp, 0.0_dp, 0.0_dp, 0.0_dp, "F = -1e-06: must be > 0 (N)")
+    call expect_bad("force", rod, 1e-6_dp, -1e-8_dp, 1e-7_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
+                    "F uncertainty = -1e-08: must be >= 0 (N)")
+    call expect_bad("force", rod, 1e-6_dp, 0.0_dp, -1e-9_dp, 0.0_dp, 0.0_dp, 0.0_dp, "yn = -1e-09: must be >= 0 (m)")
+    call expect_bad("force", rod, 1e-6_dp, 0.0_dp, 1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, "yn = 1: must be in [0, ")
+    call expect_bad("force", rod, 1e-6_dp, 0.0_dp, 1e-7_dp, -5e-9_dp, 0.0_dp, 0.0_dp, &
+                    "yn uncertainty = -5e-09: must be >= 0 (m)")
+    call expect_bad("force", rod, 1e-6_dp, 0.0_dp, 1e-7_dp, 0.0_dp, -1e-9_dp, 0.0_dp, &
+                    "L uncertainty = -1e-09: must be >= 0 (m)")
+    call expect_bad("force", rod, 1e-6_dp, 0.0_dp, 1e-7_dp, 0.0_dp, 0.0_dp, -1e-20_dp, &
+                    "H uncertainty = -1e-20: must be >= 0 (J)")
+    call expect_bad("icor", rod, 0.0_dp, 0.0_dp, 1e-7_dp, 0.0_dp, 0.0_dp, 0.0_dp, "F = 0: must be > 0 (N)")
+    call expect_bad("icor", rod, 1e-6_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, "R = 0: must be > 0 (m)")
+    call expect_bad("icor", rod, 1e-6_dp, 0.0_dp, -1e-7_dp, 0.0_dp, 0.0_dp, 0.0_dp, "R = -1e-07: must be > 0 (m)")
+    call expect_bad("icor", rod, 1e-6_dp, 0.0_dp, 1e-7_dp, -1e-9_dp, 0.0_dp, 0.0_dp, &
+                    "R uncertainty = -1e-09: must be >= 0 (m)")
+    call expect_bad("icor", rod, 1e-6_dp, 0.0_dp, 1e-7_dp, 0.0_dp, 0.0_dp, -1e-20_dp, &
+                    "H uncertainty = -1e-20: must be >= 0 (J)")
     bad = rod
     bad(1) = 0
-    call expect_force(bad, 1e-6_dp, 0.0_dp, 1e-7_dp, 0.0_dp, 0.0_dp, 0.0_dp, "rod.length = 0: must be > 0 (m)")
-    call expect_icor(bad, 1e-6_dp, 0.0_dp, 1e-7_dp, 0.0_dp, 0.0_dp, 0.0_dp, "rod.length = 0: must be > 0 (m)")
+    call expect_bad("force", bad, 1e-6_dp, 0.0_dp, 1e-7_dp, 0.0_dp, 0.0_dp, 0.0_dp, "rod.length = 0: must be > 0 (m)")
+    call expect_bad("icor", bad, 1e-6_dp, 0.0_dp, 1e-7_dp, 0.0_dp, 0.0_dp, 0.0_dp, "rod.length = 0: must be > 0 (m)")
   end subroutine bad_input
 
-  subroutine expect_force(r, F_, sF_, yn, syn, sL_, sH_, want)
-    real(dp), intent(in) :: r(6), F_, sF_, yn, syn, sL_, sH_
-    character(len=*), intent(in) :: want
+  !> Bad input to nanopush_estimate_mu_from_<basis> (basis "force": x = yn, "icor": x = R) comes
+  !> back as NANOPUSH_BAD_INPUT, a message starting with `want` and NaN outputs.
+  subroutine expect_bad(basis, r, F_, sF_, x, sx, sL_, sH_, want)
+    character(len=*), intent(in) :: basis, want
+    real(dp), intent(in) :: r(6), F_, sF_, x, sx, sL_, sH_
     real(dp) :: mu, s, w, d(4)
     integer :: stat
     character(len=:), allocatable :: msg
-    call nanopush_estimate_mu_from_force(r, F_, sF_, yn, syn, mu, s, sigma_L=sL_, sigma_H=sH_, load=w, &
-                                         derivatives=d, stat=stat, errmsg=msg)
-    call expect(stat, msg, mu, s, w, d, want, "estimate_mu_from_force")
-  end subroutine expect_force
-
-  subroutine expect_icor(r, F_, sF_, R_, sR, sL_, sH_, want)
-    real(dp), intent(in) :: r(6), F_, sF_, R_, sR, sL_, sH_
-    character(len=*), intent(in) :: want
-    real(dp) :: mu, s, w, d(4)
-    integer :: stat
-    character(len=:), allocatable :: msg
-    call nanopush_estimate_mu_from_icor(r, F_, sF_, R_, sR, mu, s, sigma_L=sL_, sigma_H=sH_, load=w, &
-                                        derivatives=d, stat=stat, errmsg=msg)
-    call expect(stat, msg, mu, s, w, d, want, "estimate_mu_from_icor")
-  end subroutine expect_icor
-
-  subroutine expect(stat, msg, mu, s, w, d, want, where)
-    integer, intent(in) :: stat
-    character(len=*), intent(in) :: msg, want, where
-    real(dp), intent(in) :: mu, s, w, d(4)
+    character(len=:), allocatable :: where
+    where = "estimate_mu_from_" // basis
+    if (basis == "icor") then
+      call nanopush_estimate_mu_from_icor(r, F_, sF_, x, sx, mu, s, sigma_L=sL_, sigma_H=sH_, load=w, &
+                                          derivatives=d, stat=stat, errmsg=msg)
+    else
+      call nanopush_estimate_mu_from_force(r, F_, sF_, x, sx, mu, s, sigma_L=sL_, sigma_H=sH_, load=w, &
+                                           derivatives=d, stat=stat, errmsg=msg)
+    end if
     call check(stat == NANOPUSH_BAD_INPUT, where // ": stat = NANOPUSH_BAD_INPUT for '" // want // "'")
     call check(index(msg, want) == 1, where // ": errmsg '" // msg // "' should start with '" // want // "'")
     call check(ieee_is_nan(mu) .and. ieee_is_nan(s) .and. ieee_is_nan(w) .and. all(ieee_is_nan(d)), &
                where // ": outputs NaN after '" // want // "'")
-  end subroutine expect
-
+  end subroutine expect_bad
 
   real(dp) function number(i)
     integer, intent(in) :: i

@@ -21,7 +21,6 @@ program test_fortran_rhs_vs_f77
 
 contains
 
-
   !> Largest deviation of a from b, per component relative to max(|b(i,:)|), over all outputs.
   real(dp) function max_rel_dev(a, b)
     real(dp), intent(in) :: a(:, :), b(:, :)
@@ -32,34 +31,52 @@ contains
     end do
   end function max_rel_dev
 
+  !> Integrates the problem of dimension size(y0) (parameter mu) from 0 through tout with the
+  !> C++ Bulirsch-Stoer (Fortran RHS, nanopush_integrate) and with BSINT: both succeed, agree to
+  !> tol_agree and take the same steps. Returns both output tables and final states, the
+  !> context the RHS counted in and the C++ counts.
+  subroutine both_engines(what, label, mu, y0, tout, rtol, yout, yout77, y, y77, p, counts)
+    character(len=*), intent(in) :: what, label
+    real(dp), intent(in) :: mu, y0(:), tout(:), rtol
+    real(dp), allocatable, intent(out) :: yout(:, :)
+    real(dp), intent(out) :: yout77(size(y0), size(tout)), y(size(y0)), y77(size(y0))
+    type(ode_params), intent(out) :: p
+    integer(int64), intent(out) :: counts(3)
+    real(dp) :: atol(size(y0)), rpar(1), dev
+    integer :: ipar(1), nstat(3), ierr, stat
+    character(len=:), allocatable :: msg
+    external :: bsint
+    atol = rtol
+    p%mu = mu
+    y = y0
+    call nanopush_integrate(ode_rhs, 0.0_dp, y, tout, yout, rtol=rtol, atol=atol, ctx=p, &
+                            counts=counts, stat=stat, errmsg=msg)
+    call check(stat == NANOPUSH_OK, what // ": nanopush_integrate status 0, got " // msg)
+    y77 = y0
+    rpar(1) = mu
+    ipar(1) = 0
+    call bsint(f77_problem, size(y0), 0.0_dp, y77, size(tout), tout, yout77, rtol, atol, 0.0_dp, 0.0_dp, 8, 1, &
+               100000, rpar, ipar, nstat, ierr)
+    call check(ierr == 0, what // ": BSINT ierr 0")
+    dev = max_rel_dev(yout, yout77)
+    print '(2a,es8.1,a,es10.3,a,3i8,a,3i8)', label, ", rtol = ", rtol, &
+      ": max rel. deviation C++ vs F77 = ", dev, "; counts C++", counts, ", F77", nstat
+    call check(dev <= tol_agree, what // ": C++ (Fortran RHS) and F77 agree to 1e-12")
+    call check(all(counts == int(nstat, int64)), what // ": same RHS evaluations and steps")
+  end subroutine both_engines
+
   subroutine compare_kepler(e, rtol)
     real(dp), intent(in) :: e, rtol
     integer, parameter :: nout = 41
-    real(dp) :: tout(nout), y(4), y77(4), yout77(4, nout), atol(4), rpar(1), energy0, dev
+    real(dp) :: tout(nout), y(4), y77(4), yout77(4, nout), energy0
     real(dp), allocatable :: yout(:, :)
-    integer :: k, ipar(1), nstat(3), ierr, stat
+    integer :: k
     integer(int64) :: counts(3)
     type(ode_params) :: p
-    character(len=:), allocatable :: msg
-    external :: bsint
+    character(len=32) :: label
     tout = [(2 * pi * (k - 1) / (nout - 1), k = 1, nout)]
-    atol = rtol
-    p%mu = 1
-    y = kepler_start(e)
-    call nanopush_integrate(ode_rhs, 0.0_dp, y, tout, yout, rtol=rtol, atol=atol, ctx=p, &
-                            counts=counts, stat=stat, errmsg=msg)
-    call check(stat == NANOPUSH_OK, "kepler: nanopush_integrate status 0, got " // msg)
-    y77 = kepler_start(e)
-    rpar(1) = 1
-    ipar(1) = 0
-    call bsint(f77_problem, 4, 0.0_dp, y77, nout, tout, yout77, rtol, atol, 0.0_dp, 0.0_dp, 8, 1, &
-               100000, rpar, ipar, nstat, ierr)
-    call check(ierr == 0, "kepler: BSINT ierr 0")
-    dev = max_rel_dev(yout, yout77)
-    print '(a,f4.2,a,es8.1,a,es10.3,a,3i8,a,3i8)', "Kepler e = ", e, ", rtol = ", rtol, &
-      ": max rel. deviation C++ vs F77 = ", dev, "; counts C++", counts, ", F77", nstat
-    call check(dev <= tol_agree, "kepler: C++ (Fortran RHS) and F77 agree to 1e-12")
-    call check(all(counts == int(nstat, int64)), "kepler: same RHS evaluations and steps")
+    write (label, '(a,f4.2)') "Kepler e = ", e
+    call both_engines("kepler", trim(label), 1.0_dp, kepler_start(e), tout, rtol, yout, yout77, y, y77, p, counts)
     call check(p%evaluations == counts(1), "kepler: the RHS saw every evaluation through ctx")
     call check(all(abs(y - y77) <= tol_agree * max(1.0_dp, abs(y77))), "kepler: final state agrees")
     ! Independent oracles: periodic orbit and conserved energy.
@@ -73,30 +90,15 @@ contains
   subroutine compare_vdp(mu, rtol)
     real(dp), intent(in) :: mu, rtol
     integer, parameter :: nout = 101
-    real(dp) :: tout(nout), y(2), y77(2), yout77(2, nout), atol(2), rpar(1), dev
+    real(dp) :: tout(nout), y(2), y77(2), yout77(2, nout)
     real(dp), allocatable :: yout(:, :)
-    integer :: k, ipar(1), nstat(3), ierr, stat
+    integer :: k
     integer(int64) :: counts(3)
     type(ode_params) :: p
-    external :: bsint
+    character(len=32) :: label
     tout = [(20.0_dp * (k - 1) / (nout - 1), k = 1, nout)]
-    atol = rtol
-    p%mu = mu
-    y = [2.0_dp, 0.0_dp]
-    call nanopush_integrate(ode_rhs, 0.0_dp, y, tout, yout, rtol=rtol, atol=atol, ctx=p, &
-                            counts=counts, stat=stat)
-    call check(stat == NANOPUSH_OK, "vdp: nanopush_integrate status 0")
-    y77 = [2.0_dp, 0.0_dp]
-    rpar(1) = mu
-    ipar(1) = 0
-    call bsint(f77_problem, 2, 0.0_dp, y77, nout, tout, yout77, rtol, atol, 0.0_dp, 0.0_dp, 8, 1, &
-               100000, rpar, ipar, nstat, ierr)
-    call check(ierr == 0, "vdp: BSINT ierr 0")
-    dev = max_rel_dev(yout, yout77)
-    print '(a,f4.1,a,es8.1,a,es10.3,a,3i8,a,3i8)', "Van der Pol mu = ", mu, ", rtol = ", rtol, &
-      ": max rel. deviation C++ vs F77 = ", dev, "; counts C++", counts, ", F77", nstat
-    call check(dev <= tol_agree, "vdp: C++ (Fortran RHS) and F77 agree to 1e-12")
-    call check(all(counts == int(nstat, int64)), "vdp: same RHS evaluations and steps")
+    write (label, '(a,f4.1)') "Van der Pol mu = ", mu
+    call both_engines("vdp", trim(label), mu, [2.0_dp, 0.0_dp], tout, rtol, yout, yout77, y, y77, p, counts)
   end subroutine compare_vdp
 
 end program test_fortran_rhs_vs_f77
