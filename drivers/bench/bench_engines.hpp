@@ -180,6 +180,19 @@ void store(Solve& s, const std::vector<S>& yout) {
   for (std::size_t i = 0; i < yout.size(); ++i) s.y[i] = static_cast<quad>(yout[i]);
 }
 
+/// The solve of a C++ integration (BsResult, Dop853Result): status, message, counts, outputs.
+template <class Result, class S>
+Solve solve_of(const Result& r, const std::vector<S>& yout) {
+  Solve s;
+  s.status = static_cast<int>(r.status);
+  s.message = r.message;
+  s.nfcn = r.nfcn;
+  s.naccpt = r.naccpt;
+  s.nrejct = r.nrejct;
+  store(s, yout);
+  return s;
+}
+
 /// The solve of an F77 BSINT bridge call: its status (named after `routine` when not 0), the
 /// counts nstat = (nfcn, naccpt, nrejct) and the outputs.
 inline Solve f77_solve(const char* routine, int st, const int (&nstat)[3], const std::vector<double>& yout) {
@@ -249,14 +262,7 @@ Solve solve_cxx_bs(const Problem& p, const Rhs& rhs, double rtol, bool modern, d
   const BsResult r = bs.integrate(rhs, S(p.t0), y.data(), std::span<const S>(tout),
                                   [&](std::size_t k, S, const S* yy) { std::copy(yy, yy + n, &yout[k * nu]); });
   if (seconds) *seconds = detail::seconds_since(t0);
-  Solve s;
-  s.status = static_cast<int>(r.status);
-  s.message = r.message;
-  s.nfcn = r.nfcn;
-  s.naccpt = r.naccpt;
-  s.nrejct = r.nrejct;
-  detail::store(s, yout);
-  return s;
+  return detail::solve_of(r, yout);
 }
 
 // ---------------------------------------------------------------- C++ Dormand-Prince 8(5,3)
@@ -273,14 +279,7 @@ Solve solve_cxx_dop853(const Problem& p, const Rhs& rhs, double rtol, double* se
   const Dop853Result r = dp.integrate(rhs, p.t0, y.data(), std::span<const double>(p.tout),
                                       [&](std::size_t k, double, const double* yy) { std::copy(yy, yy + n, &yout[k * nu]); });
   if (seconds) *seconds = detail::seconds_since(t0);
-  Solve s;
-  s.status = static_cast<int>(r.status);
-  s.message = r.message;
-  s.nfcn = r.nfcn;
-  s.naccpt = r.naccpt;
-  s.nrejct = r.nrejct;
-  detail::store(s, yout);
-  return s;
+  return detail::solve_of(r, yout);
 }
 
 // ---------------------------------------------------------------- F77 BSINT, C callback
