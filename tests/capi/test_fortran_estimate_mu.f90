@@ -46,17 +46,19 @@ program test_fortran_estimate_mu
 
 contains
 
-  !> One estimate with every output, by MODE.
-  subroutine estimate(mu, sigma, load, d, stat, errmsg)
+  !> One estimate with every output: from the iCOR R = x_ (from_icor) or the force at yn = x_.
+  subroutine estimate(from_icor, r, F_, sF_, x_, sx_, sL_, sH_, mu, sigma, load, d, stat, errmsg)
+    logical, intent(in) :: from_icor
+    real(dp), intent(in) :: r(6), F_, sF_, x_, sx_, sL_, sH_
     real(dp), intent(out) :: mu, sigma, load, d(4)
     integer, intent(out) :: stat
     character(len=:), allocatable, intent(out) :: errmsg
-    if (mode == "yn") then
-      call nanopush_estimate_mu_from_force(rod, F, sF, x, sx, mu, sigma, sigma_L=sL, sigma_H=sH, load=load, &
-                                           derivatives=d, stat=stat, errmsg=errmsg)
-    else
-      call nanopush_estimate_mu_from_icor(rod, F, sF, x, sx, mu, sigma, sigma_L=sL, sigma_H=sH, load=load, &
+    if (from_icor) then
+      call nanopush_estimate_mu_from_icor(r, F_, sF_, x_, sx_, mu, sigma, sigma_L=sL_, sigma_H=sH_, load=load, &
                                           derivatives=d, stat=stat, errmsg=errmsg)
+    else
+      call nanopush_estimate_mu_from_force(r, F_, sF_, x_, sx_, mu, sigma, sigma_L=sL_, sigma_H=sH_, load=load, &
+                                           derivatives=d, stat=stat, errmsg=errmsg)
     end if
   end subroutine estimate
 
@@ -67,7 +69,7 @@ contains
     character(len=:), allocatable :: name, msg
     real(dp) :: mu, sigma, load, d(4), c(4), want_value, want_sigma, deriv
     integer :: unit, ios, stat, rows, k
-    call estimate(mu, sigma, load, d, stat, msg)
+    call estimate(mode == "icor", rod, F, sF, x, sx, sL, sH, mu, sigma, load, d, stat, msg)
     call check(stat == NANOPUSH_OK, "estimate: stat = NANOPUSH_OK (" // msg // ")")
     open (newunit=unit, file=path, status="old", action="read")
     read (unit, '(a)') line
@@ -179,13 +181,7 @@ contains
     character(len=:), allocatable :: msg
     character(len=:), allocatable :: where
     where = "estimate_mu_from_" // basis
-    if (basis == "icor") then
-      call nanopush_estimate_mu_from_icor(r, F_, sF_, x, sx, mu, s, sigma_L=sL_, sigma_H=sH_, load=w, &
-                                          derivatives=d, stat=stat, errmsg=msg)
-    else
-      call nanopush_estimate_mu_from_force(r, F_, sF_, x, sx, mu, s, sigma_L=sL_, sigma_H=sH_, load=w, &
-                                           derivatives=d, stat=stat, errmsg=msg)
-    end if
+    call estimate(basis == "icor", r, F_, sF_, x, sx, sL_, sH_, mu, s, w, d, stat, msg)
     call check(stat == NANOPUSH_BAD_INPUT, where // ": stat = NANOPUSH_BAD_INPUT for '" // want // "'")
     call check(index(msg, want) == 1, where // ": errmsg '" // msg // "' should start with '" // want // "'")
     call check(ieee_is_nan(mu) .and. ieee_is_nan(s) .and. ieee_is_nan(w) .and. all(ieee_is_nan(d)), &
