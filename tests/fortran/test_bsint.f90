@@ -4,56 +4,19 @@
 module bsint_test_rhs
   implicit none
   private
-  public :: rhs_exp, rhs_osc, rhs_fail, rhs_nan, rhs_blowup
+  public :: rhs, p_exp, p_osc, p_fail, p_nan, p_blowup
+
+  !> The test problems, chosen by ipar(2); ipar(1) counts the calls (to check NFCN).
+  integer, parameter :: p_exp = 1     !< y' = lambda y, lambda = rpar(1)
+  integer, parameter :: p_osc = 2     !< harmonic oscillator y1' = y2, y2' = -y1
+  integer, parameter :: p_fail = 3    !< y' = y until t > rpar(1), then fails with status 7
+  integer, parameter :: p_nan = 4     !< NaN derivatives (without failing)
+  integer, parameter :: p_blowup = 5  !< y' = y**2, y(0) = 1: y = 1/(1 - t), blows up at t = 1
 
 contains
 
-  !> y' = lambda y, lambda = rpar(1).
-  subroutine rhs_exp(n, t, y, dydt, rpar, ipar, ierr)
-    integer, intent(in) :: n
-    double precision, intent(in) :: t
-    double precision, intent(in) :: y(n)
-    double precision, intent(out) :: dydt(n)
-    double precision, intent(in) :: rpar(*)
-    integer, intent(inout) :: ipar(*)
-    integer, intent(inout) :: ierr
-    dydt = rpar(1) * y
-    ipar(1) = ipar(1) + 1          ! counts the calls, to check NFCN
-    ierr = 0
-  end subroutine rhs_exp
-
-  !> Harmonic oscillator y1' = y2, y2' = -y1.
-  subroutine rhs_osc(n, t, y, dydt, rpar, ipar, ierr)
-    integer, intent(in) :: n
-    double precision, intent(in) :: t
-    double precision, intent(in) :: y(n)
-    double precision, intent(out) :: dydt(n)
-    double precision, intent(in) :: rpar(*)
-    integer, intent(inout) :: ipar(*)
-    integer, intent(inout) :: ierr
-    dydt(1) = y(2)
-    dydt(2) = -y(1)
-    ipar(1) = ipar(1) + 1
-    ierr = 0
-  end subroutine rhs_osc
-
-  !> y' = y until t > rpar(1), then fails with status 7.
-  subroutine rhs_fail(n, t, y, dydt, rpar, ipar, ierr)
-    integer, intent(in) :: n
-    double precision, intent(in) :: t
-    double precision, intent(in) :: y(n)
-    double precision, intent(out) :: dydt(n)
-    double precision, intent(in) :: rpar(*)
-    integer, intent(inout) :: ipar(*)
-    integer, intent(inout) :: ierr
-    dydt = y
-    ipar(1) = ipar(1) + 1
-    ierr = 0
-    if (t > rpar(1)) ierr = 7
-  end subroutine rhs_fail
-
-  !> Returns NaN derivatives (without failing).
-  subroutine rhs_nan(n, t, y, dydt, rpar, ipar, ierr)
+  !> The derivative of problem ipar(2) (above); counts the call in ipar(1).
+  subroutine rhs(n, t, y, dydt, rpar, ipar, ierr)
     use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
     integer, intent(in) :: n
     double precision, intent(in) :: t
@@ -62,24 +25,23 @@ contains
     double precision, intent(in) :: rpar(*)
     integer, intent(inout) :: ipar(*)
     integer, intent(inout) :: ierr
-    dydt = ieee_value(1d0, ieee_quiet_nan)
     ipar(1) = ipar(1) + 1
     ierr = 0
-  end subroutine rhs_nan
-
-  !> y' = y**2, y(0) = 1: y = 1/(1 - t), blows up at t = 1.
-  subroutine rhs_blowup(n, t, y, dydt, rpar, ipar, ierr)
-    integer, intent(in) :: n
-    double precision, intent(in) :: t
-    double precision, intent(in) :: y(n)
-    double precision, intent(out) :: dydt(n)
-    double precision, intent(in) :: rpar(*)
-    integer, intent(inout) :: ipar(*)
-    integer, intent(inout) :: ierr
-    dydt = y * y
-    ipar(1) = ipar(1) + 1
-    ierr = 0
-  end subroutine rhs_blowup
+    select case (ipar(2))
+    case (p_exp)
+      dydt = rpar(1) * y
+    case (p_osc)
+      dydt(1) = y(2)
+      dydt(2) = -y(1)
+    case (p_fail)
+      dydt = y
+      if (t > rpar(1)) ierr = 7
+    case (p_nan)
+      dydt = ieee_value(1d0, ieee_quiet_nan)
+    case default
+      dydt = y * y
+    end select
+  end subroutine rhs
 
 end module bsint_test_rhs
 
@@ -118,7 +80,7 @@ contains
   !> y' = y on [0, 1], outputs at 0 (= T0), 0.25, 0.5, 0.5 (repeated), 1; both modes.
   subroutine test_exponential()
     double precision :: y(1), yout(1, 5), tout(5), atol(1), rpar(1), rtol, err
-    integer :: ipar(1), nstat(3), ierr, iextr, k
+    integer :: ipar(2), nstat(3), ierr, iextr, k
     character(64) :: tag
     tout = [0d0, 0.25d0, 0.5d0, 0.5d0, 1d0]
     rpar(1) = 1d0
@@ -128,8 +90,8 @@ contains
       atol = 1d-12
       y = 1d0
       yout = -1d0
-      ipar = 0
-      call bsint(rhs_exp, 1, 0d0, y, 5, tout, yout, rtol, atol, 0d0, 0d0, 8, iextr, 0, &
+      ipar = [0, p_exp]
+      call bsint(rhs, 1, 0d0, y, 5, tout, yout, rtol, atol, 0d0, 0d0, 8, iextr, 0, &
                  rpar, ipar, nstat, ierr)
       call check(ierr == 0, trim(tag) // ': status 0')
       call check(yout(1, 1) == 1d0, trim(tag) // ': output at T0 is y0 exactly')
@@ -149,7 +111,7 @@ contains
   subroutine test_oscillator()
     integer, parameter :: nout = 41
     double precision :: y(2), yout(2, nout), tout(nout), atol(2), rpar(1), err, eerr
-    integer :: ipar(1), nstat(3), ierr, iextr, k
+    integer :: ipar(2), nstat(3), ierr, iextr, k
     character(64) :: tag
     do k = 1, nout
       tout(k) = 0.5d0 * (k - 1)
@@ -159,8 +121,8 @@ contains
       write (tag, '(a, i0)') 'oscillator, iextr=', iextr
       y = [0d0, 1d0]
       atol = 1d-12
-      ipar = 0
-      call bsint(rhs_osc, 2, 0d0, y, nout, tout, yout, 1d-11, atol, 0d0, 0d0, 8, iextr, 0, &
+      ipar = [0, p_osc]
+      call bsint(rhs, 2, 0d0, y, nout, tout, yout, 1d-11, atol, 0d0, 0d0, 8, iextr, 0, &
                  rpar, ipar, nstat, ierr)
       call check(ierr == 0, trim(tag) // ': status 0')
       err = 0d0
@@ -182,7 +144,7 @@ contains
   subroutine test_convergence()
     integer, parameter :: nr = 6
     double precision :: y(2), yout(2, 1), tout(1), atol(2), rpar(1), rtol, err(nr)
-    integer :: ipar(1), nstat(3), ierr, iextr, i, nf(nr)
+    integer :: ipar(2), nstat(3), ierr, iextr, i, nf(nr)
     character(64) :: tag
     tout = 10d0
     rpar = 0d0
@@ -191,8 +153,8 @@ contains
         rtol = 10d0**(-3 - 2 * (i - 1))
         atol = rtol
         y = [0d0, 1d0]
-        ipar = 0
-        call bsint(rhs_osc, 2, 0d0, y, 1, tout, yout, rtol, atol, 0d0, 0d0, 8, iextr, 0, &
+        ipar = [0, p_osc]
+        call bsint(rhs, 2, 0d0, y, 1, tout, yout, rtol, atol, 0d0, 0d0, 8, iextr, 0, &
                    rpar, ipar, nstat, ierr)
         write (tag, '(a, i0, a, es8.1)') 'convergence, iextr=', iextr, ' rtol=', rtol
         call check(ierr == 0, trim(tag) // ': status 0')
@@ -212,88 +174,88 @@ contains
   !> Bad input gives status 1, with zero counts and Y untouched.
   subroutine test_bad_input()
     double precision :: y(2), yout(2, 3), tout(3), atol(2), rpar(1)
-    integer :: ipar(1), nstat(3), ierr
+    integer :: ipar(2), nstat(3), ierr
     rpar = 0d0
-    ipar = 0
+    ipar = [0, p_osc]
     atol = 1d-8
     tout = [0d0, 1d0, 2d0]
     y = [0d0, 1d0]
     ! N = 0
-    call bsint(rhs_osc, 0, 0d0, y, 3, tout, yout, 1d-8, atol, 0d0, 0d0, 8, 1, 0, &
+    call bsint(rhs, 0, 0d0, y, 3, tout, yout, 1d-8, atol, 0d0, 0d0, 8, 1, 0, &
                rpar, ipar, nstat, ierr)
     call check(ierr == 1, 'bad input: N = 0')
     call check(all(nstat == 0), 'bad input: counts are zero')
     call check(ipar(1) == 0, 'bad input: RHS never called')
     ! N > NMAX (64): the check happens before any array is touched.
-    call bsint(rhs_osc, 65, 0d0, y, 3, tout, yout, 1d-8, atol, 0d0, 0d0, 8, 1, 0, &
+    call bsint(rhs, 65, 0d0, y, 3, tout, yout, 1d-8, atol, 0d0, 0d0, 8, 1, 0, &
                rpar, ipar, nstat, ierr)
     call check(ierr == 1, 'bad input: N = 65 > NMAX')
     ! KMAX = 2 and KMAX = 13
-    call bsint(rhs_osc, 2, 0d0, y, 3, tout, yout, 1d-8, atol, 0d0, 0d0, 2, 1, 0, &
+    call bsint(rhs, 2, 0d0, y, 3, tout, yout, 1d-8, atol, 0d0, 0d0, 2, 1, 0, &
                rpar, ipar, nstat, ierr)
     call check(ierr == 1, 'bad input: KMAX = 2')
-    call bsint(rhs_osc, 2, 0d0, y, 3, tout, yout, 1d-8, atol, 0d0, 0d0, 13, 1, 0, &
+    call bsint(rhs, 2, 0d0, y, 3, tout, yout, 1d-8, atol, 0d0, 0d0, 13, 1, 0, &
                rpar, ipar, nstat, ierr)
     call check(ierr == 1, 'bad input: KMAX = 13')
     ! IEXTR = 3
-    call bsint(rhs_osc, 2, 0d0, y, 3, tout, yout, 1d-8, atol, 0d0, 0d0, 8, 3, 0, &
+    call bsint(rhs, 2, 0d0, y, 3, tout, yout, 1d-8, atol, 0d0, 0d0, 8, 3, 0, &
                rpar, ipar, nstat, ierr)
     call check(ierr == 1, 'bad input: IEXTR = 3')
     ! decreasing TOUT
     tout = [0d0, 2d0, 1d0]
-    call bsint(rhs_osc, 2, 0d0, y, 3, tout, yout, 1d-8, atol, 0d0, 0d0, 8, 1, 0, &
+    call bsint(rhs, 2, 0d0, y, 3, tout, yout, 1d-8, atol, 0d0, 0d0, 8, 1, 0, &
                rpar, ipar, nstat, ierr)
     call check(ierr == 1, 'bad input: decreasing TOUT')
     ! TOUT(1) before T0
     tout = [0d0, 1d0, 2d0]
-    call bsint(rhs_osc, 2, 0.5d0, y, 3, tout, yout, 1d-8, atol, 0d0, 0d0, 8, 1, 0, &
+    call bsint(rhs, 2, 0.5d0, y, 3, tout, yout, 1d-8, atol, 0d0, 0d0, 8, 1, 0, &
                rpar, ipar, nstat, ierr)
     call check(ierr == 1, 'bad input: TOUT(1) < T0')
     ! RTOL < 0
-    call bsint(rhs_osc, 2, 0d0, y, 3, tout, yout, -1d-8, atol, 0d0, 0d0, 8, 1, 0, &
+    call bsint(rhs, 2, 0d0, y, 3, tout, yout, -1d-8, atol, 0d0, 0d0, 8, 1, 0, &
                rpar, ipar, nstat, ierr)
     call check(ierr == 1, 'bad input: RTOL < 0')
     ! ATOL < 0; RTOL = ATOL = 0
     atol = [1d-8, -1d-8]
-    call bsint(rhs_osc, 2, 0d0, y, 3, tout, yout, 1d-8, atol, 0d0, 0d0, 8, 1, 0, &
+    call bsint(rhs, 2, 0d0, y, 3, tout, yout, 1d-8, atol, 0d0, 0d0, 8, 1, 0, &
                rpar, ipar, nstat, ierr)
     call check(ierr == 1, 'bad input: ATOL < 0')
     atol = [1d-8, 0d0]
-    call bsint(rhs_osc, 2, 0d0, y, 3, tout, yout, 0d0, atol, 0d0, 0d0, 8, 1, 0, &
+    call bsint(rhs, 2, 0d0, y, 3, tout, yout, 0d0, atol, 0d0, 0d0, 8, 1, 0, &
                rpar, ipar, nstat, ierr)
     call check(ierr == 1, 'bad input: RTOL = ATOL(2) = 0')
     ! negative H0 / HMAX, negative MAXSTP, NOUT = 0
     atol = 1d-8
-    call bsint(rhs_osc, 2, 0d0, y, 3, tout, yout, 1d-8, atol, -1d0, 0d0, 8, 1, 0, &
+    call bsint(rhs, 2, 0d0, y, 3, tout, yout, 1d-8, atol, -1d0, 0d0, 8, 1, 0, &
                rpar, ipar, nstat, ierr)
     call check(ierr == 1, 'bad input: H0 < 0')
-    call bsint(rhs_osc, 2, 0d0, y, 3, tout, yout, 1d-8, atol, 0d0, -1d0, 8, 1, 0, &
+    call bsint(rhs, 2, 0d0, y, 3, tout, yout, 1d-8, atol, 0d0, -1d0, 8, 1, 0, &
                rpar, ipar, nstat, ierr)
     call check(ierr == 1, 'bad input: HMAX < 0')
-    call bsint(rhs_osc, 2, 0d0, y, 3, tout, yout, 1d-8, atol, 0d0, 0d0, 8, 1, -1, &
+    call bsint(rhs, 2, 0d0, y, 3, tout, yout, 1d-8, atol, 0d0, 0d0, 8, 1, -1, &
                rpar, ipar, nstat, ierr)
     call check(ierr == 1, 'bad input: MAXSTP < 0')
-    call bsint(rhs_osc, 2, 0d0, y, 0, tout, yout, 1d-8, atol, 0d0, 0d0, 8, 1, 0, &
+    call bsint(rhs, 2, 0d0, y, 0, tout, yout, 1d-8, atol, 0d0, 0d0, 8, 1, 0, &
                rpar, ipar, nstat, ierr)
     call check(ierr == 1, 'bad input: NOUT = 0')
     ! non-finite initial state
     y(2) = huge(1d0)
     y(2) = y(2) * 2d0
-    call bsint(rhs_osc, 2, 0d0, y, 3, tout, yout, 1d-8, atol, 0d0, 0d0, 8, 1, 0, &
+    call bsint(rhs, 2, 0d0, y, 3, tout, yout, 1d-8, atol, 0d0, 0d0, 8, 1, 0, &
                rpar, ipar, nstat, ierr)
     call check(ierr == 1, 'bad input: Y0 infinite')
     call check(ipar(1) == 0, 'bad input: RHS never called in any case')
     ! KMAX = 0 means the default (8), and kmax = 3 and 12 are allowed.
     y = [0d0, 1d0]
-    call bsint(rhs_osc, 2, 0d0, y, 3, tout, yout, 1d-8, atol, 0d0, 0d0, 0, 1, 0, &
+    call bsint(rhs, 2, 0d0, y, 3, tout, yout, 1d-8, atol, 0d0, 0d0, 0, 1, 0, &
                rpar, ipar, nstat, ierr)
     call check(ierr == 0, 'KMAX = 0 (default) accepted')
     y = [0d0, 1d0]
-    call bsint(rhs_osc, 2, 0d0, y, 3, tout, yout, 1d-8, atol, 0d0, 0d0, 3, 1, 0, &
+    call bsint(rhs, 2, 0d0, y, 3, tout, yout, 1d-8, atol, 0d0, 0d0, 3, 1, 0, &
                rpar, ipar, nstat, ierr)
     call check(ierr == 0 .and. abs(y(1) - sin(2d0)) < 1d-6, 'KMAX = 3 works')
     y = [0d0, 1d0]
-    call bsint(rhs_osc, 2, 0d0, y, 3, tout, yout, 1d-8, atol, 0d0, 0d0, 12, 1, 0, &
+    call bsint(rhs, 2, 0d0, y, 3, tout, yout, 1d-8, atol, 0d0, 0d0, 12, 1, 0, &
                rpar, ipar, nstat, ierr)
     call check(ierr == 0 .and. abs(y(1) - sin(2d0)) < 1d-6, 'KMAX = 12 works')
   end subroutine test_bad_input
@@ -301,14 +263,14 @@ contains
   !> An FCN returning IERR = 7 gives status 4 at once; outputs before the failure are kept.
   subroutine test_rhs_failure()
     double precision :: y(1), yout(1, 3), tout(3), atol(1), rpar(1)
-    integer :: ipar(1), nstat(3), ierr
+    integer :: ipar(2), nstat(3), ierr
     tout = [0.25d0, 0.5d0, 1d0]
     rpar(1) = 0.6d0                    ! fails for t > 0.6
     atol = 1d-12
     y = 1d0
     yout = -1d0
-    ipar = 0
-    call bsint(rhs_fail, 1, 0d0, y, 3, tout, yout, 1d-10, atol, 0d0, 0d0, 8, 1, 0, &
+    ipar = [0, p_fail]
+    call bsint(rhs, 1, 0d0, y, 3, tout, yout, 1d-10, atol, 0d0, 0d0, 8, 1, 0, &
                rpar, ipar, nstat, ierr)
     call check(ierr == 4, 'RHS failure: status 4')
     call check(nstat(1) == ipar(1), 'RHS failure: NFCN counts the failing call')
@@ -320,13 +282,13 @@ contains
   !> MAXSTP exceeded gives status 2 with exactly MAXSTP attempted steps.
   subroutine test_maxstp()
     double precision :: y(2), yout(2, 1), tout(1), atol(2), rpar(1)
-    integer :: ipar(1), nstat(3), ierr
+    integer :: ipar(2), nstat(3), ierr
     tout = 100d0
     rpar = 0d0
     atol = 1d-10
     y = [0d0, 1d0]
-    ipar = 0
-    call bsint(rhs_osc, 2, 0d0, y, 1, tout, yout, 1d-10, atol, 0d0, 0d0, 8, 1, 5, &
+    ipar = [0, p_osc]
+    call bsint(rhs, 2, 0d0, y, 1, tout, yout, 1d-10, atol, 0d0, 0d0, 8, 1, 5, &
                rpar, ipar, nstat, ierr)
     call check(ierr == 2, 'MAXSTP: status 2')
     call check(nstat(2) + nstat(3) == 5, 'MAXSTP: exactly MAXSTP attempts made')
@@ -340,13 +302,13 @@ contains
   !> tests/test_bulirsch_stoer.cpp).
   subroutine test_nonfinite()
     double precision :: y(1), yout(1, 1), tout(1), atol(1), rpar(1)
-    integer :: ipar(1), nstat(3), ierr
+    integer :: ipar(2), nstat(3), ierr
     tout = 1d0
     rpar = 0d0
     atol = 1d-10
     y = 1d0
-    ipar = 0
-    call bsint(rhs_nan, 1, 0d0, y, 1, tout, yout, 1d-10, atol, 0d0, 0d0, 8, 1, 0, &
+    ipar = [0, p_nan]
+    call bsint(rhs, 1, 0d0, y, 1, tout, yout, 1d-10, atol, 0d0, 0d0, 8, 1, 0, &
                rpar, ipar, nstat, ierr)
     call check(ierr == 5, 'non-finite: status 5')
     call check(nstat(2) == 0 .and. nstat(3) == 10, 'non-finite: 10 rejections, no acceptance')
@@ -359,14 +321,14 @@ contains
   !> recorded the outputs before the pole accurately.
   subroutine test_blowup()
     double precision :: y(1), yout(1, 2), tout(2), atol(1), rpar(1)
-    integer :: ipar(1), nstat(3), ierr
+    integer :: ipar(2), nstat(3), ierr
     tout = [0.5d0, 2d0]
     rpar = 0d0
     atol = 1d-12
     y = 1d0
     yout = -1d0
-    ipar = 0
-    call bsint(rhs_blowup, 1, 0d0, y, 2, tout, yout, 1d-10, atol, 0d0, 0d0, 8, 1, 0, &
+    ipar = [0, p_blowup]
+    call bsint(rhs, 1, 0d0, y, 2, tout, yout, 1d-10, atol, 0d0, 0d0, 8, 1, 0, &
                rpar, ipar, nstat, ierr)
     write (*, '(a, i0, a, 3i7)') 'blow-up: status ', ierr, '  nstat', nstat
     call check(ierr == 3 .or. ierr == 5, 'blow-up: status 3 or 5')
@@ -379,18 +341,18 @@ contains
   !> (the step grows by at most 1/facmin = 50**(1/(2k-1)) <= 50 per step).
   subroutine test_step_limits()
     double precision :: y(1), yout(1, 1), tout(1), atol(1), rpar(1)
-    integer :: ipar(1), nstat(3), ierr
+    integer :: ipar(2), nstat(3), ierr
     tout = 1d0
     rpar(1) = 1d0
     atol = 1d-12
     y = 1d0
-    ipar = 0
-    call bsint(rhs_exp, 1, 0d0, y, 1, tout, yout, 1d-10, atol, 0d0, 1d-2, 8, 1, 0, &
+    ipar = [0, p_exp]
+    call bsint(rhs, 1, 0d0, y, 1, tout, yout, 1d-10, atol, 0d0, 1d-2, 8, 1, 0, &
                rpar, ipar, nstat, ierr)
     call check(ierr == 0 .and. nstat(2) >= 100, 'HMAX = 0.01: at least 100 steps on [0, 1]')
     call check(abs(y(1) - exp(1d0)) <= 1d-9 * exp(1d0), 'HMAX = 0.01: accurate')
     y = 1d0
-    call bsint(rhs_exp, 1, 0d0, y, 1, tout, yout, 1d-10, atol, 1d-12, 0d0, 8, 1, 0, &
+    call bsint(rhs, 1, 0d0, y, 1, tout, yout, 1d-10, atol, 1d-12, 0d0, 8, 1, 0, &
                rpar, ipar, nstat, ierr)
     call check(ierr == 0 .and. nstat(2) >= 7, 'H0 = 1e-12: at least log50(1e12) = 7 steps')
     call check(abs(y(1) - exp(1d0)) <= 1d-9 * exp(1d0), 'H0 = 1e-12: accurate')
