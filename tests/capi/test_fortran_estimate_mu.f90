@@ -11,7 +11,7 @@
 program test_fortran_estimate_mu
   use nanopush
   use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
-  use test_support, only: check, finish, same, argument, fields
+  use test_support, only: check, finish, same, argument, field, fields
   implicit none
   integer :: i
   real(dp) :: rod(6), F, sF, x, sx, sL, sH

@@ -10,7 +10,7 @@
 program test_fortran_friction_icor
   use nanopush
   use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
-  use test_support, only: check, finish, same, argument, fields
+  use test_support, only: check, finish, same, argument, field, fields
   implicit none
   real(dp) :: rod(6), L, k2, W, mu, ratio
   real(dp), parameter :: a_bar = 27.5e-9_dp, b_bar = 50e-9_dp
