@@ -1096,8 +1096,10 @@ contains
     real(dp), intent(out), optional :: load, derivatives(4)
     integer, intent(out), optional :: stat
     character(len=:), allocatable, intent(out), optional :: errmsg
+    character(len=:), allocatable :: msg
     call estimate_mu_single(.false., rod, force, sigma_force, yn, sigma_yn, mu, sigma, sigma_L, sigma_H, load, &
-                            derivatives, stat, errmsg)
+                            derivatives, stat, msg)
+    if (present(errmsg)) errmsg = msg
   end subroutine nanopush_estimate_mu_from_force
 
   !> Fig 4.5 (eq 4.10 inverted): mu = F b / (W R) from a push force F and the observed CM-to-iCOR
@@ -1110,23 +1112,25 @@ contains
     real(dp), intent(out), optional :: load, derivatives(4)
     integer, intent(out), optional :: stat
     character(len=:), allocatable, intent(out), optional :: errmsg
+    character(len=:), allocatable :: msg
     call estimate_mu_single(.true., rod, force, sigma_force, R, sigma_R, mu, sigma, sigma_L, sigma_H, load, &
-                            derivatives, stat, errmsg)
+                            derivatives, stat, msg)
+    if (present(errmsg)) errmsg = msg
   end subroutine nanopush_estimate_mu_from_icor
 
   !> The two single-measurement estimates: from the minimum force at yn = x (from_icor false) or
-  !> from the force and the observed iCOR at R = x (from_icor true); outputs NaN on failure.
+  !> from the force and the observed iCOR at R = x (from_icor true); outputs NaN on failure, the
+  !> message in msg.
   subroutine estimate_mu_single(from_icor, rod, force, sigma_force, x, sigma_x, mu, sigma, sigma_L, sigma_H, &
-                                load, derivatives, stat, errmsg)
+                                load, derivatives, stat, msg)
     logical, intent(in) :: from_icor
     real(dp), intent(in) :: rod(6), force, sigma_force, x, sigma_x
     real(dp), intent(out) :: mu, sigma
     real(dp), intent(in), optional :: sigma_L, sigma_H
     real(dp), intent(out), optional :: load, derivatives(4)
     integer, intent(out), optional :: stat
-    character(len=:), allocatable, intent(out), optional :: errmsg
+    character(len=:), allocatable, intent(out) :: msg  !< the error message ("" on success)
     type(c_ptr) :: err
-    character(len=:), allocatable :: msg
     real(c_double) :: m, s, w, d(4), sL, sH
     m = nan()
     s = nan()
@@ -1147,7 +1151,6 @@ contains
     sigma = s
     if (present(load)) load = w
     if (present(derivatives)) derivatives = d
-    if (present(errmsg)) errmsg = msg
   end subroutine estimate_mu_single
 
   !> N observations combined (C: nanopush_estimate_mu_batch; docs/fitting.md, `nanopush fit-icor`).
