@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
-# Build the libFuzzer target for the scene parser and --set (tests/fuzz/fuzz_scene.cpp) with
-# clang, ASan and UBSan, and run it for SECONDS (default 60) over the corpus in the
-# repository. Exit 0 when it finds nothing; a finding leaves its input in the work directory
-# (printed) and exits non-zero. Usage: tests/fuzz/run.sh [SECONDS] [BUILD_DIR]
+# Build the libFuzzer targets with clang, ASan and UBSan -- the scene parser and --set
+# (tests/fuzz/fuzz_scene.cpp, corpus tests/fuzz/corpus) and the table readers: --points, merge
+# tables and sidecars, journals, fit data (fuzz_tables.cpp, corpus tests/fuzz/corpus_tables)
+# -- and run them for SECONDS in all (default 60: two thirds to the scenes, a third to the
+# tables) over the corpora in the repository. Exit 0 when they find nothing; a finding leaves
+# its input in a kept directory (printed) and exits non-zero.
+# Usage: tests/fuzz/run.sh [SECONDS] [BUILD_DIR]
 set -euo pipefail
 secs=${1:-60}
 src=$(cd "$(dirname "$0")/../.." && pwd)
@@ -24,21 +27,27 @@ cmake -S "$src" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_CXX_FLAGS="$flags" \
   -DNANOPUSH_FUZZ=ON -DNANOPUSH_TESTS=OFF -DNANOPUSH_DRIVERS=OFF -DNANOPUSH_MPI=OFF > "$build.configure.log" 2>&1 \
   || { cat "$build.configure.log" >&2; exit 1; }
-cmake --build "$build" --target fuzz_scene -j2
+cmake --build "$build" --target fuzz_scene fuzz_tables -j2
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
-# New inputs go to ./new (the first corpus directory); the repository's corpus is only read.
-mkdir new
-set +e
-"$build/tests/fuzz/fuzz_scene" -max_total_time="$secs" -max_len=4096 -timeout=10 -rss_limit_mb=2048 \
-  -print_final_stats=1 new "$src/tests/fuzz/corpus" 2>&1 | tail -25
-rc=${PIPESTATUS[0]}
-set -e
-if [ "$rc" != 0 ]; then
-  keep=$(mktemp -d /tmp/nanopush-fuzz-finding-XXXXXX)
-  cp -r "$work"/* "$keep"/ 2>/dev/null || true
-  echo "fuzz: finding (libFuzzer exit $rc); inputs kept in $keep" >&2
-  exit 1
-fi
+# fuzz TARGET SECONDS CORPUS: new inputs go to ./TARGET (the first corpus directory); the
+# repository's corpus is only read.
+fuzz() {
+  mkdir -p "$1"
+  set +e
+  TMPDIR="$work" "$build/tests/fuzz/$1" -max_total_time="$2" -max_len=4096 -timeout=10 -rss_limit_mb=2048 \
+    -print_final_stats=1 "$1" "$src/tests/fuzz/$3" 2>&1 | tail -25
+  local rc=${PIPESTATUS[0]}
+  set -e
+  if [ "$rc" != 0 ]; then
+    keep=$(mktemp -d /tmp/nanopush-fuzz-finding-XXXXXX)
+    cp -r "$work"/* "$keep"/ 2>/dev/null || true
+    echo "fuzz: finding in $1 (libFuzzer exit $rc); inputs kept in $keep" >&2
+    exit 1
+  fi
+}
+tables=$((secs / 3 > 0 ? secs / 3 : 1))
+fuzz fuzz_scene $((secs - tables > 0 ? secs - tables : 1)) corpus
+fuzz fuzz_tables "$tables" corpus_tables
 echo "fuzz: no finding in ${secs} s"
