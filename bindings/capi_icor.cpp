@@ -69,7 +69,7 @@ int nanopush_icor_cubic_roots(nanopush_error error, double yn, double L, double 
     // The push point lies on the rod, as every chapter 4 formula requires (the C++ solver
     // itself stays defined beyond, for its robustness tests).
     nanopush::require_positive("L", L, "m");
-    nanopush::require_range("yn", yn, 0.0, 0.5 * L, "m; distance from the CM to the push point, at most b = L/2");
+    nanopush::require_range("yn", yn, 0.0, 0.5 * L, "m; push point on the rod, at most b = L/2");
     const icor::CubicSolution s = icor::solve_constrained_cubic(
         yn, L, k2, method == NANOPUSH_CUBIC_BRENT ? icor::CubicMethod::Brent : icor::CubicMethod::Eigen);
     const double nan = std::numeric_limits<double>::quiet_NaN();

@@ -29,11 +29,12 @@ void check_start(const nanopush::BsOptions<double>& o, double t0, const double* 
   nanopush::require_finite("t0", t0);
   for (int i = 0; i < n; ++i) nanopush::require_finite("y[" + std::to_string(i) + "]", y[i]);
   constexpr double eps = std::numeric_limits<double>::epsilon();
+  // Every output time finite first: an infinite last time made every span "too close".
+  for (int k = 0; k < nout; ++k) nanopush::require_finite("tout[" + std::to_string(k) + "]", tout[k]);
   double prev = t0;
   const double span = std::fabs(tout[nout - 1] - t0);
   for (int k = 0; k < nout; ++k) {
     const double t = tout[k];
-    nanopush::require_finite("tout[" + std::to_string(k) + "]", t);
     if (t < prev)
       throw nanopush::InputError("tout[" + std::to_string(k) + "]", nanopush::fmt(t),
                                  "must be >= " + std::string(k ? "tout[" + std::to_string(k - 1) + "]" : "t0") +

@@ -97,12 +97,13 @@ int run_roots(RootsOptions o) {
   std::vector<double> yns = o.yn;
   if (o.n > 0) {
     if (o.yn_max < 0.0) o.yn_max = o.rod.half_length();
-    require_nonnegative("--yn-min", o.yn_min, "m");
-    require_range("--yn-max", o.yn_max, o.yn_min, 1e300, "m");
+    require_range("--yn-min", o.yn_min, 0.0, 0.5 * L, "m");
+    require_range("--yn-max", o.yn_max, o.yn_min, 0.5 * L, "m");
     for (double y : sweep(o.yn_min, o.yn_max, o.n, o.log)) yns.push_back(y);
   }
   if (yns.empty()) throw InputError("--yn", "(none)", "give --yn values or a sweep with --n");
-  for (double y : yns) require_nonnegative("--yn", y, "m");
+  // The push point lies on the rod, as in every front end (Python cubic_roots, the C API).
+  for (double y : yns) require_range("--yn", y, 0.0, 0.5 * L, "m; push point on the rod, at most b = L/2");
   Table t(o.out, {{"yn", "m", "push point: distance from the CM along the rod"},
                   text_column("solver", "brent (bracketing) or eigen/lapack (companion-matrix eigenvalues)"),
                   text_column("language", "cxx or f77"),

@@ -49,6 +49,20 @@ int main(int argc, char** argv) {
               << "\nRun 'nanopush --help' for what each does.\n";
     return 2;
   }
+  // The same for a command that has subcommands of its own (icor formulas, roots, ...).
+  if (argc > 2 && argv[1][0] != '-' && argv[2][0] != '-') {
+    CLI::App* cmd = app.get_subcommand(argv[1]);
+    const auto subs = cmd ? cmd->get_subcommands([](CLI::App*) { return true; }) : std::vector<CLI::App*>{};
+    if (!subs.empty() &&
+        std::none_of(subs.begin(), subs.end(), [&](CLI::App* a) { return a->check_name(argv[2]); })) {
+      std::string names;
+      for (const auto* a : subs) names += (names.empty() ? "" : ", ") + a->get_name();
+      std::cerr << "nanopush: error: unknown subcommand '" << argv[2] << "' of '" << argv[1]
+                << "'; its subcommands are: " << names << "\nRun 'nanopush " << argv[1]
+                << " --help' for what each does.\n";
+      return 2;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {  // --help, --help-all, --version

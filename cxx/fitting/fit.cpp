@@ -449,6 +449,14 @@ FitResult fit_trajectory(const Scene& scene, const Observations& obs, const FitO
   std::vector<double> crel(np);
   for (std::size_t k = 0; k < np; ++k) crel[k] = detail::parameter_scale(scene, options.free[k], p[k]);
   const Eigen::MatrixXd J = residuals_and_jacobian(obs, mp, crel, m, res);
+  // chi2 beyond a double (data 1e308 with sigma 1e-300) or NaN is no fit, whatever the
+  // minimiser's status said: a failure (exit 3), never "converged".
+  if (!std::isfinite(res.chi2)) {
+    res.converged = false;
+    res.status = "not converged: chi2 = " + fmt(res.chi2) +
+                 " is not finite: the weighted residuals (data - model) / sigma overflow a double; check the data's "
+                 "values and sigmas";
+  }
   res.dof = static_cast<long>(m) - static_cast<long>(np);
   res.chi2_dof = res.chi2 / static_cast<double>(res.dof);
   res.scene = detail::scene_at(scene, options.free, p);

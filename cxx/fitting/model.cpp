@@ -150,13 +150,28 @@ ModelPoses smooth_poses(const Scene& scene, const std::vector<std::string>& free
   const int n = f0.n;
   std::vector<double> scale(np);
   std::vector<SceneRhs> plus, minus;
+  std::vector<double> width(np, 2 * kEta);  // of each difference, in units of the scale
   for (std::size_t k = 0; k < np; ++k) {
     scale[k] = detail::parameter_scale(scene, free[k], p[k]);
     auto pp = p, pm = p;
     pp[k] += kEta * scale[k];
     pm[k] -= kEta * scale[k];
-    plus.push_back(make_rhs(detail::scene_at(scene, free, pp)));
-    minus.push_back(make_rhs(detail::scene_at(scene, free, pm)));
+    // At the end of a key's range (surface.mu = 0) the step beyond it is no scene: a one-sided
+    // difference against the centre instead, never an error citing a value nobody wrote.
+    auto side = [&](const std::vector<double>& q) -> std::optional<SceneRhs> {
+      try {
+        return make_rhs(detail::scene_at(scene, free, q));
+      } catch (const InputError&) {
+        return std::nullopt;
+      }
+    };
+    auto a = side(pp), b = side(pm);
+    if (!a && !b) {
+      (void)make_rhs(detail::scene_at(scene, free, pp));  // neither side: the error of the + side
+    }
+    if (!a || !b) width[k] = kEta;
+    plus.push_back(a ? std::move(*a) : make_rhs(detail::scene_at(scene, free, p)));
+    minus.push_back(b ? std::move(*b) : make_rhs(detail::scene_at(scene, free, p)));
   }
   const int N = n * static_cast<int>(1 + np);
   std::vector<double> y(static_cast<std::size_t>(N), 0.0);
@@ -164,7 +179,7 @@ ModelPoses smooth_poses(const Scene& scene, const std::vector<std::string>& free
   for (std::size_t k = 0; k < np; ++k)
     for (int i = 0; i < n; ++i)
       y[static_cast<std::size_t>(n * static_cast<int>(k + 1) + i)] =
-          (plus[k].y0[static_cast<std::size_t>(i)] - minus[k].y0[static_cast<std::size_t>(i)]) / (2 * kEta);
+          (plus[k].y0[static_cast<std::size_t>(i)] - minus[k].y0[static_cast<std::size_t>(i)]) / width[k];
   const auto scales = scene.state_scales();
   std::vector<double> atol(static_cast<std::size_t>(N));
   for (int i = 0; i < N; ++i) atol[static_cast<std::size_t>(i)] = rtol * scales[static_cast<std::size_t>(i % n)];
@@ -198,7 +213,7 @@ ModelPoses smooth_poses(const Scene& scene, const std::vector<std::string>& free
       }
       plus[k](Y, fa.data());
       minus[k](Y, fb.data());
-      for (int i = 0; i < n; ++i) ds[i] += (fa[static_cast<std::size_t>(i)] - fb[static_cast<std::size_t>(i)]) / (2 * kEta);
+      for (int i = 0; i < n; ++i) ds[i] += (fa[static_cast<std::size_t>(i)] - fb[static_cast<std::size_t>(i)]) / width[k];
     }
     for (int i = 0; i < N; ++i)
       if (!std::isfinite(D[i])) return 1;
@@ -312,14 +327,19 @@ ModelPoses model_poses(const Scene& scene, const std::vector<std::string>& free,
     // one-sided difference against the centre, at the same tolerance.
     std::optional<std::vector<std::array<double, 3>>> a, b;
     std::string why;
+    // A side beyond the key's range (surface.mu = 0 - h) is no scene: one-sided as well.
     try {
       a = fwd(pp);
     } catch (const SolverError& e) {
+      why = e.what();
+    } catch (const InputError& e) {
       why = e.what();
     }
     try {
       b = fwd(pm);
     } catch (const SolverError& e) {
+      why = e.what();
+    } catch (const InputError& e) {
       why = e.what();
     }
     double width = 2 * h;

@@ -102,7 +102,17 @@ BatchEstimate estimate_mu_batch(const Rod& rod, const std::vector<Observation>& 
       throw InputError(where + e.what());
     }
     const MuEstimate& e = b.rows.back().estimate;
-    if (!(e.sigma > 0.0) || !std::isfinite(e.sigma) || !std::isfinite(e.mu))
+    if (!std::isfinite(e.sigma) || !std::isfinite(e.mu)) {
+      // F = 1e308 gave "sigma of mu = -nan": say what was written and why it is no answer.
+      const Observation& ob = observations[i];
+      std::string given = "F = " + fmt(ob.force.value);
+      if (ob.yn) given += ", yn = " + fmt(ob.yn->value);
+      if (ob.R) given += ", R = " + fmt(ob.R->value);
+      throw InputError(where + given +
+                       ": mu or its uncertainty is not a finite number: these values overflow a double (forces in "
+                       "N, lengths in m; a push force is of the order of the load " + fmt(b.load) + " N)");
+    }
+    if (!(e.sigma > 0.0))
       throw InputError(where + "sigma of mu = " + fmt(e.sigma) +
                        ": must be > 0 (give F, yn or R a standard uncertainty > 0)");
   }

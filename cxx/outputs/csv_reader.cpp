@@ -70,6 +70,9 @@ bool Reader::read_record(Record& r) {
       return true;
     }
     const char ch = static_cast<char>(c);
+    if (ch == '\0')  // a C string would end there: "1\0junk" must not read as 1
+      throw InputError(where(), "a NUL byte after \"" + field.substr(0, 40) + "\"",
+                       "a text CSV has no NUL bytes: is this a binary file?");
     if (quoted) {
       if (ch == '"') {
         if (in_.peek() == '"') {

@@ -36,6 +36,9 @@ void def_vec(py::module_& m, const char* name, F f, std::array<const char*, N> n
 }
 
 CubicSolution solve_cubic(double yn, double L, double k2, const std::string& solver) {
+  // The push point lies on the rod, as `nanopush icor roots` and the C API require.
+  require_positive("L", L, "m");
+  require_range("yn", yn, 0.0, 0.5 * L, "m; push point on the rod, at most b = L/2");
   if (solver == "brent") return icor::solve_constrained_cubic(yn, L, k2, icor::CubicMethod::Brent);
   if (solver == "eigen") return icor::solve_constrained_cubic(yn, L, k2, icor::CubicMethod::Eigen);
   if (solver == "brent_f77") return f77::icor_cubic(yn, L, k2, f77::IcorCubicMethod::Brent);

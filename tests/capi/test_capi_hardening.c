@@ -67,6 +67,14 @@ int main(int argc, char** argv) {
   y[0] = 1.0, y[1] = 2.0;
   CHECK(nanopush_integrate(err, it, decay, NULL, 0.0, y, 2, tout, NULL, NULL) == NANOPUSH_OK);
   CHECK(fabs(y[0] - exp(-1.0)) < 1e-7);
+  /* An infinite last output time is bad input naming it (it read as "too close", issue 34). */
+  tout[0] = 1.0, tout[1] = INFINITY;
+  expect(err, nanopush_integrate(err, it, decay, NULL, 0.0, y, 2, tout, NULL, NULL), NANOPUSH_BAD_INPUT,
+         "tout[1] = inf", "tout = +inf");
+  tout[1] = -INFINITY;
+  expect(err, nanopush_integrate(err, it, decay, NULL, 0.0, y, 2, tout, NULL, NULL), NANOPUSH_BAD_INPUT,
+         "tout[1] = -inf", "tout = -inf");
+  tout[0] = 1e-13, tout[1] = 1.0;
   y[0] = INFINITY;
   expect(err, nanopush_integrate(err, it, decay, NULL, 0.0, y, 1, tout, NULL, NULL), NANOPUSH_BAD_INPUT,
          "y[0] = inf", "y0 infinite");

@@ -19,7 +19,7 @@ set_tests_properties(cli.icor.bad_yn_fails PROPERTIES WILL_FAIL TRUE)
 add_test(NAME cli.icor.bad_yn_message
          COMMAND $<TARGET_FILE:nanopush> icor roots --yn -1e-9)
 set_tests_properties(cli.icor.bad_yn_message PROPERTIES
-  PASS_REGULAR_EXPRESSION "--yn = -1[.0-9e-]*: must be >= 0 \\(m\\)")
+  PASS_REGULAR_EXPRESSION "--yn = -1[.0-9e-]*: must be in \\[0, 2.95e-07\\] \\(m; push point on the rod, at most b = L/2\\)")
 
 add_test(NAME cli.icor.bad_length_fails
          COMMAND $<TARGET_FILE:nanopush> icor roots --yn 1e-9 --length 0)

@@ -53,7 +53,7 @@ def test_formulas_bit_for_bit(cli, tmp_path, mu, ratio, rod_args):
 
 
 def test_roots_by_every_solver_bit_for_bit(cli, tmp_path):
-    yns = [0.0, 1e-15, 1e-9, 100e-9, 295e-9, 1e-6]
+    yns = [0.0, 1e-15, 1e-9, 100e-9, 200e-9, 295e-9]
     out = tmp_path / "r.csv"
     cli("icor", "roots", *[a for y in yns for a in ("--yn", repr(y))], "--out", out)
     h, rows = read_csv(out)
@@ -162,6 +162,11 @@ def test_broadcasting_and_errors(cli):
     with pytest.raises(nanopush.InputError) as e:
         icor.cubic_roots(-1e-9, L, K2)
     assert str(e.value) == cli.error("icor", "roots", "--yn", "-1e-9").replace("--yn", "yn")
+    # Beyond the rod's end (yn > L/2) is refused as by the CLI and the C API (issue 34).
+    with pytest.raises(nanopush.InputError) as e:
+        icor.cubic_roots(1.0, L, K2)
+    assert str(e.value) == cli.error("icor", "roots", "--yn", "1").replace("--yn", "yn")
+    assert "at most b = L/2" in str(e.value)
     assert msg  # the CLI refuses the rod too
     with pytest.raises(nanopush.InputError, match="solver = newton"):
         icor.cubic_roots(1e-9, L, K2, solver="newton")

@@ -99,7 +99,7 @@ def test_no_leaks_over_ten_thousand_calls():
     R = np.linspace(0, 1e-6, 64).reshape(8, 8)
     alpha = np.linspace(0, 6, 8)
     _leak_check(lambda r, a: nanopush.friction_wrench(27.5e-9, 50e-9, r, a), args=(R, alpha))
-    _leak_check(lambda y: nanopush.icor.cubic_branches(y, 590e-9, 2.9e-14), args=(R,))
+    _leak_check(lambda y: nanopush.icor.cubic_branches(y, 590e-9, 2.9e-14), args=(R * 0.29,))  # yn <= L/2
     scene = nanopush.Scene.preset("fig3_6a")
     scene.set({"solver.samples": 5, "solver.t_end": 1e-11})
     _leak_check(lambda s: nanopush.run(s).theta, args=(scene,))
