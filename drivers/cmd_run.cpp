@@ -7,6 +7,7 @@
 #include <iostream>
 #include <unistd.h>
 
+#include "nanopush/scenes/engine_method.hpp"
 #include "nanopush/outputs/trajectory_csv.hpp"
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/engines/engines.hpp"
@@ -81,6 +82,7 @@ int run_cmd(const RunOptions& o) {
   rs.progress = progress_printer(sc.name);
   rs.accuracy = o.accuracy;
   if (o.no_estimate) rs.error_estimate = false;
+  check_engine_method(sc, rs);
   const auto t0 = std::chrono::steady_clock::now();
   const Trajectory tr = run_engine(sc, rs);
   const double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

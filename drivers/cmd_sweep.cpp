@@ -32,6 +32,7 @@ extern "C" void on_signal(int sig) {
 struct SweepOptions {
   std::string scene, task = "run", out, trajectories, shard, engine, method, law;
   std::vector<std::string> sets, vary, vary_log, merge;
+  std::vector<std::string> given;  ///< the options given on the command line (names as --help shows them)
   std::string points;
   unsigned jobs = 0;
   bool quiet = false;
@@ -109,6 +110,13 @@ std::function<void(std::size_t, std::size_t)> progress_line(bool quiet) {
 
 int sweep_cmd(SweepOptions o) {
   if (!o.merge.empty()) {
+    // Merge joins tables: a scene, an axis, a shard or a run option would be ignored, so it is
+    // refused (the shards' sidecars say what their sweep was).
+    for (const auto& g : o.given)
+      if (g != "--merge" && g != "--out" && g != "--quiet")
+        throw InputError(g, "(given with --merge)",
+                         "--merge joins finished shard tables and takes only --out and --quiet: run the sweep "
+                         "(with " + g + ") and merge its shards in a separate command");
     if (o.out.empty()) throw InputError("--out", "(missing)", "--merge writes the joined table to --out FILE");
     const auto failed = sweep::merge_tables({o.merge.begin(), o.merge.end()}, o.out);
     if (!o.quiet) std::cerr << "sweep: joined " << o.merge.size() << " shards into " << o.out << "\n";
@@ -159,6 +167,16 @@ int sweep_cmd(SweepOptions o) {
     for (const auto& v : o.vary_log) axes.push_back(sweep::parse_axis(v, true));
     plan = sweep::cartesian(axes);
   }
+  // A key is fixed (--set, the [sweep] table's set) or varied, never both: the fixed value
+  // would be overwritten at every point.
+  for (const auto& set : o.sets) {
+    const std::string key = set.substr(0, set.find('='));
+    for (const auto& k : plan.keys)
+      if (k == key)
+        throw InputError("--set", set,
+                         "conflicts with " + std::string(o.points.empty() ? "--vary" : "--points " + o.points) +
+                             ", which varies " + key + ": a key is either fixed or varied");
+  }
   sweep::Options opt;
   opt.jobs = o.jobs;
   if (!o.shard.empty()) std::tie(opt.shard_index, opt.shard_count) = parse_shard(o.shard);
@@ -168,7 +186,7 @@ int sweep_cmd(SweepOptions o) {
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
 
-  if (mpi_launched()) return run_mpi_sweep(plan, *task, opt, o.quiet);
+  if (mpi_launched()) return run_mpi_sweep(plan, *task, opt, o.quiet, &g_signal);
 
   const auto r = sweep::run_local(plan, *task, opt);
   if (!r.complete) {
@@ -213,7 +231,11 @@ RegisterCommand reg{
        app.add_option("--shard", o->shard, "i/n: run only the i-th of n disjoint parts (job arrays); join with --merge");
        app.add_option("--merge", o->merge, "join these shard tables into --out (and check every point is there once)");
        app.add_flag("--quiet", o->quiet, "no summary or progress on standard error");
-       return [o] { return sweep_cmd(*o); };
+       return [o, a = &app] {
+         for (const CLI::Option* opt : a->get_options())
+           if (opt->count() > 0 && opt->get_name() != "--help") o->given.push_back(opt->get_name());
+         return sweep_cmd(*o);
+       };
      }}};
 
 }  // namespace NANOPUSH_UNITY_ID

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <condition_variable>
+#include <csignal>
 #include <cstdlib>
 #include <deque>
 #include <iostream>
@@ -14,6 +15,9 @@
 #include "nanopush/numerics/error.hpp"
 
 #ifdef NANOPUSH_HAVE_MPI
+#include <sys/prctl.h>
+#include <unistd.h>
+
 #include <mpi.h>
 #endif
 
@@ -29,7 +33,7 @@ bool mpi_launched() {
 
 #ifndef NANOPUSH_HAVE_MPI
 
-int run_mpi_sweep(const sweep::Plan&, const sweep::Task&, const sweep::Options&, bool) {
+int run_mpi_sweep(const sweep::Plan&, const sweep::Task&, const sweep::Options&, bool, const volatile std::sig_atomic_t*) {
   throw InputError("mpirun", "(several ranks)",
                    "this nanopush was built without MPI (configure with NANOPUSH_MPI=ON and OpenMPI installed); use "
                    "--shard i/n and --merge for job arrays instead");
@@ -39,11 +43,43 @@ int run_mpi_sweep(const sweep::Plan&, const sweep::Task&, const sweep::Options&,
 
 namespace {
 
-/// Worker rank -> rank 0: kRequest (int: points wanted; 0 when stopping), kRow (a finished
-/// row), kDone (after its last row: nothing more will come). Rank 0 -> worker: kWork (the
-/// point indices; none: no more work). Messages between two ranks arrive in order, so every
-/// row of a rank is received before its kDone.
-enum Tag : int { kRequest = 1, kWork = 2, kRow = 3, kDone = 4 };
+/// Worker rank -> rank 0: kRequest (int: points wanted; 0 when stopping, -N when this rank
+/// stops on signal N, which stops every rank), kRow (a finished row), kDone (after its last
+/// row: nothing more will come). Rank 0 -> worker: kWork (the point indices; none: no more
+/// work), kStop (int N: stop, rank 0 or another rank had signal N), kFinal (int: the exit
+/// status, after every kDone). Messages between two ranks arrive in order, so every row of a
+/// rank is received before its kDone, and a kStop before the kFinal.
+enum Tag : int { kRequest = 1, kWork = 2, kRow = 3, kDone = 4, kStop = 5, kFinal = 6 };
+
+/// A kStop from rank 0 waiting to be received: receive it, true.
+bool stop_from_rank0() {
+  int flag = 0;
+  MPI_Iprobe(0, kStop, MPI_COMM_WORLD, &flag, MPI_STATUS_IGNORE);
+  if (!flag) return false;
+  int sig = 0;
+  MPI_Recv(&sig, 1, MPI_INT, 0, kStop, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+  return true;
+}
+
+/// A worker rank after its kDone: wait for rank 0's kFinal (the exit status), sleeping between
+/// looks (a blocking MPI call would spin on a core), a late kStop received and dropped.
+int final_status() {
+  for (;;) {
+    int flag = 0;
+    MPI_Status st;
+    MPI_Iprobe(0, MPI_ANY_TAG, MPI_COMM_WORLD, &flag, &st);
+    if (flag) {
+      int v = 0;
+      MPI_Recv(&v, 1, MPI_INT, 0, st.MPI_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+      if (st.MPI_TAG == kFinal) return v;
+      continue;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+}
+
+/// The signal that stopped this rank (SIGINT if it was not recorded).
+int signal_of(const volatile std::sig_atomic_t* sig) { return sig && *sig ? static_cast<int>(*sig) : SIGINT; }
 
 /// Threads of one rank: take indices from `queue`, put finished rows into `outbox`.
 struct LocalWork {
@@ -149,14 +185,17 @@ std::optional<std::vector<long long>> work_reply(bool wait) {
 
 /// A worker rank of one thread: the main thread evaluates the points itself and talks to rank 0
 /// between them (its next points asked for ahead), so no second thread shares its core.
-void serve_on_main_thread(const sweep::Plan& plan, const sweep::Task& task, const std::atomic<bool>* stop) {
+void serve_on_main_thread(const sweep::Plan& plan, const sweep::Task& task, const std::atomic<bool>* stop,
+                          const volatile std::sig_atomic_t* sig) {
   std::deque<std::size_t> queue;
-  bool finished = false, asked = false;
+  bool finished = false, asked = false, remote = false;
   for (;;) {
-    const bool stopping = stop && stop->load();
+    if (!remote) remote = stop_from_rank0();
+    const bool local = stop && stop->load();
+    const bool stopping = local || remote;
     if (stopping) queue.clear();  // not started: a resumed sweep computes them
     if (!finished && !asked) {
-      const int want = stopping ? 0 : kAhead - static_cast<int>(queue.size());
+      const int want = stopping ? (local ? -signal_of(sig) : 0) : kAhead - static_cast<int>(queue.size());
       if (want > 0 || stopping) {
         MPI_Send(&want, 1, MPI_INT, 0, kRequest, MPI_COMM_WORLD);
         asked = true;
@@ -180,11 +219,43 @@ void serve_on_main_thread(const sweep::Plan& plan, const sweep::Task& task, cons
   MPI_Send(nullptr, 0, MPI_INT, 0, kDone, MPI_COMM_WORLD);
 }
 
+/// An error on a rank (a journal of another sweep, a table that cannot be written, a bug) ends
+/// every rank: said as the command line says it (docs/errors.md), then MPI_Abort with the
+/// status, so no rank waits for ever on one that is gone.
+[[noreturn]] void abort_job(std::exception_ptr e) {
+  int code = 70;
+  try {
+    std::rethrow_exception(e);
+  } catch (const InputError& x) {
+    std::cerr << "nanopush: error: " << x.what() << "\n";
+    code = 2;
+  } catch (const SolverError& x) {
+    std::cerr << "nanopush: solver failure: " << x.what() << "\n";
+    code = 3;
+  } catch (const std::logic_error& x) {
+    std::cerr << "nanopush: internal error (a bug: please report it with the command line): " << x.what() << "\n";
+  } catch (const std::exception& x) {
+    std::cerr << "nanopush: system error: " << x.what() << "\n";
+    code = 5;
+  } catch (...) {
+    std::cerr << "nanopush: internal error (a bug: please report it with the command line)\n";
+  }
+  std::cerr.flush();
+  MPI_Abort(MPI_COMM_WORLD, code);
+  std::_Exit(code);
+}
+
 }  // namespace
 
-int run_mpi_sweep(const sweep::Plan& plan, const sweep::Task& task, const sweep::Options& o, bool quiet) {
+int run_mpi_sweep(const sweep::Plan& plan, const sweep::Task& task, const sweep::Options& o, bool quiet,
+                  const volatile std::sig_atomic_t* sig) {
   const auto start = std::chrono::steady_clock::now();
   prefer_shared_memory_on_one_node();
+  // mpirun (or its daemon) is this rank's parent: when it dies, even by SIGKILL, the rank gets
+  // SIGTERM and stops as on any SIGTERM, instead of computing on as an orphan.
+  const pid_t parent = ::getppid();
+  ::prctl(PR_SET_PDEATHSIG, SIGTERM);
+  if (::getppid() != parent) std::raise(SIGTERM);
   int provided = 0;
   MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
   int rank = 0, size = 1;
@@ -196,162 +267,195 @@ int run_mpi_sweep(const sweep::Plan& plan, const sweep::Task& task, const sweep:
   int status = 0;
 
   if (rank == 0) {
-    // The coordinator: journal, the list of pending points, the rows.
-    const auto pts = sweep::shard_points(plan.size(), o.shard_index, o.shard_count);
-    (void)sweep::table_columns(plan, task);
-    sweep::Journal journal(sweep::journal_path(o.out),
-                           sweep::sweep_identity(plan, task, o.shard_index, o.shard_count));
-    std::map<std::size_t, std::vector<std::string>> rows;
-    const std::set<std::size_t> mine(pts.begin(), pts.end());
-    for (const auto& [i, r] : journal.resumed())
-      if (mine.count(i)) rows[i] = r;
-    std::deque<std::size_t> pending;
-    for (std::size_t i : pts)
-      if (!rows.count(i)) pending.push_back(i);
-    const std::size_t resumed = rows.size();
-    // Rank 0's own threads draw from the same pending list, a few at a time.
-    for (unsigned t = 0; t < jobs; ++t) threads.emplace_back(worker, std::ref(w), std::cref(plan), std::cref(task), o.stop);
-    int done_ranks = 0;  // worker ranks that sent kDone (all their rows are in)
-    auto last = std::chrono::steady_clock::now();
-    while (true) {
-      const bool stopping = o.stop && o.stop->load();
-      {  // feed local threads and collect their rows
-        std::lock_guard<std::mutex> lock(w.m);
-        while (!stopping && w.queue.size() < jobs && !pending.empty()) {
-          w.queue.push_back(pending.front());
-          pending.pop_front();
+    try {
+      // The coordinator: journal, the list of pending points, the rows.
+      const auto pts = sweep::shard_points(plan.size(), o.shard_index, o.shard_count);
+      (void)sweep::table_columns(plan, task);
+      sweep::Journal journal(sweep::journal_path(o.out),
+                             sweep::sweep_identity(plan, task, o.shard_index, o.shard_count));
+      std::map<std::size_t, std::vector<std::string>> rows;
+      const std::set<std::size_t> mine(pts.begin(), pts.end());
+      for (const auto& [i, r] : journal.resumed())
+        if (mine.count(i)) rows[i] = r;
+      std::deque<std::size_t> pending;
+      for (std::size_t i : pts)
+        if (!rows.count(i)) pending.push_back(i);
+      const std::size_t resumed = rows.size();
+      // Rank 0's own threads draw from the same pending list, a few at a time; a stop (this
+      // rank's signal, or one a worker rank reports) ends them after their points in flight.
+      std::atomic<bool> stop_all{false};
+      for (unsigned t = 0; t < jobs; ++t)
+        threads.emplace_back(worker, std::ref(w), std::cref(plan), std::cref(task), &stop_all);
+      int done_ranks = 0;  // worker ranks that sent kDone (all their rows are in)
+      int stop_sig = 0;    // the signal that stops the sweep (here or on a worker rank)
+      bool told = false;   // the worker ranks were sent kStop
+      auto last = std::chrono::steady_clock::now();
+      while (true) {
+        if (!stop_sig && o.stop && o.stop->load()) stop_sig = signal_of(sig);
+        const bool stopping = stop_sig != 0;
+        if (stopping && !told) {
+          stop_all = true;
+          for (int r = 1; r < size; ++r) MPI_Send(&stop_sig, 1, MPI_INT, r, kStop, MPI_COMM_WORLD);
+          told = true;
         }
-        if (pending.empty() || stopping) w.no_more = true;
-        for (auto& [i, r] : w.outbox) {
-          journal.append(i, r);
-          rows[i] = std::move(r);
-        }
-        w.outbox.clear();
-        if (w.failure) std::rethrow_exception(w.failure);
-      }
-      w.cv.notify_all();
-      int flag = 0;
-      MPI_Status st;
-      MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &flag, &st);
-      if (flag) {
-        if (st.MPI_TAG == kRequest) {
-          int want = 0;
-          MPI_Recv(&want, 1, MPI_INT, st.MPI_SOURCE, kRequest, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-          std::vector<long long> give;
-          while (!stopping && static_cast<int>(give.size()) < want && !pending.empty()) {
-            give.push_back(static_cast<long long>(pending.front()));
+        {  // feed local threads and collect their rows
+          std::lock_guard<std::mutex> lock(w.m);
+          if (stopping) w.queue.clear();  // not started: a resumed sweep computes them
+          while (!stopping && w.queue.size() < jobs && !pending.empty()) {
+            w.queue.push_back(pending.front());
             pending.pop_front();
           }
-          MPI_Send(give.data(), static_cast<int>(give.size()), MPI_LONG_LONG, st.MPI_SOURCE, kWork, MPI_COMM_WORLD);
-        } else if (st.MPI_TAG == kRow) {
-          int len = 0;
-          MPI_Get_count(&st, MPI_CHAR, &len);
-          std::string msg(static_cast<std::size_t>(len), '\0');
-          MPI_Recv(msg.data(), len, MPI_CHAR, st.MPI_SOURCE, kRow, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-          const auto nl = msg.find('\n');
-          const std::size_t i = std::stoull(msg.substr(0, nl));
-          auto row = sweep::split_cells(msg.substr(nl + 1));
-          journal.append(i, row);
-          rows[i] = std::move(row);
-        } else if (st.MPI_TAG == kDone) {
-          MPI_Recv(nullptr, 0, MPI_INT, st.MPI_SOURCE, kDone, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-          ++done_ranks;
+          if (pending.empty() || stopping) w.no_more = true;
+          for (auto& [i, r] : w.outbox) {
+            journal.append(i, r);
+            rows[i] = std::move(r);
+          }
+          w.outbox.clear();
+          if (w.failure) std::rethrow_exception(w.failure);
         }
-        continue;
-      }
-      bool local_idle;
-      {
-        std::lock_guard<std::mutex> lock(w.m);
-        local_idle = w.queue.empty() && w.busy == 0 && w.outbox.empty();
-      }
-      if (done_ranks == size - 1 && local_idle && (pending.empty() || stopping)) break;
-      if (o.progress && std::chrono::steady_clock::now() - last > std::chrono::milliseconds(500)) {
-        last = std::chrono::steady_clock::now();
-        o.progress(rows.size(), pts.size());
-      }
-      wait_for_rows(w);
-    }
-    {
-      std::lock_guard<std::mutex> lock(w.m);
-      w.no_more = true;
-    }
-    w.cv.notify_all();
-    for (auto& t : threads) t.join();
-    std::size_t failed = 0;
-    for (const auto& [i, r] : rows) failed += sweep::row_failed(r) ? 1 : 0;
-    if (rows.size() < pts.size()) {
-      std::cerr << "sweep: interrupted: " << rows.size() << " of " << pts.size() << " points are in "
-                << journal.path().string() << "; run the same command again to resume\n";
-      status = 130;
-    } else {
-      const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - start;
-      sweep::write_table(o.out, plan, task, rows, o.shard_index, o.shard_count,
-                         sweep::sweep_timings(wall.count(), jobs, size, resumed));
-      journal.remove();
-      if (!quiet)
-        std::cerr << "sweep: " << pts.size() << " points (" << resumed << " from the journal) over " << size
-                  << " MPI ranks x " << jobs << " threads, " << failed << " failed: " << o.out.string() << "\n";
-      status = failed ? 64 + static_cast<int>(std::min<std::size_t>(failed, 63)) : 0;
-    }
-  } else if (jobs == 1) {
-    serve_on_main_thread(plan, task, o.stop);
-  } else {
-    // A worker rank: keep its threads supplied (kAhead points per thread, asked for before
-    // the threads run dry, one request in flight), send rows back as they finish.
-    for (unsigned t = 0; t < jobs; ++t) threads.emplace_back(worker, std::ref(w), std::cref(plan), std::cref(task), o.stop);
-    bool finished = false, asked = false;
-    while (true) {
-      const bool stopping = o.stop && o.stop->load();
-      std::vector<std::pair<std::size_t, std::vector<std::string>>> out;
-      int want = 0;
-      {
-        std::lock_guard<std::mutex> lock(w.m);
-        out.swap(w.outbox);
-        if (w.failure) std::rethrow_exception(w.failure);
-        if (stopping) w.queue.clear();  // not started: a resumed sweep computes them
-        want = kAhead * static_cast<int>(jobs) - static_cast<int>(w.queue.size()) - static_cast<int>(w.busy);
-      }
-      for (const auto& [i, r] : out) send_row(i, r);
-      if (!finished && !asked && (want > 0 || stopping)) {
-        if (stopping) want = 0;
-        MPI_Send(&want, 1, MPI_INT, 0, kRequest, MPI_COMM_WORLD);
-        asked = true;
-      }
-      if (asked) {
+        w.cv.notify_all();
         int flag = 0;
         MPI_Status st;
-        MPI_Iprobe(0, kWork, MPI_COMM_WORLD, &flag, &st);
+        MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &flag, &st);
         if (flag) {
-          int n = 0;
-          MPI_Get_count(&st, MPI_LONG_LONG, &n);
-          std::vector<long long> got(static_cast<std::size_t>(n));
-          MPI_Recv(got.data(), n, MPI_LONG_LONG, 0, kWork, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-          asked = false;
-          {
-            std::lock_guard<std::mutex> lock(w.m);
-            if (n == 0) {
-              finished = true;
-              w.no_more = true;
+          if (st.MPI_TAG == kRequest) {
+            int want = 0;
+            MPI_Recv(&want, 1, MPI_INT, st.MPI_SOURCE, kRequest, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+            if (want < 0 && !stop_sig) stop_sig = -want;  // a worker rank's signal stops every rank
+            std::vector<long long> give;
+            while (!stop_sig && static_cast<int>(give.size()) < want && !pending.empty()) {
+              give.push_back(static_cast<long long>(pending.front()));
+              pending.pop_front();
             }
-            for (long long i : got) w.queue.push_back(static_cast<std::size_t>(i));
+            MPI_Send(give.data(), static_cast<int>(give.size()), MPI_LONG_LONG, st.MPI_SOURCE, kWork, MPI_COMM_WORLD);
+          } else if (st.MPI_TAG == kRow) {
+            int len = 0;
+            MPI_Get_count(&st, MPI_CHAR, &len);
+            std::string msg(static_cast<std::size_t>(len), '\0');
+            MPI_Recv(msg.data(), len, MPI_CHAR, st.MPI_SOURCE, kRow, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+            const auto nl = msg.find('\n');
+            const std::size_t i = std::stoull(msg.substr(0, nl));
+            auto row = sweep::split_cells(msg.substr(nl + 1));
+            journal.append(i, row);
+            rows[i] = std::move(row);
+          } else if (st.MPI_TAG == kDone) {
+            MPI_Recv(nullptr, 0, MPI_INT, st.MPI_SOURCE, kDone, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+            ++done_ranks;
           }
-          w.cv.notify_all();
           continue;
         }
+        bool local_idle;
+        {
+          std::lock_guard<std::mutex> lock(w.m);
+          local_idle = w.queue.empty() && w.busy == 0 && w.outbox.empty();
+        }
+        if (done_ranks == size - 1 && local_idle && (pending.empty() || stopping)) break;
+        if (o.progress && std::chrono::steady_clock::now() - last > std::chrono::milliseconds(500)) {
+          last = std::chrono::steady_clock::now();
+          o.progress(rows.size(), pts.size());
+        }
+        wait_for_rows(w);
       }
       {
         std::lock_guard<std::mutex> lock(w.m);
-        if (finished && w.queue.empty() && w.busy == 0 && w.outbox.empty()) break;
+        w.no_more = true;
       }
-      wait_for_rows(w);
+      w.cv.notify_all();
+      for (auto& t : threads) t.join();
+      threads.clear();
+      std::size_t failed = 0;
+      for (const auto& [i, r] : rows) failed += sweep::row_failed(r) ? 1 : 0;
+      if (rows.size() < pts.size()) {
+        std::cerr << "sweep: interrupted: " << rows.size() << " of " << pts.size() << " points are in "
+                  << journal.path().string() << "; run the same command again to resume\n";
+        status = 128 + (stop_sig ? stop_sig : SIGINT);
+      } else {
+        const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - start;
+        sweep::write_table(o.out, plan, task, rows, o.shard_index, o.shard_count,
+                           sweep::sweep_timings(wall.count(), jobs, size, resumed));
+        journal.remove();
+        if (!quiet)
+          std::cerr << "sweep: " << pts.size() << " points (" << resumed << " from the journal) over " << size
+                    << " MPI ranks x " << jobs << " threads, " << failed << " failed: " << o.out.string() << "\n";
+        status = failed ? 64 + static_cast<int>(std::min<std::size_t>(failed, 63)) : 0;
+      }
+    } catch (...) {
+      abort_job(std::current_exception());
     }
-    MPI_Send(nullptr, 0, MPI_INT, 0, kDone, MPI_COMM_WORLD);
-    w.cv.notify_all();
-    for (auto& t : threads) t.join();
+    // Every worker rank has sent kDone: tell each the status it exits with.
+    for (int r = 1; r < size; ++r) MPI_Send(&status, 1, MPI_INT, r, kFinal, MPI_COMM_WORLD);
+  } else {
+    try {
+      if (jobs == 1) {
+        serve_on_main_thread(plan, task, o.stop, sig);
+      } else {
+        // A worker rank: keep its threads supplied (kAhead points per thread, asked for before
+        // the threads run dry, one request in flight), send rows back as they finish.
+        std::atomic<bool> stop_all{false};
+        for (unsigned t = 0; t < jobs; ++t)
+          threads.emplace_back(worker, std::ref(w), std::cref(plan), std::cref(task), &stop_all);
+        bool finished = false, asked = false, remote = false;
+        while (true) {
+          if (!remote) remote = stop_from_rank0();
+          const bool local = o.stop && o.stop->load();
+          const bool stopping = local || remote;
+          if (stopping) stop_all = true;
+          std::vector<std::pair<std::size_t, std::vector<std::string>>> out;
+          int want = 0;
+          {
+            std::lock_guard<std::mutex> lock(w.m);
+            out.swap(w.outbox);
+            if (w.failure) std::rethrow_exception(w.failure);
+            if (stopping) w.queue.clear();  // not started: a resumed sweep computes them
+            want = kAhead * static_cast<int>(jobs) - static_cast<int>(w.queue.size()) - static_cast<int>(w.busy);
+          }
+          if (stopping) w.cv.notify_all();
+          for (const auto& [i, r] : out) send_row(i, r);
+          if (!finished && !asked && (want > 0 || stopping)) {
+            if (stopping) want = local ? -signal_of(sig) : 0;
+            MPI_Send(&want, 1, MPI_INT, 0, kRequest, MPI_COMM_WORLD);
+            asked = true;
+          }
+          if (asked) {
+            int flag = 0;
+            MPI_Status st;
+            MPI_Iprobe(0, kWork, MPI_COMM_WORLD, &flag, &st);
+            if (flag) {
+              int n = 0;
+              MPI_Get_count(&st, MPI_LONG_LONG, &n);
+              std::vector<long long> got(static_cast<std::size_t>(n));
+              MPI_Recv(got.data(), n, MPI_LONG_LONG, 0, kWork, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+              asked = false;
+              {
+                std::lock_guard<std::mutex> lock(w.m);
+                if (n == 0) {
+                  finished = true;
+                  w.no_more = true;
+                }
+                for (long long i : got) w.queue.push_back(static_cast<std::size_t>(i));
+              }
+              w.cv.notify_all();
+              continue;
+            }
+          }
+          {
+            std::lock_guard<std::mutex> lock(w.m);
+            if (finished && w.queue.empty() && w.busy == 0 && w.outbox.empty()) break;
+          }
+          wait_for_rows(w);
+        }
+        MPI_Send(nullptr, 0, MPI_INT, 0, kDone, MPI_COMM_WORLD);
+        w.cv.notify_all();
+        for (auto& t : threads) t.join();
+        threads.clear();
+      }
+    } catch (...) {
+      abort_job(std::current_exception());
+    }
+    status = final_status();
   }
-  MPI_Bcast(&status, 1, MPI_INT, 0, MPI_COMM_WORLD);
   MPI_Finalize();
-  return rank == 0 ? status : 0;
+  return status;
 }
 
 #endif

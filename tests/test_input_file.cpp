@@ -91,12 +91,20 @@ TEST_CASE("inputs: integers are parsed with range checks, never by exceptions", 
 
 TEST_CASE("inputs: a merge table's out-of-range point index is bad input naming file, line and value", "[inputs][sweep][unit]") {
   const fs::path dir = scratch("merge");
-  std::ofstream(dir / "s0.csv") << "point,R,status\n0,1e-08,ok\n";
-  std::ofstream(dir / "s1.csv") << "point,R,status\n1,2e-08,ok\n99999999999999999999999,3e-08,ok\n";
+  // Shards of a 3-point plan with their sidecars (merge needs them: plan, size, shard).
+  auto sidecar = [&](const char* name, const char* shard, int rows) {
+    std::ofstream(dir / name) << "{\n  \"nanopush\": {\n    \"run\": {\"task\": \"friction\", \"plan\": \"0123456789abcdef\", "
+                                 "\"plan_points\": 3, \"shard\": \""
+                              << shard << "\", \"rows\": " << rows << ", \"failed\": 0},\n  }\n}\n";
+  };
+  sidecar("s0.schema.json", "0/2", 2);
+  sidecar("s1.schema.json", "1/2", 2);
+  std::ofstream(dir / "s0.csv") << "point,R,status,message\n0,1e-08,ok,\n2,3e-08,ok,\n";
+  std::ofstream(dir / "s1.csv") << "point,R,status,message\n1,2e-08,ok,\n99999999999999999999999,3e-08,ok,\n";
   const std::string where = (dir / "s1.csv").string() + ":3";
   CHECK_THROWS_WITH(sweep::merge_tables({dir / "s0.csv", dir / "s1.csv"}, dir / "m.csv"),
                     "--merge = " + where + ": point index = 99999999999999999999999: must be a whole number in [0, 99999999]");
-  std::ofstream(dir / "s1.csv") << "point,R,status\n1,2e-08,ok\n100000000,3e-08,ok\n";
+  std::ofstream(dir / "s1.csv") << "point,R,status,message\n1,2e-08,ok,\n100000000,3e-08,ok,\n";
   CHECK_THROWS_AS(sweep::merge_tables({dir / "s0.csv", dir / "s1.csv"}, dir / "m.csv"), InputError);
   CHECK_FALSE(fs::exists(dir / "m.csv"));
   fs::remove_all(dir);

@@ -142,8 +142,14 @@ Plan points_from_csv(const std::filesystem::path& path) {
   Plan p;
   if (!reader.next(rec)) throw InputError("--points", path.string(), "empty file: the first line names the keys");
   p.keys = rec.fields;
-  for (const auto& k : p.keys)
-    if (k.empty()) throw InputError("--points", path.string(), "an empty key in the header");
+  for (std::size_t j = 0; j < p.keys.size(); ++j) {
+    if (p.keys[j].empty()) throw InputError("--points", path.string(), "an empty key in the header");
+    for (std::size_t k = 0; k < j; ++k)
+      if (p.keys[k] == p.keys[j])
+        throw InputError("--points", path.string() + ":1",
+                         "the key " + p.keys[j] + " is in the header twice (columns " + std::to_string(k + 1) +
+                             " and " + std::to_string(j + 1) + "): a point gives each key one value");
+  }
   while (reader.next(rec)) {
     const auto& cells = rec.fields;
     if (cells.size() != p.keys.size())

@@ -9,8 +9,11 @@
 #include <limits>
 #include <chrono>
 #include <cinttypes>
+#include <cerrno>
+#include <cstring>
 #include <cstdio>
 #include <fstream>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <thread>
@@ -123,15 +126,24 @@ Journal::Journal(std::filesystem::path path, const std::string& identity) : path
     }
     const std::uint64_t size = bytes;
     fd_ = ::open(path_.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
-    if (fd_ < 0) throw InputError("journal", path_.string(), "cannot be opened for appending");
+    if (fd_ < 0)
+      throw OutputError("journal = " + path_.string() + ": cannot be opened for appending (" + std::strerror(errno) + ")");
     if (complete < size && ::ftruncate(fd_, static_cast<off_t>(complete)) != 0)
       throw InputError("journal", path_.string(), "cannot drop its incomplete last record");
   } else {
     fd_ = ::open(path_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_APPEND | O_CLOEXEC, 0644);
-    if (fd_ < 0) throw InputError("journal", path_.string(), "cannot be created (does the directory exist?)");
+    // A journal that cannot be made (no such directory, /proc, a read-only file system) is a
+    // system error (exit 5), said before any point runs.
+    if (fd_ < 0) throw OutputError("output = " + path_.string() + ": the sweep's journal cannot be created (" + std::strerror(errno) + ")");
     const std::string h = header + "\n";
-    if (::write(fd_, h.data(), h.size()) != static_cast<ssize_t>(h.size()))
-      throw InputError("journal", path_.string(), "cannot be written");
+    if (::write(fd_, h.data(), h.size()) != static_cast<ssize_t>(h.size())) {
+      const std::string why = std::strerror(errno);
+      ::close(fd_);
+      fd_ = -1;
+      std::error_code ec;
+      std::filesystem::remove(path_, ec);
+      throw OutputError("output = " + path_.string() + ": the sweep's journal cannot be written (" + why + ")");
+    }
   }
 }
 
@@ -191,6 +203,7 @@ void write_table(const std::filesystem::path& out, const Plan& plan, const Task&
     failed += row_failed(r) ? 1 : 0;
   }
   RunInfo run = {{"task", json_string(task.name())},
+                 {"plan", json_string(plan_identity(plan, task))},
                  {"plan_points", std::to_string(plan.size())},
                  {"shard", json_string(std::to_string(shard_index) + "/" + std::to_string(shard_count))},
                  {"rows", std::to_string(rows.size())},
@@ -206,83 +219,208 @@ RunInfo sweep_timings(double wall_s, unsigned threads, int ranks, std::size_t re
           {"resumed", std::to_string(resumed)}};
 }
 
+namespace {
+
+/// The value of `"name": ` on a sidecar's run line: a JSON string's text or a bare number's
+/// digits; nullopt when absent.
+std::optional<std::string> run_field(const std::string& line, const std::string& name) {
+  const std::string key = "\"" + name + "\": ";
+  const auto at = line.find(key);
+  if (at == std::string::npos) return std::nullopt;
+  std::size_t p = at + key.size();
+  if (p < line.size() && line[p] == '"') {
+    const auto end = line.find('"', p + 1);
+    if (end == std::string::npos) return std::nullopt;
+    return line.substr(p + 1, end - p - 1);
+  }
+  const auto end = line.find_first_of(",}", p);
+  return line.substr(p, end == std::string::npos ? std::string::npos : end - p);
+}
+
+bool known_status(const std::string& s) {
+  for (const char* k : {"ok", "at_rest", "no_static_friction", "law_blowup", "accuracy_not_reached",
+                        "solver_failure", "bad_input", "error"})
+    if (s == k) return true;
+  return false;
+}
+
+/// What a shard's sidecar says of its sweep: the plan's identity and size, the shard i/n, its
+/// rows; the sidecar's text with the run line marked (merge writes it back as the whole's).
+struct ShardRecord {
+  std::string plan, task, schema_before, schema_after;
+  std::uint64_t plan_points = 0, rows = 0, index = 0, count = 1;
+};
+
+ShardRecord read_shard_sidecar(const std::filesystem::path& table) {
+  const auto side = schema_path(table);
+  if (!input_exists(side))
+    throw InputError("--merge", table.string(),
+                     "has no sidecar " + side.string() +
+                         ": merge checks each shard's plan and size there; copy it with the table");
+  InputFile file(side, "--merge sidecar", kMaxSidecarBytes);
+  ShardRecord r;
+  std::string line;
+  std::size_t lineno = 0;
+  bool seen = false;
+  while (read_line(file.stream(), line, "--merge sidecar", side.string(), ++lineno)) {
+    const auto at = line.find("\"run\": {");
+    if (at == std::string::npos || seen) {
+      (seen ? r.schema_after : r.schema_before) += line + "\n";
+      continue;
+    }
+    seen = true;
+    r.schema_before += line.substr(0, at);
+    const std::string where = side.string() + ":" + std::to_string(lineno);
+    auto need = [&](const char* name) {
+      auto v = run_field(line, name);
+      if (!v)
+        throw InputError("--merge", where,
+                         std::string("no \"") + name + "\" in the run record: not the sidecar of a sweep shard (or "
+                         "one written before merge checked plans: run that shard again)");
+      return *v;
+    };
+    auto count = [&](const char* name, std::uint64_t max) {
+      const std::string v = need(name);
+      const auto n = parse_count(v, max);
+      if (!n)
+        throw InputError("--merge", where,
+                         std::string(name) + " = " + v.substr(0, 40) + ": must be a whole number in [0, " +
+                             std::to_string(max) + "]");
+      return *n;
+    };
+    r.plan = need("plan");
+    r.task = need("task");
+    r.plan_points = count("plan_points", kMaxPlanPoints);
+    r.rows = count("rows", kMaxPlanPoints);
+    const std::string shard = need("shard");
+    if (shard.rfind("merged from ", 0) == 0) {
+      r.index = 0;
+      r.count = 1;
+    } else {
+      const auto slash = shard.find('/');
+      const auto i = parse_count(shard.substr(0, slash), 99999), n = slash == std::string::npos
+                                                                          ? std::nullopt
+                                                                          : parse_count(shard.substr(slash + 1), 100000);
+      if (!i || !n || *n == 0 || *i >= *n)
+        throw InputError("--merge", where, "shard = " + shard.substr(0, 40) + ": must be i/n with 0 <= i < n <= 100000");
+      r.index = *i;
+      r.count = *n;
+    }
+  }
+  if (!seen) throw InputError("--merge", side.string(), "no run record: not the sidecar of a sweep shard");
+  return r;
+}
+
+}  // namespace
+
+std::string plan_identity(const Plan& plan, const Task& task) { return hex(fnv1a(sweep_identity(plan, task, 0, 1))); }
+
 std::size_t merge_tables(const std::vector<std::filesystem::path>& shards, const std::filesystem::path& out) {
   if (shards.empty()) throw InputError("--merge", "(none)", "give the shard tables to join");
+  // Each table a regular file (a FIFO or a device refused before anything is read), then the
+  // sidecars: every table a shard of one sweep (one plan), each shard once.
+  for (const auto& path : shards) InputFile check(path, "--merge", kMaxTableBytes);
+  std::vector<ShardRecord> rec;
+  for (const auto& path : shards) rec.push_back(read_shard_sidecar(path));
+  const ShardRecord& first = rec.front();
+  std::map<std::uint64_t, std::size_t> shard_of;  // shard index -> position in `shards`
+  for (std::size_t k = 0; k < shards.size(); ++k) {
+    const ShardRecord& r = rec[k];
+    if (r.plan != first.plan || r.plan_points != first.plan_points || r.task != first.task)
+      throw InputError("--merge", shards[k].string(),
+                       "is a shard of another sweep than " + shards.front().string() +
+                           " (its plan differs: scene, values, task or options): merge the shards of one sweep");
+    if (r.count != first.count)
+      throw InputError("--merge", shards[k].string(),
+                       "is shard " + std::to_string(r.index) + "/" + std::to_string(r.count) + ", " +
+                           shards.front().string() + " one of " + std::to_string(first.count) +
+                           ": merge the shards of one split");
+    if (!shard_of.emplace(r.index, k).second)
+      throw InputError("--merge", shards[k].string(),
+                       "is shard " + std::to_string(r.index) + "/" + std::to_string(r.count) + " as " +
+                           shards[shard_of[r.index]].string() + " is: give each shard once");
+  }
+  for (std::uint64_t i = 0; i < first.count; ++i)
+    if (!shard_of.count(i))
+      throw InputError("--merge", "shard " + std::to_string(i) + "/" + std::to_string(first.count),
+                       "is missing: give every shard's table (the plan has " + std::to_string(first.plan_points) +
+                           " points)");
   std::string header;
+  std::size_t columns = 0, status_col = 0;
   std::map<std::size_t, std::string> lines;
   std::size_t failed = 0;
-  for (const auto& path : shards) {
+  for (std::size_t k = 0; k < shards.size(); ++k) {
+    const auto& path = shards[k];
     InputFile file(path, "--merge", kMaxTableBytes);  // a regular file (never a FIFO or a device)
     std::string h, line;
-    std::size_t lineno = 1;
+    std::size_t lineno = 1, rows = 0;
     if (!read_line(file.stream(), h, "--merge", path.string(), lineno))
       throw InputError("--merge", path.string(), "empty file");
-    if (header.empty()) header = h;
+    if (header.empty()) {
+      header = h;
+      const auto cols = split_cells(h);
+      columns = cols.size();
+      if (cols.size() < 3 || cols.front() != "point" || cols[cols.size() - 2] != "status" || cols.back() != "message")
+        throw InputError("--merge", path.string() + ":1", "not a sweep table: its columns are point, ..., status, message");
+      status_col = cols.size() - 2;
+    }
     if (h != header)
       throw InputError("--merge", path.string(), "its columns differ from " + shards.front().string() + "'s");
-    while (read_line(file.stream(), line, "--merge", path.string(), ++lineno)) {
-      if (line.empty()) continue;
-      const auto comma = line.find(',');
-      const std::string idx = line.substr(0, comma);
+    bool complete = true;
+    while (read_line(file.stream(), line, "--merge", path.string(), ++lineno, kMaxInputLine, &complete)) {
       const std::string where = path.string() + ":" + std::to_string(lineno);
-      if (idx.empty() || idx.find_first_not_of("0123456789") != std::string::npos)
-        throw InputError("--merge", where, "a row without a point index: " + line.substr(0, 40));
+      if (!complete) throw InputError("--merge", where, "the last row is cut short (no line end): the table is incomplete");
+      if (line.empty()) continue;
+      const auto cells = split_cells(line);
+      if (cells.size() != columns)
+        throw InputError("--merge", where,
+                         "a row of " + std::to_string(cells.size()) + " cells; the header has " +
+                             std::to_string(columns) + " (a row cut short or edited)");
+      const std::string& idx = cells.front();
       const auto i = parse_count(idx, kMaxPlanPoints - 1);
       if (!i)
         throw InputError("--merge", where,
                          "point index = " + idx.substr(0, 40) + (idx.size() > 40 ? "..." : "") +
                              ": must be a whole number in [0, " + std::to_string(kMaxPlanPoints - 1) + "]");
+      if (*i >= first.plan_points || *i % rec[k].count != rec[k].index)
+        throw InputError("--merge", where,
+                         "point " + idx + " is not a point of shard " + std::to_string(rec[k].index) + "/" +
+                             std::to_string(rec[k].count) + " of a " + std::to_string(first.plan_points) +
+                             "-point plan");
+      if (!known_status(cells[status_col]))
+        throw InputError("--merge", where,
+                         "status = " + cells[status_col].substr(0, 40) +
+                             ": not a status of a sweep row (ok, at_rest, ..., error; docs/errors.md)");
       if (!lines.emplace(*i, line).second)
-        throw InputError("--merge", path.string(), "point " + idx + " appears in more than one shard");
-      if (row_failed(split_cells(line))) ++failed;
+        throw InputError("--merge", where, "point " + idx + " appears twice");
+      if (row_failed(cells)) ++failed;
+      ++rows;
     }
+    if (rows != rec[k].rows)
+      throw InputError("--merge", path.string(),
+                       "has " + std::to_string(rows) + " rows; its sidecar says " + std::to_string(rec[k].rows) +
+                           " (the table is cut short or edited)");
   }
-  // Every point 0 .. n-1 exactly once (a missing shard leaves a gap).
+  // Every point 0 .. n-1 exactly once (a shard cut short leaves a gap).
   std::size_t expect = 0;
   for (const auto& [i, l] : lines) {
-    if (i != expect)
-      throw InputError("--merge", "point " + std::to_string(expect),
-                       "is in no shard: give every shard's table (a shard may also be unfinished)");
+    if (i != expect) break;
     ++expect;
   }
-  // The sidecar: the first shard's (their columns are the table's), its "run" line made the
-  // merged table's; the plan's size recorded there says whether trailing points are missing.
-  const auto side = schema_path(shards.front());
-  std::string schema;
-  if (input_exists(side)) {
-    InputFile file(side, "--merge sidecar", kMaxSidecarBytes);
-    std::string line;
-    std::size_t lineno = 0;
-    while (read_line(file.stream(), line, "--merge sidecar", side.string(), ++lineno)) {
-      const auto at = line.find("\"run\": {");
-      if (at == std::string::npos) {
-        schema += line + "\n";
-        continue;
-      }
-      const auto pp = line.find("\"plan_points\": ");
-      if (pp != std::string::npos) {
-        const std::string digits = line.substr(pp + 15, line.find_first_of(",}", pp + 15) - (pp + 15));
-        const auto n = parse_count(digits, kMaxPlanPoints);
-        if (!n)
-          throw InputError("--merge", side.string() + ":" + std::to_string(lineno),
-                           "plan_points = " + digits.substr(0, 40) + ": must be a whole number in [0, " +
-                               std::to_string(kMaxPlanPoints) + "]");
-        if (*n != lines.size())
-          throw InputError("--merge", std::to_string(lines.size()) + " points",
-                           "the plan has " + std::to_string(*n) + ": give every shard's table");
-      }
-      const auto task = line.find("\"task\": ");
-      const std::string task_name = task == std::string::npos ? "\"\"" : line.substr(task + 8, line.find(',', task) - task - 8);
-      schema += line.substr(0, at) + "\"run\": {\"task\": " + task_name + ", \"plan_points\": " +
-                std::to_string(lines.size()) + ", \"shard\": \"merged from " + std::to_string(shards.size()) +
-                "\", \"rows\": " + std::to_string(lines.size()) + ", \"failed\": " + std::to_string(failed) + "},\n";
-    }
-  }
+  if (expect != first.plan_points)
+    throw InputError("--merge", "point " + std::to_string(expect),
+                     "is in no shard: the plan has " + std::to_string(first.plan_points) +
+                         " points; give every shard's complete table");
+  const std::string schema = first.schema_before + "\"run\": {\"task\": " + json_string(first.task) +
+                             ", \"plan\": " + json_string(first.plan) +
+                             ", \"plan_points\": " + std::to_string(lines.size()) + ", \"shard\": \"merged from " +
+                             std::to_string(shards.size()) + "\", \"rows\": " + std::to_string(lines.size()) +
+                             ", \"failed\": " + std::to_string(failed) + "},\n" + first.schema_after;
   std::string text = header + "\n";
   for (const auto& [i, l] : lines) text += l + "\n";
   write_file_atomic(out, text);
   // A device or a descriptor (written through) gets the table only, as standard output does.
-  if (!schema.empty() && !resolve_output(out).write_through) write_file_atomic(schema_path(out), schema);
+  if (!resolve_output(out).write_through) write_file_atomic(schema_path(out), schema);
   return failed;
 }
 

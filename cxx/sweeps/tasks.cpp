@@ -5,6 +5,7 @@
 #include <set>
 #include <sstream>
 
+#include "nanopush/scenes/engine_method.hpp"
 #include "nanopush/engines/engines.hpp"
 #include "nanopush/models/friction.hpp"
 #include "nanopush/models/icor.hpp"
@@ -24,7 +25,9 @@ std::string cell(double v) { return csv_number(v); }  // NaN -> "" (missing)
 class RunTask final : public Task {
  public:
   RunTask(const Scene& base, RunSettings s, std::filesystem::path trajectories)
-      : base_(base), settings_(std::move(s)), trajectories_(std::move(trajectories)) {}
+      : base_(base), settings_(std::move(s)), trajectories_(std::move(trajectories)) {
+    check_engine_method(base_, settings_);
+  }
   [[nodiscard]] std::string name() const override { return "run"; }
   [[nodiscard]] std::string scene_name() const override { return base_.name; }
 
@@ -73,6 +76,11 @@ class RunTask final : public Task {
     if (!checked_.insert(key + "=" + value.to_string()).second) return;
     Scene sc = base_;
     sc.set(key, value);
+    if (settings_.engine == Engine::f77 && !settings_.method && key == "solver.method" &&
+        sc.solver.method != Method::faithful && sc.solver.method != Method::automatic)
+      throw InputError("--vary solver.method", value.to_string(),
+                       "conflicts with --engine f77: the f77 engine has one method (its Bulirsch-Stoer); vary "
+                       "solver.method with --engine cxx");
   }
 
   [[nodiscard]] std::vector<std::string> evaluate(const std::vector<SceneSetting>& point,

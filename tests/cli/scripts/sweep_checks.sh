@@ -25,7 +25,7 @@ shards)  # two shards merged equal one run
   "$np" sweep --merge s1.csv s0.csv --out merged.csv --quiet
   cmp all.csv merged.csv || fail "merged shards differ from one run"
   [ "$(status "$np" sweep --merge s0.csv --out part.csv --quiet 2> err.txt)" = 2 ] || fail "a missing shard must be an error"
-  grep -q "point 1: is in no shard" err.txt || fail "message: $(cat err.txt)"
+  grep -q "shard 1/2: is missing" err.txt || fail "message: $(cat err.txt)"
   grep -q '"shard": "merged from 2", "rows": 20' merged.schema.json || fail "merged sidecar: $(grep '"run"' merged.schema.json)"
   # Missing trailing points leave no gap: the plan's size in the sidecar finds them.
   three=(fig3_18 --vary surface.mu=0.05,0.06,0.07 --quiet)
@@ -93,7 +93,7 @@ tasks)  # sweeps of closed-form evaluations
   grep -q '^0,1e-08,force,' mu.csv || fail "estimate-mu row: $(cat mu.csv)"
   [ "$(status "$np" sweep --task friction --vary Q=1,2 --out bad.csv --quiet 2> err.txt)" = 2 ] || fail "bad key accepted"
   grep -q "Q = (varied): not a parameter of --task friction" err.txt || fail "message: $(cat err.txt)"
-  grep -q '"run": {"task": "icor", "plan_points": 3, "shard": "0/1", "rows": 3, "failed": 0, "wall_s": ' ic.schema.json \
+  grep -q '"run": {"task": "icor", "plan": "[0-9a-f]\{16\}", "plan_points": 3, "shard": "0/1", "rows": 3, "failed": 0, "wall_s": ' ic.schema.json \
     || fail "sidecar run: $(grep '"run"' ic.schema.json)"
   "$np" sweep --task icor --vary yn=0:100e-9:3 --set cubic=eigen --out ice.csv --quiet
   head -1 ice.csv | grep -q ',R_constrained_negative,R_constrained_positive,' || fail "icor header $(head -1 ice.csv)"
@@ -122,6 +122,7 @@ inputs)  # every input through the guarded reader: a FIFO never blocks, /dev/zer
   refused 2 '^nanopush: error: --merge = pipe\.csv: is a FIFO' sweep --merge s0.csv pipe.csv --out m.csv --quiet
   refused 2 '^nanopush: error: --merge = /dev/zero: is a character device' sweep --merge s0.csv /dev/zero --out m.csv --quiet
   { head -1 s1.csv; echo '99999999999999999999999,2e-08,0,0,0,ok,'; } > huge.csv
+  cp s1.schema.json huge.schema.json
   refused 2 '^nanopush: error: --merge = huge\.csv:2: point index = 99999999999999999999999: must be a whole number in \[0, 99999999\]' \
     sweep --merge s0.csv huge.csv --out m.csv --quiet
   cp s0.csv t0.csv

@@ -200,8 +200,15 @@ void write_table(const std::filesystem::path& out, const Plan& plan, const Task&
 /// table, the threads per process, the MPI ranks, the rows taken from the journal.
 RunInfo sweep_timings(double wall_s, unsigned threads, int ranks, std::size_t resumed);
 
-/// Join shard tables into the table of the whole plan (the same bytes as one run): checks the
-/// headers agree and that every point appears exactly once. Returns the failed-row count.
+/// The identity of a plan and task, whatever the shard (a hash of sweep_identity): recorded as
+/// "plan" in a table's sidecar, so merge joins only shards of one sweep.
+std::string plan_identity(const Plan& plan, const Task& task);
+
+/// Join shard tables into the table of the whole plan (the same bytes as one run). Each table
+/// needs its sidecar: every shard's plan identity and size the same, each shard i/n once and
+/// all n present, every row of its shard with the header's number of cells and a known status,
+/// as many rows as the sidecar says, every point 0 .. plan_points - 1 once; InputError
+/// otherwise. Returns the failed-row count.
 std::size_t merge_tables(const std::vector<std::filesystem::path>& shards, const std::filesystem::path& out);
 
 }  // namespace nanopush::sweep
