@@ -56,7 +56,10 @@ const toml::table& require_table(const toml::table& root, const std::string& nam
 std::optional<double> opt_number(const toml::table& t, const std::string& where, const std::string& key) {
   const toml::node* n = t.get(key);
   if (!n) return std::nullopt;
-  if (auto v = n->value<double>(); v && (n->is_floating_point() || n->is_integer())) return *v;
+  // An integer is a number whatever its size (value<double> refuses an int64 that a double
+  // does not hold exactly, 9223372036854775807); the range checks then name it as written.
+  if (n->is_integer()) return static_cast<double>(n->value<std::int64_t>().value_or(0));
+  if (auto v = n->value<double>(); v && n->is_floating_point()) return *v;
     throw InputError(where + "." + key, node_text(*n), "must be a number");
 }
 
@@ -383,14 +386,14 @@ void read_solver(const toml::table& root, Scene& sc) {
   check_keys(t, "solver", scene_table_keys("solver"));
   if (auto ms = opt_number(t, "solver", "max_steps")) {
     if (!(*ms >= 1 && *ms <= 1e9) || std::floor(*ms) != *ms)
-      throw InputError("solver.max_steps", fmt(*ms), "must be an integer in [1, 1000000000]");
+      throw InputError("solver.max_steps", node_text(*t.get("max_steps")), "must be an integer in [1, 1000000000]");
     sc.solver.max_steps = static_cast<long>(*ms);
   }
   sc.solver.t_end = number(t, "solver", "t_end");
   require_positive("solver.t_end", sc.solver.t_end, "s");
   if (auto s = opt_number(t, "solver", "samples")) {
     if (!(*s >= 2 && *s <= 1e7) || std::floor(*s) != *s)
-      throw InputError("solver.samples", fmt(*s), "must be an integer in [2, 10000000]");
+      throw InputError("solver.samples", node_text(*t.get("samples")), "must be an integer in [2, 10000000]");
     sc.solver.samples = static_cast<int>(*s);
   }
   if (auto r = opt_number(t, "solver", "rtol")) {

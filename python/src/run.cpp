@@ -12,6 +12,7 @@
 #include "nanopush/engines/engines.hpp"
 #include "nanopush/outputs/io.hpp"
 #include "nanopush/outputs/trajectory_csv.hpp"
+#include "nanopush/scenes/engine_method.hpp"
 
 namespace nanopush::python {
 
@@ -98,6 +99,7 @@ RunResult run(const Scene& scene, const std::string& engine, const std::string& 
   rs.precision = parse_optional_choice<Precision>("precision", precision);
   read_tolerances(rtol, atol, rs.rtol, rs.atol);
   rs.allow_partial = true;  // a failure becomes nanopush.SolverError carrying the partial result
+  check_engine_method(scene, rs);  // engine="f77" with the scene's own method: as `nanopush run`
   RunResult r;
   r.scene = scene.name;
   const Scene own = scene;  // another Python thread may set() the caller's scene meanwhile

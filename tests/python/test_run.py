@@ -133,6 +133,13 @@ def test_bad_settings_are_input_errors(cli):
     with pytest.raises(nanopush.InputError) as e:
         nanopush.run(scene, engine="f77", method="modern")
     assert str(e.value) == msg
+    # engine f77 with the scene's own method other than faithful/auto: as the CLI (issue 34)
+    msg = cli.error("run", "fig3_6a", "--engine", "f77", "--set", "solver.method=modern")
+    own = nanopush.Scene.preset("fig3_6a")
+    own.set("solver.method", "modern")
+    with pytest.raises(nanopush.InputError) as e:
+        nanopush.run(own, engine="f77")
+    assert str(e.value) == msg and "conflicts with the scene's solver.method" in msg
     with pytest.raises(nanopush.InputError, match="rtol"):
         nanopush.run(scene, rtol=-1.0)
     with pytest.raises(nanopush.InputError, match="no preset"):

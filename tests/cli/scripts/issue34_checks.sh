@@ -86,6 +86,9 @@ messages)  # item 7 (issue items 10, 11): what was written is named; nonsense re
   printf '\xef\xbb\xbfR,alfa\r\n1e-8,0\r\n' > ../bad_bom.csv
   expect 2 'alfa' "$np" sweep --task friction --set a=27.5e-9 --set b=50e-9 --set muN=1 --points ../bad_bom.csv --out t.csv
   grep -q $'\xef\xbb\xbf\|\r' ../err.txt && fail "the message shows a BOM or CR: $(cat -A ../err.txt)"
+  # solver.samples = int64 max in a scene file: named as written, with its range
+  sed 's/^samples = .*/samples = 9223372036854775807/' "$scene/fig3_6a.toml" > ../s.toml
+  expect 2 '^nanopush: error: solver.samples = 9223372036854775807: must be an integer in \[2, 10000000\]' "$np" run ../s.toml
   expect 2 "^nanopush: error: unknown subcommand 'bogus' of 'icor'; its subcommands are: formulas, roots" "$np" icor bogus
   # A NUL byte in friction's stdin is not the end of a number
   printf '1e-8,0\0junk\n' > ../nul.csv
