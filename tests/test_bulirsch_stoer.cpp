@@ -63,6 +63,20 @@ double oscillator_error(BsOptions<S> opt, double t_end, BsResult* out = nullptr)
   return err;
 }
 
+/// Integrates the oscillator from (1, 0) through tout with bs and checks that nothing was
+/// allocated while integrating (the work space is allocated at construction).
+void check_integrates_without_allocating(BulirschStoer<double, 2>& bs, std::span<const double> tout) {
+  double y[2] = {1, 0};
+  double sink = 0;
+  const long before = g_allocs.load();
+  auto r = bs.integrate(Oscillator{}, 0.0, y, tout, [&](std::size_t, double, const double* yy) { sink += yy[0]; });
+  const long after = g_allocs.load();
+  REQUIRE(r.ok());
+  CHECK(r.naccpt > 10);
+  CHECK(after == before);
+  CHECK(std::isfinite(sink));
+}
+
 }  // namespace
 
 TEST_CASE("BS: y' = y reaches e to the requested tolerance, both extrapolations", "[bs][numeric]") {
@@ -140,33 +154,15 @@ TEST_CASE("BS: output times are hit exactly, including t0 and repeated times", "
 
 TEST_CASE("BS: no allocation while integrating (fixed size)", "[bs][unit]") {
   BulirschStoer<double, 2> bs(BsOptions<double>::faithful(1e-12, {1e-12}));
-  double y[2] = {1, 0};
   const double tout[3] = {1.0, 2.0, 30.0};
-  double sink = 0;
-  const long before = g_allocs.load();
-  auto r = bs.integrate(Oscillator{}, 0.0, y, std::span<const double>(tout, 3),
-                        [&](std::size_t, double, const double* yy) { sink += yy[0]; });
-  const long after = g_allocs.load();
-  REQUIRE(r.ok());
-  CHECK(r.naccpt > 10);
-  CHECK(after == before);
-  CHECK(std::isfinite(sink));
+  check_integrates_without_allocating(bs, std::span<const double>(tout, 3));
 }
 
 TEST_CASE("BS: no allocation while integrating (dense output, many outputs)", "[bs][dense][unit]") {
   BulirschStoer<double, 2> bs(BsOptions<double>::modern(1e-12, {1e-12}));
-  double y[2] = {1, 0};
   std::vector<double> tout(1001);
   for (std::size_t i = 0; i < tout.size(); ++i) tout[i] = 30.0 * static_cast<double>(i) / 1000.0;
-  double sink = 0;
-  const long before = g_allocs.load();
-  auto r = bs.integrate(Oscillator{}, 0.0, y, std::span<const double>(tout),
-                        [&](std::size_t, double, const double* yy) { sink += yy[0]; });
-  const long after = g_allocs.load();
-  REQUIRE(r.ok());
-  CHECK(r.naccpt > 10);
-  CHECK(after == before);
-  CHECK(std::isfinite(sink));
+  check_integrates_without_allocating(bs, std::span<const double>(tout));
 }
 
 TEST_CASE("BS: failures come back as statuses", "[bs][unit]") {
