@@ -9,7 +9,8 @@ C     selects the 'printed' law instead: the wrench of eqs 3.45-3.48
 C     as printed (FRPRNT below; docs/rough.md), under the reading of
 C     its slips in IPAR(2..5), each 1 = as printed, 0 = corrected:
 C     IPAR(2) F1 (sign of fy'), IPAR(3) F3 (no sign(theta-dot)),
-C     IPAR(4) F2 (squares in C4, lengths in nm; 0 = cubes), IPAR(5)
+C     IPAR(4) F2 (squares in C4, lengths in nm; 0 = cubes: RECTFV's
+C     Coulomb wrench with the sign slips), IPAR(5)
 C     eq 3.50 (FY = FX' SIN - FY' COS; 0 = erratum 3's +).
 C
 C     State Y (N = 8): X, Y, THETA, VX, VY, OMEGA (world axes, SI),
@@ -59,9 +60,19 @@ C=======================================================================
             VBY = -S*Y(4) + C*Y(5)
             OM = Y(6)
          END IF
-         IF (IPAR(1) .EQ. 1) THEN
+         IF (IPAR(1) .EQ. 1 .AND. IPAR(4) .EQ. 0) THEN
+C           Cubes in C4: the Coulomb wrench with the reading's sign
+C           slips, by RECTFV's stable forms (the printed logarithms
+C           with cubes cancel as (R/B)**3 where R is large).
+            CALL RECTFV(RPAR(7), RPAR(8), RPAR(9), VBX, VBY, OM,
+     &                  FBX, FBY, FM, IERR)
+            IF (OM .NE. 0D0) THEN
+               IF (IPAR(2) .EQ. 1) FBY = -FBY
+               IF (IPAR(3) .EQ. 1 .AND. OM .LT. 0D0) FM = -FM
+            END IF
+         ELSE IF (IPAR(1) .EQ. 1) THEN
             CALL FRPRNT(RPAR(7), RPAR(8), RPAR(9), VBX, VBY, OM,
-     &                  IPAR(2), IPAR(3), IPAR(4), FBX, FBY, FM)
+     &                  IPAR(2), IPAR(3), FBX, FBY, FM)
          ELSE
             CALL RECTFV(RPAR(7), RPAR(8), RPAR(9), VBX, VBY, OM,
      &                  FBX, FBY, FM, IERR)
@@ -86,11 +97,11 @@ C=======================================================================
       END
 C=======================================================================
 C     FRPRNT -- the 'printed' friction law: the wrench of eqs 3.45-3.48
-C     as the thesis prints them, each slip (errata F1-F3 of
-C     docs/errata.md) as printed where its flag is 1 and corrected
-C     where 0: KF1 fy' with the printed sign (0: the sign of 3.43), KF3
-C     mf without sign(theta-dot) (0: times it), KC4 squares in C4 (0:
-C     cubes), at the iCOR implied by the body-axis velocity
+C     as the thesis prints them, with squares in C4 (errata F2), each
+C     sign slip (F1, F3 of docs/errata.md) as printed where its flag is
+C     1 and corrected where 0: KF1 fy' with the printed sign (0: the
+C     sign of 3.43), KF3 mf without sign(theta-dot) (0: times it), at
+C     the iCOR implied by the body-axis velocity
 C     (VX, VY, OM), SI in and out. C4 with squares is not dimensionally
 C     consistent: the forms are evaluated with lengths in UL = 1 nm (the
 C     unit of the thesis' captions; in metres the moment is ~1e6 times
@@ -101,16 +112,15 @@ C     FM = 0; zero at rest. Operation for operation as
 C     nanopush::thesis_printed_friction_from_velocity (cxx/models/
 C     friction.cpp), so both engines round identically.
 C=======================================================================
-      SUBROUTINE FRPRNT(A, B, FMUN, VX, VY, OM, KF1, KF3, KC4,
-     &                  FX, FY, FM)
-      INTEGER KF1, KF3, KC4
+      SUBROUTINE FRPRNT(A, B, FMUN, VX, VY, OM, KF1, KF3, FX, FY, FM)
+      INTEGER KF1, KF3
       DOUBLE PRECISION A, B, FMUN, VX, VY, OM, FX, FY, FM
       DOUBLE PRECISION UL, AN, BN
       PARAMETER (UL = 1D-9)
       DOUBLE PRECISION V, SG, C, S, R, XC, YC, H1, H2, H3, H4
       DOUBLE PRECISION S12, S23, S34, S14, B45, B46, C3, C4, AB
-      DOUBLE PRECISION FRHYPT, FRPTRM, FRPTR3
-      EXTERNAL FRHYPT, FRPTRM, FRPTR3
+      DOUBLE PRECISION FRHYPT, FRPTRM
+      EXTERNAL FRHYPT, FRPTRM
       V = FRHYPT(VX, VY)
       IF (OM .EQ. 0D0) THEN
          IF (.NOT. (V .GT. 0D0)) THEN
@@ -154,17 +164,10 @@ C=======================================================================
      &      + FRPTRM(H2, S23 + H3, S12 + H1)
      &      - FRPTRM(H4, S34 + H3, S14 + H1)
       C3 = -H1*H2*S12 + H2*H3*S23 - H3*H4*S34 + H1*H4*S14
-      IF (KC4 .EQ. 1) THEN
-         C4 = FRPTRM(H1, S12 - H2, S14 - H4)
-     &        + FRPTRM(H2, S23 + H3, S12 + H1)
-     &        + FRPTRM(H3, S34 - H4, S23 - H2)
-     &        + FRPTRM(H4, S14 + H1, S34 + H3)
-      ELSE
-         C4 = FRPTR3(H1, S12 - H2, S14 - H4)
-     &        + FRPTR3(H2, S23 + H3, S12 + H1)
-     &        + FRPTR3(H3, S34 - H4, S23 - H2)
-     &        + FRPTR3(H4, S14 + H1, S34 + H3)
-      END IF
+      C4 = FRPTRM(H1, S12 - H2, S14 - H4)
+     &     + FRPTRM(H2, S23 + H3, S12 + H1)
+     &     + FRPTRM(H3, S34 - H4, S23 - H2)
+     &     + FRPTRM(H4, S14 + H1, S34 + H3)
       AB = AN*BN
       FX = FMUN*SG*B45/(8D0*AB)
       FY = FMUN*SG*B46/(8D0*AB)
@@ -188,15 +191,3 @@ C     (only on an edge line, where H -> 0 and the term's limit is 0).
       RETURN
       END
 
-C     FRPTR3 -- H**3 LN(U/V), or 0 where the logarithm is undefined:
-C     the corrected (cube) corner term of C4, as FRPTRM.
-      DOUBLE PRECISION FUNCTION FRPTR3(H, U, V)
-      DOUBLE PRECISION H, U, V
-      IF (H .EQ. 0D0 .OR. .NOT. (U .GT. 0D0)
-     &    .OR. .NOT. (V .GT. 0D0)) THEN
-         FRPTR3 = 0D0
-      ELSE
-         FRPTR3 = H*H*H*LOG(U/V)
-      END IF
-      RETURN
-      END

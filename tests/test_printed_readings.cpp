@@ -54,18 +54,18 @@ TEST_CASE("Printed readings: the index, the names and the words", "[printed][uni
   for (int i = 0; i < 16; ++i) CHECK(printed_reading_index(printed_reading(i)) == i);
   CHECK(printed_reading(0) == PrintedReading{});
   CHECK(printed_reading_named("literal") == PrintedReading{});
-  const PrintedReading consistent = *printed_reading_named("consistent");
-  CHECK(consistent.fy_sign);
-  CHECK(consistent.omega_sign);
-  CHECK_FALSE(consistent.c4_squares);
-  CHECK_FALSE(consistent.eq3_50);
+  const PrintedReading drawn = *printed_reading_named("as_drawn");
+  CHECK(drawn.fy_sign);
+  CHECK_FALSE(drawn.omega_sign);
+  CHECK_FALSE(drawn.c4_squares);
+  CHECK(drawn.eq3_50);
   const PrintedReading corrected = *printed_reading_named("corrected");
   CHECK_FALSE(corrected.fy_sign);
   CHECK_FALSE(corrected.omega_sign);
   CHECK_FALSE(corrected.c4_squares);
   CHECK_FALSE(corrected.eq3_50);
   CHECK_FALSE(printed_reading_named("literally").has_value());
-  CHECK(printed_reading_name(consistent) == "consistent");
+  CHECK(printed_reading_name(drawn) == "as_drawn");
   CHECK(printed_reading_name(printed_reading(9)).empty());
   CHECK(printed_reading_text(PrintedReading{}) == "F1 printed, F3 printed, C4 squares (nm), 3.50 corrected");
 }
@@ -114,7 +114,11 @@ TEST_CASE("Printed readings: each switch changes exactly its term", "[printed][u
     const WorldWrench we = m.friction(theta, vx, vy, v.om);
     CHECK(we.fx == ww.fx);
     CHECK(we.mf == ww.mf);
-    const FrictionWrench fb = thesis_printed_friction_from_velocity(a, b, muN, c * vx + s * vy, -s * vx + c * vy, v.om, base);
+    // The body-axis wrench the law rotates: the printed forms with squares, the stable Coulomb
+    // wrench with the sign slips with cubes (the next test).
+    const double vbx = c * vx + s * vy, vby = -s * vx + c * vy;
+    const FrictionWrench fb = base.c4_squares ? thesis_printed_friction_from_velocity(a, b, muN, vbx, vby, v.om, base)
+                                              : m.printed_slips(m.coulomb_wrench(vbx, vby, v.om), v.om);
     CHECK(ww.fy == (base.eq3_50 ? s * fb.fx - c * fb.fy : s * fb.fx + c * fb.fy));
     CHECK(we.fy == (base.eq3_50 ? s * fb.fx + c * fb.fy : s * fb.fx - c * fb.fy));
   }
@@ -142,6 +146,42 @@ TEST_CASE("Printed readings: the corrected reading is the Coulomb wrench of the 
   }
 }
 
+TEST_CASE("Printed readings with cubes: the printed forms are the Coulomb wrench with the sign slips",
+          "[printed][numeric]") {
+  // Where the printed logarithms are defined and R is moderate, the cube readings' printed forms
+  // equal the stable Coulomb wrench with fy' negated (F1 printed) and mf times sign(omega) (F3
+  // printed), which is how the law evaluates them (RoughBarModel::printed_slips). Beyond, the
+  // logarithmic forms cancel and the stable ones do not.
+  const double a = 27.5e-9, b = 50e-9, muN = 3e-6;
+  RoughBarModel m;
+  m.geometry = {a, b};
+  m.muN = muN;
+  m.printed = true;
+  for (int i : {4, 5, 6, 7, 12, 13, 14, 15}) {
+    m.reading = printed_reading(i);
+    for (double R : {0.3e-9, 10e-9, 40e-9, 120e-9, 1e-6}) {
+      for (double alpha : {0.1, 1.0, 2.5, -2.0}) {
+        for (int sense : {1, -1}) {
+          const Vel v = velocity_for(R, alpha, sense);
+          const FrictionWrench p = thesis_printed_friction_from_velocity(a, b, muN, v.vx, v.vy, v.om, m.reading);
+          const FrictionWrench x = m.printed_slips(m.coulomb_wrench(v.vx, v.vy, v.om), v.om);
+          INFO("reading " << i << " R " << R << " alpha " << alpha << " sense " << sense);
+          CHECK(std::fabs(p.fx - x.fx) <= 1e-9 * muN);
+          CHECK(std::fabs(p.fy - x.fy) <= 1e-9 * muN);
+          CHECK(std::fabs(p.mf - x.mf) <= 1e-9 * muN * b);
+        }
+      }
+    }
+    // World axes: the law's wrench is the stable one (no cancellation at R = 1e4 b).
+    const Vel far = velocity_for(1e4 * b, 0.7, -1);
+    const WorldWrench w = m.friction(0.0, far.vx, far.vy, far.om);
+    const FrictionWrench x = m.printed_slips(m.coulomb_wrench(far.vx, far.vy, far.om), far.om);
+    CHECK(w.fx == x.fx);
+    CHECK(w.mf == x.mf);
+    CHECK(std::hypot(w.fx, w.fy) <= muN * (1 + 1e-12));
+  }
+}
+
 TEST_CASE("Printed readings: the C++ and F77 right-hand sides are bit-identical under all 16",
           "[printed][crosslang][regression]") {
   const Scene sc = test::thesis_preset(18);
@@ -153,6 +193,7 @@ TEST_CASE("Printed readings: the C++ and F77 right-hand sides are bit-identical 
   for (int i = 0; i < 16; ++i) {
     RoughBarModel mp = m;
     mp.printed = true;
+    mp.f77_forms = true;  // cubes readings take the Coulomb wrench: the F77 routine's forms, as faithful does
     mp.reading = printed_reading(i);
     const RoughBarThesisRhs rhs{mp};
     for (int k = 0; k < 250; ++k) {
@@ -216,12 +257,12 @@ TEST_CASE("Printed readings: both engines identical under every reading on fig3_
 TEST_CASE("Printed readings: scene keys, names and refusals", "[printed][unit]") {
   Scene sc = test::thesis_preset(18);
   CHECK(sc.surface.printed == PrintedReading{});
-  sc.set("surface.printed.reading", std::string("consistent"));
-  CHECK(sc.surface.printed == *printed_reading_named("consistent"));
-  sc.set("surface.printed.omega_sign", false);  // a switch over the reading
-  CHECK(printed_reading_index(sc.surface.printed) == 6);
+  sc.set("surface.printed.reading", std::string("as_drawn"));
+  CHECK(sc.surface.printed == *printed_reading_named("as_drawn"));
+  sc.set("surface.printed.omega_sign", true);  // a switch over the reading
+  CHECK(printed_reading_index(sc.surface.printed) == 12);
   sc.set("surface.printed.c4", std::string("squares_nm"));
-  CHECK(printed_reading_index(sc.surface.printed) == 2);
+  CHECK(printed_reading_index(sc.surface.printed) == 8);
   const auto message = [&](const std::string& key, const SceneValue& v) {
     Scene s = test::thesis_preset(18);
     try {
@@ -232,7 +273,7 @@ TEST_CASE("Printed readings: scene keys, names and refusals", "[printed][unit]")
     return std::string("(accepted)");
   };
   CHECK_THAT(message("surface.printed.reading", std::string("best")),
-             Catch::Contains("surface.printed.reading") && Catch::Contains("best") && Catch::Contains("literal, consistent, corrected"));
+             Catch::Contains("surface.printed.reading") && Catch::Contains("best") && Catch::Contains("literal, as_drawn, corrected"));
   CHECK_THAT(message("surface.printed.c4", std::string("squares")),
              Catch::Contains("squares") && Catch::Contains("squares_nm, cubes"));
   CHECK_THAT(message("surface.printed.fy_sign", 1.0), Catch::Contains("true or false"));

@@ -67,7 +67,7 @@ const std::vector<SceneKey>& scene_keys() {
       {"surface.law", K::string, "", "thesis", laws, "rough",
        "friction law: the eq 3.40 sign law, the same with eqs 3.45-3.48 as printed, or event-located "
        "stick-slip"},
-      {"surface.printed.reading", K::string, "", "literal", "literal, consistent, corrected", "rough",
+      {"surface.printed.reading", K::string, "", "literal", "literal, as_drawn, corrected", "rough",
        "the printed law's reading of the slips (docs/rough.md); the four keys below override it"},
       {"surface.printed.fy_sign", K::boolean, "", "the reading's (true)", "true, false", "rough",
        "printed law: eq 3.46's sign of fy' as printed (errata F1); false: the sign of eq 3.43"},

@@ -25,11 +25,12 @@ struct PrintedReading {
 PrintedReading printed_reading(int index);
 int printed_reading_index(const PrintedReading& r);
 /// The named readings (surface.printed.reading), in the order messages list them: literal
-/// (index 0, the law as it has always run), consistent (4: the sign slips kept, C4 with cubes, the
-/// reading the thesis' figures support best, docs/rough.md), corrected (7: F1-F3 corrected, which
-/// is the Coulomb wrench of the thesis law where the printed logarithms are defined).
+/// (index 0, the law as it has always run), as_drawn (14: F1 printed, F3 corrected, cubes in C4,
+/// eq 3.50 printed: the reading the thesis' Figs 3.18 and 3.29 support best, scored by the
+/// `printed-readings` reproduce step, docs/rough.md), corrected (7: F1-F3 corrected, the Coulomb
+/// wrench of the thesis law).
 inline constexpr std::array<std::pair<std::string_view, int>, 3> kPrintedReadingNames{
-    {{"literal", 0}, {"consistent", 4}, {"corrected", 7}}};
+    {{"literal", 0}, {"as_drawn", 14}, {"corrected", 7}}};
 std::optional<PrintedReading> printed_reading_named(std::string_view name);
 /// The name of a named reading, or "" for the others.
 std::string_view printed_reading_name(const PrintedReading& r);

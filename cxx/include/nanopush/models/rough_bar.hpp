@@ -57,15 +57,32 @@ struct RoughBarModel {
     if (muN == 0.0) return {};
     const double vbx = c * vx + s * vy, vby = -s * vx + c * vy;
     if (printed) {
-      const FrictionWrench fb = thesis_printed_friction_from_velocity(geometry.a, geometry.b, muN, vbx, vby, omega, reading);
+      const FrictionWrench fb = reading.c4_squares
+                                    ? thesis_printed_friction_from_velocity(geometry.a, geometry.b, muN, vbx, vby, omega, reading)
+                                    : printed_slips(coulomb_wrench(vbx, vby, omega), omega);
       // eq 3.50 as printed: fy = fx' sin(theta) - fy' cos(theta) (erratum 3 corrects the sign)
       return {c * fb.fx - s * fb.fy, reading.eq3_50 ? s * fb.fx - c * fb.fy : s * fb.fx + c * fb.fy, fb.mf};
     }
-    const FrictionWrench fb =
-        f77_forms ? friction_detail::rectangle_friction_from_velocity_reference(geometry.a, geometry.b, muN, vbx,
-                                                                                  vby, omega)
-                    : rectangle_friction_from_velocity(geometry.a, geometry.b, muN, vbx, vby, omega);
+    const FrictionWrench fb = coulomb_wrench(vbx, vby, omega);
     return {c * fb.fx - s * fb.fy, s * fb.fx + c * fb.fy, fb.mf};
+  }
+
+  /// The Coulomb wrench in body axes: the F77 routine's forms (faithful) or the production ones.
+  [[nodiscard]] FrictionWrench coulomb_wrench(double vbx, double vby, double omega) const noexcept {
+    return f77_forms ? friction_detail::rectangle_friction_from_velocity_reference(geometry.a, geometry.b, muN, vbx, vby,
+                                                                                   omega)
+                     : rectangle_friction_from_velocity(geometry.a, geometry.b, muN, vbx, vby, omega);
+  }
+  /// A reading with cubes in C4 is the Coulomb wrench with the reading's sign slips: fy' negated
+  /// (F1 as printed) and mf without sign(theta-dot), i.e. times sign(omega) (F3 as printed);
+  /// nothing at omega = 0, where the printed forms are pure translation too. Evaluated by the
+  /// Coulomb wrench's stable forms: the printed logarithms with cubes cancel as (R/b)^3 and leave
+  /// noise that does positive work (docs/rough.md). RGBAR does the same with RECTFV.
+  [[nodiscard]] FrictionWrench printed_slips(FrictionWrench w, double omega) const noexcept {
+    if (omega == 0.0) return w;
+    if (reading.fy_sign) w.fy = -w.fy;
+    if (reading.omega_sign && omega < 0.0) w.mf = -w.mf;
+    return w;
   }
 
   /// friction_cs in scalar S: the production forms in double, friction_extended.hpp's in long
