@@ -167,3 +167,24 @@ def test_gil_released_during_a_run():
     scene.set({"solver.t_end": 5e-7, "solver.max_steps": 10_000_000})
     r = assert_runs_without_the_gil(lambda: nanopush.run(scene))
     assert r.complete and r.t[-1] == 5e-7
+
+
+def test_compare_cannot_judge_without_a_reference(cli):
+    # fig3_29 under the printed law: dop853's reference run at rtol 1e-14 fails at t = 0, so
+    # there is nothing to judge against (exit 3 on the command line, SolverError here).
+    p = cli("compare", "fig3_29", "--law", "printed", "--method", "dop853", expect=3)
+    assert "cannot judge" in p.stderr
+    with pytest.raises(nanopush.SolverError, match="cannot judge"):
+        nanopush.compare("fig3_29", law="printed", method="dop853")
+
+
+def test_printed_readings_are_scene_keys():
+    # The reading the thesis' figures support best runs fig3_29 (mu = 0.17) to 1.6 ns with a
+    # bounded angle; each switch is a key, and a bad value names the key and the choices.
+    scene = nanopush.Scene.preset("fig3_29")
+    scene.set("surface.printed.reading", "as_drawn")
+    r = nanopush.run(scene, law="printed", engine="f77")
+    assert r.t[-1] == pytest.approx(1.6e-9) and max(abs(r.theta)) < 2.5
+    scene.set("surface.printed.c4", "squares_nm")
+    with pytest.raises(nanopush.InputError, match="squares_nm, cubes"):
+        scene.set("surface.printed.c4", "square")
