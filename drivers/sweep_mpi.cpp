@@ -417,22 +417,15 @@ int run_mpi_sweep(const sweep::Plan& plan, const sweep::Task& task, const sweep:
             asked = true;
           }
           if (asked) {
-            int flag = 0;
-            MPI_Status st;
-            MPI_Iprobe(0, kWork, MPI_COMM_WORLD, &flag, &st);
-            if (flag) {
-              int n = 0;
-              MPI_Get_count(&st, MPI_LONG_LONG, &n);
-              std::vector<long long> got(static_cast<std::size_t>(n));
-              MPI_Recv(got.data(), n, MPI_LONG_LONG, 0, kWork, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+            if (auto got = work_reply(false)) {
               asked = false;
               {
                 std::lock_guard<std::mutex> lock(w.m);
-                if (n == 0) {
+                if (got->empty()) {
                   finished = true;
                   w.no_more = true;
                 }
-                for (long long i : got) w.queue.push_back(static_cast<std::size_t>(i));
+                for (long long i : *got) w.queue.push_back(static_cast<std::size_t>(i));
               }
               w.cv.notify_all();
               continue;

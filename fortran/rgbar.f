@@ -60,29 +60,32 @@ C=======================================================================
             VBY = -S*Y(4) + C*Y(5)
             OM = Y(6)
          END IF
-         IF (IPAR(1) .EQ. 1 .AND. IPAR(4) .EQ. 0) THEN
-C           Cubes in C4: the Coulomb wrench with the reading's sign
-C           slips, by RECTFV's stable forms (the printed logarithms
-C           with cubes cancel as (R/B)**3 where R is large).
-            CALL RECTFV(RPAR(7), RPAR(8), RPAR(9), VBX, VBY, OM,
-     &                  FBX, FBY, FM, IERR)
-            IF (OM .NE. 0D0) THEN
-               IF (IPAR(2) .EQ. 1) FBY = -FBY
-               IF (IPAR(3) .EQ. 1 .AND. OM .LT. 0D0) FM = -FM
+C        IPAR(2..5) are read only under the printed law (IPAR(1) = 1):
+C        a caller of the thesis law may pass IPAR(1) alone.
+         IF (IPAR(1) .EQ. 1) THEN
+            IF (IPAR(4) .EQ. 0) THEN
+C              Cubes in C4: the Coulomb wrench with the reading's sign
+C              slips, by RECTFV's stable forms (the printed logarithms
+C              with cubes cancel as (R/B)**3 where R is large).
+               CALL RECTFV(RPAR(7), RPAR(8), RPAR(9), VBX, VBY, OM,
+     &                     FBX, FBY, FM, IERR)
+               IF (OM .NE. 0D0) THEN
+                  IF (IPAR(2) .EQ. 1) FBY = -FBY
+                  IF (IPAR(3) .EQ. 1 .AND. OM .LT. 0D0) FM = -FM
+               END IF
+            ELSE
+               CALL FRPRNT(RPAR(7), RPAR(8), RPAR(9), VBX, VBY, OM,
+     &                     IPAR(2), IPAR(3), FBX, FBY, FM)
             END IF
-         ELSE IF (IPAR(1) .EQ. 1) THEN
-            CALL FRPRNT(RPAR(7), RPAR(8), RPAR(9), VBX, VBY, OM,
-     &                  IPAR(2), IPAR(3), FBX, FBY, FM)
          ELSE
             CALL RECTFV(RPAR(7), RPAR(8), RPAR(9), VBX, VBY, OM,
      &                  FBX, FBY, FM, IERR)
          END IF
          IF (IERR .NE. 0) RETURN
          FWX = C*FBX - S*FBY
-         IF (IPAR(1) .EQ. 1 .AND. IPAR(5) .EQ. 1) THEN
-            FWY = S*FBX - C*FBY
-         ELSE
-            FWY = S*FBX + C*FBY
+         FWY = S*FBX + C*FBY
+         IF (IPAR(1) .EQ. 1) THEN
+            IF (IPAR(5) .EQ. 1) FWY = S*FBX - C*FBY
          END IF
       END IF
       DYDT(1) = Y(4)
