@@ -111,7 +111,7 @@ module nanopush
 
   public :: nanopush_rhs_fn
   public :: nanopush_api_version, nanopush_status_name
-  public :: nanopush_load_scene, nanopush_parse_scene, nanopush_destroy, nanopush_scene_info
+  public :: nanopush_load_scene, nanopush_parse_scene, nanopush_scene_preset, nanopush_destroy, nanopush_scene_info
   public :: nanopush_scene_set
   public :: nanopush_run, nanopush_integrate, nanopush_compare
   public :: nanopush_friction_wrench, nanopush_friction_from_velocity
@@ -177,6 +177,11 @@ module nanopush
       type(c_ptr), value, intent(in) :: error
       character(kind=c_char), intent(in) :: text(*), source(*)
     end function c_parse_scene
+    type(c_ptr) function c_scene_preset(error, name, dir) bind(C, name="nanopush_scene_preset")
+      import :: c_ptr, c_char
+      type(c_ptr), value, intent(in) :: error
+      character(kind=c_char), intent(in) :: name(*), dir(*)
+    end function c_scene_preset
     integer(c_int) function c_scene_set_real(error, scene, key, value) bind(C, name="nanopush_scene_set_real")
       import :: c_ptr, c_char, c_int, c_double
       type(c_ptr), value, intent(in) :: error, scene
@@ -499,6 +504,28 @@ contains
     call finish(err, "nanopush_load_scene", msg, stat)
     if (present(errmsg)) errmsg = msg
   end subroutine nanopush_load_scene
+
+  !> Load a preset scene by name ("fig3_6a"; `nanopush presets` lists them), as the command line
+  !> finds it. scenes_dir (optional): the presets directory; absent = $NANOPUSH_SCENES, else the
+  !> installed presets of the library's prefix (<prefix>/share/nanopush/scenes).
+  subroutine nanopush_scene_preset(scene, name, scenes_dir, stat, errmsg)
+    type(nanopush_scene), intent(inout) :: scene
+    character(len=*), intent(in) :: name
+    character(len=*), intent(in), optional :: scenes_dir
+    integer, intent(out), optional :: stat
+    character(len=:), allocatable, intent(out), optional :: errmsg
+    type(c_ptr) :: err
+    character(len=:), allocatable :: msg
+    call destroy_scene(scene)
+    err = c_new_error()
+    if (present(scenes_dir)) then
+      scene%ptr = c_scene_preset(err, to_c(name), to_c(scenes_dir))
+    else
+      scene%ptr = c_scene_preset(err, to_c(name), to_c(""))
+    end if
+    call finish(err, "nanopush_scene_preset", msg, stat)
+    if (present(errmsg)) errmsg = msg
+  end subroutine nanopush_scene_preset
 
   !> Parse a scene from TOML text; source_name (default "<string>") is quoted in messages.
   subroutine nanopush_parse_scene(scene, toml_text, source_name, stat, errmsg)

@@ -30,7 +30,7 @@ extern "C" {
 #endif
 
 /* Version of this interface: major * 10000 + minor * 100 + patch. */
-#define NANOPUSH_API_VERSION 700
+#define NANOPUSH_API_VERSION 800
 int nanopush_get_api_version(void);
 
 /* ---- Status codes ---------------------------------------------------------------------- */
@@ -76,6 +76,14 @@ typedef struct nanopush_scene_s* nanopush_scene;
 nanopush_scene nanopush_load_scene(nanopush_error error, const char* path);
 /* Parse a scene from TOML text (NUL-terminated); source_name is used in messages (may be NULL). */
 nanopush_scene nanopush_parse_scene(nanopush_error error, const char* toml_text, const char* source_name);
+/* Load a preset scene by name ("fig3_6a", "thesis/fig3_18"; `nanopush presets` lists them),
+ * found as the command line finds it: NAME.toml or NAME under the presets directory, then
+ * NAME.toml in its thesis/, bench/ and examples/ folders. scenes_dir is that directory; NULL or
+ * "" = $NANOPUSH_SCENES when set, else the installed presets of this library's prefix
+ * (<prefix>/share/nanopush/scenes beside <prefix>/lib, or beside <prefix>/bin when a program
+ * links the library statically; CMake: nanopush_SCENES_DIR). NULL on failure:
+ * NANOPUSH_BAD_INPUT naming the preset and the directory looked in. */
+nanopush_scene nanopush_scene_preset(nanopush_error error, const char* name, const char* scenes_dir);
 void nanopush_delete_scene(nanopush_scene* scene);
 
 /* Scene name copied into buffer[size]; returns its full length, or -1 on failure. */

@@ -136,7 +136,7 @@ program test_fortran_errors
 
   ! Status names.
   call check(nanopush_status_name(NANOPUSH_BAD_INPUT) == "bad input", "status name")
-  call check(nanopush_api_version() == 700, "API version 0.7.0")
+  call check(nanopush_api_version() == 800, "API version 0.8.0")
 
   call finish("test_fortran_errors")
   print '(a)', "all checks hold"

@@ -134,3 +134,13 @@ set_tests_properties(capi.accuracy_c PROPERTIES PASS_REGULAR_EXPRESSION "capi ac
 nanopush_capi_program(capi_test_accuracy_fortran test_fortran_accuracy.f90)
 add_test(NAME capi.accuracy_fortran COMMAND capi_test_accuracy_fortran ${_capi_rough})
 set_tests_properties(capi.accuracy_fortran PROPERTIES PASS_REGULAR_EXPRESSION "fortran accuracy: ok")
+
+# A preset scene by name (nanopush_scene_preset) from C and from Fortran: the file the command
+# line's preset rule finds, from scenes_dir or $NANOPUSH_SCENES; what is missing is named.
+nanopush_capi_program(capi_test_preset test_capi_preset.c)
+add_test(NAME capi.c_preset COMMAND capi_test_preset ${PROJECT_SOURCE_DIR}/drivers/scenes)
+set_tests_properties(capi.c_preset PROPERTIES PASS_REGULAR_EXPRESSION "capi preset: all checks hold")
+nanopush_capi_program(capi_test_fortran_preset test_fortran_preset.f90)
+target_link_libraries(capi_test_fortran_preset PRIVATE nanopush_test_support_f)  # module test_support (tests/CMakeLists.txt)
+add_test(NAME capi.fortran_preset COMMAND capi_test_fortran_preset ${PROJECT_SOURCE_DIR}/drivers/scenes)
+set_tests_properties(capi.fortran_preset PROPERTIES PASS_REGULAR_EXPRESSION "fortran preset: all checks hold")
