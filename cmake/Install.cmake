@@ -29,7 +29,7 @@ set(_nanopush_libraries nanopush_numerics nanopush_models nanopush_scenes nanopu
     nanopush_engines nanopush_outputs nanopush_bridge nanopush_f77 nanopush_capi nanopush_fortran nanopush_warnings)
 # Libraries of newer layers, installed and exported when the tree has them (a shared `nanopush`
 # linking a library that is not installed would not run from the prefix).
-foreach(_t nanopush_sweeps nanopush_fitting)
+foreach(_t nanopush_sweeps nanopush_fitting nanopush_planning)
   if(TARGET ${_t})
     list(APPEND _nanopush_libraries ${_t})
   endif()

@@ -128,6 +128,7 @@ int run_cmd(const RunOptions& o) {
       else
         std::cerr << "  came to rest at t = " << e.t << " s: " << (e.stuck ? "stuck (applied wrench inside the limit surface)" : "slid off again") << "\n";
     }
+    for (const auto& e : tr.tip_events) std::cerr << "  tip: " << e.what << " at t = " << e.t << " s\n";
     if (out != "-") std::cerr << "  trajectory (SI, world axes): " << out << "\n";
   }
   return 0;

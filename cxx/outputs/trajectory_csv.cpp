@@ -60,10 +60,33 @@ RunInfo trajectory_run_info(const Trajectory& tr) {
   return info;
 }
 
+const Columns& tip_column_specs() {
+  static const Columns c = [] {
+    Columns s = trajectory_column_specs();
+    s.push_back({"tip_x", "m", "x of the tip centre (world axes)"});
+    s.push_back({"tip_y", "m", "y of the tip centre (world axes)"});
+    s.push_back({"tip_fx", "N", "force of the tip on the body, x component (world axes)"});
+    s.push_back({"tip_fy", "N", "force of the tip on the body, y component (world axes)"});
+    s.push_back({"contact", "1", "tip contact: 0 none, 1 sticking, 2 sliding"});
+    return s;
+  }();
+  return c;
+}
+
 void write_trajectory_csv(const Trajectory& tr, const std::filesystem::path& path, const std::string& scene) {
-  CsvWriter w(path, trajectory_column_specs(), scene);
+  const bool tip = !tr.tip.empty();
+  if (tip && tr.tip.size() != tr.rows.size())
+    throw std::logic_error("write_trajectory_csv: tip samples and rows differ in number");
+  CsvWriter w(path, tip ? tip_column_specs() : trajectory_column_specs(), scene);
   w.run_info(trajectory_run_info(tr));
-  for (const auto& r : tr.rows) w.row(std::vector<double>(r.begin(), r.end()));
+  for (std::size_t i = 0; i < tr.rows.size(); ++i) {
+    std::vector<double> v(tr.rows[i].begin(), tr.rows[i].end());
+    if (tip) {
+      const TipSample& s = tr.tip[i];
+      v.insert(v.end(), {s.x, s.y, s.fx, s.fy, static_cast<double>(s.contact)});
+    }
+    w.row(v);
+  }
   w.commit();
 }
 

@@ -196,6 +196,10 @@ std::vector<double> Scene::output_times() const {
 
 std::array<double, 8> Scene::state_scales() const {
   const double len = std::max(length, width);
+  if (push_mode == PushMode::tip) {  // the tip sets the pace: its speed, and mu N its work
+    const double v = tip.speed, work = friction_limit() * len;
+    return {len, len, 1.0, v, v, v / len, work, work};
+  }
   // Rotational time scale: the small-oscillation period of the push torque.
   const double torque = push.force * std::max(push.lever(), 1e-3 * len);
   const double w = std::sqrt(torque / inertia);
@@ -281,6 +285,15 @@ void read_object(const toml::table& root, Scene& sc) {
 void read_push(const toml::table& root, Scene& sc) {
   const auto& t = require_table(root, "push");
   check_keys(t, "push", scene_table_keys("push"));
+  sc.push_mode = scene_choice<PushMode>("push.mode", opt_string(t, "push", "mode").value_or("force"));
+  if (sc.push_mode == PushMode::tip) {
+    for (const char* k : {"force", "direction", "xn", "yn", "point"})
+      if (t.get(k))
+        throw InputError(std::string("push.") + k, "(present)",
+                         "with push.mode = \"tip\" the tip's keys (tip.*) make the push: remove this key");
+    return;
+  }
+  if (root.get("tip")) throw InputError("tip", "(present)", "the tip's keys need push.mode = \"tip\"");
   const double F = number(t, "push", "force");
   require_positive("push.force", F, "N");
   const double beta = opt_number(t, "push", "direction").value_or(0.0);
@@ -310,6 +323,49 @@ void read_push(const toml::table& root, Scene& sc) {
   if (std::fabs(sc.push.pby) > sc.geometry.b + tol)
     throw InputError(pt ? "push.point[1]" : "push.yn", fmt(pt ? sc.push.pby : *yn),
                      "the push point must lie on the body: |y'| <= length/2 = " + fmt(sc.geometry.b) + " m");
+}
+
+/// [tip]: the AFM tip and its straight path (push.mode = tip).
+void read_tip(const toml::table& root, Scene& sc) {
+  if (sc.push_mode != PushMode::tip) return;
+  const auto& t = require_table(root, "tip");
+  check_keys(t, "tip", scene_table_keys("tip"));
+  tip::TipPath& p = sc.tip;
+  p.start_x = number(t, "tip", "start_x");
+  p.start_y = number(t, "tip", "start_y");
+  p.travel = number(t, "tip", "travel");
+  p.direction = opt_number(t, "tip", "direction").value_or(0.0);
+  p.speed = opt_number(t, "tip", "speed").value_or(1e-6);
+  p.radius = opt_number(t, "tip", "radius").value_or(1e-8);
+  p.mu = opt_number(t, "tip", "mu").value_or(0.0);
+  p.validate();
+}
+
+/// What a tip push needs of the rest of the scene: friction (a rough surface) and the C++
+/// engine's quasi-static model in double (docs/tip.md).
+void check_tip_scene(Scene& sc) {
+  if (sc.push_mode != PushMode::tip) return;
+  if (!sc.rough())
+    throw InputError("surface.kind", "\"" + sc.model + "\"",
+                     "a tip push moves the object against friction: use \"rough\" (a smooth surface has no quasi-static "
+                     "answer)");
+  if (sc.surface.law == Law::printed)
+    throw InputError("surface.law", "\"printed\"", "the tip push uses the Coulomb wrench: use thesis or coulomb");
+  if (!(sc.friction_limit() > 0))
+    throw InputError("surface.mu", fmt(sc.surface.mu), "must be > 0 for a tip push (the quasi-static model needs friction)");
+  if (sc.solver.engine != Engine::cxx)
+    throw InputError("solver.engine", "\"" + to_string(sc.solver.engine) + "\"", "the tip push runs in the C++ engine only");
+  if (sc.solver.method != Method::automatic)
+    throw InputError("solver.method", "\"" + to_string(sc.solver.method) + "\"",
+                     "the quasi-static tip push has its own integrator: leave solver.method out");
+  if (sc.solver.precision != Precision::double_)
+    throw InputError("solver.precision", "\"" + to_string(sc.solver.precision) + "\"", "the tip push runs in double");
+  const char* const rate_keys[] = {"vx", "vy", "omega"};
+  for (int i = 0; i < 3; ++i)
+    if (sc.initial[3 + i] != 0.0)
+      throw InputError(std::string("initial.") + rate_keys[i], fmt(sc.initial[3 + i]),
+                       "a tip push starts with the object at rest (the quasi-static model has no inertia): must be 0");
+  if (sc.solver.t_end == 0) sc.solver.t_end = sc.tip.t_stop();
 }
 
 /// [initial]: the state at t = 0.
@@ -389,8 +445,12 @@ void read_solver(const toml::table& root, Scene& sc) {
       throw InputError("solver.max_steps", node_text(*t.get("max_steps")), "must be an integer in [1, 1000000000]");
     sc.solver.max_steps = static_cast<long>(*ms);
   }
-  sc.solver.t_end = number(t, "solver", "t_end");
-  require_positive("solver.t_end", sc.solver.t_end, "s");
+  if (sc.push_mode == PushMode::tip && !t.get("t_end")) {
+    sc.solver.t_end = 0;  // the tip's travel time (check_tip_scene)
+  } else {
+    sc.solver.t_end = number(t, "solver", "t_end");
+    require_positive("solver.t_end", sc.solver.t_end, "s");
+  }
   if (auto s = opt_number(t, "solver", "samples")) {
     if (!(*s >= 2 && *s <= 1e7) || std::floor(*s) != *s)
       throw InputError("solver.samples", node_text(*t.get("samples")), "must be an integer in [2, 10000000]");
@@ -492,10 +552,12 @@ Scene scene_from_document(const toml::table& root, const std::string& source_nam
   if (sc.name.empty()) sc.name = identifier_from(std::filesystem::path(source_name).stem().string());
   read_object(root, sc);
   read_push(root, sc);
+  read_tip(root, sc);
   read_initial(root, sc);
   read_surface(root, sc);
   read_solver(root, sc);
   assemble_load(root, sc);
+  check_tip_scene(sc);
   check_representable(sc);
   sc.document = std::make_shared<const toml::table>(root);
   return sc;

@@ -26,7 +26,7 @@ const std::vector<SceneKey>& scene_keys() {
   // The choice keys' allowed values come from the choices' name tables (choices.hpp).
   static const std::string kinds = choice_names<SurfaceKind>(", "), laws = choice_names<Law>(", "),
                            engines = choice_names<Engine>(", "), methods = choice_names<Method>(", "),
-                           precisions = choice_names<Precision>(", ");
+                           precisions = choice_names<Precision>(", "), push_modes = choice_names<PushMode>(", ");
   static const std::vector<SceneKey> keys = {
       {"scene.name", K::string, "", "file stem", "letters, digits, _ - . (not first: . -), <= 200", "all",
        "identifier used in output names"},
@@ -42,7 +42,10 @@ const std::vector<SceneKey>& scene_keys() {
       {"object.inertia", K::number, "kg m^2", "m (length^2 + width^2)/12", "> 0", "all",
        "moment of inertia about the centre of mass, z axis"},
 
-      {"push.force", K::number, "N", "required", "> 0", "all", "magnitude F of the push"},
+      {"push.mode", K::string, "", "force", push_modes, "all",
+       "force: a constant force at a body point (the keys below); tip: an AFM tip moving along a line (tip.*, "
+       "rough surface, docs/tip.md)"},
+      {"push.force", K::number, "N", "required (mode force)", "> 0", "all", "magnitude F of the push"},
       {"push.direction", K::number, "rad", "0", "finite", "all", "world direction beta of the push"},
       {"push.xn", K::number, "m", "one of xn/yn or point", "abs(xn) <= width/2", "all",
        "thesis push coordinates: the body point (xn, -yn) (docs/models.md section 0)"},
@@ -51,6 +54,15 @@ const std::vector<SceneKey>& scene_keys() {
       {"push.point", K::array, "m", "one of xn/yn or point", "[x', y'] on the body", "all",
        "push point in body axes"},
 
+      {"tip.start_x", K::number, "m", "required (mode tip)", "finite; the tip outside the bar", "rough",
+       "world x of the tip centre at t = 0"},
+      {"tip.start_y", K::number, "m", "required (mode tip)", "finite; the tip outside the bar", "rough",
+       "world y of the tip centre at t = 0"},
+      {"tip.direction", K::number, "rad", "0", "finite", "rough", "world direction the tip moves in"},
+      {"tip.speed", K::number, "m/s", "1e-6", "> 0", "rough", "tip speed (AFM tips: 1e-7 to 1e-4 m/s)"},
+      {"tip.travel", K::number, "m", "required (mode tip)", "> 0", "rough", "length of the tip's path"},
+      {"tip.radius", K::number, "m", "1e-8", "> 0", "rough", "radius of the tip (a disc seen from above)"},
+      {"tip.mu", K::number, "1", "0", "[0, 10]", "rough", "Coulomb friction between tip and object"},
       {"initial.x", K::number, "m", "0", "finite", "all", "initial x of the centre of mass"},
       {"initial.y", K::number, "m", "0", "finite", "all", "initial y of the centre of mass"},
       {"initial.theta", K::number, "rad", "0", "finite", "all", "initial angle"},
@@ -78,7 +90,7 @@ const std::vector<SceneKey>& scene_keys() {
       {"surface.printed.eq3_50", K::boolean, "", "the reading's (false)", "true, false", "rough",
        "printed law: eq 3.50's fy = fx' sin - fy' cos as printed; false: erratum 3's +"},
 
-      {"solver.t_end", K::number, "s", "required", "> 0", "all", "end time"},
+      {"solver.t_end", K::number, "s", "required (mode tip: travel/speed)", "> 0", "all", "end time"},
       {"solver.samples", K::integer, "1", "401", "[2, 10000000]", "all",
        "output times, evenly spaced over [0, t_end], both ends included"},
       {"solver.rtol", K::number, "1", "1e-10", "[1e-30, 0.1]", "all", "relative tolerance"},

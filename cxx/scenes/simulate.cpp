@@ -35,6 +35,17 @@ ResolvedSettings resolve_settings(const Scene& scene, const RunSettings& in) {
     throw InputError("method", to_string(*in.method),
                      "the f77 engine has one method (its Bulirsch-Stoer, which faithful reproduces in C++): drop the "
                      "method or use engine cxx");
+  if (scene.push_mode == PushMode::tip) {  // the quasi-static tip push (docs/tip.md)
+    if (s.engine == Engine::f77)
+      throw InputError("engine", "f77", "the tip push (push.mode = tip) runs in the C++ engine only: use engine cxx");
+    if (in.method && *in.method != Method::automatic)
+      throw InputError("method", to_string(*in.method),
+                       "the quasi-static tip push has its own integrator (Dormand-Prince 8(5,3)): leave the method out");
+    if (in.precision && *in.precision != Precision::double_)
+      throw InputError("precision", to_string(*in.precision), "the tip push runs in double");
+    if (in.law && *in.law == Law::printed)
+      throw InputError("law", "printed", "the tip push uses the Coulomb wrench: use thesis or coulomb");
+  }
   // The field named in a message is the one the value came from (the settings or the scene).
   const std::string mfield = in.method ? "method" : "solver.method";
   s.method = s.engine == Engine::f77 ? Method::faithful : in.method.value_or(scene.solver.method);
@@ -465,6 +476,7 @@ Trajectory run_scene(const Scene& scene, const RunSettings& settings) {
 }
 
 Trajectory run_cxx(const Scene& scene, const ResolvedSettings& s) {
+  if (scene.push_mode == PushMode::tip) return run_cxx_tip(scene, s);
   if (scene.rough()) {
     if (s.precision == Precision::long_) return run_cxx_rough<long double>(scene, s);
     if (s.precision == Precision::quad) return run_cxx_rough<num::quad>(scene, s);

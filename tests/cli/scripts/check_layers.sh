@@ -16,7 +16,7 @@ set -euo pipefail
 shopt -s nullglob
 root=$1
 cd "$root"
-layers="numerics models scenes engines outputs sweeps fitting"
+layers="numerics models scenes engines outputs sweeps fitting planning"
 allowed() {  # the cxx layers a cxx layer may include
   case $1 in
     numerics) echo "numerics" ;;
@@ -26,6 +26,7 @@ allowed() {  # the cxx layers a cxx layer may include
     outputs)  echo "numerics models scenes outputs" ;;
     sweeps)   echo "numerics models scenes engines outputs sweeps" ;;
     fitting)  echo "numerics models scenes engines outputs fitting" ;;
+    planning) echo "numerics models scenes planning" ;;
     front)    echo "$layers" ;;   # bindings, python, drivers, tests
   esac
 }
@@ -65,7 +66,7 @@ for layer in $layers; do
     done < <(includes_of "$f")
   done
 done
-stray=$(cd cxx && find . -name '*.cpp' -o -name '*.hpp' | grep -vE '^\./(include/nanopush/)?(numerics|models|scenes|engines|outputs|sweeps|fitting)/' || true)
+stray=$(cd cxx && find . -name '*.cpp' -o -name '*.hpp' | grep -vE '^\./(include/nanopush/)?(numerics|models|scenes|engines|outputs|sweeps|fitting|planning)/' || true)
 [ -z "$stray" ] || violation "files under cxx/ outside the layers: $stray"
 
 # fortran/: the F77 library uses no module and includes nothing.

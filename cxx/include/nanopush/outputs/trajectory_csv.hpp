@@ -11,6 +11,8 @@ namespace nanopush {
 
 /// The trajectory columns t, x, ..., mf with their units and meanings (SI, world frame).
 const Columns& trajectory_column_specs();
+/// The same followed by the tip's columns tip_x, tip_y, tip_fx, tip_fy, contact (push.mode = tip).
+const Columns& tip_column_specs();
 
 /// Write a trajectory CSV (header t,x,...,mf) and its sidecar atomically; `scene` names the
 /// scene in the sidecar (default: the process-wide provenance).

@@ -24,6 +24,9 @@ enum class Law { thesis, printed, coulomb };
 enum class Precision { double_, long_, quad };
 /// The support surface: smooth (docs/models.md section A) or rough (section C).
 enum class SurfaceKind { smooth, rough };
+/// How the object is pushed: a constant force at a body point (the thesis' model) or an AFM
+/// tip moving along a line (docs/tip.md).
+enum class PushMode { force, tip };
 
 /// The name tables (numerics/names.hpp): every value and its name, in the order messages list them.
 template <>
@@ -55,4 +58,9 @@ struct NameTable<SurfaceKind> {
       {{SurfaceKind::smooth, "smooth"}, {SurfaceKind::rough, "rough"}}};
 };
 
+template <>
+struct NameTable<PushMode> {
+  static constexpr std::array<std::pair<PushMode, std::string_view>, 2> table{
+      {{PushMode::force, "force"}, {PushMode::tip, "tip"}}};
+};
 }  // namespace nanopush

@@ -13,6 +13,7 @@
 
 #include "nanopush/models/printed_reading.hpp"
 #include "nanopush/models/rigid_body.hpp"
+#include "nanopush/models/tip_push.hpp"
 #include "nanopush/scenes/choices.hpp"
 #include "nanopush/scenes/scene_keys.hpp"
 
@@ -88,6 +89,8 @@ struct Scene {
   double mass = 0;               ///< [kg]
   double inertia = 0;            ///< about the CM, z axis [kg m^2]
   Push push;
+  PushMode push_mode = PushMode::force;
+  tip::TipPath tip;              ///< push.mode = tip: the tip and its path (docs/tip.md)
   std::array<double, kStateSize> initial{};  ///< x, y, theta, vx, vy, omega
   SolverSettings solver;
   /// Term report of the normal load (rough scenes): from the [environment]/[body] models

@@ -139,6 +139,13 @@ struct StickEventRecord {
   bool stuck;
 };
 
+/// push.mode = tip: the tip at one output time (world axes, SI).
+struct TipSample {
+  double x = 0, y = 0;    ///< tip centre [m]
+  double fx = 0, fy = 0;  ///< force of the tip on the object [N]
+  int contact = 0;        ///< tip::ContactMode: 0 none, 1 stick, 2 slide
+};
+
 struct Trajectory {
   std::string engine_label;  ///< e.g. "cxx-faithful", "f77", "cxx-faithful-coulomb", "cxx-modern-quad"
   std::string precision = "double";  ///< scalar of the integration: double | long | quad
@@ -153,6 +160,8 @@ struct Trajectory {
   /// Rough scenes: work of the push and of friction from t = 0 to each sample [J].
   std::vector<double> work_push, work_fric;
   std::vector<StickEventRecord> events;  ///< coulomb law: instants the body came to rest
+  std::vector<TipSample> tip;            ///< push.mode = tip: the tip at each row
+  std::vector<tip::TipEvent> tip_events; ///< push.mode = tip: contact made, released, tip stops
   bool complete = true;                  ///< false when allow_partial kept a failed run
   Outcome outcome = Outcome::ok;
   std::string outcome_message;  ///< why, for an outcome other than ok
@@ -169,6 +178,9 @@ struct Trajectory {
     return (outcome == Outcome::solver_failure ? std::string() : to_string(outcome) + ": ") + outcome_message;
   }
 };
+
+/// A push.mode = tip scene: the quasi-static tip push (models/tip_push.hpp, docs/tip.md).
+Trajectory run_cxx_tip(const Scene& scene, const ResolvedSettings& resolved);
 
 /// Integrate the scene with the C++ engine. Throws SolverError when the integrator fails
 /// (status and time in the message); InputError for bad settings, and for engine "f77"

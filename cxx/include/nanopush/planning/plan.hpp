@@ -1,0 +1,81 @@
+// Push planning (docs/planning.md): a sequence of straight tip pushes that brings a bar from a
+// scene's initial pose to a goal pose, planned through the quasi-static tip model
+// (models/tip_push.hpp) and verified push by push, and end to end, by forward runs of the
+// scene (run_scene with push.mode = tip).
+#pragma once
+#include <string>
+#include <vector>
+
+#include "nanopush/scenes/scene.hpp"
+
+namespace nanopush::plan {
+
+/// A goal pose (world axes): CM position [m] and orientation [rad].
+struct Pose {
+  double x = 0, y = 0, theta = 0;
+};
+
+/// What the plan minimises besides reaching the goal: the number of pushes, the tip's travel,
+/// the time (travel / speed: the same ranking as travel at one speed) or the largest tip force.
+enum class Objective { pushes, travel, time, force };
+Objective parse_objective(const std::string& text);  ///< InputError naming --objective
+std::string to_string(Objective o);
+
+struct PlanOptions {
+  double tolerance_distance = 1e-9;  ///< [m] |CM - goal|
+  double tolerance_angle = 0.01;     ///< [rad] |theta - goal|
+  Objective objective = Objective::pushes;
+  int max_pushes = 10;
+  /// The bar is symmetric under a half turn: theta and theta + pi are the same placement
+  /// (false: the ends are told apart).
+  bool half_turn_symmetric = true;
+  double clearance = 2e-9;  ///< gap between tip and bar where each push starts [m]
+};
+
+/// One planned push: the tip keys of the scene (tip.start_x, tip.start_y, tip.direction,
+/// tip.speed, tip.travel) and the pose it leaves.
+struct PlannedPush {
+  double start_x = 0, start_y = 0, direction = 0, speed = 0, travel = 0;
+  Pose end;
+  std::string face;       ///< which side of the bar was pushed ("-x'", "+x'", "-y'", "+y'")
+  double offset = 0;      ///< contact offset along the face, as a fraction of its half-length
+  double max_force = 0;   ///< largest tip force during the push [N]
+  double verified_deviation = -1;  ///< forward run's end pose vs the plan, in the goal norm (< 0: not run)
+};
+
+struct PlanResult {
+  std::string status;  ///< "found" or "not_found" (the best plan found is kept)
+  std::string message;
+  Pose start, goal;
+  std::vector<PlannedPush> pushes;
+  Pose final_pose;          ///< end to end, by forward runs from the start
+  double final_distance = 0;  ///< |CM - goal| [m]
+  double final_angle = 0;     ///< |theta - goal| [rad] (modulo pi if half-turn symmetric)
+  bool verified = false;      ///< every push re-run matches, and the chain ends within tolerance
+  double tip_travel = 0;      ///< summed over pushes [m]
+  double time = 0;            ///< summed push durations [s]
+  long forward_runs = 0;      ///< model runs the search took
+  double planning_seconds = 0;
+  [[nodiscard]] bool found() const { return status == "found"; }
+};
+
+/// The angle error theta - goal wrapped to (-pi, pi], or to (-pi/2, pi/2] when half-turn symmetric.
+double angle_error(double theta, double goal, bool half_turn_symmetric);
+
+/// Plan pushes for the bar of `scene` (a rough surface; its tip keys, when push.mode = tip,
+/// give the tip's radius, speed and friction, else 10 nm, 1 um/s, 0) from the scene's initial
+/// pose to `goal`. Throws InputError for bad input (a smooth surface, a tolerance below what
+/// the model resolves, max_pushes < 1).
+PlanResult plan_pushes(const Scene& scene, const Pose& goal, const PlanOptions& options);
+
+/// The baseline a lab uses (target-oriented pushing, docs/planning.md): turn the bar by
+/// off-centre pushes until a long face's normal points at the goal, push through the centre
+/// towards it, then turn to the goal orientation by off-centre pushes; repeat. Each push's
+/// travel is where the model says the push's aim is best met. Same task checks, outputs and
+/// verification as plan_pushes.
+PlanResult plan_baseline(const Scene& scene, const Pose& goal, const PlanOptions& options);
+
+/// The scene that replays push `p` from pose `from` (push.mode = tip and the push's tip keys).
+Scene push_scene(const Scene& scene, const Pose& from, const PlannedPush& p);
+
+}  // namespace nanopush::plan

@@ -1,0 +1,156 @@
+// nanopush bench-plan: the push planner against a lab's target-oriented baseline on seeded
+// tasks (docs/planning.md, "Benchmark"): success rate, pushes, tip travel, time, planning time.
+// Writes plan_benchmark.csv (+ schema), plan_benchmark.md and plan_benchmark.png.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <random>
+#include <sstream>
+
+#include "nanopush/outputs/io.hpp"
+#include "nanopush/outputs/plot.hpp"
+#include "nanopush/planning/plan.hpp"
+#include "cli_checks.hpp"
+#include "registry.hpp"
+
+namespace nanopush::cli {
+namespace {
+namespace NANOPUSH_UNITY_ID {
+
+namespace fs = std::filesystem;
+
+struct BenchPlanOptions {
+  std::string out = "docs/figures";
+  int tasks = 200;
+  int max_pushes = 20;
+  std::uint64_t seed = 20121;
+  double tolerance_distance = 1e-9, tolerance_angle = 0.01;
+};
+
+/// The two bars of the thesis: the nanobar of chapter 3 and the nanorod of chapters 4-5.
+Scene bar_scene(bool rod) {
+  std::ostringstream s;
+  s << "[object]\nlength = " << (rod ? "590e-9" : "100e-9") << "\nwidth = " << (rod ? "27e-9" : "55e-9")
+    << "\nheight = " << (rod ? "27e-9" : "50e-9")
+    << "\ndensity = 2267.0\n[push]\nmode = \"tip\"\n[tip]\nstart_x = -1e-6\nstart_y = 0.0\ntravel = 1e-9\n"
+       "radius = 10e-9\nspeed = 1e-6\n[surface]\nkind = \"rough\"\nmu = 0.1\nf_vdw = 1e-8\n[solver]\nsamples = 2\n";
+  return parse_scene(s.str(), rod ? "nanorod" : "nanobar");
+}
+
+/// A uniform double in [0, 1) from the generator's raw bits (the same on every platform,
+/// unlike std::uniform_real_distribution).
+double uniform(std::mt19937_64& r) { return static_cast<double>(r() >> 11) * 0x1.0p-53; }
+
+double median(std::vector<double> v) {
+  if (v.empty()) return std::nan("");
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+int run_bench_plan(const BenchPlanOptions& o) {
+  fs::create_directories(o.out);
+  const Scene bars[2] = {bar_scene(false), bar_scene(true)};
+  std::mt19937_64 rng(o.seed);
+  plan::PlanOptions po;
+  po.tolerance_distance = o.tolerance_distance;
+  po.tolerance_angle = o.tolerance_angle;
+  po.max_pushes = o.max_pushes;
+  const Columns cols = {{"task", "1", "task number"},
+                        text_column("planner", "plan (the planner) or baseline (target-oriented pushing)"),
+                        text_column("bar", "nanobar (100 x 55 nm) or nanorod (590 x 27 nm)"),
+                        {"goal_x", "m", "goal x of the centre"},
+                        {"goal_y", "m", "goal y of the centre"},
+                        {"goal_theta", "rad", "goal orientation"},
+                        {"found", "1", "1: reached and verified within the tolerance"},
+                        {"pushes", "1", "pushes in the plan"},
+                        {"tip_travel", "m", "summed tip travel"},
+                        {"time", "s", "summed push durations"},
+                        {"planning_time", "s", "wall time of planning and verification"},
+                        {"final_distance", "m", "distance of the verified final centre from the goal"},
+                        {"final_angle", "rad", "angle of the verified final pose from the goal"}};
+  const fs::path csv = fs::path(o.out) / "plan_benchmark.csv";
+  CsvWriter w(csv, cols, "bench-plan");
+  struct Stats {
+    int found = 0, n = 0;
+    std::vector<double> pushes, travel, time, planning;
+  } st[2];
+  std::vector<double> ratio;  // planner pushes / baseline pushes, tasks both solve
+  for (int k = 0; k < o.tasks; ++k) {
+    const bool rod = k % 2 == 1;
+    const Scene& sc = bars[rod];
+    const double L = sc.length, r = 5 * L * std::sqrt(uniform(rng)), phi = 2 * M_PI * uniform(rng);
+    const plan::Pose goal{r * std::cos(phi), r * std::sin(phi), M_PI * (2 * uniform(rng) - 1)};
+    int pushes[2] = {0, 0};
+    bool found[2] = {false, false};
+    for (int which = 0; which < 2; ++which) {
+      const plan::PlanResult res = which == 0 ? plan::plan_pushes(sc, goal, po) : plan::plan_baseline(sc, goal, po);
+      Stats& s = st[which];
+      ++s.n;
+      found[which] = res.found() && res.verified;
+      pushes[which] = static_cast<int>(res.pushes.size());
+      if (found[which]) {
+        ++s.found;
+        s.pushes.push_back(pushes[which]);
+        s.travel.push_back(res.tip_travel);
+        s.time.push_back(res.time);
+      }
+      s.planning.push_back(res.planning_seconds);
+      w.cells({csv_number(k + 1), which == 0 ? "plan" : "baseline", rod ? "nanorod" : "nanobar", csv_number(goal.x),
+               csv_number(goal.y), csv_number(goal.theta), found[which] ? "1" : "0", csv_number(pushes[which]),
+               csv_number(res.tip_travel), csv_number(res.time), csv_number(res.planning_seconds),
+               csv_number(res.final_distance), csv_number(res.final_angle)});
+    }
+    if (found[0] && found[1]) ratio.push_back(double(pushes[0]) / pushes[1]);
+    std::cerr << "\rbench-plan: " << k + 1 << "/" << o.tasks << " tasks" << std::flush;
+  }
+  std::cerr << "\n";
+  w.commit();
+  std::ostringstream md;
+  md << std::setprecision(3) << "| planner | success | median pushes | median tip travel (nm) | median time (s) | median planning (s) |\n"
+     << "|---|---|---|---|---|---|\n";
+  for (int which = 0; which < 2; ++which) {
+    const Stats& s = st[which];
+    md << "| " << (which == 0 ? "plan" : "baseline") << " | " << s.found << "/" << s.n << " ("
+       << 100.0 * s.found / std::max(1, s.n) << " %) | " << median(s.pushes) << " | " << median(s.travel) * 1e9 << " | "
+       << median(s.time) << " | " << median(s.planning) << " |\n";
+  }
+  md << "\nTasks both solve: " << ratio.size() << "; median ratio of pushes (plan / baseline): " << median(ratio)
+     << ". Seed " << o.seed << ", " << o.tasks << " tasks (nanobar and nanorod alternately), goals uniform within five "
+     << "body lengths, any orientation, tolerance " << o.tolerance_distance << " m and " << o.tolerance_angle
+     << " rad, at most " << o.max_pushes << " pushes.\n";
+  write_file_atomic(fs::path(o.out) / "plan_benchmark.md", md.str());
+  plot::Figure fig;
+  fig.title = "bench-plan: pushes per task";
+  fig.cols = 2;
+  plot::Panel p1{"pushes (0: not found)", "task", "pushes", false, false, "set key top left", {}};
+  p1.series.push_back({csv, "1", "(strcol(2) eq 'plan' ? $8 * $7 : NaN)", "plan", "points pt 7 ps 0.6"});
+  p1.series.push_back({csv, "1", "(strcol(2) eq 'baseline' ? $8 * $7 : NaN)", "baseline", "points pt 6 ps 0.8"});
+  plot::Panel p2{"planning time", "task", "s", false, true, "set key top left", {}};
+  p2.series.push_back({csv, "1", "(strcol(2) eq 'plan' ? $11 : NaN)", "plan", "points pt 7 ps 0.6"});
+  p2.series.push_back({csv, "1", "(strcol(2) eq 'baseline' ? $11 : NaN)", "baseline", "points pt 6 ps 0.8"});
+  fig.panels = {p1, p2};
+  plot::render(fig, fs::path(o.out) / "plan_benchmark.png");
+  std::cout << md.str();
+  return 0;
+}
+
+RegisterCommand reg{{"bench-plan",
+                     "Benchmark of the push planner against target-oriented pushing on seeded tasks (docs/planning.md)",
+                     94, [](CLI::App& app) -> std::function<int()> {
+                       auto o = std::make_shared<BenchPlanOptions>();
+                       app.add_option("--out", o->out, "output directory")->capture_default_str();
+                       app.add_option("--tasks", o->tasks, "number of seeded tasks")->check(count(1, 100000))->capture_default_str();
+                       app.add_option("--max-pushes", o->max_pushes, "pushes allowed per task")
+                           ->check(count(1, 1000))
+                           ->capture_default_str();
+                       app.add_option("--seed", o->seed, "seed of the tasks")->check(count(0, 1000000000000LL))->capture_default_str();
+                       return [o] { return run_bench_plan(*o); };
+                     }}};
+
+}  // namespace NANOPUSH_UNITY_ID
+}  // namespace
+}  // namespace nanopush::cli

@@ -1,0 +1,225 @@
+// nanopush plan: tip pushes that bring a bar to a goal pose (docs/planning.md).
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+#include "nanopush/numerics/error.hpp"
+#include "nanopush/outputs/io.hpp"
+#include "nanopush/outputs/plot.hpp"
+#include "nanopush/planning/plan.hpp"
+#include "cli_checks.hpp"
+#include "registry.hpp"
+#include "scene_args.hpp"
+
+namespace nanopush::cli {
+namespace {
+namespace NANOPUSH_UNITY_ID {
+
+struct PlanCliOptions {
+  std::string scene, goal, tolerance = "1e-9,0.01", objective = "pushes", out, format = "png";
+  std::vector<std::string> sets;
+  int max_pushes = 10;
+  bool distinguish_ends = false;
+  bool quiet = false;
+};
+
+/// "a,b,c" -> numbers (exactly n), or InputError naming the option and what was written.
+std::vector<double> numbers(const std::string& option, const std::string& text, std::size_t n, const std::string& what) {
+  std::vector<double> v;
+  std::stringstream ss(text);
+  std::string part;
+  while (std::getline(ss, part, ',')) {
+    std::size_t used = 0;
+    double x = 0;
+    try {
+      x = std::stod(part, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used == 0 || used != part.size() || !std::isfinite(x)) throw InputError(option, text, "must be " + what);
+    v.push_back(x);
+  }
+  if (v.size() != n) throw InputError(option, text, "must be " + what);
+  return v;
+}
+
+Columns plan_columns() {
+  return {{"push", "1", "push number, from 1"},
+          {"start_x", "m", "tip centre where the push starts, x (world axes): tip.start_x"},
+          {"start_y", "m", "tip centre where the push starts, y (world axes): tip.start_y"},
+          {"direction", "rad", "world direction the tip moves in: tip.direction"},
+          {"speed", "m/s", "tip speed: tip.speed"},
+          {"travel", "m", "tip travel: tip.travel"},
+          {"x_end", "m", "x of the bar's centre the push leaves (predicted)"},
+          {"y_end", "m", "y of the bar's centre the push leaves (predicted)"},
+          {"theta_end", "rad", "orientation the push leaves (predicted)"}};
+}
+
+void write_outputs(const Scene& sc, const plan::PlanResult& r, const std::filesystem::path& dir) {
+  std::filesystem::create_directories(dir);
+  {
+    CsvWriter w(dir / "plan.csv", plan_columns(), sc.name);
+    w.run_info({{"status", json_string(r.status)},
+                {"verified", r.verified ? "true" : "false"},
+                {"goal_x_m", csv_number(r.goal.x)},
+                {"goal_y_m", csv_number(r.goal.y)},
+                {"goal_theta_rad", csv_number(r.goal.theta)},
+                {"final_distance_m", csv_number(r.final_distance)},
+                {"final_angle_rad", csv_number(r.final_angle)},
+                {"forward_runs", std::to_string(r.forward_runs)},
+                {"planning_seconds", csv_number(r.planning_seconds)}});
+    int i = 1;
+    for (const auto& p : r.pushes)
+      w.row({double(i++), p.start_x, p.start_y, p.direction, p.speed, p.travel, p.end.x, p.end.y, p.end.theta});
+    w.commit();
+  }
+  {  // The tip's waypoints an AFM script follows: lower at start, move to end, lift.
+    CsvWriter w(dir / "tip_path.csv",
+                {{"push", "1", "push number"}, {"x", "m", "tip centre x (world)"}, {"y", "m", "tip centre y (world)"},
+                 {"lowered", "1", "1: the tip touches the surface from this waypoint to the next"}},
+                sc.name);
+    int i = 1;
+    for (const auto& p : r.pushes) {
+      w.row({double(i), p.start_x, p.start_y, 1.0});
+      w.row({double(i), p.start_x + p.travel * std::cos(p.direction), p.start_y + p.travel * std::sin(p.direction), 0.0});
+      w.blank_line();  // the tip lifts between pushes (gnuplot draws each push apart)
+      ++i;
+    }
+    w.commit();
+  }
+  {  // Outlines of the bar at the start, after each push, and the goal (gnuplot blocks).
+    CsvWriter w(dir / "poses.csv",
+                {{"pose", "1", "0 start, k after push k, -1 the goal"}, {"x", "m", "corner x"}, {"y", "m", "corner y"}},
+                sc.name);
+    auto outline = [&](int k, const plan::Pose& p) {
+      const double a = sc.geometry.a, b = sc.geometry.b, c = std::cos(p.theta), s = std::sin(p.theta);
+      const double cx[] = {-a, a, a, -a, -a}, cy[] = {-b, -b, b, b, -b};
+      for (int j = 0; j < 5; ++j) w.row({double(k), p.x + c * cx[j] - s * cy[j], p.y + s * cx[j] + c * cy[j]});
+      w.blank_line();
+    };
+    outline(0, r.start);
+    int k = 1;
+    for (const auto& p : r.pushes) outline(k++, p.end);
+    outline(-1, r.goal);
+    w.commit();
+  }
+  std::ostringstream js;
+  js << std::setprecision(17) << "{\n  \"scene\": " << json_string(sc.name) << ",\n  \"status\": " << json_string(r.status)
+     << ",\n  \"verified\": " << (r.verified ? "true" : "false") << ",\n  \"message\": " << json_string(r.message)
+     << ",\n  \"start\": [" << r.start.x << ", " << r.start.y << ", " << r.start.theta << "],\n  \"goal\": [" << r.goal.x
+     << ", " << r.goal.y << ", " << r.goal.theta << "],\n  \"final\": [" << r.final_pose.x << ", " << r.final_pose.y
+     << ", " << r.final_pose.theta << "],\n  \"final_distance_m\": " << r.final_distance
+     << ",\n  \"final_angle_rad\": " << r.final_angle << ",\n  \"tip_travel_m\": " << r.tip_travel
+     << ",\n  \"time_s\": " << r.time << ",\n  \"forward_runs\": " << r.forward_runs
+     << ",\n  \"planning_seconds\": " << r.planning_seconds << ",\n  \"pushes\": [";
+  for (std::size_t i = 0; i < r.pushes.size(); ++i) {
+    const auto& p = r.pushes[i];
+    js << (i ? "," : "") << "\n    {\"start\": [" << p.start_x << ", " << p.start_y << "], \"direction\": " << p.direction
+       << ", \"speed\": " << p.speed << ", \"travel\": " << p.travel << ", \"end\": [" << p.end.x << ", " << p.end.y << ", "
+       << p.end.theta << "], \"face\": " << json_string(p.face) << ", \"offset\": " << p.offset
+       << ", \"max_force_N\": " << p.max_force << ", \"verified_deviation\": " << p.verified_deviation << "}";
+  }
+  js << "\n  ]\n}\n";
+  write_file_atomic(dir / "plan.json", js.str());
+  const std::string body =
+      "set size ratio -1\nset xlabel 'x (nm)'\nset ylabel 'y (nm)'\nset key outside right noenhanced\n"
+      "set datafile separator ','\n"
+      "plot '" + (dir / "poses.csv").string() +
+      "' skip 1 using ($2*1e9):($3*1e9):1 with lines lc variable lw 2 title 'bar: start, after each push, goal (-1)', \\\n"
+      "     '" + (dir / "tip_path.csv").string() +
+      "' skip 1 using ($2*1e9):($3*1e9) with linespoints lc rgb 'black' dt 2 pt 7 ps 0.6 title 'tip paths'\n";
+  plot::render_script(body, dir / "plan.png");
+}
+
+int plan_cmd(const PlanCliOptions& o) {
+  const Scene sc = load_scene_arg(o.scene, o.sets);
+  set_provenance_scene(o.scene);
+  plot::set_format(plot::parse_format(o.format));
+  const auto g = numbers("--goal", o.goal, 3, "three numbers X,Y,THETA (m, m, rad)");
+  const auto tol = numbers("--tolerance", o.tolerance, 2, "two numbers D,A (m, rad)");
+  plan::PlanOptions po;
+  po.tolerance_distance = tol[0];
+  po.tolerance_angle = tol[1];
+  po.objective = plan::parse_objective(o.objective);
+  po.max_pushes = o.max_pushes;
+  po.half_turn_symmetric = !o.distinguish_ends;
+  const plan::PlanResult r = plan::plan_pushes(sc, {g[0], g[1], g[2]}, po);
+  const std::filesystem::path dir = o.out.empty() ? sc.name + ".plan" : o.out;
+  write_outputs(sc, r, dir);
+  if (!o.quiet) {
+    std::cerr << std::setprecision(6) << sc.name << ": " << r.status << (r.verified ? " (verified)" : "") << ", "
+              << r.pushes.size() << " push(es), tip travel " << r.tip_travel << " m, time " << r.time << " s\n"
+              << "  final pose " << r.final_pose.x << " m, " << r.final_pose.y << " m, " << r.final_pose.theta
+              << " rad: " << r.final_distance << " m and " << r.final_angle << " rad from the goal\n"
+              << "  planning " << r.planning_seconds << " s, " << r.forward_runs << " model runs\n";
+    int i = 1;
+    for (const auto& p : r.pushes)
+      std::cerr << "  push " << i++ << ": face " << p.face << " at " << p.offset << ", tip from (" << p.start_x << ", "
+                << p.start_y << ") m, direction " << p.direction << " rad, travel " << p.travel << " m\n";
+    std::cerr << "  plan: " << (dir / "plan.csv").string() << " (and plan.json, tip_path.csv, "
+              << plot::figure_path(dir / "plan.png").filename().string() << ")\n";
+    if (!r.found()) std::cerr << "nanopush: not_found: " << r.message << "\n";
+  }
+  return r.found() ? 0 : 3;
+}
+
+/// reproduce: one planning task on the example nanorod, its plan verified and drawn.
+void reproduce_plan(ReproduceContext& ctx) {
+  const Scene sc = load_scene(resolve_scene("tip_push_nanorod"));
+  plan::PlanOptions po;
+  po.tolerance_distance = 2e-9;
+  po.tolerance_angle = 0.02;
+  const plan::Pose goal{60e-9, 40e-9, 0.3};
+  const plan::PlanResult r = plan::plan_pushes(sc, goal, po);
+  const auto dir = ctx.out / "plan";
+  write_outputs(sc, r, dir);
+  for (const char* f : {"plan.csv", "plan.json", "tip_path.csv"}) ctx.produced(dir / f);
+  ctx.produced(plot::figure_path(dir / "plan.png"));
+  std::ostringstream t;
+  t << std::setprecision(4);
+  t << "## Planning a push sequence (beyond the thesis)\n\n"
+    << "The thesis' nanorod (590 nm x 27 nm) at the origin, an AFM tip (radius 10 nm, 1 um/s); goal: centre at "
+       "(60, 40) nm, theta = 0.3 rad, within 2 nm and 0.02 rad (`nanopush plan tip_push_nanorod --goal "
+       "60e-9,40e-9,0.3 --tolerance 2e-9,0.02`; docs/planning.md).\n\n"
+    << "Status: **" << r.status << "**" << (r.verified ? ", verified by forward runs" : ", NOT verified") << "; "
+    << r.pushes.size() << " pushes, tip travel " << r.tip_travel * 1e9 << " nm, final error " << r.final_distance * 1e9
+    << " nm and " << r.final_angle << " rad; " << r.forward_runs << " model runs.\n\n"
+    << "| push | face | offset | tip start (nm) | direction (rad) | travel (nm) | pose after (nm, nm, rad) |\n|---|---|---|---|---|---|---|\n";
+  int i = 1;
+  for (const auto& p : r.pushes)
+    t << "| " << i++ << " | " << p.face << " | " << p.offset << " | (" << p.start_x * 1e9 << ", " << p.start_y * 1e9 << ") | "
+      << p.direction << " | " << p.travel * 1e9 << " | (" << p.end.x * 1e9 << ", " << p.end.y * 1e9 << ", " << p.end.theta
+      << ") |\n";
+  t << "\n![plan](plan/" << plot::figure_path(dir / "plan.png").filename().string() << ")\n\n";
+  ctx.report << t.str();
+  if (!r.found() || !r.verified) ctx.failures.push_back("plan: the demonstration task was not planned and verified: " + r.message);
+}
+
+RegisterReproduce reg_plan_step{{"plan", "a push sequence to a goal pose, planned and verified (beyond the thesis)", 90,
+                                 reproduce_plan, 0.0}};
+
+RegisterCommand reg_plan{
+    {"plan", "Plan tip pushes that bring the bar to a goal pose, verified by forward runs (docs/planning.md)", 75,
+     [](CLI::App& app) -> std::function<int()> {
+       auto o = std::make_shared<PlanCliOptions>();
+       app.add_option("SCENE", o->scene, "scene file or preset (a rough surface; its tip.* keys give the tip)")->required();
+       add_set_option(app, o->sets);
+       app.add_option("--goal", o->goal, "goal pose X,Y,THETA of the bar's centre (m, m, rad)")->required();
+       app.add_option("--tolerance", o->tolerance, "D,A: distance (m) and angle (rad) within which the goal is reached")
+           ->capture_default_str();
+       app.add_option("--objective", o->objective, "pushes (fewest), travel or time (least tip travel), force (least force)")
+           ->capture_default_str();
+       app.add_option("--max-pushes", o->max_pushes, "largest number of pushes")->check(count(1, 1000))->capture_default_str();
+       app.add_flag("--distinguish-ends", o->distinguish_ends,
+                    "theta and theta + pi are different goals (default: the bar is symmetric under a half turn)");
+       app.add_option("--out", o->out, "output directory (default <scene>.plan)");
+       app.add_option("--format", o->format, "figure format: png, svg or pdf")->capture_default_str();
+       app.add_flag("--quiet", o->quiet, "no summary on standard error");
+       return [o] { return plan_cmd(*o); };
+     }}};
+
+}  // namespace NANOPUSH_UNITY_ID
+}  // namespace
+}  // namespace nanopush::cli

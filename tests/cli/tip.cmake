@@ -1,0 +1,35 @@
+# push.mode = tip (docs/tip.md) and `nanopush plan` (docs/planning.md) from the command line.
+set(_np $<TARGET_FILE:nanopush>)
+# The example scene runs: the tip's columns are in the CSV, the contact and release events in
+# the summary, and the bar ends where the tip slipped off.
+add_test(NAME cli.tip.run_example
+         COMMAND bash -c "set -e; d=\"$1\"; rm -rf \"$d\"; mkdir -p \"$d\"; \"$0\" run tip_push_nanorod --out \"$d/t.csv\" 2> \"$d/err\"; \
+head -1 \"$d/t.csv\" | grep -qx 't,x,y,theta,vx,vy,omega,fx,fy,mf,tip_x,tip_y,tip_fx,tip_fy,contact'; \
+grep -q 'tip: contact at t = ' \"$d/err\"; grep -q 'tip: release at t = ' \"$d/err\"; \
+test \"$(wc -l < \"$d/t.csv\")\" -eq 402; echo tip-run: ok" ${_np} ${CMAKE_CURRENT_BINARY_DIR}/cli_tip_run)
+set_tests_properties(cli.tip.run_example PROPERTIES ENVIRONMENT "NANOPUSH_SCENES=${NANOPUSH_SCENES}"
+                     PASS_REGULAR_EXPRESSION "tip-run: ok")
+# Keys of the force push with push.mode = tip, and the F77 engine, are bad input (exit 2).
+add_test(NAME cli.tip.bad_input
+         COMMAND bash -c "\"$0\" run tip_push_nanorod --set push.force=1e-6 --out /dev/null; a=$?; \
+\"$0\" run tip_push_nanorod --engine f77 --out /dev/null; b=$?; \
+\"$0\" run tip_push_nanorod --set tip.start_x=0 --out /dev/null; c=$?; echo \"codes $a $b $c\"" ${_np})
+set_tests_properties(cli.tip.bad_input PROPERTIES ENVIRONMENT "NANOPUSH_SCENES=${NANOPUSH_SCENES}"
+                     PASS_REGULAR_EXPRESSION "codes 2 2 2")
+# A plan for a seeded goal: found and verified, with its files; a goal out of reach in one push
+# is not_found (exit 3) with the best plan written; a bad goal is exit 2 and writes nothing.
+add_test(NAME cli.plan.found
+         COMMAND bash -c "set -e; d=\"$1\"; rm -rf \"$d\"; \"$0\" plan tip_push_nanorod --goal 60e-9,40e-9,0.3 --tolerance 2e-9,0.02 \
+--out \"$d\" 2> \"$d.err\"; grep -q 'found (verified)' \"$d.err\"; \
+head -1 \"$d/plan.csv\" | grep -qx 'push,start_x,start_y,direction,speed,travel,x_end,y_end,theta_end'; \
+test -s \"$d/plan.json\"; test -s \"$d/tip_path.csv\"; test -s \"$d/plan.png\"; test -s \"$d/plan.schema.json\"; \
+echo plan: ok" ${_np} ${CMAKE_CURRENT_BINARY_DIR}/cli_plan_found)
+set_tests_properties(cli.plan.found PROPERTIES ENVIRONMENT "NANOPUSH_SCENES=${NANOPUSH_SCENES}"
+                     PASS_REGULAR_EXPRESSION "plan: ok")
+add_test(NAME cli.plan.not_found_and_bad_goal
+         COMMAND bash -c "d=\"$1\"; rm -rf \"$d\" \"$d.bad\"; \"$0\" plan tip_push_nanorod --goal 2e-6,1e-6,1 --max-pushes 1 --out \"$d\" 2>/dev/null; a=$?; \
+grep -q '\"status\": \"not_found\"' \"$d/plan.json\" && s=written || s=missing; \
+\"$0\" plan tip_push_nanorod --goal 1e-9,nan --out \"$d.bad\" 2>/dev/null; b=$?; test -e \"$d.bad\" && w=yes || w=no; \
+echo \"codes $a $b $s $w\"" ${_np} ${CMAKE_CURRENT_BINARY_DIR}/cli_plan_nf)
+set_tests_properties(cli.plan.not_found_and_bad_goal PROPERTIES ENVIRONMENT "NANOPUSH_SCENES=${NANOPUSH_SCENES}"
+                     PASS_REGULAR_EXPRESSION "codes 3 2 written no")
