@@ -1,5 +1,6 @@
 // nanopush plan: tip pushes that bring a bar to a goal pose (docs/planning.md).
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -22,6 +23,9 @@ struct PlanCliOptions {
   std::vector<std::string> sets;
   int max_pushes = 10;
   bool distinguish_ends = false;
+  bool closed_loop = false;
+  std::string truth, noise = "x=0,theta=0";
+  std::uint64_t seed = 1;
   bool quiet = false;
 };
 
@@ -133,6 +137,73 @@ void write_outputs(const Scene& sc, const plan::PlanResult& r, const std::filesy
   plot::render_script(body, dir / "plan.png");
 }
 
+/// --truth: a scene (file or preset) or KEY=VALUE,... applied to the model scene.
+Scene truth_scene(const Scene& model, const std::string& text) {
+  if (text.empty()) return model;
+  if (text.find('=') == std::string::npos) return load_scene_arg(text, {});
+  std::vector<std::string> sets;
+  std::stringstream ss(text);
+  std::string part;
+  while (std::getline(ss, part, ',')) sets.push_back(part);
+  Scene t = model;
+  t.set(parse_settings(sets, "--truth"));
+  return t;
+}
+
+/// --noise x=SX,y=SY,theta=ST (y defaults to x).
+plan::Noise parse_noise(const std::string& text) {
+  plan::Noise n;
+  bool y_given = false;
+  std::stringstream ss(text);
+  std::string part;
+  while (std::getline(ss, part, ',')) {
+    const auto eq = part.find('=');
+    const std::string key = part.substr(0, eq);
+    const double v = eq == std::string::npos ? -1 : numbers("--noise", part.substr(eq + 1), 1, "x=SX,y=SY,theta=ST (m, m, rad), each >= 0")[0];
+    if (!(v >= 0)) throw InputError("--noise", text, "must be x=SX,y=SY,theta=ST (m, m, rad), each >= 0");
+    if (key == "x") n.x = v;
+    else if (key == "y") {
+      n.y = v;
+      y_given = true;
+    }
+    else if (key == "theta") n.theta = v;
+    else throw InputError("--noise", text, "unknown component '" + key + "': x, y or theta");
+  }
+  if (!y_given) n.y = n.x;
+  return n;
+}
+
+int closed_loop_cmd(const PlanCliOptions& o, const Scene& sc, const plan::Pose& goal, const plan::PlanOptions& po) {
+  const Scene truth = truth_scene(sc, o.truth);
+  const plan::Noise noise = parse_noise(o.noise);
+  const plan::ClosedLoopResult r = plan::closed_loop(sc, truth, goal, po, noise, o.seed);
+  const std::filesystem::path dir = o.out.empty() ? sc.name + ".plan" : o.out;
+  std::filesystem::create_directories(dir);
+  CsvWriter w(dir / "closed_loop.csv",
+              {{"step", "1", "push number"}, {"seen_x", "m", "imaged x (truth + noise)"}, {"seen_y", "m", "imaged y"},
+               {"seen_theta", "rad", "imaged orientation"}, {"true_x", "m", "true x when imaged"}, {"true_y", "m", "true y"},
+               {"true_theta", "rad", "true orientation"}, {"start_x", "m", "tip start x of the push made"},
+               {"start_y", "m", "tip start y"}, {"direction", "rad", "tip direction"}, {"travel", "m", "tip travel"},
+               {"plan_pushes", "1", "pushes the re-plan from this image needed"}},
+              sc.name);
+  w.run_info({{"status", json_string(r.status)}, {"final_distance_m", csv_number(r.final_distance)},
+              {"final_angle_rad", csv_number(r.final_angle)}, {"seed", std::to_string(o.seed)}});
+  int k = 1;
+  for (const auto& s : r.steps)
+    w.row({double(k++), s.observed.x, s.observed.y, s.observed.theta, s.truth.x, s.truth.y, s.truth.theta, s.push.start_x,
+           s.push.start_y, s.push.direction, s.push.travel, double(s.plan_pushes)});
+  w.commit();
+  if (!o.quiet) {
+    std::cerr << std::setprecision(6) << sc.name << " closed loop: " << r.status << ", " << r.steps.size()
+              << " push(es), tip travel " << r.tip_travel << " m, time " << r.time << " s, planning " << r.planning_seconds
+              << " s\n  true final pose " << r.final_truth.x << " m, " << r.final_truth.y << " m, " << r.final_truth.theta
+              << " rad: " << r.final_distance << " m and " << r.final_angle << " rad from the goal\n  steps: "
+              << (dir / "closed_loop.csv").string() << "\n";
+    if (!r.reached()) std::cerr << "nanopush: not_reached: " << r.message << "\n";
+  }
+  return r.reached() ? 0 : 3;
+}
+
 int plan_cmd(const PlanCliOptions& o) {
   const Scene sc = load_scene_arg(o.scene, o.sets);
   set_provenance_scene(o.scene);
@@ -145,6 +216,8 @@ int plan_cmd(const PlanCliOptions& o) {
   po.objective = plan::parse_objective(o.objective);
   po.max_pushes = o.max_pushes;
   po.half_turn_symmetric = !o.distinguish_ends;
+  if (o.closed_loop) return closed_loop_cmd(o, sc, {g[0], g[1], g[2]}, po);
+  if (!o.truth.empty()) throw InputError("--truth", o.truth, "is the closed loop's: add --closed-loop");
   const plan::PlanResult r = plan::plan_pushes(sc, {g[0], g[1], g[2]}, po);
   const std::filesystem::path dir = o.out.empty() ? sc.name + ".plan" : o.out;
   write_outputs(sc, r, dir);
@@ -214,6 +287,16 @@ RegisterCommand reg_plan{
        app.add_option("--max-pushes", o->max_pushes, "largest number of pushes")->check(count(1, 1000))->capture_default_str();
        app.add_flag("--distinguish-ends", o->distinguish_ends,
                     "theta and theta + pi are different goals (default: the bar is symmetric under a half turn)");
+       app.add_flag("--closed-loop", o->closed_loop,
+                    "simulate the AFM loop: image (truth + noise), re-plan, push the truth, repeat (closed_loop.csv)");
+       app.add_option("--truth", o->truth,
+                      "closed loop: the true scene (a file or preset), or KEY=VALUE,... changed from SCENE "
+                      "(e.g. tip.mu=0.3,object.length=110e-9); default: SCENE itself");
+       app.add_option("--noise", o->noise, "closed loop: imaging noise x=SX,y=SY,theta=ST (m, m, rad; y defaults to x)")
+           ->capture_default_str();
+       app.add_option("--seed", o->seed, "closed loop: seed of the imaging noise")
+           ->check(count(0, 1000000000000LL))
+           ->capture_default_str();
        app.add_option("--out", o->out, "output directory (default <scene>.plan)");
        app.add_option("--format", o->format, "figure format: png, svg or pdf")->capture_default_str();
        app.add_flag("--quiet", o->quiet, "no summary on standard error");

@@ -88,3 +88,31 @@ TEST_CASE("Planning: an unreachable goal ends in not_found with the best plan; b
 }
 
 }  // namespace NANOPUSH_UNITY_ID
+
+namespace NANOPUSH_UNITY_ID {
+
+TEST_CASE("Planning: the closed loop reaches the goal when the truth's tip friction differs and images are noisy",
+          "[plan][numeric]") {
+  const Scene model = parse_scene(kRodScene, "rod.toml");
+  Scene truth = model;
+  truth.set("tip.mu", 0.3);  // the model assumes a frictionless tip
+  plan::PlanOptions o;
+  o.tolerance_distance = 2e-9;
+  o.tolerance_angle = 0.02;
+  o.max_pushes = 15;
+  const plan::Noise noise{0.3e-9, 0.3e-9, 0.003};
+  const plan::Pose goal{40e-9, 25e-9, 0.4};
+  const auto r = plan::closed_loop(model, truth, goal, o, noise, 7);
+  INFO(r.message);
+  REQUIRE(r.reached());
+  CHECK(r.final_distance <= o.tolerance_distance);
+  CHECK(r.final_angle <= o.tolerance_angle);
+  CHECK(!r.steps.empty());
+  // The same seed gives the same loop (portable noise).
+  const auto again = plan::closed_loop(model, truth, goal, o, noise, 7);
+  REQUIRE(again.steps.size() == r.steps.size());
+  CHECK(again.steps.back().observed.x == r.steps.back().observed.x);
+  CHECK_THROWS_WITH(plan::closed_loop(model, truth, goal, o, plan::Noise{-1, 0, 0}, 7), Catch::Contains("--noise"));
+}
+
+}  // namespace NANOPUSH_UNITY_ID

@@ -33,3 +33,12 @@ grep -q '\"status\": \"not_found\"' \"$d/plan.json\" && s=written || s=missing; 
 echo \"codes $a $b $s $w\"" ${_np} ${CMAKE_CURRENT_BINARY_DIR}/cli_plan_nf)
 set_tests_properties(cli.plan.not_found_and_bad_goal PROPERTIES ENVIRONMENT "NANOPUSH_SCENES=${NANOPUSH_SCENES}"
                      PASS_REGULAR_EXPRESSION "codes 3 2 written no")
+# The closed loop: a truth with tip friction the model does not know, noisy images; reached.
+add_test(NAME cli.plan.closed_loop
+         COMMAND bash -c "set -e; d=\"$1\"; rm -rf \"$d\"; \"$0\" plan tip_push_nanorod --goal 60e-9,40e-9,0.3 --tolerance 3e-9,0.03 \
+--closed-loop --truth tip.mu=0.3 --noise x=0.5e-9,theta=0.003 --seed 3 --out \"$d\" 2> \"$d.err\"; grep -q 'closed loop: reached' \"$d.err\"; \
+head -1 \"$d/closed_loop.csv\" | grep -q '^step,seen_x,seen_y,seen_theta,true_x'; \
+rc=0; \"$0\" plan tip_push_nanorod --goal 1e-8,0,0 --closed-loop --noise x=-1 --out \"$d.bad\" 2>/dev/null || rc=$?; \
+test $rc -eq 2; echo closed-loop: ok" ${_np} ${CMAKE_CURRENT_BINARY_DIR}/cli_plan_cl)
+set_tests_properties(cli.plan.closed_loop PROPERTIES ENVIRONMENT "NANOPUSH_SCENES=${NANOPUSH_SCENES}"
+                     PASS_REGULAR_EXPRESSION "closed-loop: ok")

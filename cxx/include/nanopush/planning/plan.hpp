@@ -3,6 +3,7 @@
 // (models/tip_push.hpp) and verified push by push, and end to end, by forward runs of the
 // scene (run_scene with push.mode = tip).
 #pragma once
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -74,6 +75,37 @@ PlanResult plan_pushes(const Scene& scene, const Pose& goal, const PlanOptions& 
 /// travel is where the model says the push's aim is best met. Same task checks, outputs and
 /// verification as plan_pushes.
 PlanResult plan_baseline(const Scene& scene, const Pose& goal, const PlanOptions& options);
+
+/// Pose noise of the imaging in the closed loop: standard deviations (m, m, rad).
+struct Noise {
+  double x = 0, y = 0, theta = 0;
+};
+
+/// One step of the closed loop: what was seen, the push made, where the bar truly went.
+struct LoopStep {
+  Pose observed;        ///< the image: the true pose plus noise
+  Pose truth;           ///< the true pose when the image was taken
+  PlannedPush push;     ///< the push made (its `end` is what the model predicted)
+  int plan_pushes = 0;  ///< pushes the re-plan needed from this image
+};
+
+struct ClosedLoopResult {
+  std::string status;  ///< "reached" (the true pose within tolerance), or "not_reached"
+  std::string message;
+  std::vector<LoopStep> steps;
+  Pose final_truth, final_observed;
+  double final_distance = 0, final_angle = 0;  ///< of the true pose from the goal
+  double tip_travel = 0, time = 0, planning_seconds = 0;
+  [[nodiscard]] bool reached() const { return status == "reached"; }
+};
+
+/// The AFM loop a lab runs: image the bar (the truth's pose plus seeded Gaussian noise), plan
+/// from the image with the model scene, make the plan's first push on the truth scene (the tip
+/// path in world axes, as an AFM would), image again; until the image is within tolerance and
+/// stays so, or max_pushes pushes were made. `truth` is the model scene with what the model
+/// does not know changed (tip friction, the bar's size, ...).
+ClosedLoopResult closed_loop(const Scene& model, const Scene& truth, const Pose& goal, const PlanOptions& options,
+                             const Noise& noise, std::uint64_t seed);
 
 /// The scene that replays push `p` from pose `from` (push.mode = tip and the push's tip keys).
 Scene push_scene(const Scene& scene, const Pose& from, const PlannedPush& p);

@@ -1,0 +1,86 @@
+// The closed loop (plan.hpp: closed_loop; docs/planning.md): image, re-plan, push, repeat.
+#include <chrono>
+#include <cmath>
+#include <random>
+
+#include "nanopush/numerics/error.hpp"
+#include "nanopush/planning/plan.hpp"
+#include "nanopush/scenes/simulate.hpp"
+#include "pushes.hpp"
+
+namespace nanopush::plan {
+
+namespace {
+
+/// A standard normal from the generator's raw bits (Box-Muller on 53-bit uniforms): the same
+/// numbers for a seed on every platform, unlike std::normal_distribution.
+double standard_normal(std::mt19937_64& rng) {
+  const double u1 = (static_cast<double>(rng() >> 11) + 1.0) * 0x1.0p-53;  // (0, 1]
+  const double u2 = static_cast<double>(rng() >> 11) * 0x1.0p-53;
+  return std::sqrt(-2.0 * std::log(u1)) * std::cos(2 * M_PI * u2);
+}
+
+}  // namespace
+
+ClosedLoopResult closed_loop(const Scene& model, const Scene& truth, const Pose& goal, const PlanOptions& o,
+                             const Noise& noise, std::uint64_t seed) {
+  const auto t0 = std::chrono::steady_clock::now();
+  detail::check_task(model, goal, o);
+  for (double s : {noise.x, noise.y, noise.theta})
+    if (!(s >= 0 && std::isfinite(s))) throw InputError("--noise", std::to_string(s), "standard deviations must be >= 0");
+  std::mt19937_64 rng(seed);
+  auto image = [&](const Pose& p) {
+    return Pose{p.x + noise.x * standard_normal(rng), p.y + noise.y * standard_normal(rng),
+                p.theta + noise.theta * standard_normal(rng)};
+  };
+  auto within = [&](const Pose& p) {
+    return std::hypot(p.x - goal.x, p.y - goal.y) <= o.tolerance_distance &&
+           std::fabs(angle_error(p.theta, goal.theta, o.half_turn_symmetric)) <= o.tolerance_angle;
+  };
+  ClosedLoopResult res;
+  Pose true_pose{truth.initial[kX], truth.initial[kY], truth.initial[kTheta]};
+  Pose seen = image(true_pose);
+  while (static_cast<int>(res.steps.size()) < o.max_pushes && !within(seen)) {
+    // Plan from the image with the model (its initial pose replaced by what was seen).
+    Scene from = model;
+    from.set({{"initial.x", seen.x}, {"initial.y", seen.y}, {"initial.theta", seen.theta}});
+    PlanOptions po = o;
+    po.max_pushes = o.max_pushes - static_cast<int>(res.steps.size());
+    const PlanResult plan = plan_pushes(from, goal, po);
+    if (plan.pushes.empty()) {
+      res.message = "no push brings the imaged bar closer to the goal";
+      break;
+    }
+    LoopStep step;
+    step.observed = seen;
+    step.truth = true_pose;
+    step.push = plan.pushes.front();
+    step.plan_pushes = static_cast<int>(plan.pushes.size());
+    // The tip follows the planned path in world axes; the bar is where it truly is.
+    try {
+      const Trajectory tr = run_scene(push_scene(truth, true_pose, step.push));
+      const auto& r = tr.rows.back();
+      true_pose = {r[col::x], r[col::y], r[col::theta]};
+    } catch (const InputError&) {
+      // The planned tip start lies inside the true bar (the image was off by more than the
+      // clearance): the AFM would touch down on the bar; the push is not made, image again.
+    }
+    res.tip_travel += step.push.travel;
+    res.time += step.push.travel / step.push.speed;
+    res.steps.push_back(step);
+    seen = image(true_pose);
+  }
+  res.final_truth = true_pose;
+  res.final_observed = seen;
+  res.final_distance = std::hypot(true_pose.x - goal.x, true_pose.y - goal.y);
+  res.final_angle = std::fabs(angle_error(true_pose.theta, goal.theta, o.half_turn_symmetric));
+  res.status = within(true_pose) ? "reached" : "not_reached";
+  if (!res.reached() && res.message.empty())
+    res.message = "after " + std::to_string(res.steps.size()) + " pushes the bar is " + std::to_string(res.final_distance) +
+                  " m and " + std::to_string(res.final_angle) + " rad from the goal (the image " +
+                  (within(seen) ? "says it is there: the noise hides the rest)" : "says it is not)");
+  res.planning_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return res;
+}
+
+}  // namespace nanopush::plan
