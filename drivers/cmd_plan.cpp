@@ -26,6 +26,8 @@ struct PlanCliOptions {
   bool closed_loop = false;
   std::string truth, noise = "x=0,theta=0";
   std::uint64_t seed = 1;
+  int check = 0;
+  std::string mu_range;
   bool quiet = false;
 };
 
@@ -235,6 +237,33 @@ int plan_cmd(const PlanCliOptions& o) {
               << plot::figure_path(dir / "plan.png").filename().string() << ")\n";
     if (!r.found()) std::cerr << "nanopush: not_found: " << r.message << "\n";
   }
+  if (o.check > 0 && r.found()) {
+    double lo = 0, hi = 0;
+    if (!o.mu_range.empty()) {
+      const auto colon = o.mu_range.find(':');
+      if (colon == std::string::npos) throw InputError("--mu-range", o.mu_range, "must be LO:HI");
+      lo = numbers("--mu-range", o.mu_range.substr(0, colon), 1, "LO:HI, two numbers")[0];
+      hi = numbers("--mu-range", o.mu_range.substr(colon + 1), 1, "LO:HI, two numbers")[0];
+    }
+    const plan::PlanCheck c = plan::check_plan(sc, r, po, parse_noise(o.noise), o.check, lo, hi, o.seed);
+    CsvWriter w(dir / "check.csv",
+                {{"trial", "1", "trial number"}, {"final_distance", "m", "true end pose's distance from the goal"},
+                 {"final_angle", "rad", "true end pose's angle from the goal"}, {"success", "1", "1: within tolerance"}},
+                sc.name);
+    w.run_info({{"probability", csv_number(c.probability)}, {"wilson95_low", csv_number(c.low)},
+                {"wilson95_high", csv_number(c.high)}, {"noise", json_string(o.noise)},
+                {"mu_range", json_string(o.mu_range)}, {"seed", std::to_string(o.seed)}});
+    for (int k = 0; k < c.trials; ++k) {
+      const bool ok = c.final_distance[k] <= po.tolerance_distance && c.final_angle[k] <= po.tolerance_angle;
+      w.row({double(k + 1), c.final_distance[k], c.final_angle[k], ok ? 1.0 : 0.0});
+    }
+    w.commit();
+    if (!o.quiet)
+      std::cerr << "  check: success " << c.successes << "/" << c.trials << " = " << c.probability << " (95 % interval "
+                << c.low << " to " << c.high << ") over start noise " << o.noise
+                << (o.mu_range.empty() ? std::string() : " and mu in " + o.mu_range) << ": "
+                << (dir / "check.csv").string() << "\n";
+  }
   return r.found() ? 0 : 3;
 }
 
@@ -287,6 +316,11 @@ RegisterCommand reg_plan{
        app.add_option("--max-pushes", o->max_pushes, "largest number of pushes")->check(count(1, 1000))->capture_default_str();
        app.add_flag("--distinguish-ends", o->distinguish_ends,
                     "theta and theta + pi are different goals (default: the bar is symmetric under a half turn)");
+       app.add_option("--check", o->check,
+                      "after planning: the plan's success probability over N worlds (start pose noise from --noise, "
+                      "mu uniform in --mu-range), made open loop; check.csv")
+           ->check(count(0, 1000000));
+       app.add_option("--mu-range", o->mu_range, "--check: surface mu uniform in LO:HI (default: the scene's mu)");
        app.add_flag("--closed-loop", o->closed_loop,
                     "simulate the AFM loop: image (truth + noise), re-plan, push the truth, repeat (closed_loop.csv)");
        app.add_option("--truth", o->truth,

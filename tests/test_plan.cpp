@@ -116,3 +116,26 @@ TEST_CASE("Planning: the closed loop reaches the goal when the truth's tip frict
 }
 
 }  // namespace NANOPUSH_UNITY_ID
+
+namespace NANOPUSH_UNITY_ID {
+
+TEST_CASE("Planning: --check gives the success probability over start-pose noise and mu", "[plan][numeric]") {
+  const Scene sc = parse_scene(kRodScene, "rod.toml");
+  plan::PlanOptions o;
+  o.tolerance_distance = 2e-9;
+  o.tolerance_angle = 0.02;
+  const auto r = plan::plan_pushes(sc, {40e-9, 25e-9, 0.4}, o);
+  REQUIRE(r.found());
+  // No noise: every world is the plan's own, whatever mu (the quasi-static path ignores it).
+  const auto exact = plan::check_plan(sc, r, o, {}, 5, 0.05, 0.5, 1);
+  CHECK(exact.successes == 5);
+  CHECK(exact.high == 1.0);
+  // Start-pose noise far beyond the tolerance: open loop fails most worlds.
+  const auto noisy = plan::check_plan(sc, r, o, {20e-9, 20e-9, 0.2}, 20, 0, 0, 2);
+  CHECK(noisy.successes < 10);
+  CHECK(noisy.low <= noisy.probability);
+  CHECK(noisy.probability <= noisy.high);
+  CHECK_THROWS_WITH(plan::check_plan(sc, r, o, {}, 5, 0.5, 0.1, 1), Catch::Contains("--mu-range"));
+}
+
+}  // namespace NANOPUSH_UNITY_ID

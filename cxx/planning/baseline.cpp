@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "nanopush/planning/plan.hpp"
+#include "nanopush/scenes/simulate.hpp"
 #include "pushes.hpp"
 
 namespace nanopush::plan {
@@ -43,6 +44,19 @@ PlanResult plan_baseline(const Scene& scene, const Pose& goal, const PlanOptions
     }
     return best;
   };
+  // Take a push: its end pose is the scene's forward run of it, as in plan_pushes.
+  auto take = [&](PlannedPush p) -> bool {
+    try {
+      const Trajectory tr = run_scene(push_scene(scene, pose, p));
+      const auto& r = tr.rows.back();
+      p.end = {r[col::x], r[col::y], r[col::theta]};
+    } catch (const std::exception&) {
+      return false;
+    }
+    res.pushes.push_back(p);
+    pose = p.end;
+    return true;
+  };
   // Turn towards orientation `target` (modulo pi: either long face) by a push at 0.7 of the
   // half-length on the side that turns the right way.
   auto turn = [&](double target) -> bool {
@@ -55,9 +69,7 @@ PlanResult plan_baseline(const Scene& scene, const Pose& goal, const PlanOptions
     if (!t.ok) return false;
     const std::size_t i = best_stop(t, [&](const Pose& p) { return std::fabs(angle_error(target, p.theta, true)); });
     if (i >= t.rows.size()) return false;
-    res.pushes.push_back(detail::push_at(t, i));
-    pose = res.pushes.back().end;
-    return true;
+    return take(detail::push_at(t, i));
   };
   while (static_cast<int>(res.pushes.size()) < o.max_pushes && !within(pose)) {
     const double dx = goal.x - pose.x, dy = goal.y - pose.y, dist = std::hypot(dx, dy);
@@ -77,10 +89,7 @@ PlanResult plan_baseline(const Scene& scene, const Pose& goal, const PlanOptions
         if (ok) {
           const std::size_t i = best_stop(t, [&](const Pose& p) { return std::hypot(p.x - goal.x, p.y - goal.y); });
           ok = i < t.rows.size();
-          if (ok) {
-            res.pushes.push_back(detail::push_at(t, i));
-            pose = res.pushes.back().end;
-          }
+          if (ok) ok = take(detail::push_at(t, i));
         }
       }
     } else {

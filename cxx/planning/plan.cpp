@@ -285,9 +285,21 @@ PlanResult plan_pushes(const Scene& scene, const Pose& goal, const PlanOptions& 
       }
     }
     if (!std::isfinite(best.cost) || best.push.travel <= 0 || best.cost > cost * (1 - 1e-6)) break;  // no push helps
+    // The pose the push leaves is the scene's own forward run of it (what verification and a
+    // user replaying plan.csv compute), not the trial's sample: the next push is planned from
+    // there, so the plan and its replay are one computation. (The two agree to ~rtol, but a
+    // push near the centre of a face with a frictionless tip amplifies such differences.)
+    try {
+      const Trajectory tr = run_scene(push_scene(scene, pose, best.push));
+      const auto& r = tr.rows.back();
+      best.push.end = {r[col::x], r[col::y], r[col::theta]};
+    } catch (const std::exception&) {
+      break;  // cannot happen for a push the trial ran; stop with the plan so far
+    }
+    ++res.forward_runs;
     res.pushes.push_back(best.push);
     pose = best.push.end;
-    cost = best.cost;
+    cost = goal_cost(pose, goal, half, sym);
   }
 
   detail::verify(scene, res, o);

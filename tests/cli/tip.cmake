@@ -20,7 +20,8 @@ set_tests_properties(cli.tip.bad_input PROPERTIES ENVIRONMENT "NANOPUSH_SCENES=$
 # is not_found (exit 3) with the best plan written; a bad goal is exit 2 and writes nothing.
 add_test(NAME cli.plan.found
          COMMAND bash -c "set -e; d=\"$1\"; rm -rf \"$d\"; \"$0\" plan tip_push_nanorod --goal 60e-9,40e-9,0.3 --tolerance 2e-9,0.02 \
---out \"$d\" 2> \"$d.err\"; grep -q 'found (verified)' \"$d.err\"; \
+--check 5 --noise x=0.2e-9,theta=0.001 --mu-range 0.05:0.2 --out \"$d\" 2> \"$d.err\"; grep -q 'found (verified)' \"$d.err\"; \
+grep -q 'check: success ' \"$d.err\"; head -1 \"$d/check.csv\" | grep -qx 'trial,final_distance,final_angle,success'; \
 head -1 \"$d/plan.csv\" | grep -qx 'push,start_x,start_y,direction,speed,travel,x_end,y_end,theta_end'; \
 test -s \"$d/plan.json\"; test -s \"$d/tip_path.csv\"; test -s \"$d/plan.png\"; test -s \"$d/plan.schema.json\"; \
 echo plan: ok" ${_np} ${CMAKE_CURRENT_BINARY_DIR}/cli_plan_found)

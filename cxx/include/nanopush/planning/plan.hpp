@@ -107,6 +107,22 @@ struct ClosedLoopResult {
 ClosedLoopResult closed_loop(const Scene& model, const Scene& truth, const Pose& goal, const PlanOptions& options,
                              const Noise& noise, std::uint64_t seed);
 
+/// How often an open-loop plan succeeds when the world is not the model's (plan --check).
+struct PlanCheck {
+  int trials = 0, successes = 0;
+  double probability = 0;            ///< successes / trials
+  double low = 0, high = 0;          ///< 95 % Wilson interval of the probability
+  std::vector<double> final_distance, final_angle;  ///< per trial, of the true end pose from the goal
+};
+
+/// Monte Carlo over `trials` worlds: the bar starts at the plan's start plus seeded noise, the
+/// surface's mu is uniform in [mu_lo, mu_hi] (mu_lo = mu_hi = 0: the scene's), and the plan's
+/// pushes are made open loop (the tip paths fixed in world axes). A trial succeeds when the bar
+/// ends within the tolerance. A push that cannot start (the tip would touch down on the bar)
+/// fails its trial.
+PlanCheck check_plan(const Scene& scene, const PlanResult& plan, const PlanOptions& options, const Noise& noise,
+                     int trials, double mu_lo, double mu_hi, std::uint64_t seed);
+
 /// The scene that replays push `p` from pose `from` (push.mode = tip and the push's tip keys).
 Scene push_scene(const Scene& scene, const Pose& from, const PlannedPush& p);
 
