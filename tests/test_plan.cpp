@@ -7,31 +7,13 @@
 #include "nanopush/planning/plan.hpp"
 #include "nanopush/scenes/scene.hpp"
 #include "nanopush/scenes/simulate.hpp"
+#include "support/support.hpp"
 
 using namespace nanopush;
 
 namespace NANOPUSH_UNITY_ID {
 
-const char* const kRodScene = R"(
-[object]
-length = 100e-9
-width = 10e-9
-height = 10e-9
-density = 2267.0
-[push]
-mode = "tip"
-[tip]
-start_x = -20e-9
-start_y = 15e-9
-travel = 60e-9
-radius = 5e-9
-[surface]
-kind = "rough"
-mu = 0.1
-f_vdw = 1e-8
-[solver]
-samples = 101
-)";
+const std::string kRodScene = test::kTipSceneText;
 
 TEST_CASE("Planning: angle errors wrap, modulo a half turn for a symmetric bar", "[plan][unit]") {
   CHECK(plan::angle_error(3.0, -3.0, false) == Approx(6.0 - 2 * M_PI));

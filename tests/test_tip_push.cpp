@@ -182,30 +182,11 @@ TEST_CASE("Quasi-static tip run: bad input names the key", "[tip][unit]") {
 // ---- push.mode = tip scenes ---------------------------------------------------------------
 #include "nanopush/scenes/scene.hpp"
 #include "nanopush/scenes/simulate.hpp"
+#include "support/support.hpp"
 
 namespace NANOPUSH_UNITY_ID {
 
-const char* const kTipScene = R"(
-[object]
-length = 100e-9
-width = 10e-9
-height = 10e-9
-density = 2267.0
-[push]
-mode = "tip"
-[tip]
-start_x = -20e-9
-start_y = 15e-9
-speed = 1e-6
-travel = 60e-9
-radius = 5e-9
-[surface]
-kind = "rough"
-mu = 0.1
-f_vdw = 1e-8
-[solver]
-samples = 101
-)";
+const std::string kTipScene = test::kTipSceneText;
 
 TEST_CASE("Tip scenes: the run is the quasi-static model, t_end defaults to the tip's travel", "[tip][unit]") {
   const Scene sc = parse_scene(kTipScene, "tip.toml");

@@ -69,6 +69,30 @@ xn = 27.5e-9
 yn = 45e-9
 )";
 
+/// A tip-push scene as text: a 100 x 10 x 10 nm graphite bar on a rough surface (mu N = 1 nN),
+/// an AFM tip (radius 5 nm, 1 um/s) starting 20 nm beside it, 15 nm off its centre, for 60 nm.
+inline const std::string kTipSceneText = R"(
+[object]
+length = 100e-9
+width = 10e-9
+height = 10e-9
+density = 2267.0
+[push]
+mode = "tip"
+[tip]
+start_x = -20e-9
+start_y = 15e-9
+speed = 1e-6
+travel = 60e-9
+radius = 5e-9
+[surface]
+kind = "rough"
+mu = 0.1
+f_vdw = 1e-8
+[solver]
+samples = 101
+)";
+
 /// The base rough scene as text: the nanobar by mass (6e-19 kg), the same push, a rough
 /// surface with mu = 0.1, t_end = 1 ns.
 inline const std::string kBaseRoughSceneText = R"(
