@@ -55,3 +55,12 @@ foreach(_mode IN LISTS _export_modes)
       PASS_REGULAR_EXPRESSION "export ${_mode} ${_step}: all checks hold")
   endforeach()
 endforeach()
+# Shared libraries only: versioned SONAMEs, recorded as such by what links them (readelf).
+if("shared" IN_LIST _export_modes)
+  add_test(NAME export.shared.sonames
+    COMMAND ${CMAKE_COMMAND} -DSTEP=sonames -DMODE=shared -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/export-shared
+            -DVERSION=${PROJECT_VERSION} -DSOVERSION=${PROJECT_VERSION_MAJOR}.${PROJECT_VERSION_MINOR}
+            -P ${PROJECT_SOURCE_DIR}/tests/export/run_export_test.cmake)
+  set_tests_properties(export.shared.sonames PROPERTIES TIMEOUT 600 FIXTURES_REQUIRED export_shared
+    PASS_REGULAR_EXPRESSION "export shared sonames: all checks hold")
+endif()

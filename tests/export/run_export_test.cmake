@@ -16,6 +16,8 @@
 #                    fig3_6a` from an empty directory, clean environment, equals the build tree's CSV
 #   symbols          nm of libnanopush_{numerics,models,scenes}: no F77 and no benchmark symbols
 #   no_build_paths   no file of the prefix names the source or the build tree
+#   sonames          (shared) every library versioned: SONAME libnanopush_X.so.MAJOR.MINOR, and the
+#                    command line and the C API record those names (readelf -d)
 # Arguments: -DSTEP -DMODE=static|shared -DBUILD_DIR (the project's build tree) -DSOURCE_DIR
 #   -DWORK_DIR (this mode's directory: prefix/ and the consumers' builds) -DSCENE -DGENERATOR
 #   -DMAKE_PROGRAM -DC_COMPILER -DCXX_COMPILER -DFortran_COMPILER -DBUILD_TYPE -DCONFIG_FLAGS
@@ -334,6 +336,42 @@ elseif(STEP STREQUAL "no_build_paths")
     endif()
   endforeach()
   message(STATUS "${n_files} installed files, none naming ${paths}")
+# -------------------------------------------------------------------------------------------
+elseif(STEP STREQUAL "sonames")
+  # Every shared library is libnanopush_X.so -> libnanopush_X.so.SOVERSION (its SONAME) ->
+  # libnanopush_X.so.VERSION, and the executables record the versioned name (readelf -d).
+  find_program(READELF readelf REQUIRED)
+  file(GLOB namelinks ${prefix}/lib/libnanopush_*.so)
+  list(LENGTH namelinks n_libs)
+  if(n_libs LESS 10)
+    message(FATAL_ERROR "expected the nanopush shared libraries in ${prefix}/lib, found ${n_libs}: ${namelinks}")
+  endif()
+  foreach(link IN LISTS namelinks)
+    get_filename_component(name ${link} NAME)
+    if(NOT IS_SYMLINK ${link})
+      message(FATAL_ERROR "${name} is not a symbolic link to a versioned library")
+    endif()
+    if(NOT IS_SYMLINK ${link}.${SOVERSION} OR IS_SYMLINK ${link}.${VERSION} OR NOT EXISTS ${link}.${VERSION})
+      message(FATAL_ERROR "${name}: expected ${name}.${SOVERSION} (a link) -> ${name}.${VERSION} (the file)")
+    endif()
+    run(${READELF} -d ${link}.${VERSION})
+    if(NOT RUN_OUT MATCHES "\\(SONAME\\)[^\n]*\\[${name}\\.${SOVERSION}\\]")
+      message(FATAL_ERROR "${name}.${VERSION}: SONAME is not ${name}.${SOVERSION}:\n${RUN_OUT}")
+    endif()
+  endforeach()
+  foreach(exe ${prefix}/bin/nanopush ${prefix}/lib/libnanopush_capi.so)
+    run(${READELF} -d ${exe})
+    string(REGEX MATCHALL "\\(NEEDED\\)[^\n]*\\[libnanopush_[a-z0-9_.]*\\]" needed "${RUN_OUT}")
+    if(NOT needed)
+      message(FATAL_ERROR "${exe} needs no nanopush library: is it linked statically?")
+    endif()
+    foreach(n IN LISTS needed)
+      if(NOT n MATCHES "\\.so\\.${SOVERSION}\\]$")
+        message(FATAL_ERROR "${exe} records an unversioned nanopush library: ${n}")
+      endif()
+    endforeach()
+  endforeach()
+  message(STATUS "${n_libs} shared libraries, each SONAME libnanopush_*.so.${SOVERSION}, file .so.${VERSION}")
 else()
   message(FATAL_ERROR "unknown STEP ${STEP}")
 endif()
