@@ -8,7 +8,7 @@
 #   include/nanopush/<CompilerID>-<version>/*.mod   (one compiler's .mod files never mix with another's)
 #   lib/libnanopush_*.a (or .so with -DBUILD_SHARED_LIBS=ON), lib/cmake/nanopush/,
 #   lib/pkgconfig/nanopush.pc (the C API for pkg-config),
-#   bin/nanopush, bin/nanobar, bin/nanobar_quad, share/nanopush/scenes/
+#   bin/nanopush, bin/nanopush-mpi (with MPI), bin/nanobar, bin/nanobar_quad, share/nanopush/scenes/
 # Nothing installed names the build or the source tree (cmake/Packaging.cmake): the prefix can
 # be copied or moved.
 include(GNUInstallDirs)
@@ -41,8 +41,12 @@ install(TARGETS ${_nanopush_libraries}
         RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 # The command line and the legacy programs it runs (`nanopush legacy`: nanobar; the benchmark's
 # rough-surface reference: nanobar_quad), found beside the running nanopush.
+# nanopush-mpi (NANOPUSH_MPI): the same command line with MPI, for mpirun.
 if(NANOPUSH_DRIVERS)
   install(TARGETS nanopush nanobar nanobar_quad RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+  if(TARGET nanopush-mpi)
+    install(TARGETS nanopush-mpi RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+  endif()
 endif()
 
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/cxx/include/nanopush DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}

@@ -31,6 +31,7 @@
 #include "cli_checks.hpp"
 #include "registry.hpp"
 #include "scene_args.hpp"
+#include "sweep_mpi.hpp"
 
 extern char** environ;
 
@@ -108,7 +109,6 @@ std::string read_file(const fs::path& p) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-#ifdef NANOPUSH_HAVE_MPI
 /// An executable `name` on PATH, or empty.
 fs::path find_on_path(const std::string& name) {
   const char* path = std::getenv("PATH");
@@ -122,7 +122,6 @@ fs::path find_on_path(const std::string& name) {
   }
   return {};
 }
-#endif
 
 /// Run argv[0] (a full path) with `extra_env` added, stdin from /dev/null, stdout and stderr
 /// into `log`; wait for it. Returns the exit status (128 + signal when killed).
@@ -172,7 +171,7 @@ struct Config {
   std::string mode;  ///< direct | threads | mpi
   unsigned threads = 1, ranks = 1;
   std::vector<double> walls;  ///< one per repeat (direct: the sum of the points' own times)
-  std::vector<double> launches;  ///< mpi: mpirun -np RANKS nanopush --version, one per repeat
+  std::vector<double> launches;  ///< mpi: mpirun -np RANKS nanopush-mpi --version, one per repeat
   std::vector<double> mpirun_walls;  ///< mpi: mpirun from launch to exit, one per repeat
   std::vector<double> cpus;      ///< CPU time of the run (all threads and processes), one per repeat
   double load1 = std::numeric_limits<double>::quiet_NaN();
@@ -215,20 +214,19 @@ int bench_sweep(const BenchSweepOptions& o) {
   const std::size_t n = plan.size();
   const auto columns = sweep::table_columns(plan, *task);
 
-  // MPI: mpirun on PATH and a nanopush built with MPI.
+  // MPI: mpirun on PATH and nanopush-mpi (the command line with MPI) beside this executable.
   fs::path mpirun;
   std::string mpi_note;
-#ifdef NANOPUSH_HAVE_MPI
+  const fs::path mpi_exe = executable_dir() / kMpiProgram;
+  std::error_code mpi_ec;
   if (o.no_mpi) {
     mpi_note = "MPI configurations skipped (--no-mpi)";
+  } else if (!fs::is_regular_file(mpi_exe, mpi_ec)) {
+    mpi_note = std::string("MPI configurations skipped: no ") + kMpiProgram + " beside this nanopush (NANOPUSH_MPI=OFF)";
   } else {
     mpirun = find_on_path("mpirun");
     if (mpirun.empty()) mpi_note = "MPI configurations skipped: no mpirun on PATH";
   }
-#else
-  mpi_note = "MPI configurations skipped: this nanopush was built without MPI (NANOPUSH_MPI=OFF)";
-#endif
-  const fs::path self = fs::read_symlink("/proc/self/exe");
 
   TempDir tmp;
   const fs::path out_dir = o.out;
@@ -311,7 +309,7 @@ int bench_sweep(const BenchSweepOptions& o) {
         check_same(text, std::to_string(c.threads) + " threads (repeat " + std::to_string(r + 1) + ")", table);
       } else {
         std::vector<std::string> argv = {mpirun.string(), "--oversubscribe", "-np", std::to_string(c.ranks),
-                                         self.string(), "sweep", kScene, "--set", kLaw};
+                                         mpi_exe.string(), "sweep", kScene, "--set", kLaw};
         for (const auto& s : specs) {
           argv.push_back("--vary");
           argv.push_back(s);
@@ -325,12 +323,12 @@ int bench_sweep(const BenchSweepOptions& o) {
           // The launch alone (mpirun starting RANKS processes that do nothing), for the report.
           const auto l0 = Clock::now();
           const int lrc = spawn_and_wait({mpirun.string(), "--oversubscribe", "-np", std::to_string(c.ranks),
-                                          self.string(), "--version"},
+                                          mpi_exe.string(), "--version"},
                                          env, log);
           if (lrc != 0) {
             tmp.keep = true;
             throw std::runtime_error("bench-sweep: mpirun -np " + std::to_string(c.ranks) +
-                                     " nanopush --version exited with " + std::to_string(lrc) + "; its output:\n" +
+                                     " nanopush-mpi --version exited with " + std::to_string(lrc) + "; its output:\n" +
                                      read_file(log));
           }
           c.launches.push_back(seconds_since(l0));
@@ -406,7 +404,7 @@ int bench_sweep(const BenchSweepOptions& o) {
 
   // ---- the CSV (and its sidecar)
   const Columns cols = {
-      text_column("mode", "threads: sweep::run_local in this process; mpi: mpirun -np RANKS nanopush sweep --jobs 1 "
+      text_column("mode", "threads: sweep::run_local in this process; mpi: mpirun -np RANKS nanopush-mpi sweep --jobs 1 "
                           "(the sweep's own time from its sidecar); direct: the points alone, sweep::evaluate_row "
                           "on one thread"),
       count_column("threads", "threads per process"),
@@ -427,7 +425,7 @@ int bench_sweep(const BenchSweepOptions& o) {
       {"cpu_s", "s",
        "median CPU time (user + system) of a run, every thread; cpu_s / wall_s is the share of the cores the run "
        "got; empty for mpi (the ranks' CPU time is not visible to the driver)"},
-      {"launch_s", "s", "mpi rows only: median wall time of mpirun -np RANKS nanopush --version (the launch alone)"},
+      {"launch_s", "s", "mpi rows only: median wall time of mpirun -np RANKS nanopush-mpi --version (the launch alone)"},
       {"mpirun_wall_s", "s", "mpi rows only: median wall time of mpirun from launch to exit (the job as a user waits for it)"},
       {"load_1min", "1", "host 1-minute load average (/proc/loadavg) after the configuration's last run"},
   };
@@ -519,7 +517,7 @@ int bench_sweep(const BenchSweepOptions& o) {
   }
   md << "\n`direct` is the sum of the points' own evaluation times (`sweep::evaluate_row` on one thread, "
         "no queue, journal or table); `mpi` is the sweep's own time as rank 0 records it in the table's sidecar "
-        "(MPI_Init to the table written), as `threads` is `run_local`'s; the launch alone (`mpirun -np R nanopush "
+        "(MPI_Init to the table written), as `threads` is `run_local`'s; the launch alone (`mpirun -np R nanopush-mpi "
         "--version`) and `mpirun` from launch to exit are in their own columns (mpirun takes ~2 s to end a job "
         "whose rank exits non-zero, as a sweep with failed points does). CPU is the run's CPU time (every thread; not measured for MPI, whose ranks the launcher reaps); cores used = "
         "CPU / wall, at most the worker count: below it, the host gave the run less than a core per worker.\n\n"

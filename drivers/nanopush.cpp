@@ -29,9 +29,16 @@ int main(int argc, char** argv) {
       "signal N (130 SIGINT, 143 SIGTERM, 129 SIGHUP, 141 SIGPIPE, ...). docs/errors.md has the details.");
   auto& cmds = cli::commands();
   std::stable_sort(cmds.begin(), cmds.end(), [](auto& a, auto& b) { return a.order < b.order; });
+  // A process starts light (docs/performance.md, "Process start"): only the command named
+  // declares its options; `--version` and `--help` alone declare none (the help lists names and
+  // descriptions). Anything else (no arguments, --help-all, a mistyped option) declares them all.
+  const std::string first = argc > 1 ? argv[1] : "";
+  const bool top_only = argc == 2 && (first == "--version" || first == "--help" || first == "-h");
+  const bool named = !first.empty() && first[0] != '-';
   std::function<int()> action;
   for (auto& c : cmds) {
     CLI::App* sub = app.add_subcommand(c.name, c.description);
+    if (top_only || (named && c.name != first)) continue;
     auto act = c.setup(*sub);
     sub->callback([&action, act] { action = act; });
   }

@@ -1,4 +1,5 @@
 #include "sweep_mpi.hpp"
+#include "registry.hpp"  // executable_dir(): nanopush-mpi beside nanopush
 
 #include <algorithm>
 #include <chrono>
@@ -6,6 +7,7 @@
 #include <csignal>
 #include <cstdlib>
 #include <deque>
+#include <filesystem>
 #include <iostream>
 #include <optional>
 #include <set>
@@ -34,9 +36,18 @@ bool mpi_launched() {
 #ifndef NANOPUSH_HAVE_MPI
 
 int run_mpi_sweep(const sweep::Plan&, const sweep::Task&, const sweep::Options&, bool, const volatile std::sig_atomic_t*) {
+  // The plain command line loads no MPI (drivers/CMakeLists.txt): its MPI twin runs the sweep.
+  std::error_code ec;
+  if (std::filesystem::is_regular_file(executable_dir() / kMpiProgram, ec))
+    throw InputError("mpirun", "(several ranks)",
+                     std::string("this nanopush is built without MPI, so that other commands start light: start the "
+                                 "sweep with `mpirun -np R ") +
+                         kMpiProgram + " sweep ...` (" + kMpiProgram +
+                         ", beside nanopush, is the same command line with MPI)");
   throw InputError("mpirun", "(several ranks)",
-                   "this nanopush was built without MPI (configure with NANOPUSH_MPI=ON and OpenMPI installed); use "
-                   "--shard i/n and --merge for job arrays instead");
+                   std::string("this nanopush is built without MPI and no ") + kMpiProgram +
+                       " is beside it (configure with NANOPUSH_MPI=ON and OpenMPI installed); use --shard i/n and "
+                       "--merge for job arrays instead");
 }
 
 #else

@@ -5,6 +5,7 @@
 # Usage: issue34_checks.sh MODE NANOPUSH WORKDIR [MPIEXEC]
 set -euo pipefail
 mode=$1 np=$2 dir=$3 mpiexec=${4:-}
+np_mpi="$(dirname "$np")/nanopush-mpi"  # the command line with MPI, beside nanopush
 rm -rf "$dir" && mkdir -p "$dir/work" && cd "$dir/work"
 fail() { echo "FAIL: $*"; exit 1; }
 # expect CODE REGEX COMMAND...: exit status CODE, stderr matching REGEX (grep -E), and no file
@@ -122,7 +123,7 @@ mpi_signal)  # item 4: a signal to any rank or to mpirun stops every rank; journ
     for sig in TERM INT; do
       [ $target = mpirun_kill ] && [ $sig = INT ] && continue
       rm -f ../mpi.csv ../mpi.csv.journal
-      $mpiexec --oversubscribe -np 2 "$np" sweep "${grid[@]}" --out ../mpi.csv 2> ../mpi_err.txt &
+      $mpiexec --oversubscribe -np 2 "$np_mpi" sweep "${grid[@]}" --out ../mpi.csv 2> ../mpi_err.txt &
       mp=$!
       for _ in $(seq 1 2000); do
         [ -f ../mpi.csv.journal ] && [ "$(wc -l < ../mpi.csv.journal)" -gt 5 ] && break; sleep 0.01
@@ -155,7 +156,7 @@ mpi_signal)  # item 4: a signal to any rank or to mpirun stops every rank; journ
       [ ! -e ../mpi.csv ] || fail "SIG$sig to $target: a table after an interrupt"
       [ -f ../mpi.csv.journal ] || fail "SIG$sig to $target: the journal is gone"
       # The same command resumes from the journal to the table of one process.
-      $mpiexec --oversubscribe -np 2 "$np" sweep "${grid[@]}" --out ../mpi.csv 2> ../mpi_err.txt \
+      $mpiexec --oversubscribe -np 2 "$np_mpi" sweep "${grid[@]}" --out ../mpi.csv 2> ../mpi_err.txt \
         || fail "resume after SIG$sig to $target: $(cat ../mpi_err.txt)"
       cmp ../serial.csv ../mpi.csv || fail "resume after SIG$sig to $target: the table differs"
     done

@@ -3,6 +3,7 @@
 # Usage: sweep_checks.sh MODE NANOPUSH WORKDIR [MPIEXEC]
 set -euo pipefail
 mode=$1 np=$2 dir=$3 mpiexec=${4:-}
+np_mpi="$(dirname "$np")/nanopush-mpi"  # the command line with MPI, beside nanopush
 rm -rf "$dir" && mkdir -p "$dir" && cd "$dir"
 # A small rough-surface grid under the coulomb law (points differ in cost; one fails).
 grid=(fig3_18 --set surface.law=coulomb --vary surface.mu=0.02:0.2:5 --vary push.yn=0:45e-9:4 --quiet)
@@ -33,14 +34,19 @@ shards)  # two shards merged equal one run
   [ "$(status "$np" sweep --merge t0.csv t1.csv --out t01.csv --quiet 2> err.txt)" = 2 ] || fail "a missing last shard must be an error"
   grep -q "the plan has 3" err.txt || fail "message: $(cat err.txt)"
   [ ! -e t01.csv ] || fail "a refused merge left a table" ;;
-mpi)  # two MPI ranks write the same table as one process
+mpi)  # two MPI ranks of nanopush-mpi write the same table as one process of nanopush
   "$np" sweep "${grid[@]}" --out serial.csv
-  $mpiexec --oversubscribe -np 2 "$np" sweep "${grid[@]}" --out mpi.csv
+  # The plain nanopush, which loads no MPI, names its MPI twin when mpirun starts it.
+  [ "$(status $mpiexec --oversubscribe -np 2 "$np" sweep "${grid[@]}" --out plain.csv 2> plain_err.txt)" != 0 ] \
+    || fail "plain nanopush under mpirun must refuse the sweep"
+  grep -q 'start the sweep with `mpirun -np R nanopush-mpi sweep' plain_err.txt || fail "message: $(cat plain_err.txt)"
+  [ ! -e plain.csv ] || fail "a refused sweep left a table"
+  $mpiexec --oversubscribe -np 2 "$np_mpi" sweep "${grid[@]}" --out mpi.csv
   cmp serial.csv mpi.csv || fail "MPI table differs"
   [ ! -e mpi.csv.journal ] || fail "journal left"
   grep -q '"ranks": 2' mpi.schema.json || fail "sidecar: $(grep '"run"' mpi.schema.json)"
   # Ranks of two threads each (rank 1 then feeds threads instead of working on its main thread).
-  $mpiexec --oversubscribe -np 2 "$np" sweep "${grid[@]}" --jobs 2 --out mpi2.csv
+  $mpiexec --oversubscribe -np 2 "$np_mpi" sweep "${grid[@]}" --jobs 2 --out mpi2.csv
   cmp serial.csv mpi2.csv || fail "MPI table with 2 threads per rank differs" ;;
 resume)  # killed with SIGKILL mid-way, then resumed: the same table as an uninterrupted run
   big=(fig3_18 --set surface.law=coulomb --vary surface.mu=0.02:0.2:20 --vary push.yn=0:45e-9:20 --quiet --jobs 1)
