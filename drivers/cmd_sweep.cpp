@@ -15,6 +15,7 @@
 #include "registry.hpp"
 #include "scene_args.hpp"
 #include "sweep_mpi.hpp"
+#include "sweep_output.hpp"
 
 namespace nanopush::cli {
 namespace {
@@ -118,8 +119,10 @@ int sweep_cmd(SweepOptions o) {
                          "--merge joins finished shard tables and takes only --out and --quiet: run the sweep "
                          "(with " + g + ") and merge its shards in a separate command");
     if (o.out.empty()) throw InputError("--out", "(missing)", "--merge writes the joined table to --out FILE");
-    const auto failed = sweep::merge_tables({o.merge.begin(), o.merge.end()}, o.out);
-    if (!o.quiet) std::cerr << "sweep: joined " << o.merge.size() << " shards into " << o.out << "\n";
+    const SweepOutput output(o.out);  // CSV, netCDF (over `point`) or standard output, by extension
+    const auto failed = sweep::merge_tables({o.merge.begin(), o.merge.end()}, output.table());
+    const std::string where = output.finish({});
+    if (!o.quiet) std::cerr << "sweep: joined " << o.merge.size() << " shards into " << where << "\n";
     return failed ? 64 + static_cast<int>(std::min<std::size_t>(failed, 63)) : 0;
   }
   std::unique_ptr<sweep::Task> task;
@@ -186,7 +189,18 @@ int sweep_cmd(SweepOptions o) {
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
 
-  if (mpi_launched()) return run_mpi_sweep(plan, *task, opt, o.quiet, &g_signal);
+  // The table's format, by the extension of --out (docs/data.md): the sweep writes CSV, which
+  // a .nc is converted from once complete; a grid's axes become its dimensions.
+  const SweepOutput output(opt.out);
+  opt.out = output.table();
+  const std::vector<NetcdfAxis> axes = output.netcdf() && o.points.empty() && o.shard.empty()
+                                           ? grid_axes(o.vary, o.vary_log, sweep::table_columns(plan, *task))
+                                           : std::vector<NetcdfAxis>{};
+  if (mpi_launched()) {
+    const int rc = run_mpi_sweep(plan, *task, opt, o.quiet, &g_signal);
+    if (rc < 128 && table_rank()) (void)output.finish(axes);
+    return rc;
+  }
 
   const auto r = sweep::run_local(plan, *task, opt);
   if (!r.complete) {
@@ -194,9 +208,10 @@ int sweep_cmd(SweepOptions o) {
               << sweep::journal_path(opt.out).string() << "; run the same command again to resume\n";
     return 128 + (g_signal ? static_cast<int>(g_signal) : SIGINT);
   }
+  const std::string where = output.finish(axes);
   if (!o.quiet) {
     std::cerr << "sweep: " << r.points << " points (" << r.resumed << " from the journal), " << r.failed
-              << " failed: " << opt.out.string() << "\n";
+              << " failed: " << where << "\n";
   }
   return r.failed ? 64 + static_cast<int>(std::min<std::size_t>(r.failed, 63)) : 0;
 }
@@ -224,7 +239,9 @@ RegisterCommand reg{
        app.add_option("--law", o->law, "task run, rough scenes: thesis, printed or coulomb (default: the scene's)")
            ->check(is_choice<Law>());
        add_accuracy_options(app, o->accuracy, o->no_estimate);
-       app.add_option("--out", o->out, "the table (CSV; default <scene>_sweep.csv); its journal is OUT.journal");
+       app.add_option("--out", o->out,
+                      "the table: FILE.csv (default <scene>_sweep.csv; its journal is FILE.csv.journal), FILE.nc "
+                      "(netCDF-4: a grid's axes as dimensions; docs/data.md) or - (CSV on standard output)");
        app.add_option("--trajectories", o->trajectories, "task run: also keep each point's trajectory, DIR/point_<i>.csv");
        app.add_option("--jobs", o->jobs, "threads (default: every core; under MPI, the cores per rank)")
            ->check(count(1, 1024));

@@ -1,0 +1,82 @@
+#include "sweep_output.hpp"
+
+#include <unistd.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <system_error>
+
+#include "nanopush/numerics/error.hpp"
+#include "nanopush/outputs/io.hpp"
+
+namespace nanopush::cli {
+namespace fs = std::filesystem;
+
+SweepOutput::SweepOutput(const fs::path& out) : out_(out) {
+  const std::string ext = out.extension().string();
+  if (out == "-") {
+    kind_ = Kind::standard_output;
+    tmpdir_ = fs::temp_directory_path() / ("nanopush-sweep-" + std::to_string(::getpid()));
+    fs::create_directories(tmpdir_);
+    table_ = tmpdir_ / "table.csv";
+  } else if (ext == ".nc") {
+    kind_ = Kind::netcdf;
+    table_ = out.string() + ".csv";
+  } else if (ext == ".csv" || ext.empty()) {
+    table_ = out;
+  } else {
+    throw InputError("--out", out.string(),
+                     "unknown extension '" + ext + "': the table is written as FILE.csv (CSV and its Table Schema "
+                     "sidecar) or FILE.nc (netCDF-4); - writes the CSV to standard output (docs/data.md)");
+  }
+}
+
+SweepOutput::~SweepOutput() {
+  if (!tmpdir_.empty()) {
+    std::error_code ec;
+    fs::remove_all(tmpdir_, ec);
+  }
+}
+
+std::string SweepOutput::finish(const std::vector<NetcdfAxis>& axes) const {
+  switch (kind_) {
+    case Kind::csv:
+      return out_.string();
+    case Kind::netcdf: {
+      write_netcdf_from_table(table_, out_, axes);
+      std::error_code ec;
+      fs::remove(schema_path(table_), ec);
+      fs::remove(table_, ec);
+      return out_.string();
+    }
+    case Kind::standard_output: {
+      std::ifstream in(table_, std::ios::binary);
+      std::cout << in.rdbuf();
+      std::cout.flush();
+      if (!std::cout) throw OutputError("standard output: the table could not be written");
+      return "standard output";
+    }
+  }
+  return out_.string();
+}
+
+bool table_rank() {
+  for (const char* v : {"OMPI_COMM_WORLD_RANK", "PMI_RANK", "PMIX_RANK"})
+    if (const char* r = std::getenv(v)) return std::string(r) == "0";
+  return true;
+}
+
+std::vector<NetcdfAxis> grid_axes(const std::vector<std::string>& vary, const std::vector<std::string>& vary_log,
+                                  const Columns& columns) {
+  std::vector<NetcdfAxis> axes;
+  for (const auto* specs : {&vary, &vary_log})
+    for (const auto& s : *specs) {
+      const std::size_t k = axes.size() + 1;  // after the point index
+      if (k >= columns.size()) throw std::logic_error("grid_axes: more axes than input columns");
+      axes.push_back({columns[k].name, sweep::parse_axis(s, specs == &vary_log).values.size()});
+    }
+  return axes;
+}
+
+}  // namespace nanopush::cli

@@ -1,0 +1,47 @@
+// Where a sweep's table goes, chosen by the extension of --out (docs/data.md): FILE.csv (or a
+// name without extension) the CSV and its Table Schema sidecar; FILE.nc netCDF-4, converted
+// from the finished CSV (outputs/netcdf.hpp); `-` the CSV on standard output. Any other
+// extension is bad input (exit 2), refused before any work.
+#pragma once
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "nanopush/outputs/netcdf.hpp"
+#include "nanopush/sweeps/sweep.hpp"
+
+namespace nanopush::cli {
+
+class SweepOutput {
+ public:
+  /// InputError naming the extension and the formats for anything but .csv, .nc, none or "-".
+  explicit SweepOutput(const std::filesystem::path& out);
+  SweepOutput(const SweepOutput&) = delete;
+  SweepOutput& operator=(const SweepOutput&) = delete;
+  ~SweepOutput();  // removes the temporary directory of a table for standard output
+
+  /// The CSV table the sweep writes (its journal beside it): the output itself for CSV;
+  /// FILE.nc.csv for FILE.nc (so an interrupted sweep resumes from FILE.nc.csv.journal); a
+  /// file in a temporary directory for standard output.
+  [[nodiscard]] const std::filesystem::path& table() const { return table_; }
+  [[nodiscard]] bool netcdf() const { return kind_ == Kind::netcdf; }
+  /// After a finished sweep: the CSV is the output; or it is converted into the .nc (a grid
+  /// over `axes`; none: a `point` dimension) and removed with its sidecar; or it is copied to
+  /// standard output. Returns what to name in the summary.
+  std::string finish(const std::vector<NetcdfAxis>& axes) const;
+
+ private:
+  enum class Kind { csv, netcdf, standard_output } kind_ = Kind::csv;
+  std::filesystem::path out_, table_, tmpdir_;
+};
+
+/// True unless this process is an MPI rank other than 0 (the rank that writes the table).
+bool table_rank();
+
+/// The grid axes of a `--vary`/`--vary-log` sweep, in the order the plan takes them (every
+/// --vary, then every --vary-log), each named after its table column (`columns`, from
+/// sweep::table_columns: the point index, then one column per key).
+std::vector<NetcdfAxis> grid_axes(const std::vector<std::string>& vary, const std::vector<std::string>& vary_log,
+                                  const Columns& columns);
+
+}  // namespace nanopush::cli
