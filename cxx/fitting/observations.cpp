@@ -12,6 +12,7 @@
 #include "nanopush/outputs/csv_reader.hpp"
 #include "nanopush/outputs/input_file.hpp"
 #include "nanopush/numerics/error.hpp"
+#include "nanopush/numerics/normal.hpp"
 #include "nanopush/outputs/io.hpp"
 
 namespace nanopush::fit {
@@ -159,8 +160,7 @@ Observations synthesize(const Scene& scene, const std::array<double, 3>& sigma, 
   obs.source = "synthetic";
   obs.t = times_in.empty() ? scene.output_times() : times_in;
   const ModelPoses m = model_poses(scene, {}, {}, obs.t, law, rtol, false);
-  std::mt19937_64 rng(seed);
-  std::normal_distribution<double> normal(0.0, 1.0);
+  num::PortableNormal normal(seed);  // the same data for a seed on every platform
   for (int c = 0; c < 3; ++c) {
     const auto cu = static_cast<std::size_t>(c);
     // NaN is bad input, never a column silently left out (issue 34, item 11); <= 0: not observed.
@@ -172,7 +172,7 @@ Observations synthesize(const Scene& scene, const std::array<double, 3>& sigma, 
     for (int c = 0; c < 3; ++c) {
       const auto cu = static_cast<std::size_t>(c);
       if (!obs.has[cu]) continue;
-      obs.value[cu].push_back(m.pose[i][cu] + sigma[cu] * normal(rng));
+      obs.value[cu].push_back(m.pose[i][cu] + sigma[cu] * normal());
       obs.sigma[cu].push_back(sigma[cu]);
     }
   return obs;
