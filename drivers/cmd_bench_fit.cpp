@@ -201,10 +201,10 @@ int run_bench_fit(const BenchFitOptions& o) {
     int covered = 0, failed = 0;
     const auto t0 = std::chrono::steady_clock::now();
     for (int i = 1; i <= n; ++i) {
-      const fit::Observations obs = fit::synthesize(truth, {1e-9, 1e-9, 0.01}, static_cast<std::uint64_t>(i), parse_choice<Law>("law", c.law));
+      const fit::Observations obs = fit::synthesize(truth, {1e-9, 1e-9, 0.01}, static_cast<std::uint64_t>(i), parse_optional_choice<Law>("law", c.law));
       fit::FitOptions fo;
       fo.free = {c.key};
-      fo.law = parse_choice<Law>("law", c.law);
+      fo.law = parse_optional_choice<Law>("law", c.law);  // "": the smooth scene has no law
       const fit::FitResult r = fit::fit_trajectory(start, obs, fo);
       if (!r.converged) ++failed;
       const auto& p = r.parameters[0];
