@@ -187,14 +187,12 @@ bool bench_accuracy(const BenchAccuracyOptions& o, const fs::path& dir, std::ost
     a.series.push_back({h, "5", "(strcol(1) eq 'coulomb' ? $6 : 1/0)", "coulomb", "points pt 7 ps 0.6"});
     a.series.push_back({h, "5", "(strcol(1) eq 'thesis' ? $6 : 1/0)", "thesis", "points pt 6 ps 0.6"});
     a.series.push_back({h, "5", "($5*10)", "true = 10 x estimate", "lines dt 2 lc rgb 'black'"});
-    a.extra = "set key top left\n";
     plot::Panel b;
     b.title = "--accuracy E: RHS evaluations over a plain run at rtol = E";
     b.xlabel = "accuracy asked E";
     b.ylabel = "cost ratio";
     b.logx = true;
     b.series.push_back({dir / "accuracy_cost.csv", "1", "9", "scenes", "points pt 7 ps 0.6"});
-    b.extra = "set key top left\n";
     f.panels = {a, b};
     const fs::path fig = plot::render(f, dir / "accuracy.png");
     md << "![accuracy](" << (ctx ? "accuracy/" : "") << fig.filename().string() << ")\n";

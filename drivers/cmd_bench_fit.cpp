@@ -235,11 +235,9 @@ int run_bench_fit(const BenchFitOptions& o) {
     p.xlabel = "standard normal quantile";
     p.ylabel = "z";
     const fs::path csv = dir / "fit_coverage.csv";
-    std::string extra = "set key inside top left\n";
     for (const auto& c : configs)  // one config's rows: the others undefined (1/0)
       p.series.push_back({csv, "7", "(strcol(1) eq '" + c.name + "' ? $6 : 1/0)", c.name, "points pt 7 ps 0.6"});
     p.series.push_back({csv, "7", "7", "y = x", "lines lw 1 lc rgb 'black'"});
-    p.extra = extra;
     f.panels.push_back(p);
     f.width = 800;
     f.height = 700;

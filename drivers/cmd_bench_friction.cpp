@@ -368,7 +368,7 @@ int bench_friction(const BenchFrictionOptions& o) {
       << " interleaved pairs)' noenhanced\n"
       << "set datafile separator ','\nset style data histograms\nset style histogram clustered gap 1\n"
       << "set style fill solid 0.8 border -1\nset boxwidth 0.9\nset logscale y\nset ylabel 'ns per wrench'\n"
-      << "set grid ytics\nset key left top\nset xtics rotate by -25 noenhanced\n"
+      << "set grid ytics\nset key outside right top\nset xtics rotate by -25 noenhanced\n"
       << "plot '" << csv.string() << "' every ::0::" << work.size() - 1
       << " skip 1 using 4:xtic(1) title 'F77 forms (faithful)' lc rgb '#999999', '' every ::0::"
       << work.size() - 1 << " skip 1 using 5 title 'production forms' lc rgb '#1f77b4'\n";
