@@ -99,12 +99,25 @@ TEST_CASE("scene set: integer and string keys, from text as the command line giv
   CHECK(s.output_times().size() == 11);
 }
 
+TEST_CASE("nearest_scene_key: a typo, a transposition, a bare name; nothing for a far key", "[scene][keys][unit]") {
+  CHECK(nearest_scene_key("surface.muu") == "surface.mu");
+  CHECK(nearest_scene_key("surfcae.mu") == "surface.mu");
+  CHECK(nearest_scene_key("solver.sample") == "solver.samples");
+  CHECK(nearest_scene_key("push.forc") == "push.force");
+  CHECK(nearest_scene_key("samples") == "solver.samples");
+  CHECK(nearest_scene_key("surface.mu") == "surface.mu");
+  CHECK(nearest_scene_key("zzzz.qqqq").empty());
+  CHECK(nearest_scene_key("").empty());
+}
+
 TEST_CASE("scene set: bad keys and values are refused with key, value and range; the scene is unchanged",
           "[scene][keys][errors][unit]") {
   Scene s = load_scene(preset("fig3_18"));
   const double mu0 = s.surface.mu;
   CHECK(error_of([&] { s.set("surface.muu", 0.1); }) ==
-        "surface.muu = 0.1: unknown scene key (`nanopush scene-keys` lists them)");
+        "surface.muu = 0.1: unknown scene key (did you mean surface.mu? `nanopush scene-keys` lists them)");
+  CHECK(error_of([&] { s.set("zzzz.qqqq", 0.1); }) ==
+        "zzzz.qqqq = 0.1: unknown scene key (`nanopush scene-keys` lists them)");
   CHECK(error_of([&] { s.set("surface.mu", -1.0); }) == "surface.mu = -1: must be in [0, 10]");
   CHECK(error_of([&] { s.set("surface.mu", "high"); }).rfind("surface.mu = \"high\": must be a number", 0) == 0);
   CHECK(error_of([&] { s.set("surface.law", "stick"); }) ==
@@ -178,6 +191,8 @@ TEST_CASE("scene key table: a file key outside the table is unknown", "[scene][k
   std::string text = read_text(preset("fig3_6a"));
   text = edit_line(text, "rtol = 1e-12", "rtol = 1e-12\nrtoll = 1e-9");
   CHECK(error_of([&] { (void)parse_scene(text, "x"); }).rfind("solver.rtoll = (present): unknown key", 0) == 0);
+  CHECK(error_of([&] { (void)parse_scene(text, "x"); }).find("did you mean solver.rtol? allowed here: ") !=
+        std::string::npos);
 }
 
 TEST_CASE("docs/scenes.md holds the generated key table", "[scene][keys][docs][unit]") {

@@ -40,9 +40,13 @@ std::string join(const std::vector<std::string>& v) {
 void check_keys(const toml::table& t, const std::string& where, const std::vector<std::string>& allowed) {
   for (auto&& [k, v] : t) {
     const std::string key(k.str());
-    if (std::find(allowed.begin(), allowed.end(), key) == allowed.end())
-      throw InputError(where.empty() ? key : where + "." + key, "(present)",
-                       "unknown key; allowed here: " + join(allowed));
+    if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
+      const std::string full = where.empty() ? key : where + "." + key;
+      const std::string near = nearest_scene_key(full);
+      throw InputError(full, "(present)",
+                       "unknown key; " + (near.empty() ? "" : "did you mean " + near + "? ") +
+                           "allowed here: " + join(allowed));
+    }
   }
 }
 
@@ -569,7 +573,12 @@ namespace {
 
 const SceneKey& known_key(const std::string& key, const std::string& value_text) {
   const SceneKey* k = find_scene_key(key);
-  if (!k) throw InputError(key, value_text, "unknown scene key (`nanopush scene-keys` lists them)");
+  if (!k) {
+    const std::string near = nearest_scene_key(key);
+    throw InputError(key, value_text,
+                     "unknown scene key (" + (near.empty() ? "" : "did you mean " + near + "? ") +
+                         "`nanopush scene-keys` lists them)");
+  }
   return *k;
 }
 

@@ -4,6 +4,7 @@
 
 #include "nanopush/scenes/choices.hpp"
 
+#include <algorithm>
 #include <set>
 #include <sstream>
 
@@ -200,6 +201,42 @@ std::string scene_keys_markdown() {
     o << "| `" << k.key << "` | " << key_type_name(k.type) << " | " << (k.unit.empty() ? "" : k.unit) << " | "
       << k.default_text << " | " << k.range << " | " << k.kinds << " | " << k.description << " |\n";
   return o.str();
+}
+
+namespace {
+
+/// Optimal string alignment distance: insertions, deletions, substitutions and transpositions
+/// of neighbours, each 1.
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<std::vector<std::size_t>> d(a.size() + 1, std::vector<std::size_t>(b.size() + 1));
+  for (std::size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+  for (std::size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i)
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t cost = a[i - 1] == b[j - 1] ? 0 : 1;
+      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + cost});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+    }
+  return d[a.size()][b.size()];
+}
+
+}  // namespace
+
+std::string nearest_scene_key(std::string_view key) {
+  if (key.empty() || key.size() > 200) return {};
+  const bool bare = key.find('.') == std::string_view::npos;
+  const std::size_t limit = std::max<std::size_t>(1, std::min<std::size_t>(3, key.size() / 4));
+  std::string best;
+  std::size_t best_d = limit + 1;
+  for (const auto& k : scene_keys()) {
+    std::size_t d = edit_distance(key, k.key);
+    if (bare) d = std::min(d, edit_distance(key, k.key.substr(k.key.rfind('.') + 1)));
+    if (d < best_d) {
+      best_d = d;
+      best = std::string(k.key);
+    }
+  }
+  return best;
 }
 
 }  // namespace nanopush

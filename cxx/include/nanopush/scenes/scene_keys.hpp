@@ -27,6 +27,10 @@ struct SceneKey {
 const std::vector<SceneKey>& scene_keys();
 /// The entry of a dotted key, or nullptr.
 const SceneKey* find_scene_key(std::string_view key);
+/// The key nearest to a mistyped one (edit distance with transpositions, at most about a
+/// quarter of its length; a bare name such as "mu" also matches a key's last part), for
+/// "did you mean surface.mu?"; "" when none is close.
+std::string nearest_scene_key(std::string_view key);
 /// Keys directly under a table ("object" -> length, width, ...), for the parser's unknown-key
 /// check ("" = the top-level tables).
 std::vector<std::string> scene_table_keys(std::string_view table);
