@@ -191,6 +191,7 @@ std::string extended_precision_obstacle(bool rough, Law law, Engine engine, Meth
 }
 
 std::vector<double> Scene::output_times() const {
+  if (!times.empty()) return times;
   std::vector<double> t(static_cast<std::size_t>(solver.samples));
   const int n = solver.samples;
   for (int i = 0; i < n; ++i) t[static_cast<std::size_t>(i)] = solver.t_end * i / (n - 1);

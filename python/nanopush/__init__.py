@@ -35,27 +35,38 @@ from ._nanopush import (  # noqa: F401  (re-exported)
     InputError,
     MuBatch,
     MuEstimate,
+    MuEstimates,
     Result,
     Scene,
     SolverError,
     Wrench,
     __version__,
-    estimate_mu,
-    estimate_mu_batch,
-    fit,
-    friction_from_velocity,
-    friction_wrench,
-    scene_keys,
-    synthesize,
 )
 from . import _nanopush
+from . import _fitting
+from . import _scenes
+from . import _signatures
 from . import icor  # noqa: F401
+
+# Every compiled callable with a signature inspect.signature reads (help(), IDEs).
+estimate_mu = _signatures.function(_nanopush.estimate_mu)
+estimate_mu_batch = _signatures.function(_nanopush.estimate_mu_batch)
+friction_from_velocity = _signatures.function(_nanopush.friction_from_velocity)
+friction_wrench = _signatures.function(_nanopush.friction_wrench)
+scene_keys = _signatures.function(_nanopush.scene_keys)
+synthesize = _signatures.function(_nanopush.synthesize)
+for _cls in (FitResult, MuBatch, MuEstimate, MuEstimates, Result, Scene, Wrench):
+    _signatures.methods(_cls)
+FitResult.report = _fitting.report
+FitResult.plot = _fitting.plot
+
+_scenes.keep_description_true(Scene)
 
 __all__ = [
     "Scene", "presets", "scenes_dir", "scene_keys", "run", "compare", "Result", "Comparison",
     "friction_wrench", "friction_from_velocity", "Wrench", "icor", "estimate_mu", "MuEstimate",
-    "estimate_mu_batch", "MuBatch", "fit", "FitResult", "synthesize",
-    "sweep", "SweepResult", "InputError", "SolverError", "__version__",
+    "MuEstimates", "estimate_mu_batch", "MuBatch", "fit", "FitResult", "synthesize",
+    "sweep", "SweepResult", "SweepFile", "InputError", "SolverError", "__version__",
 ]
 
 # ---- presets ----------------------------------------------------------------------------
@@ -131,7 +142,7 @@ def _as_scene(scene):
 
 
 def run(scene, engine=None, method=None, law=None, rtol=None, atol=None, precision=None, accuracy=None,
-        error_estimate=None):
+        error_estimate=None, t_eval=None):
     """Integrate a scene and return its trajectory (a nanopush.Result).
 
     scene      a nanopush.Scene, a preset name (``"fig3_6a"``) or a scene file
@@ -155,16 +166,58 @@ def run(scene, engine=None, method=None, law=None, rtol=None, atol=None, precisi
                with .outcome "accuracy_not_reached" and .partial the best answer
     error_estimate  estimate the global error (a companion run at rtol/100, in
                ``result.error``); default: the scene's solver.error_estimate (true)
+    t_eval     the output times [s] (as solve_ivp's): strictly increasing, within [0,
+               solver.t_end]; the integration runs from 0 to the last of them, stopping at
+               each; default: the scene's solver.samples times over [0, solver.t_end]
 
     The result has NumPy arrays t, x, y, theta, vx, vy, omega, fx, fy, mf (SI, world axes),
     the counts nfcn, steps, rejected, the error estimate ``error`` (a dict; ``error_estimate``
-    its norm), ``outcome`` (ok or at_rest), and to_dict() / to_csv(path). The same numbers, bit
+    its norm), ``outcome`` (ok or at_rest), and to_dict() / to_csv(path); solve_ivp's names:
+    ``states`` (6 x n: x, y, theta, vx, vy, omega; solve_ivp's ``y``), ``success``,
+    ``status`` (0 or -1), ``message``, ``nfev``. The same numbers, bit
     for bit, as ``nanopush run SCENE --engine ... --method ...``. The GIL is released while
     the engine runs. Raises nanopush.InputError (a ValueError) for bad settings and
     nanopush.SolverError when the integrator gives up (with .status and .partial).
     """
     return _nanopush._run(_as_scene(scene), engine or "", method or "", law or "", rtol, atol, precision or "",
-                          accuracy, error_estimate)
+                          accuracy, error_estimate, t_eval)
+
+
+# ---- fit --------------------------------------------------------------------------------
+
+
+def fit(scene, data, free, *, law=None, sigma=None, gradients="auto", rtol=1e-10, max_evaluations=100,
+        accuracy=-1.0):
+    """Fit scene keys to observed motion (``nanopush fit``; docs/fitting.md).
+
+    scene        a nanopush.Scene, a preset name or a scene file: the model and the starting
+                 values (not changed)
+    data         the observations: a CSV file's path, or columns as a dict of arrays, a NumPy
+                 structured array or a pandas DataFrame: t [s] and any of x, y [m], theta
+                 [rad], with sigma_x, sigma_y, sigma_theta (or ``sigma``); the same checks
+                 and messages (row and column named) whichever form
+    free         a scene key ("surface.mu") or a list of keys
+    law          rough scenes: 'thesis' or 'coulomb' (default: the scene's)
+    sigma        dict column -> standard deviation for columns without a sigma column
+    gradients    'auto' | 'sensitivities' | 'differences'; rtol of the forward solves;
+    max_evaluations of Levenberg-Marquardt
+    accuracy     > 0: the error asked for of the model's poses at the observation times, in
+                 [1e-14, 0.1] (docs/accuracy.md): the forward solves' rtol is chosen to reach
+                 it (rtol is then ignored) and checked at the estimate; 0 = none; default:
+                 the scene's solver.accuracy
+
+    Returns a FitResult: ``x``, ``stderr``, ``covariance``, ``correlation`` (in the order of
+    ``names``), ``success``, ``nfev``, ``report()`` (lmfit's layout), ``plot()`` (data, fit
+    and residual panels), and the library's fields (parameters, chi2_dof, ...). A fit that
+    does not converge says so (success False), it does not raise. Bad data or keys raise
+    nanopush.InputError naming the row and column or the key.
+    """
+    if isinstance(data, (str, _os.PathLike)):
+        arg, text = data, False
+    else:
+        arg, text = _fitting.observations_csv(data), True
+    return _nanopush._fit(_as_scene(scene), arg, free, law=law or "", sigma=sigma, gradients=gradients, rtol=rtol,
+                          max_evaluations=max_evaluations, accuracy=accuracy, text=text)
 
 
 class Comparison:
@@ -178,6 +231,14 @@ class Comparison:
     1e-14), scale (largest norm of the column's vector), ok (diff_tight <= error_cxx +
     error_f77 + 1e-13), all relative to scale; tolerance is None. docs/rough.md. The verdict
     is the library's (the same function as ``nanopush compare``)."""
+
+    cxx: "Result"
+    f77: "Result"
+    columns: dict
+    tolerance: "float | None"
+    kind: str
+    law: str
+    agree: bool
 
     def __init__(self, verdict):
         self.cxx, self.f77 = verdict["cxx"], verdict["f77"]
@@ -217,7 +278,11 @@ class SweepResult:
     name (``result["fx"]``: float arrays, NaN where a cell is missing; integer columns as
     int64 when complete; text columns as str arrays), ``columns`` (names, in order),
     ``units``, ``status`` and ``message`` per point, ``ok`` (a boolean mask: status ok or
-    at_rest, the answers), ``failed`` (the number of other points) and to_dict()."""
+    at_rest, the answers), ``failed`` (the number of other points), to_dict(), to_pandas() and
+    to_xarray()."""
+
+    columns: list
+    units: dict
 
     def __init__(self, names, units, data):
         self.columns, self.units, self._data = list(names), dict(units), data
@@ -251,17 +316,56 @@ class SweepResult:
         """The columns as a dict of arrays, in order (pandas.DataFrame(result.to_dict()))."""
         return {k: self._data[k] for k in self.columns}
 
+    def to_pandas(self):
+        """The table as a pandas.DataFrame, one row per point, columns in order (pandas is
+        imported here: an optional dependency)."""
+        import pandas
+
+        return pandas.DataFrame(self.to_dict())
+
+    def to_xarray(self):
+        """The table as an xarray.Dataset over the dimension ``point``, each column a variable
+        with its ``units`` attribute (xarray is imported here: an optional dependency)."""
+        import xarray
+
+        return xarray.Dataset({k: ("point", self._data[k], {"units": self.units.get(k, "")})
+                               for k in self.columns if k != "point"},
+                              coords={"point": self._data["point"]})
+
     def __repr__(self):
         return f"<nanopush.SweepResult {len(self)} points, {self.failed} failed, columns {self.columns}>"
+
+
+class SweepFile:
+    """What a sweep streamed to a file (``sweep(..., out=PATH)``) did: ``path`` (the CSV
+    table, its Table Schema sidecar beside it, NAME.schema.json), ``points``, ``done``, ``resumed`` (rows
+    taken from the journal of an interrupted run), ``failed`` (rows whose status is not an
+    answer) and ``complete``. Read the table with ``pandas.read_csv(result.path)``."""
+
+    path: "_pathlib.Path"
+    points: int
+    done: int
+    resumed: int
+    failed: int
+    complete: bool
+
+    def __init__(self, summary):
+        self.path = _pathlib.Path(summary["path"])
+        self.points, self.done, self.resumed = summary["points"], summary["done"], summary["resumed"]
+        self.failed, self.complete = summary["failed"], summary["complete"]
+
+    def __repr__(self):
+        return (f"<nanopush.SweepFile {str(self.path)!r}: {self.done} of {self.points} points "
+                f"({self.resumed} resumed), {self.failed} failed>")
 
 
 _TASKS = ("friction", "icor", "estimate-mu")
 
 
 def sweep(task, vary=None, *, vary_log=None, points=None, set=None, jobs=0, engine=None, method=None, law=None,
-          accuracy=None, error_estimate=None, check=False):
+          accuracy=None, error_estimate=None, check=False, progress=None, out=None):
     """Evaluate a task at every point of a plan on C++ threads (the GIL released) and return
-    the table as a SweepResult (the rows of ``nanopush sweep``, without files).
+    the table as a SweepResult (the rows of ``nanopush sweep``), or stream it to a file.
 
     task      a nanopush.Scene, a preset name or a scene file: the ``run`` task (the final
               pose, distance, rotation, iCOR, stick time, peak friction, work, counts of
@@ -277,6 +381,15 @@ def sweep(task, vary=None, *, vary_log=None, points=None, set=None, jobs=0, engi
     check     raise nanopush.SolverError if any point failed, with .status the first failed
               point's and .partial the whole table (default: keep the status and message
               of each point in the table)
+    progress  a callable progress(done, total), called about twice a second and at the end
+              (from the calling thread); an exception it raises stops the sweep
+    out       a path: the table goes to that CSV file (and its sidecar) as ``nanopush sweep
+              --out`` writes it, with a journal beside it (PATH.journal), instead of into
+              memory; returns a SweepFile. Run again with the same arguments to resume an
+              interrupted sweep from its journal
+
+    Ctrl-C (KeyboardInterrupt) stops a sweep within about a second: points in flight finish,
+    no new point starts; with ``out`` the journal keeps every finished row.
 
     Keys and units per task: docs/sweeps.md. Bad keys or values raise nanopush.InputError
     before any point runs.
@@ -290,8 +403,15 @@ def sweep(task, vary=None, *, vary_log=None, points=None, set=None, jobs=0, engi
         scene, name = _as_scene(task), "run"
     axes = [(k, v, False) for k, v in (vary or {}).items()]
     axes += [(k, v, True) for k, v in (vary_log or {}).items()]
+    if out is not None:
+        if check:
+            raise _input_error("check = True: give it without out (read the failed rows from the file)", "check")
+        out = _os.fspath(out)
     names, units, data = _nanopush._sweep(name, scene, axes, points, dict(set or {}), _count("jobs", jobs),
-                                         engine or "", method or "", law or "", accuracy, error_estimate)
+                                         engine or "", method or "", law or "", accuracy, error_estimate,
+                                         progress, out)
+    if out is not None:
+        return SweepFile(data)
     res = SweepResult(names, units, data)
     if check and res.failed:
         bad = [i for i, ok in enumerate(res.ok) if not ok]

@@ -22,6 +22,7 @@ The same numbers, bit for bit, as ``nanopush icor formulas`` and ``nanopush icor
 """
 
 from ._nanopush import icor as _icor
+from . import _signatures
 
 Rod = _icor.Rod
 nanorod = _icor.nanorod
@@ -52,5 +53,12 @@ rectangle = _icor.rectangle
 dynamic = _icor.dynamic
 error_analysis = _icor.error_analysis
 thesis_table_5_1 = _icor.thesis_table_5_1
+
+# Signatures inspect.signature reads (the compiled functions carry theirs in the docstring).
+for _name, _f in list(globals().items()):
+    if not _name.startswith("_") and type(_f).__name__ == "builtin_function_or_method":
+        globals()[_name] = _signatures.function(_f, _name)
+for _cls in (Rod, CubicSolution, QuasiStaticIcor):
+    _signatures.methods(_cls)
 
 __all__ = [n for n in dir() if not n.startswith("_")]

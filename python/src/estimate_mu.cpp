@@ -16,23 +16,62 @@ struct Estimate {
   std::string basis;  ///< force (yn given) | icor (R given)
 };
 
-Estimate estimate(double force, double sigma_force, const py::object& yn, double sigma_yn, const py::object& R,
-                  double sigma_R, double sigma_L, double sigma_H, const py::object& rod_obj) {
+/// estimate_mu over arrays: mu, sigma, load and the four derivatives (F, yn or R, L, H) at
+/// every element of the inputs broadcast together (Python: MuEstimates).
+struct Estimates {
+  std::string basis;
+  py::object mu, sigma, load;
+  py::dict derivatives, contributions;
+};
+
+py::object estimate(const py::object& force, const py::object& sigma_force, const py::object& yn,
+                    const py::object& sigma_yn, const py::object& R, const py::object& sigma_R,
+                    const py::object& sigma_L, const py::object& sigma_H, const py::object& rod_obj) {
   if (!rod_obj.is_none() && !py::isinstance<icor::Rod>(rod_obj))
     throw InputError("rod", py::repr(rod_obj).cast<std::string>(), "must be a nanopush.Rod (or None: the thesis' nanorod)");
   const icor::Rod rod = rod_obj.is_none() ? icor::nanorod() : rod_obj.cast<icor::Rod>();
   if (yn.is_none() == R.is_none())
     throw InputError("yn/R", yn.is_none() ? "neither given" : "both given",
                      "give exactly one: yn (push point, Fig 4.4) or R (observed iCOR distance, Fig 4.5)");
-  Estimate out;
-  if (!yn.is_none()) {
-    out.basis = "force";
-    out.e = icor::estimate_mu_from_force(rod, {force, sigma_force}, {arg_double(yn, "yn"), sigma_yn}, sigma_L, sigma_H);
-  } else {
-    out.basis = "icor";
-    out.e = icor::estimate_mu_from_icor(rod, {force, sigma_force}, {arg_double(R, "R"), sigma_R}, sigma_L, sigma_H);
+  const bool by_force = !yn.is_none();
+  const char* pos = by_force ? "yn" : "R";
+  const py::object& p = by_force ? yn : R;
+  const py::object& sp = by_force ? sigma_yn : sigma_R;
+  const std::string sp_name = by_force ? "sigma_yn" : "sigma_R";
+  auto one = [&](const double* x) {
+    return by_force ? icor::estimate_mu_from_force(rod, {x[0], x[1]}, {x[2], x[3]}, x[4], x[5])
+                    : icor::estimate_mu_from_icor(rod, {x[0], x[1]}, {x[2], x[3]}, x[4], x[5]);
+  };
+  auto r = broadcast_apply<6, 7>({force, sigma_force, p, sp, sigma_L, sigma_H},
+                                 {"force", "sigma_force", pos, sp_name.c_str(), "sigma_L", "sigma_H"},
+                                 [&](const double* x, double* y) {
+                                   const icor::MuEstimate e = one(x);
+                                   y[0] = e.mu;
+                                   y[1] = e.sigma;
+                                   y[2] = e.load;
+                                   for (std::size_t k = 0; k < 4; ++k) y[3 + k] = e.contributions[k].derivative;
+                                 });
+  if (r[0].ndim() == 0) {  // every input one number: the MuEstimate with its budget
+    Estimate out;
+    out.basis = by_force ? "force" : "icor";
+    const double x[6] = {arg_double(force, "force"), arg_double(sigma_force, "sigma_force"), arg_double(p, pos),
+                         arg_double(sp, sp_name), arg_double(sigma_L, "sigma_L"), arg_double(sigma_H, "sigma_H")};
+    out.e = one(x);
+    return py::cast(std::move(out));
   }
-  return out;
+  Estimates out;
+  out.basis = by_force ? "force" : "icor";
+  out.mu = r[0];
+  out.sigma = r[1];
+  out.load = r[2];
+  const char* inputs[4] = {"F", pos, "L", "H"};
+  const py::object sig[4] = {sigma_force, sp, sigma_L, sigma_H};
+  const py::module_ np = py::module_::import("numpy");
+  for (std::size_t k = 0; k < 4; ++k) {
+    out.derivatives[inputs[k]] = r[3 + k];
+    out.contributions[inputs[k]] = np.attr("abs")(r[3 + k]) * np.attr("asarray")(sig[k], py::arg("dtype") = "float64");
+  }
+  return py::cast(std::move(out));
 }
 
 }  // namespace
@@ -75,6 +114,21 @@ input (F, yn or R, L, H) with value, sigma (SI), derivative d mu/d input and con
         return "<MuEstimate mu=" + fmt(e.e.mu) + " +- " + fmt(e.e.sigma) + " (" + e.basis + ")>";
       });
 
+  py::class_<Estimates>(m, "MuEstimates", R"doc(Friction coefficients from arrays of measurements (estimate_mu with array input):
+mu, sigma, load: float arrays of the inputs' broadcast shape; basis ('force' or 'icor');
+derivatives and contributions: dicts input (F, yn or R, L, H) -> array of d mu/d input and of
+|d mu/d input| sigma. Element i is estimate_mu at element i of the inputs.)doc")
+      .def_readonly("basis", &Estimates::basis)
+      .def_readonly("mu", &Estimates::mu)
+      .def_readonly("sigma", &Estimates::sigma)
+      .def_readonly("load", &Estimates::load)
+      .def_readonly("derivatives", &Estimates::derivatives)
+      .def_readonly("contributions", &Estimates::contributions)
+      .def("__len__", [](const Estimates& e) { return py::len(e.mu); })
+      .def("__repr__", [](const Estimates& e) {
+        return "<MuEstimates " + py::str(e.mu.attr("shape")).cast<std::string>() + " (" + e.basis + ")>";
+      });
+
   m.def("estimate_mu", &estimate, py::arg("force"), py::arg("sigma_force") = 0.0, py::kw_only(),
         py::arg("yn") = py::none(), py::arg("sigma_yn") = 0.0, py::arg("R") = py::none(), py::arg("sigma_R") = 0.0,
         py::arg("sigma_L") = 0.0, py::arg("sigma_H") = 0.0, py::arg("rod") = py::none(),
@@ -89,7 +143,9 @@ sigma_L      uncertainty of the rod length [m]; sigma_H of the Hamaker constant 
 rod          nanopush.icor.Rod (default: the thesis nanorod)
 
 Returns a MuEstimate (mu, sigma, load, contributions, derivatives): the numbers of
-`nanopush icor estimate-mu`.)doc");
+`nanopush icor estimate-mu`. Arrays (any of force, the sigmas, yn or R) broadcast as NumPy
+does, like the icor functions: then a MuEstimates of arrays (mu, sigma, load, derivatives,
+contributions); InputError.index names the element at fault.)doc");
 }
 
 }  // namespace nanopush::python

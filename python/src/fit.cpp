@@ -34,9 +34,45 @@ std::vector<std::string> keys_of(const py::object& free) {
   return out;
 }
 
-fit::FitResult fit_scene(const Scene& scene, const py::object& data, const py::object& free, const std::string& law,
-                         const py::object& sigma, const std::string& gradients, double rtol, int max_evaluations,
-                         double accuracy) {
+/// A fit and the observations it was fitted to (FitResult.observed, .sigma, plot()).
+struct PyFit {
+  fit::FitResult r;
+  fit::Observations obs;
+};
+
+/// obs columns as an (n, 3) array: x, y, theta, NaN where a column was not observed.
+py::array_t<double> obs_matrix(const fit::Observations& o, bool sigma) {
+  const auto n = static_cast<py::ssize_t>(o.t.size());
+  py::array_t<double> a({n, static_cast<py::ssize_t>(3)});
+  auto m = a.mutable_unchecked<2>();
+  for (py::ssize_t i = 0; i < n; ++i)
+    for (std::size_t c = 0; c < 3; ++c) {
+      const auto& v = sigma ? o.sigma[c] : o.value[c];
+      m(i, static_cast<py::ssize_t>(c)) = o.has[c] ? v[static_cast<std::size_t>(i)] : std::nan("");
+    }
+  return a;
+}
+
+/// The estimates' covariance: correlation[i][j] stderr[i] stderr[j] (NaN where undetermined).
+py::array_t<double> covariance(const fit::FitResult& r) {
+  const auto n = static_cast<py::ssize_t>(r.parameters.size());
+  py::array_t<double> a({n, n});
+  auto m = a.mutable_unchecked<2>();
+  for (py::ssize_t i = 0; i < n; ++i)
+    for (py::ssize_t j = 0; j < n; ++j) {
+      const auto iu = static_cast<std::size_t>(i), ju = static_cast<std::size_t>(j);
+      const double rho = iu < r.correlation.size() && ju < r.correlation[iu].size() ? r.correlation[iu][ju]
+                                                                                      : std::nan("");
+      m(i, j) = rho * r.parameters[iu].stderr_ * r.parameters[ju].stderr_;
+    }
+  return a;
+}
+
+/// `data` is a path (str or path-like), or CSV text when `text` is true (the Python package
+/// writes a dict, a structured array or a DataFrame as CSV, shortest round-trip numbers).
+PyFit fit_scene(const Scene& scene, const py::object& data, const py::object& free, const std::string& law,
+                const py::object& sigma, const std::string& gradients, double rtol, int max_evaluations,
+                double accuracy, bool text) {
   fit::FitOptions o;
   o.accuracy = accuracy;
   o.free = keys_of(free);
@@ -45,10 +81,12 @@ fit::FitResult fit_scene(const Scene& scene, const py::object& data, const py::o
   o.rtol = rtol;
   o.max_evaluations = max_evaluations;
   const auto overrides = sigma_of(sigma);
-  const std::string path = arg_text(data, "data");
+  const std::string arg = arg_text(data, "data");
   py::gil_scoped_release release;
-  const fit::Observations obs = fit::read_observations(path, overrides);
-  return fit::fit_trajectory(scene, obs, o);
+  PyFit out;
+  out.obs = text ? fit::parse_observations(arg, "data", overrides) : fit::read_observations(arg, overrides);
+  out.r = fit::fit_trajectory(scene, out.obs, o);
+  return out;
 }
 
 py::array_t<double> matrix(const std::vector<std::array<double, 3>>& rows) {
@@ -62,7 +100,7 @@ py::array_t<double> matrix(const std::vector<std::array<double, 3>>& rows) {
 }  // namespace
 
 void register_fit(py::module_& m) {
-  py::class_<fit::FitResult>(m, "FitResult", R"doc(A trajectory fit (nanopush.fit; docs/fitting.md).
+  py::class_<PyFit>(m, "FitResult", R"doc(A trajectory fit (nanopush.fit; docs/fitting.md).
 
 parameters   dict key -> {'value', 'stderr' (NaN when the data do not determine the key
              separately, or not converged), 'start', 'lower', 'upper', 'at_bound', 'unit'}
@@ -72,11 +110,14 @@ accuracy     with fit(accuracy=E): dict requested, rtol_used, estimate, reached;
 identifiable, identifiability_message, determined (list of (name, value, stderr_relative))
 t, fitted    observation times [s] and the model's pose (x, y, theta) there, NumPy (n, 3)
 residuals    (observed - model) / sigma, NumPy (n, 3), NaN where not observed
-json         the JSON summary of `nanopush fit --json`)doc")
+json         the JSON summary of `nanopush fit --json`
+SciPy/lmfit names: names, x, stderr, covariance, success (= converged), nfev
+             (= n_forward_solves), message (= status), ndata, initial; observed and sigma
+             (n, 3) the data fitted; report() and plot() (nanopush.fit's docs))doc")
       .def_property_readonly("parameters",
-                             [](const fit::FitResult& r) {
+                             [](const PyFit& f) {
                                py::dict d;
-                               for (const auto& p : r.parameters) {
+                               for (const auto& p : f.r.parameters) {
                                  py::dict e;
                                  e["value"] = p.value;
                                  e["stderr"] = p.stderr_;
@@ -90,62 +131,107 @@ json         the JSON summary of `nanopush fit --json`)doc")
                                return d;
                              })
       .def_property_readonly("correlation",
-                             [](const fit::FitResult& r) {
-                               const auto n = static_cast<py::ssize_t>(r.correlation.size());
+                             [](const PyFit& f) {
+                               const auto n = static_cast<py::ssize_t>(f.r.correlation.size());
                                py::array_t<double> a({n, n});
                                auto cells = a.mutable_unchecked<2>();
                                for (py::ssize_t i = 0; i < n; ++i)
                                  for (py::ssize_t j = 0; j < n; ++j)
-                                   cells(i, j) = r.correlation[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)];
+                                   cells(i, j) = f.r.correlation[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)];
                                return a;
                              })
-      .def_readonly("chi2", &fit::FitResult::chi2)
-      .def_readonly("chi2_dof", &fit::FitResult::chi2_dof)
-      .def_readonly("dof", &fit::FitResult::dof)
-      .def_readonly("converged", &fit::FitResult::converged)
-      .def_readonly("status", &fit::FitResult::status)
-      .def_readonly("iterations", &fit::FitResult::iterations)
-      .def_readonly("n_forward_solves", &fit::FitResult::n_forward_solves)
-      .def_readonly("gradients", &fit::FitResult::gradients)
-      .def_readonly("law", &fit::FitResult::law)
+      .def_property_readonly("chi2", [](const PyFit& f) { return f.r.chi2; })
+      .def_property_readonly("chi2_dof", [](const PyFit& f) { return f.r.chi2_dof; })
+      .def_property_readonly("dof", [](const PyFit& f) { return f.r.dof; })
+      .def_property_readonly("converged", [](const PyFit& f) { return f.r.converged; })
+      .def_property_readonly("status", [](const PyFit& f) { return f.r.status; })
+      .def_property_readonly("iterations", [](const PyFit& f) { return f.r.iterations; })
+      .def_property_readonly("n_forward_solves", [](const PyFit& f) { return f.r.n_forward_solves; })
+      .def_property_readonly("gradients", [](const PyFit& f) { return f.r.gradients; })
+      .def_property_readonly("law", [](const PyFit& f) { return f.r.law; })
       .def_property_readonly("accuracy",
-                             [](const fit::FitResult& r) -> py::object {
-                               if (r.accuracy.requested <= 0) return py::none();
+                             [](const PyFit& f) -> py::object {
+                               if (f.r.accuracy.requested <= 0) return py::none();
                                py::dict d;
-                               d["requested"] = r.accuracy.requested;
-                               d["rtol_used"] = r.accuracy.rtol_used;
-                               d["estimate"] = r.accuracy.estimate;
-                               d["reached"] = r.accuracy.reached;
+                               d["requested"] = f.r.accuracy.requested;
+                               d["rtol_used"] = f.r.accuracy.rtol_used;
+                               d["estimate"] = f.r.accuracy.estimate;
+                               d["reached"] = f.r.accuracy.reached;
                                return d;
                              })
-      .def_property_readonly("identifiable", [](const fit::FitResult& r) { return r.identifiability.identifiable; })
+      .def_property_readonly("identifiable", [](const PyFit& f) { return f.r.identifiability.identifiable; })
       .def_property_readonly("identifiability_message",
-                             [](const fit::FitResult& r) { return r.identifiability.message; })
+                             [](const PyFit& f) { return f.r.identifiability.message; })
       .def_property_readonly("determined",
-                             [](const fit::FitResult& r) {
+                             [](const PyFit& f) {
                                py::list l;
-                               for (const auto& c : r.identifiability.determined)
+                               for (const auto& c : f.r.identifiability.determined)
                                  l.append(py::make_tuple(c.name, c.value, c.stderr_relative));
                                return l;
                              })
       .def_property_readonly("t",
-                             [](const fit::FitResult& r) {
-                               py::array_t<double> a(static_cast<py::ssize_t>(r.t.size()));
-                               std::copy(r.t.begin(), r.t.end(), a.mutable_data());
+                             [](const PyFit& f) {
+                               py::array_t<double> a(static_cast<py::ssize_t>(f.r.t.size()));
+                               std::copy(f.r.t.begin(), f.r.t.end(), a.mutable_data());
                                return a;
                              })
-      .def_property_readonly("fitted", [](const fit::FitResult& r) { return matrix(r.fitted); })
-      .def_property_readonly("residuals", [](const fit::FitResult& r) { return matrix(r.residuals); })
-      .def_property_readonly("json", [](const fit::FitResult& r) { return fit::fit_json(r); })
-      .def("__repr__", [](const fit::FitResult& r) {
+      .def_property_readonly("fitted", [](const PyFit& f) { return matrix(f.r.fitted); })
+      .def_property_readonly("residuals", [](const PyFit& f) { return matrix(f.r.residuals); })
+      .def_property_readonly("json", [](const PyFit& f) { return fit::fit_json(f.r); })
+      .def_property_readonly("names",
+                             [](const PyFit& f) {
+                               std::vector<std::string> v;
+                               for (const auto& p : f.r.parameters) v.push_back(p.key);
+                               return v;
+                             },
+                             "The free keys, in the order of x, stderr, covariance and correlation.")
+      .def_property_readonly("x",
+                             [](const PyFit& f) {
+                               py::array_t<double> a(static_cast<py::ssize_t>(f.r.parameters.size()));
+                               for (std::size_t i = 0; i < f.r.parameters.size(); ++i)
+                                 a.mutable_at(static_cast<py::ssize_t>(i)) = f.r.parameters[i].value;
+                               return a;
+                             },
+                             "The estimates, in the order of names (SciPy's x).")
+      .def_property_readonly("stderr",
+                             [](const PyFit& f) {
+                               py::array_t<double> a(static_cast<py::ssize_t>(f.r.parameters.size()));
+                               for (std::size_t i = 0; i < f.r.parameters.size(); ++i)
+                                 a.mutable_at(static_cast<py::ssize_t>(i)) = f.r.parameters[i].stderr_;
+                               return a;
+                             },
+                             "Standard errors of x (NaN where the data do not determine a key).")
+      .def_property_readonly("covariance", [](const PyFit& f) { return covariance(f.r); },
+                             "Covariance of x: correlation[i, j] stderr[i] stderr[j] (k x k).")
+      .def_property_readonly("success", [](const PyFit& f) { return f.r.converged; },
+                             "True when the fit converged (= converged).")
+      .def_property_readonly("nfev", [](const PyFit& f) { return f.r.n_forward_solves; },
+                             "Forward solves of the model (= n_forward_solves).")
+      .def_property_readonly("message", [](const PyFit& f) { return f.r.status; },
+                             "The optimiser's words (= status).")
+      .def_property_readonly("ndata", [](const PyFit& f) { return f.obs.count(); },
+                             "Observed values (data points) fitted.")
+      .def_property_readonly("observed", [](const PyFit& f) { return obs_matrix(f.obs, false); },
+                             "The observations at t, (n, 3): x, y [m], theta [rad]; NaN where not observed.")
+      .def_property_readonly("sigma", [](const PyFit& f) { return obs_matrix(f.obs, true); },
+                             "Standard deviations of the observations, (n, 3); NaN where not observed.")
+      .def_property_readonly("initial",
+                             [](const PyFit& f) {
+                               py::array_t<double> a(static_cast<py::ssize_t>(f.r.parameters.size()));
+                               for (std::size_t i = 0; i < f.r.parameters.size(); ++i)
+                                 a.mutable_at(static_cast<py::ssize_t>(i)) = f.r.parameters[i].start;
+                               return a;
+                             },
+                             "The starting values, in the order of names.")
+      .def("__repr__", [](const PyFit& f) {
         std::string s = "<FitResult";
-        for (const auto& p : r.parameters) s += " " + p.key + "=" + fmt(p.value) + " +- " + fmt(p.stderr_);
-        return s + ", chi2/dof=" + fmt(r.chi2_dof) + (r.converged ? "" : ", NOT converged") + ">";
+        for (const auto& p : f.r.parameters) s += " " + p.key + "=" + fmt(p.value) + " +- " + fmt(p.stderr_);
+        return s + ", chi2/dof=" + fmt(f.r.chi2_dof) + (f.r.converged ? "" : ", NOT converged") + ">";
       });
 
-  m.def("fit", &fit_scene, py::arg("scene"), py::arg("data"), py::arg("free"), py::kw_only(), py::arg("law") = "",
+  m.def("_fit", &fit_scene, py::arg("scene"), py::arg("data"), py::arg("free"), py::kw_only(), py::arg("law") = "",
         py::arg("sigma") = py::none(), py::arg("gradients") = "auto", py::arg("rtol") = 1e-10,
-        py::arg("max_evaluations") = 100, py::arg("accuracy") = -1.0,
+        py::arg("max_evaluations") = 100, py::arg("accuracy") = -1.0, py::arg("text") = false,
         R"doc(Fit scene keys to observed motion (`nanopush fit`; docs/fitting.md).
 
 scene        nanopush.Scene: the model and the starting values (not changed)

@@ -181,5 +181,15 @@ PYBIND11_MODULE(_nanopush, m) {
   register_fit_icor(m);
   register_fit(m);
   register_sweep(m);
+  m.def(
+      "_write_file",
+      [](const std::string& path, const py::bytes& data) {
+        std::string bytes = data;
+        py::gil_scoped_release release;
+        nanopush::write_file_atomic(path, bytes);
+      },
+      py::arg("path"), py::arg("data"),
+      "Write bytes to path as every output is written (a temporary name renamed when complete; a device "
+      "written through; docs/errors.md).");
   m.attr("__version__") = NANOPUSH_VERSION;
 }

@@ -88,9 +88,45 @@ py::dict error_dict(const ErrorEstimate& e) {
   return d;
 }
 
+/// t_eval (solve_ivp's): the output times, strictly increasing, within [0, solver.t_end].
+/// Sets `scene.times`, with 0 first (the integration starts there); returns whether that 0 was
+/// added (its row is then dropped from the answer).
+bool set_output_times(Scene& scene, const py::object& t_eval) {
+  const DArray a = as_double_array(t_eval, "t_eval");
+  if (a.ndim() != 1 || a.size() == 0)
+    throw InputError("t_eval", "an array of shape " + py::str(py::tuple(py::cast(std::vector<py::ssize_t>(
+                                                          a.shape(), a.shape() + a.ndim())))).cast<std::string>(),
+                     "must be a 1-d sequence of one or more times [s]");
+  const double tend = scene.solver.t_end;
+  std::vector<double> t;
+  t.reserve(static_cast<std::size_t>(a.size()) + 1);
+  for (py::ssize_t i = 0; i < a.size(); ++i) {
+    const double v = a.at(i);
+    const std::string field = "t_eval[" + std::to_string(i) + "]";
+    require_finite(field, v);
+    require_range(field, v, 0.0, tend, "s; within [0, solver.t_end]");
+    if (i > 0 && !(v > t.back())) throw InputError(field, fmt(v), "must be greater than the time before it (" + fmt(t.back()) + " s): t_eval strictly increasing");
+    t.push_back(v);
+  }
+  const bool added = t.front() != 0.0;
+  if (added) t.insert(t.begin(), 0.0);
+  if (t.size() < 2) t.push_back(tend);  // t_eval = [0]: the engines need an interval
+  scene.times = std::move(t);
+  return added;
+}
+
+/// Drop the first sample (the t = 0 added for t_eval) from a trajectory.
+void drop_first_sample(Trajectory& tr) {
+  if (tr.rows.empty()) return;
+  tr.rows.erase(tr.rows.begin());
+  if (!tr.work_push.empty()) tr.work_push.erase(tr.work_push.begin());
+  if (!tr.work_fric.empty()) tr.work_fric.erase(tr.work_fric.begin());
+  if (!tr.extended.empty()) tr.extended.erase(tr.extended.begin());
+}
+
 RunResult run(const Scene& scene, const std::string& engine, const std::string& method, const std::string& law,
               const py::object& rtol, const py::object& atol, const std::string& precision,
-              const py::object& accuracy, const py::object& error_estimate) {
+              const py::object& accuracy, const py::object& error_estimate, const py::object& t_eval) {
   RunSettings rs;
   read_accuracy(accuracy, error_estimate, rs);
   rs.engine = parse_optional_choice<Engine>("engine", engine);  // "" = the scene's (run_engine)
@@ -102,12 +138,24 @@ RunResult run(const Scene& scene, const std::string& engine, const std::string& 
   check_engine_method(scene, rs);  // engine="f77" with the scene's own method: as `nanopush run`
   RunResult r;
   r.scene = scene.name;
-  const Scene own = scene;  // another Python thread may set() the caller's scene meanwhile
+  Scene own = scene;  // another Python thread may set() the caller's scene meanwhile
+  bool only_zero = false, drop_zero = false;
+  if (!t_eval.is_none()) {
+    drop_zero = set_output_times(own, t_eval);
+    only_zero = !drop_zero && own.times.size() == 2 && as_double_array(t_eval, "t_eval").size() == 1;
+  }
   {
     py::gil_scoped_release release;
     const auto t0 = std::chrono::steady_clock::now();
     r.tr = run_engine(own, rs);
     r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  }
+  if (drop_zero) drop_first_sample(r.tr);
+  if (only_zero && r.tr.rows.size() > 1) {  // t_eval = [0]: the initial state alone
+    r.tr.rows.resize(1);
+    if (r.tr.work_push.size() > 1) r.tr.work_push.resize(1);
+    if (r.tr.work_fric.size() > 1) r.tr.work_fric.resize(1);
+    if (r.tr.extended.size() > 1) r.tr.extended.resize(1);
   }
   if (!r.tr.complete)
     throw RunFailure(scene.name + " (" + r.tr.engine_label + "): " + r.tr.outcome_text(), r.tr);
@@ -243,8 +291,45 @@ dict of arrays (pandas.DataFrame(result.to_dict())); to_csv(path) writes the CSV
                              "Absolute tolerance of each state component (SI).")
       .def_property_readonly("complete", [](const RunResult& r) { return r.tr.complete; },
                              "False only for the partial result a SolverError carries.")
-      .def_property_readonly("status", [](const RunResult& r) { return status_name(r.tr.stats.status); },
-                             "The integrator's status: success, or why it stopped.")
+      .def_property_readonly("integrator_status", [](const RunResult& r) { return status_name(r.tr.stats.status); },
+                             "The integrator's status as a word: success, or why it stopped (too_many_steps, "
+                             "step_underflow, rhs_failed, not_finite).")
+      .def_property_readonly("success", [](const RunResult& r) { return r.tr.complete && is_answer(r.tr.outcome); },
+                             "True when the run gave an answer (outcome ok or at_rest), as solve_ivp's success; "
+                             "False only on a SolverError's partial result.")
+      .def_property_readonly(
+          "status", [](const RunResult& r) { return r.tr.complete && is_answer(r.tr.outcome) ? 0 : -1; },
+          "solve_ivp's status: 0 the run reached its last output time, -1 it failed (a SolverError's partial "
+          "result); `integrator_status` and `outcome` say more.")
+      .def_property_readonly(
+          "message",
+          [](const RunResult& r) -> std::string {
+            if (!r.tr.outcome_message.empty()) return r.tr.outcome_message;
+            if (r.tr.complete && is_answer(r.tr.outcome)) return "reached the last output time";
+            return r.tr.outcome_text();
+          },
+          "Why the run ended, in words (solve_ivp's message).")
+      .def_property_readonly("nfev", [](const RunResult& r) { return r.tr.stats.nfcn; },
+                             "Right-hand-side evaluations of the integration (solve_ivp's nfev; = nfcn).")
+      .def_property_readonly(
+          "states",
+          [](const py::object& self) {
+            // Columns x .. omega of the row-major table, transposed: shape (6, n), no copy.
+            const auto& r = self.cast<const RunResult&>();
+            const auto n = static_cast<py::ssize_t>(r.tr.rows.size());
+            static const double empty[10] = {};
+            const double* data = n > 0 ? r.tr.rows.front().data() : empty;
+            constexpr auto row = static_cast<py::ssize_t>(sizeof(TrajectoryRow));
+            py::array a = py::array_t<double>({py::ssize_t{6}, n}, {py::ssize_t{sizeof(double)}, row}, data + col::x, self);
+            static_assert(col::omega == col::x + 5, "states: x, y, theta, vx, vy, omega contiguous");
+            a.attr("setflags")(py::arg("write") = false);
+            return a;
+          },
+          "The state matrix, shape (6, n), rows x, y [m], theta [rad], vx, vy [m/s], omega [rad/s]: what "
+          "solve_ivp calls `y` (here `y` is the y coordinate). A read-only view.")
+      .def_property_readonly_static(
+          "state_names", [](const py::object&) { return std::vector<std::string>{"x", "y", "theta", "vx", "vy", "omega"}; },
+          "The rows of `states`, in order.")
       .def_property_readonly("outcome", [](const RunResult& r) { return to_string(r.tr.outcome); },
                              "How the run ended (docs/errors.md): ok or at_rest for an answer; no_static_friction, "
                              "law_blowup, accuracy_not_reached, solver_failure on a SolverError's partial result.")
@@ -293,7 +378,7 @@ dict of arrays (pandas.DataFrame(result.to_dict())); to_csv(path) writes the CSV
 
   m.def("_run", &run, py::arg("scene"), py::arg("engine") = "", py::arg("method") = "", py::arg("law") = "",
         py::arg("rtol") = py::none(), py::arg("atol") = py::none(), py::arg("precision") = "",
-        py::arg("accuracy") = py::none(), py::arg("error_estimate") = py::none(),
+        py::arg("accuracy") = py::none(), py::arg("error_estimate") = py::none(), py::arg("t_eval") = py::none(),
         "Integrate a scene (nanopush.run is the documented entry point).");
   m.def("_compare", &compare, py::arg("scene"), py::arg("method") = "faithful", py::arg("law") = "",
         py::arg("rtol") = py::none(), py::arg("atol") = py::none(), py::arg("tolerance") = py::none(),

@@ -3,7 +3,12 @@
 // C++ threads with the GIL released; the table comes back as columns.
 #include "common.hpp"
 
+#include <atomic>
+#include <chrono>
 #include <cmath>
+#include <memory>
+#include <mutex>
+#include <thread>
 
 #include "nanopush/sweeps/sweep.hpp"
 
@@ -74,10 +79,91 @@ py::dict table(const sweep::Plan& plan, const sweep::Task& task, const std::vect
   return out;
 }
 
+/// The caller's progress callable and Ctrl-C, from the thread that coordinates the workers
+/// (the GIL released in between): PyErr_CheckSignals runs the Python signal handlers, so a
+/// KeyboardInterrupt (or an exception of the callable) sets `stop` and is kept for the caller.
+class Poll {
+ public:
+  explicit Poll(py::object progress) : progress_(std::move(progress)) {}
+  /// With the GIL released; false once the sweep must stop.
+  bool operator()(std::size_t done, std::size_t total, bool report) {
+    if (stop_.load()) return false;
+    py::gil_scoped_acquire gil;
+    try {
+      if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+      if (report && !progress_.is_none()) progress_(done, total);
+    } catch (py::error_already_set& e) {
+      error_ = std::make_unique<py::error_already_set>(std::move(e));
+      stop_ = true;
+    }
+    return !stop_.load();
+  }
+  [[nodiscard]] const std::atomic<bool>* flag() const { return &stop_; }
+  /// Raise what stopped the sweep (with the GIL held), if anything did.
+  void rethrow() {
+    if (error_) {
+      auto e = std::move(error_);
+      throw std::move(*e);
+    }
+  }
+
+ private:
+  py::object progress_;
+  std::atomic<bool> stop_{false};
+  std::unique_ptr<py::error_already_set> error_;
+};
+
+/// evaluate_points with a poll every 0.1 s (progress every 0.5 s and at the end): the rows of
+/// every point in point order, or the stop raised by the poll.
+std::vector<std::vector<std::string>> evaluate_polled(const sweep::Plan& plan, const sweep::Task& task,
+                                                      unsigned jobs, Poll& poll) {
+  std::vector<std::vector<std::string>> rows(plan.size());
+  if (jobs == 0) jobs = std::max(1u, std::thread::hardware_concurrency());
+  jobs = static_cast<unsigned>(std::min<std::size_t>(jobs, std::max<std::size_t>(plan.size(), 1)));
+  std::atomic<std::size_t> next{0}, done{0};
+  std::atomic<unsigned> running{jobs};
+  std::mutex mutex;
+  std::exception_ptr failure;
+  const std::atomic<bool>* stop = poll.flag();
+  auto worker = [&] {
+    try {
+      while (!stop->load()) {
+        const std::size_t k = next.fetch_add(1);
+        if (k >= rows.size()) break;
+        rows[k] = sweep::evaluate_row(plan, task, k);  // each slot written by one thread only
+        ++done;
+      }
+    } catch (...) {
+      std::lock_guard<std::mutex> lock(mutex);
+      if (!failure) failure = std::current_exception();
+      next = rows.size();
+    }
+    --running;
+  };
+  {
+    std::vector<std::thread> threads;
+    for (unsigned t = 0; t < jobs; ++t) threads.emplace_back(worker);
+    auto last_poll = std::chrono::steady_clock::now(), last_report = last_poll;
+    while (running.load() > 0) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+      const auto now = std::chrono::steady_clock::now();
+      if (now - last_poll < std::chrono::milliseconds(100)) continue;
+      last_poll = now;
+      const bool report = now - last_report >= std::chrono::milliseconds(500);
+      if (report) last_report = now;
+      poll(done.load(), rows.size(), report);
+    }
+    for (auto& t : threads) t.join();
+  }
+  if (failure) std::rethrow_exception(failure);
+  if (!stop->load()) poll(done.load(), rows.size(), true);
+  return rows;
+}
+
 py::tuple run_sweep(const std::string& task_name, const py::object& scene_obj, const py::list& axes,
                     const py::object& points, const py::dict& fixed, unsigned jobs, const std::string& engine,
                     const std::string& method, const std::string& law, const py::object& accuracy,
-                    const py::object& error_estimate) {
+                    const py::object& error_estimate, const py::object& progress, const py::object& out) {
   std::unique_ptr<sweep::Task> task;
   if (task_name == "run") {
     if (scene_obj.is_none()) throw InputError("task", "run", "a run sweep needs a scene");
@@ -154,11 +240,36 @@ py::tuple run_sweep(const std::string& task_name, const py::object& scene_obj, c
     plan = sweep::cartesian(ax);
   }
   (void)sweep::table_columns(plan, *task);  // every key and value checked before any work
+  if (!progress.is_none() && !PyCallable_Check(progress.ptr()))
+    throw InputError("progress", py::repr(progress).cast<std::string>(), "must be a callable progress(done, total)");
+  Poll poll(progress);
+  if (!out.is_none()) {  // streamed to a file by the runner, with its journal (resumable)
+    sweep::Options o;
+    o.jobs = jobs;
+    o.out = arg_text(out, "out");
+    o.stop = poll.flag();
+    o.progress = [&poll](std::size_t done, std::size_t total) { poll(done, total, true); };
+    sweep::Result r;
+    {
+      py::gil_scoped_release release;
+      r = sweep::run_local(plan, *task, o);
+    }
+    poll.rethrow();  // Ctrl-C: KeyboardInterrupt; the journal keeps the finished rows
+    py::dict d;
+    d["path"] = o.out.string();
+    d["points"] = r.points;
+    d["done"] = r.done;
+    d["resumed"] = r.resumed;
+    d["failed"] = r.failed;
+    d["complete"] = r.complete;
+    return py::make_tuple(py::none(), py::none(), d);
+  }
   std::vector<std::vector<std::string>> rows;
   {
     py::gil_scoped_release release;
-    rows = sweep::evaluate_points(plan, *task, jobs);
+    rows = evaluate_polled(plan, *task, jobs, poll);
   }
+  poll.rethrow();  // Ctrl-C: KeyboardInterrupt, or what the progress callable raised
   const Columns cols = sweep::table_columns(plan, *task);
   py::list names;
   py::dict units;
@@ -174,7 +285,7 @@ py::tuple run_sweep(const std::string& task_name, const py::object& scene_obj, c
 void register_sweep(py::module_& m) {
   m.def("_sweep", &run_sweep, py::arg("task"), py::arg("scene"), py::arg("axes"), py::arg("points"), py::arg("fixed"),
         py::arg("jobs"), py::arg("engine"), py::arg("method"), py::arg("law"), py::arg("accuracy") = py::none(),
-        py::arg("error_estimate") = py::none(),
+        py::arg("error_estimate") = py::none(), py::arg("progress") = py::none(), py::arg("out") = py::none(),
         "The sweep engine in memory (nanopush.sweep is the documented entry point).");
 }
 

@@ -80,7 +80,7 @@ def test_result_arrays_and_dict():
     # Views keep the result alive.
     theta = nanopush.run("fig3_6a").theta
     assert theta[-1] == r.theta[-1]
-    assert r.status == "success" and r.complete and r.wall_time > 0
+    assert r.integrator_status == "success" and r.status == 0 and r.complete and r.wall_time > 0
 
 
 @pytest.mark.parametrize("method", ["faithful", "modern", "dop853"])

@@ -97,7 +97,10 @@ struct Scene {
   /// when the scene names them, else the given m g + F_vdw.
   std::string load_report;
 
-  /// Output times 0, t_end/(samples-1), ..., t_end.
+  /// Explicit output times (Python's run(t_eval=...)): from 0, strictly increasing, at most
+  /// t_end; set in code only (no scene key, not in the document). Empty: `samples` times.
+  std::vector<double> times;
+  /// Output times: `times` when set, else 0, t_end/(samples-1), ..., t_end.
   [[nodiscard]] std::vector<double> output_times() const;
   /// Natural scale of each state component (length, angle 1, velocity, rate, and the work
   /// accumulators of the rough model, F L), for atol.
