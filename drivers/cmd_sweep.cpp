@@ -185,6 +185,7 @@ int sweep_cmd(SweepOptions o) {
   if (!o.shard.empty()) std::tie(opt.shard_index, opt.shard_count) = parse_shard(o.shard);
   opt.out = o.out.empty() ? default_out : o.out;
   opt.progress = progress_line(o.quiet);
+  opt.fixed = o.sets;
   opt.stop = &g_stop;
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);

@@ -15,6 +15,7 @@
 #include <thread>
 
 #include "nanopush/numerics/error.hpp"
+#include "nanopush/outputs/input_file.hpp"
 
 #ifdef NANOPUSH_HAVE_MPI
 #include <sys/prctl.h>
@@ -160,6 +161,12 @@ void send_row(std::size_t i, const std::vector<std::string>& row) {
   MPI_Send(msg.data(), static_cast<int>(msg.size()), MPI_CHAR, 0, kRow, MPI_COMM_WORLD);
 }
 
+/// kDone carries the rank's CPU time [s], for the sidecar's cpu_s.
+void send_done() {
+  double cpu = sweep::process_cpu_seconds();
+  MPI_Send(&cpu, 1, MPI_DOUBLE, 0, kDone, MPI_COMM_WORLD);
+}
+
 /// Open MPI on one node: its shared-memory path (pml ob1 with btl vader) starts in ~0.03 s where
 /// the UCX pml that Debian's Open MPI prefers takes ~0.2 s per launch (measured with
 /// `mpirun -np 2` on a 2-core host), a tenth of a 1,000-point sweep. So when every rank runs
@@ -227,7 +234,7 @@ void serve_on_main_thread(const sweep::Plan& plan, const sweep::Task& task, cons
     queue.pop_front();
     send_row(i, sweep::evaluate_row(plan, task, i));
   }
-  MPI_Send(nullptr, 0, MPI_INT, 0, kDone, MPI_COMM_WORLD);
+  send_done();
 }
 
 /// An error on a rank (a journal of another sweep, a table that cannot be written, a bug) ends
@@ -279,20 +286,41 @@ int run_mpi_sweep(const sweep::Plan& plan, const sweep::Task& task, const sweep:
 
   if (rank == 0) {
     try {
-      // The coordinator: journal, the list of pending points, the rows.
-      const auto pts = sweep::shard_points(plan.size(), o.shard_index, o.shard_count);
+      // The coordinator: the journal, the ordered table, the next point to hand out.
       (void)sweep::table_columns(plan, task);
-      sweep::Journal journal(sweep::journal_path(o.out),
-                             sweep::sweep_identity(plan, task, o.shard_index, o.shard_count));
-      std::map<std::size_t, std::vector<std::string>> rows;
-      const std::set<std::size_t> mine(pts.begin(), pts.end());
-      for (const auto& [i, r] : journal.resumed())
-        if (mine.count(i)) rows[i] = r;
-      std::deque<std::size_t> pending;
-      for (std::size_t i : pts)
-        if (!rows.count(i)) pending.push_back(i);
-      const std::size_t resumed = rows.size();
-      // Rank 0's own threads draw from the same pending list, a few at a time; a stop (this
+      const sweep::PlanRecord record = sweep::plan_record(plan, task, o.fixed);
+      sweep::PlanRecord jrec = record;
+      jrec.emplace_back("shard", std::to_string(o.shard_index) + "/" + std::to_string(o.shard_count));
+      const auto jpath = sweep::journal_path(o.out);  // a directory or a FIFO: refused here
+      sweep::OrderedTable table(o.out, plan, task, o.shard_index, o.shard_count, o.row_sink, o.window);
+      std::size_t resumed = 0;
+      // The journal's rows go to the table as they are read (few wait: docs/sweeps.md, "Memory").
+      sweep::Journal journal(jpath, sweep::sweep_identity(plan, task, o.shard_index, o.shard_count), jrec,
+                             [&](std::size_t i, std::string line) {
+                               if (i >= plan.size() || i % o.shard_count != o.shard_index ||
+                                   table.has((i - o.shard_index) / o.shard_count))
+                                 return;
+                               const bool failed = sweep::row_failed(sweep::split_cells(line));
+                               table.add(i, std::move(line), failed);
+                               ++resumed;
+                             });
+      std::size_t next = 0;  // the next shard position to hand out
+      // The next point that may start (within the table's window), or nullopt.
+      auto take = [&]() -> std::optional<std::size_t> {
+        while (next < table.positions() && table.has(next)) ++next;
+        if (next >= table.positions() || !table.may_start(next)) return std::nullopt;
+        return table.index_of(next++);
+      };
+      auto all_handed_out = [&] {
+        while (next < table.positions() && table.has(next)) ++next;
+        return next >= table.positions();
+      };
+      auto add_row = [&](std::size_t i, std::string line) {
+        journal.append_line(i, line);
+        const bool failed = sweep::row_failed(sweep::split_cells(line));
+        table.add(i, std::move(line), failed);
+      };
+      // Rank 0's own threads draw from the same positions, a few at a time; a stop (this
       // rank's signal, or one a worker rank reports) ends them after their points in flight.
       std::atomic<bool> stop_all{false};
       for (unsigned t = 0; t < jobs; ++t)
@@ -300,6 +328,17 @@ int run_mpi_sweep(const sweep::Plan& plan, const sweep::Task& task, const sweep:
       int done_ranks = 0;  // worker ranks that sent kDone (all their rows are in)
       int stop_sig = 0;    // the signal that stops the sweep (here or on a worker rank)
       bool told = false;   // the worker ranks were sent kStop
+      double worker_cpu = 0;
+      std::deque<std::pair<int, int>> asks;  // requests waiting for the window to move: (rank, points)
+      auto answer = [&](int dest, int want) {
+        std::vector<long long> give;
+        while (!stop_sig && static_cast<int>(give.size()) < want)
+          if (auto i = take()) give.push_back(static_cast<long long>(*i));
+          else break;
+        if (want > 0 && give.empty() && !stop_sig && !all_handed_out()) return false;  // wait for the window
+        MPI_Send(give.data(), static_cast<int>(give.size()), MPI_LONG_LONG, dest, kWork, MPI_COMM_WORLD);
+        return true;
+      };
       auto last = std::chrono::steady_clock::now();
       while (true) {
         if (!stop_sig && o.stop && o.stop->load()) stop_sig = signal_of(sig);
@@ -309,22 +348,23 @@ int run_mpi_sweep(const sweep::Plan& plan, const sweep::Task& task, const sweep:
           for (int r = 1; r < size; ++r) MPI_Send(&stop_sig, 1, MPI_INT, r, kStop, MPI_COMM_WORLD);
           told = true;
         }
-        {  // feed local threads and collect their rows
+        {  // collect the local threads' rows and feed them
+          std::vector<std::pair<std::size_t, std::vector<std::string>>> out;
+          {
+            std::lock_guard<std::mutex> lock(w.m);
+            out.swap(w.outbox);
+            if (w.failure) std::rethrow_exception(w.failure);
+          }
+          for (auto& [i, r] : out) add_row(i, sweep::join_cells(r));
           std::lock_guard<std::mutex> lock(w.m);
           if (stopping) w.queue.clear();  // not started: a resumed sweep computes them
-          while (!stopping && w.queue.size() < jobs && !pending.empty()) {
-            w.queue.push_back(pending.front());
-            pending.pop_front();
-          }
-          if (pending.empty() || stopping) w.no_more = true;
-          for (auto& [i, r] : w.outbox) {
-            journal.append(i, r);
-            rows[i] = std::move(r);
-          }
-          w.outbox.clear();
-          if (w.failure) std::rethrow_exception(w.failure);
+          while (!stopping && w.queue.size() < jobs)
+            if (auto i = take()) w.queue.push_back(*i);
+            else break;
+          if (all_handed_out() || stopping) w.no_more = true;
         }
         w.cv.notify_all();
+        while (!asks.empty() && answer(asks.front().first, asks.front().second)) asks.pop_front();
         int flag = 0;
         MPI_Status st;
         MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &flag, &st);
@@ -333,24 +373,21 @@ int run_mpi_sweep(const sweep::Plan& plan, const sweep::Task& task, const sweep:
             int want = 0;
             MPI_Recv(&want, 1, MPI_INT, st.MPI_SOURCE, kRequest, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
             if (want < 0 && !stop_sig) stop_sig = -want;  // a worker rank's signal stops every rank
-            std::vector<long long> give;
-            while (!stop_sig && static_cast<int>(give.size()) < want && !pending.empty()) {
-              give.push_back(static_cast<long long>(pending.front()));
-              pending.pop_front();
-            }
-            MPI_Send(give.data(), static_cast<int>(give.size()), MPI_LONG_LONG, st.MPI_SOURCE, kWork, MPI_COMM_WORLD);
+            if (!answer(st.MPI_SOURCE, want)) asks.emplace_back(st.MPI_SOURCE, want);
           } else if (st.MPI_TAG == kRow) {
             int len = 0;
             MPI_Get_count(&st, MPI_CHAR, &len);
             std::string msg(static_cast<std::size_t>(len), '\0');
             MPI_Recv(msg.data(), len, MPI_CHAR, st.MPI_SOURCE, kRow, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
             const auto nl = msg.find('\n');
-            const std::size_t i = std::stoull(msg.substr(0, nl));
-            auto row = sweep::split_cells(msg.substr(nl + 1));
-            journal.append(i, row);
-            rows[i] = std::move(row);
+            const auto i = nl == std::string::npos ? std::nullopt
+                                                   : parse_count(std::string_view(msg).substr(0, nl), plan.size() - 1);
+            if (!i) throw std::logic_error("a row from rank " + std::to_string(st.MPI_SOURCE) + " without its point index");
+            add_row(*i, msg.substr(nl + 1));
           } else if (st.MPI_TAG == kDone) {
-            MPI_Recv(nullptr, 0, MPI_INT, st.MPI_SOURCE, kDone, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+            double cpu = 0;
+            MPI_Recv(&cpu, 1, MPI_DOUBLE, st.MPI_SOURCE, kDone, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+            worker_cpu += cpu;
             ++done_ranks;
           }
           continue;
@@ -360,10 +397,10 @@ int run_mpi_sweep(const sweep::Plan& plan, const sweep::Task& task, const sweep:
           std::lock_guard<std::mutex> lock(w.m);
           local_idle = w.queue.empty() && w.busy == 0 && w.outbox.empty();
         }
-        if (done_ranks == size - 1 && local_idle && (pending.empty() || stopping)) break;
+        if (done_ranks == size - 1 && local_idle && (all_handed_out() || stopping)) break;
         if (o.progress && std::chrono::steady_clock::now() - last > std::chrono::milliseconds(500)) {
           last = std::chrono::steady_clock::now();
-          o.progress(rows.size(), pts.size());
+          o.progress(table.done(), table.positions());
         }
         wait_for_rows(w);
       }
@@ -374,19 +411,18 @@ int run_mpi_sweep(const sweep::Plan& plan, const sweep::Task& task, const sweep:
       w.cv.notify_all();
       for (auto& t : threads) t.join();
       threads.clear();
-      std::size_t failed = 0;
-      for (const auto& [i, r] : rows) failed += sweep::row_failed(r) ? 1 : 0;
-      if (rows.size() < pts.size()) {
-        std::cerr << "sweep: interrupted: " << rows.size() << " of " << pts.size() << " points are in "
+      if (!table.complete()) {
+        std::cerr << "sweep: interrupted: " << table.done() << " of " << table.positions() << " points are in "
                   << journal.path().string() << "; run the same command again to resume\n";
         status = 128 + (stop_sig ? stop_sig : SIGINT);
       } else {
         const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - start;
-        sweep::write_table(o.out, plan, task, rows, o.shard_index, o.shard_count,
-                           sweep::sweep_timings(wall.count(), jobs, size, resumed));
+        const double cpu = sweep::process_cpu_seconds() + worker_cpu;  // every rank, start to end
+        table.commit(sweep::sweep_timings(wall.count(), jobs, size, resumed, cpu), record);
         journal.remove();
+        const std::size_t failed = table.failed();
         if (!quiet)
-          std::cerr << "sweep: " << pts.size() << " points (" << resumed << " from the journal) over " << size
+          std::cerr << "sweep: " << table.positions() << " points (" << resumed << " from the journal) over " << size
                     << " MPI ranks x " << jobs << " threads, " << failed << " failed: " << o.out.string() << "\n";
         status = failed ? 64 + static_cast<int>(std::min<std::size_t>(failed, 63)) : 0;
       }
@@ -448,7 +484,7 @@ int run_mpi_sweep(const sweep::Plan& plan, const sweep::Task& task, const sweep:
           }
           wait_for_rows(w);
         }
-        MPI_Send(nullptr, 0, MPI_INT, 0, kDone, MPI_COMM_WORLD);
+        send_done();
         w.cv.notify_all();
         for (auto& t : threads) t.join();
         threads.clear();

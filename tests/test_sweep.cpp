@@ -3,6 +3,8 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <filesystem>
+#include <tuple>
 #include <string>
 #include <vector>
 
@@ -52,8 +54,8 @@ TEST_CASE("sweep: axes and the cartesian order", "[sweep][unit]") {
     REQUIRE(p.size() == 6);
     const double want[6][2] = {{1, 10}, {1, 20}, {1, 30}, {2, 10}, {2, 20}, {2, 30}};
     for (std::size_t i = 0; i < 6; ++i) {
-      CHECK(p.points[i][0].number() == want[i][0]);
-      CHECK(p.points[i][1].number() == want[i][1]);
+      CHECK(p.point(i)[0].number() == want[i][0]);
+      CHECK(p.point(i)[1].number() == want[i][1]);
       const auto s = p.settings(i);
       CHECK(s[0].first == "R");
       CHECK(s[1].second.number() == want[i][1]);
@@ -106,8 +108,8 @@ TEST_CASE("sweep: cells read back exactly, columns by name", "[sweep][unit]") {
   CHECK(sweep::column_index(plan, *task, "alpha") == 2);
   CHECK_THROWS_AS(sweep::column_index(plan, *task, "nope"), InputError);
   for (std::size_t i = 0; i < plan.size(); ++i) {
-    const auto w = rectangle_friction_wrench_checked(27.5e-9, 50e-9, 1.0, plan.points[i][0].number(),
-                                                     plan.points[i][1].number(), 1);
+    const auto w = rectangle_friction_wrench_checked(27.5e-9, 50e-9, 1.0, plan.point(i)[0].number(),
+                                                     plan.point(i)[1].number(), 1);
     CHECK(sweep::cell_number(rows[i][ifx]) == w.fx);
     CHECK(sweep::cell_number(rows[i][imf]) == w.mf);
   }
@@ -129,7 +131,7 @@ TEST_CASE("sweep: the icor task gives both branches of eq 5.4 from the chosen cu
     const auto method = std::string(solver) == "brent" ? icor::CubicMethod::Brent : icor::CubicMethod::Eigen;
     for (std::size_t i = 0; i < plan.size(); ++i) {
       // The oracle: the solver called directly (the task adds nothing but the cell).
-      const auto s = icor::solve_constrained_cubic(plan.points[i][0].number(), rod.length, rod.gyration_squared(), method);
+      const auto s = icor::solve_constrained_cubic(plan.point(i)[0].number(), rod.length, rod.gyration_squared(), method);
       REQUIRE(!sweep::row_failed(rows[i]));
       CHECK(rows[i][ineg] == (s.negative ? csv_number(*s.negative) : std::string()));
       CHECK(rows[i][ipos] == (s.positive ? csv_number(*s.positive) : std::string()));
@@ -144,6 +146,109 @@ TEST_CASE("sweep: the icor task gives both branches of eq 5.4 from the chosen cu
   CHECK_THROWS_AS(sweep::table_columns(sweep::cartesian({sweep::parse_axis("yn=1e-8,abc")}), *task), InputError);
   CHECK_NOTHROW(sweep::table_columns(sweep::cartesian({sweep::parse_axis("cubic=brent,eigen")}), *task));
   CHECK_THROWS_AS(sweep::parse_axis("yn=0:abc:3"), InputError);
+}
+
+TEST_CASE("sweep: grid values as numpy.linspace and numpy.geomspace compute them", "[sweep][numeric]") {
+  // numpy.linspace: step = (stop - start) / (n - 1), y_i = i * step + start, y_{n-1} = stop
+  // (numpy/core/function_base.py); geomspace: 10^linspace(log10 start, log10 stop), the ends
+  // as given, a negative range the positive one negated.
+  auto lin = [](double a, double b, std::size_t n, std::size_t i) {
+    if (i + 1 == n && n > 1) return b;
+    const double step = (b - a) / static_cast<double>(n - 1);
+    return static_cast<double>(i) * step + a;
+  };
+  for (const auto& [a, b, n] : std::vector<std::tuple<double, double, std::size_t>>{
+           {-45e-9, 45e-9, 19}, {0, 1, 10}, {0.1, 0.7, 7}, {-3, 7, 1001}, {1e300, -1e300, 5}}) {
+    const auto ax = sweep::parse_axis("R=" + csv_number(a) + ":" + csv_number(b) + ":" + std::to_string(n));
+    REQUIRE(ax.values.size() == n);
+    for (std::size_t i = 0; i < n; ++i) CHECK(ax.values[i].number() == lin(a, b, n, i));
+  }
+  // as numpy gives them: 0:45e-9:10 holds 5e-9 and 1e-8 exactly (FROM + (TO-FROM) * i/(N-1)
+  // gave 4.999999999999999e-09), -45e-9:45e-9:19 holds 4.9999999999999985e-09 where numpy does
+  CHECK(sweep::parse_axis("push.yn=0:45e-9:10").values[1].number() == 5e-9);
+  CHECK(sweep::parse_axis("push.yn=0:45e-9:10").values[2].number() == 1e-8);
+  CHECK(sweep::parse_axis("push.yn=-45e-9:45e-9:19").values[10].number() == 4.9999999999999985e-09);
+  CHECK(sweep::parse_axis("R=0:1:11").values[3].number() == 0.30000000000000004);  // numpy: 3 * 0.1
+  // a step that underflows: (i / (n - 1)) * delta + start
+  CHECK(sweep::linspace_value(5e-324, 1e-323, 3, 1) == (1.0 / 2.0) * (1e-323 - 5e-324) + 5e-324);
+  const auto g = sweep::parse_axis("R=-1e-3:-10:13", true);
+  for (std::size_t i = 1; i + 1 < 13; ++i)
+    CHECK(g.values[i].number() == -std::pow(10.0, lin(std::log10(1e-3), std::log10(10.0), 13, i)));
+  CHECK(g.values.front().number() == -1e-3);
+  CHECK(g.values.back().number() == -10.0);
+}
+
+TEST_CASE("sweep: a grid plan stores its axes, not its points", "[sweep][unit]") {
+  std::vector<sweep::Axis> axes = {sweep::parse_axis("a=0:1:1000"), sweep::parse_axis("b=0:1:1000"),
+                                   sweep::parse_axis("c=0:1:100")};
+  const auto plan = sweep::cartesian(axes);
+  CHECK(plan.size() == 100000000);  // 1e8 points, none built
+  CHECK(plan.points.empty());
+  const std::size_t i = 12345678;
+  const auto pt = plan.point(i);
+  CHECK(pt[0].number() == axes[0].values[i / 100000].number());
+  CHECK(pt[1].number() == axes[1].values[(i / 100) % 1000].number());
+  CHECK(pt[2].number() == axes[2].values[i % 100].number());
+  CHECK(sweep::cartesian({sweep::parse_axis("x=1,2,3")}).identity_text() !=
+        sweep::cartesian({sweep::parse_axis("x=1,2,4")}).identity_text());
+}
+
+TEST_CASE("sweep: the table is written in point order through a bounded window", "[sweep][unit]") {
+  const auto task = sweep::make_friction_task({});
+  const auto plan = sweep::cartesian({sweep::parse_axis("R=1e-8:1e-6:37"), sweep::parse_axis("alpha=0,1,2")});
+  const auto rows = sweep::evaluate_points(plan, *task, 1);
+  std::vector<std::size_t> order;
+  std::vector<std::string> lines;
+  sweep::OrderedTable table({}, plan, *task, 0, 1,
+                            [&](std::size_t i, const std::string& line) {
+                              order.push_back(i);
+                              lines.push_back(line);
+                            },
+                            8);
+  // rows arrive out of order (the last first), within the window of 8 positions
+  CHECK(table.may_start(7));
+  CHECK_FALSE(table.may_start(8));
+  for (std::size_t i = 8; i-- > 0;) table.add(i, sweep::join_cells(rows[i]), false);
+  CHECK(table.written() == 8);
+  CHECK(table.may_start(15));
+  for (std::size_t i = 8; i < rows.size(); ++i) table.add(i, sweep::join_cells(rows[i]), false);
+  CHECK(table.complete());
+  REQUIRE(order.size() == rows.size());
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    CHECK(order[i] == i);
+    CHECK(lines[i] == sweep::join_cells(rows[i]));
+  }
+  // run_local with a row sink and no file: the same rows in the same order, on 2 threads
+  sweep::Options o;
+  o.jobs = 2;
+  o.window = 4;
+  std::vector<std::string> streamed;
+  o.row_sink = [&](std::size_t, const std::string& line) { streamed.push_back(line); };
+  const auto r = sweep::run_local(plan, *task, o);
+  CHECK(r.complete);
+  REQUIRE(streamed.size() == rows.size());
+  for (std::size_t i = 0; i < rows.size(); ++i) CHECK(streamed[i] == sweep::join_cells(rows[i]));
+}
+
+TEST_CASE("sweep: a journal of another plan is refused, the difference named", "[sweep][unit]") {
+  const auto dir = nanopush::test::scratch_dir("sweep_journal_plan");
+  const auto task = sweep::make_friction_task({});
+  const auto a = sweep::cartesian({sweep::parse_axis("R=1e-8:1e-6:5")});
+  const auto b = sweep::cartesian({sweep::parse_axis("R=1e-8:2e-6:5")});
+  const auto path = dir / "t.csv.journal";
+  {
+    sweep::Journal j(path, sweep::sweep_identity(a, *task, 0, 1), sweep::plan_record(a, *task));
+    j.append(0, sweep::evaluate_row(a, *task, 0));
+  }
+  {
+    sweep::Journal again(path, sweep::sweep_identity(a, *task, 0, 1), sweep::plan_record(a, *task));
+    CHECK(again.resumed().size() == 1);
+  }
+  const std::string msg = input_error_of([&] {
+    sweep::Journal j(path, sweep::sweep_identity(b, *task, 0, 1), sweep::plan_record(b, *task));
+  });
+  CHECK_THAT(msg, Catch::Contains("belongs to a different sweep (axis 1: R=1e-8:1e-6:5 there, R=1e-8:2e-6:5 here)"));
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace NANOPUSH_UNITY_ID

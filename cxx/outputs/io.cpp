@@ -489,6 +489,8 @@ void CsvWriter::cells(const std::vector<std::string>& cells) {
   file_.stream() << join_cells(cells);
 }
 
+void CsvWriter::line(const std::string& text) { file_.stream() << text << '\n'; }
+
 void CsvWriter::blank_line() { file_.stream() << '\n'; }
 
 void CsvWriter::commit() { commit_with_schema(file_, columns_, scene_, run_); }

@@ -1,434 +1,97 @@
-// Running a sweep on threads: the journal (resume), the work queue, the ordered table; and
-// joining shard tables.
-#include <fcntl.h>
-#include <unistd.h>
+// Running a sweep: the ordered table (rows written in point order as they complete, within a
+// bounded window), the threads of one process, the sidecar's timings.
+#include <sys/resource.h>
 
 #include <algorithm>
 #include <charconv>
-#include <cmath>
-#include <limits>
 #include <chrono>
-#include <cinttypes>
-#include <cerrno>
-#include <cstring>
-#include <cstdio>
-#include <fstream>
+#include <cmath>
+#include <condition_variable>
+#include <limits>
 #include <optional>
-#include <set>
-#include <sstream>
 #include <thread>
 
+#include "hash.hpp"
 #include "nanopush/numerics/error.hpp"
-#include "nanopush/outputs/input_file.hpp"
 #include "nanopush/sweeps/sweep.hpp"
 
 namespace nanopush::sweep {
-namespace {
 
-constexpr const char* kJournalMagic = "nanopush-sweep-journal 1";
+// ---- the ordered table ---------------------------------------------------------------------
 
-std::uint64_t fnv1a(std::string_view s) {
-  std::uint64_t h = 1469598103934665603ULL;
-  for (unsigned char c : s) {
-    h ^= c;
-    h *= 1099511628211ULL;
-  }
-  return h;
-}
-
-std::string hex(std::uint64_t v) {
-  char b[17];
-  std::snprintf(b, sizeof b, "%016" PRIx64, v);
-  return b;
-}
-
-std::string record_text(std::size_t index, const std::string& line) { return std::to_string(index) + "\t" + line; }
-
-}  // namespace
-
-std::string join_cells(const std::vector<std::string>& row) {
-  std::string s;
-  for (std::size_t i = 0; i < row.size(); ++i) {
-    if (i) s += ',';
-    s += row[i];
-  }
-  return s;
-}
-
-std::vector<std::string> split_cells(const std::string& line) {
-  std::vector<std::string> out;
-  std::string cur;
-  bool quoted = false;
-  for (char c : line) {
-    if (c == '"') quoted = !quoted;
-    if (c == ',' && !quoted) {
-      out.push_back(cur);
-      cur.clear();
-    } else {
-      cur += c;
-    }
-  }
-  out.push_back(cur);
-  return out;
-}
-
-// ---- journal -------------------------------------------------------------------------------
-
-Journal::Journal(std::filesystem::path path, const std::string& identity) : path_(std::move(path)) {
-  const std::string header = std::string(kJournalMagic) + " " + hex(fnv1a(identity));
-  if (input_exists(path_)) {
-    // Through the guarded reader (a regular file: a FIFO or a device is refused, never
-    // opened), one record at a time.
-    InputFile file(path_, "journal", kMaxJournalBytes);
-    std::streambuf* sb = file.stream().rdbuf();
-    // One line into `line` (at most kMaxInputLine bytes kept; a longer one is marked bad);
-    // `bytes` counts what was consumed. False at the end; `ended` says whether it had its LF.
-    std::uint64_t bytes = 0, complete = 0;
-    std::string line;
-    bool ended = false, overlong = false;
-    auto next_line = [&]() {
-      line.clear();
-      ended = overlong = false;
-      bool any = false;
-      for (;;) {
-        const auto c = sb->sbumpc();
-        if (std::char_traits<char>::eq_int_type(c, std::char_traits<char>::eof())) break;
-        any = true;
-        ++bytes;
-        const char ch = std::char_traits<char>::to_char_type(c);
-        if (ch == '\n') {
-          ended = true;
-          break;
-        }
-        if (line.size() < kMaxInputLine) line.push_back(ch);
-        else overlong = true;
-      }
-      return any;
-    };
-    if (!next_line() || !ended || overlong || line != header)
-      throw InputError("journal", path_.string(),
-                       "belongs to a different sweep (scene, axes, task, options or shard differ): remove it to "
-                       "start this sweep afresh");
-    complete = bytes;
-    // Records: "index<TAB>checksum<TAB>row\n"; keep only complete records that match (any other
-    // line is skipped, and its point computed again).
-    while (next_line()) {
-      if (!ended) break;  // a record cut short by a kill
-      complete = bytes;
-      if (overlong) continue;
-      const auto t1 = line.find('\t'), t2 = t1 == std::string::npos ? t1 : line.find('\t', t1 + 1);
-      if (t2 == std::string::npos) continue;
-      const std::string sum = line.substr(t1 + 1, t2 - t1 - 1), row = line.substr(t2 + 1);
-      const auto index = parse_count(std::string_view(line).substr(0, t1), kMaxPlanPoints - 1);
-      if (!index) continue;  // not a point index of any plan (text, or out of range)
-      if (sum != hex(fnv1a(record_text(*index, row)))) continue;
-      resumed_[*index] = split_cells(row);
-    }
-    const std::uint64_t size = bytes;
-    fd_ = ::open(path_.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
-    if (fd_ < 0)
-      throw OutputError("journal = " + path_.string() + ": cannot be opened for appending (" + std::strerror(errno) + ")");
-    if (complete < size && ::ftruncate(fd_, static_cast<off_t>(complete)) != 0)
-      throw InputError("journal", path_.string(), "cannot drop its incomplete last record");
-  } else {
-    fd_ = ::open(path_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_APPEND | O_CLOEXEC, 0644);
-    // A journal that cannot be made (no such directory, /proc, a read-only file system) is a
-    // system error (exit 5), said before any point runs.
-    if (fd_ < 0) throw OutputError("output = " + path_.string() + ": the sweep's journal cannot be created (" + std::strerror(errno) + ")");
-    const std::string h = header + "\n";
-    if (::write(fd_, h.data(), h.size()) != static_cast<ssize_t>(h.size())) {
-      const std::string why = std::strerror(errno);
-      ::close(fd_);
-      fd_ = -1;
-      std::error_code ec;
-      std::filesystem::remove(path_, ec);
-      throw OutputError("output = " + path_.string() + ": the sweep's journal cannot be written (" + why + ")");
-    }
-  }
-}
-
-Journal::~Journal() {
-  if (fd_ >= 0) ::close(fd_);
-}
-
-void Journal::append(std::size_t index, const std::vector<std::string>& row) {
-  const std::string line = join_cells(row);
-  const std::string rec = std::to_string(index) + "\t" + hex(fnv1a(record_text(index, line))) + "\t" + line + "\n";
-  std::lock_guard<std::mutex> lock(mutex_);
-  // One write per record: a kill leaves at most the last record incomplete (then ignored).
-  const char* p = rec.data();
-  std::size_t left = rec.size();
-  while (left > 0) {
-    const ssize_t w = ::write(fd_, p, left);
-    if (w < 0) throw std::runtime_error("journal " + path_.string() + ": write failed");
-    p += w;
-    left -= static_cast<std::size_t>(w);
-  }
-}
-
-void Journal::remove() {
-  if (fd_ >= 0) ::close(fd_);
-  fd_ = -1;
-  std::error_code ec;
-  std::filesystem::remove(path_, ec);
-}
-
-std::filesystem::path journal_path(const std::filesystem::path& out) {
-  if (resolve_output(out).write_through) return std::filesystem::path(out.filename().string() + ".journal");
-  return std::filesystem::path(out.string() + ".journal");
-}
-
-std::string sweep_identity(const Plan& plan, const Task& task, std::size_t shard_index, std::size_t shard_count) {
-  std::ostringstream s;
-  s << task.identity() << "\nshard " << shard_index << "/" << shard_count << "\nkeys";
-  for (const auto& k : plan.keys) s << " " << k;
-  s << "\npoints " << plan.size() << "\n";
-  for (const auto& pt : plan.points) {
-    for (const auto& v : pt) s << v.to_string() << ",";
-    s << "\n";
-  }
-  return s.str();
-}
-
-// ---- tables --------------------------------------------------------------------------------
-
-void write_table(const std::filesystem::path& out, const Plan& plan, const Task& task,
-                 const std::map<std::size_t, std::vector<std::string>>& rows, std::size_t shard_index,
-                 std::size_t shard_count, const RunInfo& timings) {
-  std::vector<std::vector<std::string>> ordered;
-  ordered.reserve(rows.size());
-  std::size_t failed = 0;
-  for (const auto& [i, r] : rows) {
-    ordered.push_back(r);
-    failed += row_failed(r) ? 1 : 0;
-  }
-  RunInfo run = {{"task", json_string(task.name())},
-                 {"plan", json_string(plan_identity(plan, task))},
-                 {"plan_points", std::to_string(plan.size())},
-                 {"shard", json_string(std::to_string(shard_index) + "/" + std::to_string(shard_count))},
-                 {"rows", std::to_string(rows.size())},
-                 {"failed", std::to_string(failed)}};
-  run.insert(run.end(), timings.begin(), timings.end());
-  write_csv_atomic(out, table_columns(plan, task), ordered, task.scene_name(), run);
-}
-
-RunInfo sweep_timings(double wall_s, unsigned threads, int ranks, std::size_t resumed) {
-  return {{"wall_s", csv_number(wall_s)},
-          {"threads", std::to_string(threads)},
-          {"ranks", std::to_string(ranks)},
-          {"resumed", std::to_string(resumed)}};
-}
-
-namespace {
-
-/// The value of `"name": ` on a sidecar's run line: a JSON string's text or a bare number's
-/// digits; nullopt when absent.
-std::optional<std::string> run_field(const std::string& line, const std::string& name) {
-  const std::string key = "\"" + name + "\": ";
-  const auto at = line.find(key);
-  if (at == std::string::npos) return std::nullopt;
-  std::size_t p = at + key.size();
-  if (p < line.size() && line[p] == '"') {
-    const auto end = line.find('"', p + 1);
-    if (end == std::string::npos) return std::nullopt;
-    return line.substr(p + 1, end - p - 1);
-  }
-  const auto end = line.find_first_of(",}", p);
-  return line.substr(p, end == std::string::npos ? std::string::npos : end - p);
-}
-
-bool known_status(const std::string& s) {
-  for (const char* k : {"ok", "at_rest", "no_static_friction", "law_blowup", "accuracy_not_reached",
-                        "solver_failure", "bad_input", "error"})
-    if (s == k) return true;
-  return false;
-}
-
-/// What a shard's sidecar says of its sweep: the plan's identity and size, the shard i/n, its
-/// rows; the sidecar's text with the run line marked (merge writes it back as the whole's).
-struct ShardRecord {
-  std::string plan, task, schema_before, schema_after;
-  std::uint64_t plan_points = 0, rows = 0, index = 0, count = 1;
+struct OrderedTable::Impl {
+  std::optional<CsvWriter> csv;
+  std::string task, plan_hash;
+  std::size_t plan_points = 0;
 };
 
-ShardRecord read_shard_sidecar(const std::filesystem::path& table) {
-  const auto side = schema_path(table);
-  if (!input_exists(side))
-    throw InputError("--merge", table.string(),
-                     "has no sidecar " + side.string() +
-                         ": merge checks each shard's plan and size there; copy it with the table");
-  InputFile file(side, "--merge sidecar", kMaxSidecarBytes);
-  ShardRecord r;
-  std::string line;
-  std::size_t lineno = 0;
-  bool seen = false;
-  while (read_line(file.stream(), line, "--merge sidecar", side.string(), ++lineno)) {
-    const auto at = line.find("\"run\": {");
-    if (at == std::string::npos || seen) {
-      (seen ? r.schema_after : r.schema_before) += line + "\n";
-      continue;
-    }
-    seen = true;
-    r.schema_before += line.substr(0, at);
-    const std::string where = side.string() + ":" + std::to_string(lineno);
-    auto need = [&](const char* name) {
-      auto v = run_field(line, name);
-      if (!v)
-        throw InputError("--merge", where,
-                         std::string("no \"") + name + "\" in the run record: not the sidecar of a sweep shard (or "
-                         "one written before merge checked plans: run that shard again)");
-      return *v;
-    };
-    auto count = [&](const char* name, std::uint64_t max) {
-      const std::string v = need(name);
-      const auto n = parse_count(v, max);
-      if (!n)
-        throw InputError("--merge", where,
-                         std::string(name) + " = " + v.substr(0, 40) + ": must be a whole number in [0, " +
-                             std::to_string(max) + "]");
-      return *n;
-    };
-    r.plan = need("plan");
-    r.task = need("task");
-    r.plan_points = count("plan_points", kMaxPlanPoints);
-    r.rows = count("rows", kMaxPlanPoints);
-    const std::string shard = need("shard");
-    if (shard.rfind("merged from ", 0) == 0) {
-      r.index = 0;
-      r.count = 1;
-    } else {
-      const auto slash = shard.find('/');
-      const auto i = parse_count(shard.substr(0, slash), 99999), n = slash == std::string::npos
-                                                                          ? std::nullopt
-                                                                          : parse_count(shard.substr(slash + 1), 100000);
-      if (!i || !n || *n == 0 || *i >= *n)
-        throw InputError("--merge", where, "shard = " + shard.substr(0, 40) + ": must be i/n with 0 <= i < n <= 100000");
-      r.index = *i;
-      r.count = *n;
-    }
-  }
-  if (!seen) throw InputError("--merge", side.string(), "no run record: not the sidecar of a sweep shard");
-  return r;
+OrderedTable::OrderedTable(const std::filesystem::path& out, const Plan& plan, const Task& task,
+                           std::size_t shard_index, std::size_t shard_count, Sink sink, std::size_t window)
+    : impl_(std::make_unique<Impl>()),
+      index_(shard_index),
+      count_(shard_count),
+      positions_(plan.size() > shard_index ? (plan.size() - shard_index + shard_count - 1) / shard_count : 0),
+      window_(std::max<std::size_t>(window, 1)),
+      sink_(std::move(sink)) {
+  impl_->task = task.name();
+  impl_->plan_hash = plan_identity(plan, task);
+  impl_->plan_points = plan.size();
+  if (!out.empty()) impl_->csv.emplace(out, table_columns(plan, task, false), task.scene_name());
 }
 
-}  // namespace
+OrderedTable::~OrderedTable() = default;
+
+void OrderedTable::add(std::size_t index, std::string line, bool failed) {
+  const std::size_t pos = (index - index_) / count_;
+  if (pos < written_ || !waiting_.emplace(pos, std::make_pair(std::move(line), failed)).second) return;  // twice
+  for (auto it = waiting_.begin(); it != waiting_.end() && it->first == written_; it = waiting_.erase(it)) {
+    if (impl_->csv) impl_->csv->line(it->second.first);
+    if (sink_) sink_(index_of(written_), it->second.first);
+    failed_ += it->second.second ? 1 : 0;
+    ++written_;
+  }
+}
+
+void OrderedTable::commit(const RunInfo& timings, const PlanRecord& record) {
+  if (!complete()) throw std::logic_error("OrderedTable::commit before every row was written");
+  if (!impl_->csv) return;
+  std::string rec;
+  for (const auto& [k, v] : record) rec += (rec.empty() ? "" : ", ") + json_string(k) + ": " + json_string(v);
+  RunInfo run = {{"task", json_string(impl_->task)},
+                 {"plan", json_string(impl_->plan_hash)},
+                 {"plan_points", std::to_string(impl_->plan_points)},
+                 {"shard", json_string(std::to_string(index_) + "/" + std::to_string(count_))},
+                 {"rows", std::to_string(written_)},
+                 {"failed", std::to_string(failed_)}};
+  run.insert(run.end(), timings.begin(), timings.end());
+  run.emplace_back("plan_record", "{" + rec + "}");
+  impl_->csv->run_info(run);
+  impl_->csv->commit();
+}
 
 std::string plan_identity(const Plan& plan, const Task& task) { return hex(fnv1a(sweep_identity(plan, task, 0, 1))); }
 
-std::size_t merge_tables(const std::vector<std::filesystem::path>& shards, const std::filesystem::path& out) {
-  if (shards.empty()) throw InputError("--merge", "(none)", "give the shard tables to join");
-  // Each table a regular file (a FIFO or a device refused before anything is read), then the
-  // sidecars: every table a shard of one sweep (one plan), each shard once.
-  for (const auto& path : shards) InputFile check(path, "--merge", kMaxTableBytes);
-  std::vector<ShardRecord> rec;
-  for (const auto& path : shards) rec.push_back(read_shard_sidecar(path));
-  const ShardRecord& first = rec.front();
-  std::map<std::uint64_t, std::size_t> shard_of;  // shard index -> position in `shards`
-  for (std::size_t k = 0; k < shards.size(); ++k) {
-    const ShardRecord& r = rec[k];
-    if (r.plan != first.plan || r.plan_points != first.plan_points || r.task != first.task)
-      throw InputError("--merge", shards[k].string(),
-                       "is a shard of another sweep than " + shards.front().string() +
-                           " (its plan differs: scene, values, task or options): merge the shards of one sweep");
-    if (r.count != first.count)
-      throw InputError("--merge", shards[k].string(),
-                       "is shard " + std::to_string(r.index) + "/" + std::to_string(r.count) + ", " +
-                           shards.front().string() + " one of " + std::to_string(first.count) +
-                           ": merge the shards of one split");
-    if (!shard_of.emplace(r.index, k).second)
-      throw InputError("--merge", shards[k].string(),
-                       "is shard " + std::to_string(r.index) + "/" + std::to_string(r.count) + " as " +
-                           shards[shard_of[r.index]].string() + " is: give each shard once");
-  }
-  for (std::uint64_t i = 0; i < first.count; ++i)
-    if (!shard_of.count(i))
-      throw InputError("--merge", "shard " + std::to_string(i) + "/" + std::to_string(first.count),
-                       "is missing: give every shard's table (the plan has " + std::to_string(first.plan_points) +
-                           " points)");
-  std::string header;
-  std::size_t columns = 0, status_col = 0;
-  std::map<std::size_t, std::string> lines;
-  std::size_t failed = 0;
-  for (std::size_t k = 0; k < shards.size(); ++k) {
-    const auto& path = shards[k];
-    InputFile file(path, "--merge", kMaxTableBytes);  // a regular file (never a FIFO or a device)
-    std::string h, line;
-    std::size_t lineno = 1, rows = 0;
-    if (!read_line(file.stream(), h, "--merge", path.string(), lineno))
-      throw InputError("--merge", path.string(), "empty file");
-    if (header.empty()) {
-      header = h;
-      const auto cols = split_cells(h);
-      columns = cols.size();
-      if (cols.size() < 3 || cols.front() != "point" || cols[cols.size() - 2] != "status" || cols.back() != "message")
-        throw InputError("--merge", path.string() + ":1", "not a sweep table: its columns are point, ..., status, message");
-      status_col = cols.size() - 2;
-    }
-    if (h != header)
-      throw InputError("--merge", path.string(), "its columns differ from " + shards.front().string() + "'s");
-    bool complete = true;
-    while (read_line(file.stream(), line, "--merge", path.string(), ++lineno, kMaxInputLine, &complete)) {
-      const std::string where = path.string() + ":" + std::to_string(lineno);
-      if (!complete) throw InputError("--merge", where, "the last row is cut short (no line end): the table is incomplete");
-      if (line.empty()) continue;
-      const auto cells = split_cells(line);
-      if (cells.size() != columns)
-        throw InputError("--merge", where,
-                         "a row of " + std::to_string(cells.size()) + " cells; the header has " +
-                             std::to_string(columns) + " (a row cut short or edited)");
-      const std::string& idx = cells.front();
-      const auto i = parse_count(idx, kMaxPlanPoints - 1);
-      if (!i)
-        throw InputError("--merge", where,
-                         "point index = " + idx.substr(0, 40) + (idx.size() > 40 ? "..." : "") +
-                             ": must be a whole number in [0, " + std::to_string(kMaxPlanPoints - 1) + "]");
-      if (*i >= first.plan_points || *i % rec[k].count != rec[k].index)
-        throw InputError("--merge", where,
-                         "point " + idx + " is not a point of shard " + std::to_string(rec[k].index) + "/" +
-                             std::to_string(rec[k].count) + " of a " + std::to_string(first.plan_points) +
-                             "-point plan");
-      if (!known_status(cells[status_col]))
-        throw InputError("--merge", where,
-                         "status = " + cells[status_col].substr(0, 40) +
-                             ": not a status of a sweep row (ok, at_rest, ..., error; docs/errors.md)");
-      if (!lines.emplace(*i, line).second)
-        throw InputError("--merge", where, "point " + idx + " appears twice");
-      if (row_failed(cells)) ++failed;
-      ++rows;
-    }
-    if (rows != rec[k].rows)
-      throw InputError("--merge", path.string(),
-                       "has " + std::to_string(rows) + " rows; its sidecar says " + std::to_string(rec[k].rows) +
-                           " (the table is cut short or edited)");
-  }
-  // Every point 0 .. n-1 exactly once (a shard cut short leaves a gap).
-  std::size_t expect = 0;
-  for (const auto& [i, l] : lines) {
-    if (i != expect) break;
-    ++expect;
-  }
-  if (expect != first.plan_points)
-    throw InputError("--merge", "point " + std::to_string(expect),
-                     "is in no shard: the plan has " + std::to_string(first.plan_points) +
-                         " points; give every shard's complete table");
-  const std::string schema = first.schema_before + "\"run\": {\"task\": " + json_string(first.task) +
-                             ", \"plan\": " + json_string(first.plan) +
-                             ", \"plan_points\": " + std::to_string(lines.size()) + ", \"shard\": \"merged from " +
-                             std::to_string(shards.size()) + "\", \"rows\": " + std::to_string(lines.size()) +
-                             ", \"failed\": " + std::to_string(failed) + "},\n" + first.schema_after;
-  std::string text = header + "\n";
-  for (const auto& [i, l] : lines) text += l + "\n";
-  write_file_atomic(out, text);
-  // A device or a descriptor (written through) gets the table only, as standard output does.
-  if (!resolve_output(out).write_through) write_file_atomic(schema_path(out), schema);
-  return failed;
+RunInfo sweep_timings(double wall_s, unsigned threads, int ranks, std::size_t resumed, double cpu_s) {
+  RunInfo r = {{"wall_s", csv_number(wall_s)}};
+  if (cpu_s >= 0) r.emplace_back("cpu_s", csv_number(cpu_s));
+  r.emplace_back("threads", std::to_string(threads));
+  r.emplace_back("ranks", std::to_string(ranks));
+  r.emplace_back("resumed", std::to_string(resumed));
+  return r;
+}
+
+double process_cpu_seconds() {
+  rusage u{};
+  if (::getrusage(RUSAGE_SELF, &u) != 0) return 0;
+  return static_cast<double>(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
+         1e-6 * static_cast<double>(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
 }
 
 // ---- threads -------------------------------------------------------------------------------
 
 std::vector<std::vector<std::string>> evaluate_points(const Plan& plan, const Task& task, unsigned jobs) {
   (void)table_columns(plan, task);  // every varied key is the task's, before any work
-  std::vector<std::vector<std::string>> rows(plan.size());
+  std::vector<std::vector<std::string>> rows(plan.size());  // in memory by request
   if (jobs == 0) jobs = std::max(1u, std::thread::hardware_concurrency());
   jobs = static_cast<unsigned>(std::min<std::size_t>(jobs, std::max<std::size_t>(plan.size(), 1)));
   std::atomic<std::size_t> next{0};
@@ -476,67 +139,101 @@ double cell_number(const std::string& cell) {
 
 Result run_local(const Plan& plan, const Task& task, const Options& o) {
   const auto start = std::chrono::steady_clock::now();
+  const double cpu0 = process_cpu_seconds();
   if (o.shard_count == 0 || o.shard_index >= o.shard_count)
     throw InputError("--shard", std::to_string(o.shard_index) + "/" + std::to_string(o.shard_count),
                      "must be i/n with 0 <= i < n");
-  (void)table_columns(plan, task);  // every varied key is the task's, before any work
-  const auto pts = shard_points(plan.size(), o.shard_index, o.shard_count);
+  (void)table_columns(plan, task);  // every varied key and value is the task's, before any work
+  const PlanRecord record = plan_record(plan, task, o.fixed);
   // journal_path: a directory or a FIFO as --out is refused before any point (exit 5).
-  Journal journal(journal_path(o.out), sweep_identity(plan, task, o.shard_index, o.shard_count));
-  std::map<std::size_t, std::vector<std::string>> rows;
-  std::vector<std::size_t> pending;
-  const std::set<std::size_t> mine(pts.begin(), pts.end());
-  for (const auto& [i, r] : journal.resumed())
-    if (mine.count(i)) rows[i] = r;
-  for (std::size_t i : pts)
-    if (!rows.count(i)) pending.push_back(i);
+  const auto out_path = o.out.empty() ? o.out : journal_path(o.out);  // a directory or FIFO: refused here
+  OrderedTable table(o.out, plan, task, o.shard_index, o.shard_count, o.row_sink, o.window);
   Result res;
-  res.points = pts.size();
-  res.resumed = rows.size();
+  res.points = table.positions();
+  // The journal's rows go to the table as they are read: a sweep writes its rows in point order
+  // within the window, so few wait, whatever the journal's length.
+  std::optional<Journal> journal;
+  if (!o.out.empty()) {
+    PlanRecord jrec = record;
+    jrec.emplace_back("shard", std::to_string(o.shard_index) + "/" + std::to_string(o.shard_count));
+    journal.emplace(out_path, sweep_identity(plan, task, o.shard_index, o.shard_count), jrec,
+                    [&](std::size_t i, std::string line) {
+                      if (i >= plan.size() || i % o.shard_count != o.shard_index || table.has((i - o.shard_index) / o.shard_count))
+                        return;
+                      const bool failed = row_failed(split_cells(line));
+                      table.add(i, std::move(line), failed);
+                      ++res.resumed;
+                    });
+  }
 
   unsigned jobs = o.jobs ? o.jobs : std::max(1u, std::thread::hardware_concurrency());
-  jobs = static_cast<unsigned>(std::min<std::size_t>(jobs, std::max<std::size_t>(pending.size(), 1)));
-  std::atomic<std::size_t> next{0}, done{rows.size()};
-  std::atomic<unsigned> running{jobs};
+  jobs = static_cast<unsigned>(std::min<std::size_t>(jobs, std::max<std::size_t>(res.points - res.resumed, 1)));
   std::mutex mutex;
+  std::condition_variable cv;  // a row was written (the window moved), a thread ended, or a failure
+  std::size_t next = 0;        // the next shard position to consider
+  unsigned running = jobs;
   std::exception_ptr failure;
+  auto stopped = [&] { return (o.stop && o.stop->load()) || failure; };
   auto worker = [&] {
     try {
-      while (!(o.stop && o.stop->load())) {
-        const std::size_t k = next.fetch_add(1);
-        if (k >= pending.size()) break;
-        auto row = evaluate_row(plan, task, pending[k]);
-        journal.append(pending[k], row);
-        std::lock_guard<std::mutex> lock(mutex);
-        rows[pending[k]] = std::move(row);
-        ++done;
+      for (;;) {
+        std::size_t pos = 0;
+        {
+          std::unique_lock<std::mutex> lock(mutex);
+          for (;;) {
+            while (next < table.positions() && table.has(next)) ++next;
+            if (stopped() || next >= table.positions()) break;
+            if (table.may_start(next)) break;
+            cv.wait_for(lock, std::chrono::milliseconds(100));  // a slow point holds the window
+          }
+          if (stopped() || next >= table.positions()) break;
+          pos = next++;
+        }
+        const std::size_t i = table.index_of(pos);
+        const auto row = evaluate_row(plan, task, i);
+        std::string line = join_cells(row);
+        if (journal) journal->append_line(i, line);
+        {
+          std::lock_guard<std::mutex> lock(mutex);
+          table.add(i, std::move(line), row_failed(row));
+        }
+        cv.notify_all();
       }
     } catch (...) {
       std::lock_guard<std::mutex> lock(mutex);
       if (!failure) failure = std::current_exception();
     }
-    --running;
+    {
+      std::lock_guard<std::mutex> lock(mutex);
+      --running;
+    }
+    cv.notify_all();
   };
   std::vector<std::thread> threads;
-  for (unsigned t = 0; t < jobs; ++t) threads.emplace_back(worker);
-  auto last = std::chrono::steady_clock::now();
-  while (running.load() > 0) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    if (o.progress && std::chrono::steady_clock::now() - last > std::chrono::milliseconds(500)) {
-      last = std::chrono::steady_clock::now();
-      o.progress(done.load(), pts.size());
+  for (unsigned t = 0; t + 1 < jobs; ++t) threads.emplace_back(worker);
+  if (o.progress) {
+    // This thread reports progress twice a second; the workers compute.
+    threads.emplace_back(worker);
+    std::unique_lock<std::mutex> lock(mutex);
+    while (running > 0) {
+      cv.wait_for(lock, std::chrono::milliseconds(500));
+      const std::size_t done = table.done();
+      lock.unlock();
+      o.progress(done, res.points);
+      lock.lock();
     }
+  } else {
+    worker();  // this thread computes too
   }
   for (auto& t : threads) t.join();
   if (failure) std::rethrow_exception(failure);
-  if (o.progress) o.progress(done.load(), pts.size());
-  res.done = rows.size();
-  for (const auto& [i, r] : rows) res.failed += row_failed(r) ? 1 : 0;
-  if (rows.size() < pts.size()) return res;  // stopped: the journal keeps what was done
+  if (o.progress) o.progress(table.done(), res.points);
+  res.done = table.done();
+  res.failed = table.failed();
+  if (!table.complete()) return res;  // stopped: the journal keeps what was done
   const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - start;
-  write_table(o.out, plan, task, rows, o.shard_index, o.shard_count,
-              sweep_timings(wall.count(), jobs, 1, res.resumed));
-  journal.remove();
+  table.commit(sweep_timings(wall.count(), jobs, 1, res.resumed, process_cpu_seconds() - cpu0), record);
+  if (journal) journal->remove();
   res.complete = true;
   return res;
 }

@@ -1,5 +1,6 @@
 // What a sweep evaluates at a point: a run of a scene (summary of its trajectory), or one of
 // the closed-form evaluations (friction wrench, iCOR formulas, mu estimate).
+#include <charconv>
 #include <cmath>
 #include <limits>
 #include <set>
@@ -10,6 +11,9 @@
 #include "nanopush/models/friction.hpp"
 #include "nanopush/models/icor.hpp"
 #include "nanopush/numerics/error.hpp"
+#include "nanopush/scenes/scene_keys.hpp"
+#include "nanopush/numerics/names.hpp"
+#include "hash.hpp"
 #include "nanopush/outputs/trajectory_csv.hpp"
 #include "nanopush/sweeps/sweep.hpp"
 
@@ -17,6 +21,46 @@ namespace nanopush::sweep {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+/// A number varied for a scene key against the key's own range as the key table states it
+/// ("> 0", ">= 0", "[a, b]", "0 or [a, b]"); a range that depends on other keys (abs(yn) <=
+/// length/2) is left to the point, where the other keys are known. InputError (exit 2 before
+/// any point) naming the key, the value and the range.
+void check_static_range(const std::string& key, double v) {
+  const SceneKey* k = find_scene_key(key);
+  if (!k) return;
+  std::string_view r = k->range;
+  const std::string range(r);
+  auto refuse = [&] { throw InputError("--vary " + key, fmt(v), "out of range: must be " + range); };
+  if (!std::isfinite(v)) refuse();
+  if (r.substr(0, 5) == "0 or ") {
+    if (v == 0) return;
+    r.remove_prefix(5);
+  }
+  auto number = [](std::string_view t, double& out) {
+    while (!t.empty() && t.front() == ' ') t.remove_prefix(1);
+    while (!t.empty() && t.back() == ' ') t.remove_suffix(1);
+    if (t == "pi/2") {
+      out = 1.5707963267948966;
+      return true;
+    }
+    const auto res = std::from_chars(t.data(), t.data() + t.size(), out);
+    return res.ec == std::errc() && res.ptr == t.data() + t.size();
+  };
+  double lo = 0, hi = 0;
+  if (r.substr(0, 4) == "> 0;" || r == "> 0") {
+    if (!(v > 0)) refuse();
+  } else if (r == ">= 0") {
+    if (!(v >= 0)) refuse();
+  } else if (r.size() > 4 && (r.front() == '[' || r.front() == '(') && (r.back() == ']' || r.back() == ')')) {
+    const auto comma = r.find(',');
+    if (comma == std::string_view::npos || !number(r.substr(1, comma - 1), lo) ||
+        !number(r.substr(comma + 1, r.size() - comma - 2), hi))
+      return;  // a bound named by another key
+    const bool lo_ok = r.front() == '[' ? v >= lo : v > lo, hi_ok = r.back() == ']' ? v <= hi : v < hi;
+    if (!lo_ok || !hi_ok) refuse();
+  }
+}
 
 std::string cell(double v) { return csv_number(v); }  // NaN -> "" (missing)
 
@@ -72,7 +116,10 @@ class RunTask final : public Task {
   /// input (exit 2), not a sweep whose rows all fail. Numbers are checked where they run (their
   /// ranges can depend on other keys of the point).
   void check_input(const std::string& key, const SceneValue& value) const override {
-    if (value.kind() == KeyType::number) return;
+    if (value.kind() == KeyType::number) {
+      check_static_range(key, value.number());
+      return;
+    }
     if (!checked_.insert(key + "=" + value.to_string()).second) return;
     Scene sc = base_;
     sc.set(key, value);
@@ -132,6 +179,21 @@ class RunTask final : public Task {
     return r;
   }
 
+  [[nodiscard]] std::vector<std::pair<std::string, std::string>> describe() const override {
+    // The choices as asked ("" where the scene's are taken: its hash covers them).
+    const std::string engine = name_or_empty(settings_.engine), method = name_or_empty(settings_.method),
+                      law = name_or_empty(settings_.law);
+    return {{"task", "run"},
+            {"scene", base_.name},
+            {"scene_hash", hex(fnv1a(base_.to_toml()))},
+            {"engine", engine.empty() ? std::string(name_of(base_.solver.engine)) : engine},
+            {"method", method.empty() ? std::string(name_of(base_.solver.method)) : method},
+            {"law", law.empty() ? (base_.rough() ? std::string(name_of(base_.surface.law)) : "") : law},
+            {"settings", "rtol=" + fmt(settings_.rtol) + " atol=" + fmt(settings_.atol) +
+                             " precision=" + name_or_empty(settings_.precision) + " accuracy=" + fmt(settings_.accuracy) +
+                             " estimate=" + (settings_.error_estimate ? (*settings_.error_estimate ? "1" : "0") : "")}};
+  }
+
   [[nodiscard]] std::string identity() const override {
     // The journal's identity of the task: the settings as given ("" = the scene's).
     return "run\n" + base_.to_toml() + "\nengine=" + name_or_empty(settings_.engine) +
@@ -180,6 +242,11 @@ class ParamTask : public Task {
     return compute(v);
   }
   void check_input(const std::string& key, const SceneValue& v) const override { (void)value(key, v); }
+  [[nodiscard]] std::vector<std::pair<std::string, std::string>> describe() const override {
+    std::string fixed;
+    for (const auto& [k, x] : values_) fixed += (fixed.empty() ? "" : " ") + k + "=" + fmt(x);
+    return {{"task", name()}, {"values", fixed}};
+  }
   [[nodiscard]] std::string identity() const override {
     std::ostringstream s;
     s << name();
@@ -377,11 +444,10 @@ std::unique_ptr<Task> make_task(const std::string& name, const std::vector<Scene
 
 // ---- rows --------------------------------------------------------------------------------
 
-Columns table_columns(const Plan& plan, const Task& task) {
+Columns table_columns(const Plan& plan, const Task& task, bool check) {
   Columns c{count_column("point", "index of the point in the plan (0-based; the table's order)")};
   for (const auto& k : plan.keys) c.push_back(task.input_column(k));
-  for (const auto& point : plan.points)
-    for (std::size_t j = 0; j < point.size() && j < plan.keys.size(); ++j) task.check_input(plan.keys[j], point[j]);
+  if (check) plan.for_each_value([&](const std::string& key, const SceneValue& v) { task.check_input(key, v); });
   for (auto& o : task.outputs()) c.push_back(o);
   c.push_back(text_column("status",
                           "ok or at_rest (an answer); no_static_friction, law_blowup, accuracy_not_reached (its best "
@@ -392,12 +458,18 @@ Columns table_columns(const Plan& plan, const Task& task) {
 
 std::vector<std::string> evaluate_row(const Plan& plan, const Task& task, std::size_t i) {
   std::vector<std::string> row{std::to_string(i)};
-  for (const auto& v : plan.points.at(i))
+  const auto pt = plan.point(i);
+  std::vector<SceneSetting> settings;
+  settings.reserve(pt.size());
+  for (std::size_t k = 0; k < pt.size(); ++k) {
+    const auto& v = pt[k];
     row.push_back(v.kind() == KeyType::number ? csv_number(v.number()) : csv_quote(v.to_string()));
+    if (k < plan.keys.size()) settings.emplace_back(plan.keys[k], v);
+  }
   const std::size_t n_out = task.outputs().size();
   std::string status = "ok", message;
   try {
-    auto out = task.evaluate_point(plan.settings(i), i);
+    auto out = task.evaluate_point(settings, i);
     for (auto& c : out.cells) row.push_back(std::move(c));
     status = std::move(out.status);
     message = std::move(out.message);

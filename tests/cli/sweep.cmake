@@ -49,3 +49,22 @@ set_tests_properties(cli.sweep.bad_choice_value PROPERTIES ENVIRONMENT "NANOPUSH
 add_test(NAME cli.sweep.bad_choice_value_exit
          COMMAND ${_np} sweep fig3_18 --vary surface.law=thesis,coulmb --out ${CMAKE_CURRENT_BINARY_DIR}/bad_choice.csv)
 set_tests_properties(cli.sweep.bad_choice_value_exit PROPERTIES ENVIRONMENT "NANOPUSH_SCENES=${NANOPUSH_SCENES}" WILL_FAIL TRUE)
+
+# Sweeps in bounded memory and plans that cannot lie (tests/cli/scripts/sweep_stream_checks.sh):
+# --points read by index, numeric --vary values checked first, shards and journals of another
+# plan refused naming the difference, the peak RSS of a streamed 1e6-point sweep (a generous
+# bound; the benchmark `nanopush bench-sweep-memory` measures memory against points).
+set(_stream_sh ${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/sweep_stream_checks.sh)
+foreach(_mode points vary_range foreign rss)
+  add_test(NAME cli.sweep.stream_${_mode} COMMAND bash ${_stream_sh} ${_mode} ${_np} ${_sweep_dir}/stream_${_mode}
+                                                    "${Python3_EXECUTABLE}")
+  set_tests_properties(cli.sweep.stream_${_mode} PROPERTIES ENVIRONMENT "${_env}"
+                       PASS_REGULAR_EXPRESSION "sweep check ${_mode}: ok")
+endforeach()
+set_tests_properties(cli.sweep.stream_rss PROPERTIES TIMEOUT 600)
+# Grid values exactly as NumPy computes them (NumPy is the oracle; the script finds a Python
+# with NumPy when the Python package's interpreter is not configured yet).
+add_test(NAME cli.sweep.linspace_numpy COMMAND bash ${_stream_sh} linspace ${_np} ${_sweep_dir}/linspace
+                                               "${Python3_EXECUTABLE}")
+set_tests_properties(cli.sweep.linspace_numpy PROPERTIES ENVIRONMENT "${_env}" LABELS numeric
+                     PASS_REGULAR_EXPRESSION "sweep check linspace: ok")

@@ -154,6 +154,9 @@ class CsvWriter {
   void row(const std::string& label, const std::vector<double>& values);
   /// Row of cells already formatted (csv_number, csv_text, "" for missing).
   void cells(const std::vector<std::string>& cells);
+  /// A row already joined: cells as formatted, separated by commas, no line end (a streamed
+  /// table's row; the caller keeps it to the columns).
+  void line(const std::string& text);
   /// A blank line (gnuplot's scan separator in grid files; readers skip it).
   void blank_line();
   void commit();
