@@ -200,7 +200,7 @@ int bench_memory(const MemOptions& o) {
      << " MB after " << last.done << " points" << (last.completed ? "" : " (stopped at the time limit)") << " | "
      << (last.peak_mb < kRssTargetMb ? "met" : "**NOT met**") << " |\n\nFiles: `sweep_memory.csv` (sidecar "
      << "`sweep_memory.schema.json`)" << (plot_note.empty() ? ", `sweep_memory.png`:\n\n![peak RSS against points](sweep_memory.png)\n" : "; " + plot_note + ".\n");
-  write_file_atomic(out / "report_memory.md", md.str());
+  write_file_atomic(out / "sweep_memory.md", md.str());
   std::cout << md.str();
   return 0;
 }
@@ -208,10 +208,10 @@ int bench_memory(const MemOptions& o) {
 RegisterCommand reg{
     {"bench-sweep-memory",
      "Benchmark of a sweep's memory: peak RSS of `nanopush sweep --task friction` against the number of points "
-     "(10^3 to 10^7), each run a process; CSV, PNG and report_memory.md (docs/performance.md)",
+     "(10^3 to 10^7), each run a process; CSV, PNG and sweep_memory.md (docs/performance.md)",
      92, [](CLI::App& app) -> std::function<int()> {
        auto o = std::make_shared<MemOptions>();
-       app.add_option("--out", o->out, "output directory: sweep_memory.csv (+ .schema.json), sweep_memory.png, report_memory.md")
+       app.add_option("--out", o->out, "output directory: sweep_memory.csv (+ .schema.json), sweep_memory.png, sweep_memory.md")
            ->capture_default_str();
        app.add_option("--max-points", o->max_points, "the largest grid (10^3, 10^4, ... up to this)")->capture_default_str();
        app.add_option("--time-limit", o->time_limit, "seconds a run may take before SIGINT stops it")
