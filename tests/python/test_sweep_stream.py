@@ -107,7 +107,8 @@ def test_ctrl_c_stops_and_keeps_the_journal(tmp_path, to_file):
         return
     journal = tmp_path / "t.csv.journal"
     assert journal.is_file() and not out.exists()
-    kept = len(journal.read_text().splitlines()) - 1  # after the header line
+    # records: after the header line and the plan record ("#plan ...")
+    kept = sum(1 for line in journal.read_text().splitlines()[1:] if not line.startswith("#"))
     assert 0 < kept < n
     # The same call resumes from the journal to the uninterrupted table.
     r = nanopush.sweep(nanopush.Scene.preset("fig3_6a"), vary={"push.force": f"1e-6:2e-6:{n}"}, jobs=2, out=out)
