@@ -9,13 +9,16 @@ grep -q 'tip: contact at t = ' \"$d/err\"; grep -q 'tip: release at t = ' \"$d/e
 test \"$(wc -l < \"$d/t.csv\")\" -eq 402; echo tip-run: ok" ${_np} ${CMAKE_CURRENT_BINARY_DIR}/cli_tip_run)
 set_tests_properties(cli.tip.run_example PROPERTIES ENVIRONMENT "NANOPUSH_SCENES=${NANOPUSH_SCENES}"
                      PASS_REGULAR_EXPRESSION "tip-run: ok")
-# Keys of the force push with push.mode = tip, and the F77 engine, are bad input (exit 2).
+# Keys of the force push with push.mode = tip, the F77 engine and a tip inside the bar are bad
+# input (exit 2), and nothing is written (the output is a path in a scratch directory).
 add_test(NAME cli.tip.bad_input
-         COMMAND bash -c "\"$0\" run tip_push_nanorod --set push.force=1e-6 --out /dev/null; a=$?; \
-\"$0\" run tip_push_nanorod --engine f77 --out /dev/null; b=$?; \
-\"$0\" run tip_push_nanorod --set tip.start_x=0 --out /dev/null; c=$?; echo \"codes $a $b $c\"" ${_np})
+         COMMAND bash -c "d=\"$1\"; rm -rf \"$d\"; mkdir -p \"$d\"; \
+\"$0\" run tip_push_nanorod --set push.force=1e-6 --out \"$d/a.csv\"; a=$?; \
+\"$0\" run tip_push_nanorod --engine f77 --out \"$d/b.csv\"; b=$?; \
+\"$0\" run tip_push_nanorod --set tip.start_x=0 --out \"$d/c.csv\"; c=$?; \
+n=$(ls -A \"$d\" | wc -l); echo \"codes $a $b $c files $n\"" ${_np} ${CMAKE_CURRENT_BINARY_DIR}/cli_tip_bad)
 set_tests_properties(cli.tip.bad_input PROPERTIES ENVIRONMENT "NANOPUSH_SCENES=${NANOPUSH_SCENES}"
-                     PASS_REGULAR_EXPRESSION "codes 2 2 2")
+                     PASS_REGULAR_EXPRESSION "codes 2 2 2 files 0")
 # A plan for a seeded goal: found and verified, with its files; a goal out of reach in one push
 # is not_found (exit 3) with the best plan written; a bad goal is exit 2 and writes nothing.
 add_test(NAME cli.plan.found
