@@ -10,7 +10,10 @@ fail() { echo "FAIL: $*"; exit 1; }
 # The shared objects the loader initialises for a command (LD_DEBUG=libs: "calling init: PATH").
 loaded() { LD_DEBUG=libs LD_DEBUG_OUTPUT=ld "$@" > /dev/null 2>&1 || true; cat ld.* | grep -o 'calling init: .*' | sort -u; rm -f ld.*; }
 
-! ldd "$np" | grep -q 'libmpi' || fail "nanopush links libmpi: $(ldd "$np" | grep libmpi)"
+# ldd's output is captured before grep reads it: `ldd | grep -q` under pipefail fails at random
+# when grep exits at its first match and ldd dies of SIGPIPE.
+deps=$(ldd "$np")
+! grep -q 'libmpi' <<< "$deps" || fail "nanopush links libmpi: $(grep libmpi <<< "$deps")"
 libs=$(loaded "$np" --version)
 [ -n "$libs" ] || fail "LD_DEBUG=libs reported nothing for nanopush --version"
 ! grep -q 'libmpi\|libopen-pal\|libopen-rte\|libpmix' <<< "$libs" || fail "nanopush --version loads MPI: $(grep mpi <<< "$libs")"
@@ -19,7 +22,8 @@ libs=$(loaded "$np" run fig3_6a --out run.csv)
 [ -s run.csv ] || fail "nanopush run wrote no trajectory"
 ! grep -q 'libmpi' <<< "$libs" || fail "nanopush run loads libmpi"
 if [ -x "$np_mpi" ]; then
-  ldd "$np_mpi" | grep -q 'libmpi' || fail "nanopush-mpi does not link libmpi"
+  deps_mpi=$(ldd "$np_mpi")
+  grep -q 'libmpi' <<< "$deps_mpi" || fail "nanopush-mpi does not link libmpi"
   grep -q 'libmpi' <<< "$(loaded "$np_mpi" --version)" || fail "LD_DEBUG=libs does not show nanopush-mpi loading libmpi"
   # The same commands: the help texts agree.
   cmp <("$np" --help) <("$np_mpi" --help | sed 's/nanopush-mpi/nanopush/g') || fail "nanopush and nanopush-mpi list different commands"
