@@ -49,8 +49,9 @@ if(NANOPUSH_DRIVERS)
   endif()
 endif()
 
+# outputs/json.hpp is the build's own (nlohmann-json), not part of the installed API.
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/cxx/include/nanopush DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
-        FILES_MATCHING PATTERN "*.hpp")
+        FILES_MATCHING PATTERN "*.hpp" PATTERN "outputs/json.hpp" EXCLUDE)
 install(FILES ${PROJECT_SOURCE_DIR}/bindings/nanopush.h DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 file(GLOB _bridge_headers ${PROJECT_SOURCE_DIR}/fortran/bridge/f77_*.h)
 install(FILES ${_bridge_headers} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/nanopush)

@@ -116,7 +116,7 @@ bool bench_atlas(const AtlasOptions& o, const fs::path& dir, std::ostream& md, R
     std::string key = "slowest_point_s_" + name;
     for (char& ch : key)
       if (ch == ' ' || ch == '/') ch = '_';
-    info.push_back({key, csv_number(c.max_wall)});
+    info.push_back({key, c.max_wall});
   }
   w.run_info(info);
   w.commit();

@@ -351,8 +351,8 @@ int bench_friction(const BenchFrictionOptions& o) {
   add_row("integrate_" + o.scene, static_cast<std::size_t>(rn.stats.nfcn), run_old, run_new, run_ratio, dtheta, dstate,
           1e9);
   const fs::path csv = out_dir / "friction_bench.csv";
-  RunInfo info = {{"load_start", csv_number(load_start[0])}, {"load_end", csv_number(load_end[0])},
-                  {"cores", std::to_string(std::max(1u, std::thread::hardware_concurrency()))}};
+  RunInfo info = {{"load_start", load_start[0]}, {"load_end", load_end[0]},
+                  {"cores", std::max(1u, std::thread::hardware_concurrency())}};
   write_csv_atomic(csv, cols, rows, o.scene, info);
 
   // ---- plot: ns per wrench, old and new, per workload (log scale)

@@ -78,11 +78,11 @@ void write_outputs(const fit::FitResult& r, const fit::Observations& obs, const 
       }
     w.row(row);
   }
-  RunInfo info = {{"converged", r.converged ? "true" : "false"}, {"chi2_dof", csv_number(r.chi2_dof)},
-                  {"n_forward_solves", std::to_string(r.n_forward_solves)}, {"wall_seconds", csv_number(r.wall_seconds)}};
+  RunInfo info = {{"converged", r.converged}, {"chi2_dof", r.chi2_dof},
+                  {"n_forward_solves", r.n_forward_solves}, {"wall_seconds", r.wall_seconds}};
   for (const auto& p : r.parameters) {
-    info.emplace_back(p.key, csv_number(p.value));
-    if (std::isfinite(p.stderr_)) info.emplace_back(p.key + ".stderr", csv_number(p.stderr_));
+    info.emplace_back(p.key, p.value);
+    if (std::isfinite(p.stderr_)) info.emplace_back(p.key + ".stderr", p.stderr_);
   }
   w.run_info(info);
   w.commit();
@@ -181,7 +181,7 @@ int run_fit(const FitCliOptions& o) {
         }
       w.row(row);
     }
-    w.run_info({{"seed", std::to_string(o.seed)}});
+    w.run_info({{"seed", o.seed}});
     w.commit();
     if (!o.quiet) std::cerr << "synthetic data of " << sc.name << " (seed " << o.seed << "): " << o.synthesize << "\n";
     return 0;

@@ -25,6 +25,7 @@
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/outputs/csv_reader.hpp"
 #include "nanopush/outputs/io.hpp"
+#include "nanopush/outputs/json.hpp"
 #include "nanopush/outputs/plot.hpp"
 #include "registry.hpp"
 
@@ -164,36 +165,37 @@ Data read_data(const std::string& path, const std::map<std::string, double>& sig
 
 // ---- output -----------------------------------------------------------------------------
 
-std::string json_number(double v) { return std::isfinite(v) ? csv_number(v) : std::string("null"); }
-
 std::string summary_json(const Options& o, const Data& d, const std::vector<icor::BatchEstimate>& est) {
-  std::ostringstream j;
-  j << "{\n  \"data\": " << json_string(o.data) << ",\n  \"rows\": " << d.obs.size() << ",\n  \"alpha\": "
-    << json_number(o.alpha) << ",\n  \"load\": " << json_number(o.rod.load()) << ",\n  \"rod\": {\"length\": "
-    << json_number(o.rod.length) << ", \"radius\": " << json_number(o.rod.radius) << ", \"density\": "
-    << json_number(o.rod.density) << ", \"hamaker\": " << json_number(o.rod.hamaker) << ", \"z0\": "
-    << json_number(o.rod.z0) << ", \"gravity\": " << json_number(o.rod.gravity) << ", \"length_sigma\": "
-    << json_number(o.length_sigma) << ", \"hamaker_sigma\": " << json_number(o.hamaker_sigma) << "}";
+  json doc = {{"data", o.data},
+              {"rows", d.obs.size()},
+              {"alpha", json_number(o.alpha)},
+              {"load", json_number(o.rod.load())},
+              {"rod",
+               {{"length", json_number(o.rod.length)},
+                {"radius", json_number(o.rod.radius)},
+                {"density", json_number(o.rod.density)},
+                {"hamaker", json_number(o.rod.hamaker)},
+                {"z0", json_number(o.rod.z0)},
+                {"gravity", json_number(o.rod.gravity)},
+                {"length_sigma", json_number(o.length_sigma)},
+                {"hamaker_sigma", json_number(o.hamaker_sigma)}}}};
   for (const auto& e : est) {
     std::map<std::string, int> eqs;
     for (const auto& r : e.rows) ++eqs[r.equation];
-    j << ",\n  " << json_string(icor::to_string(e.pressure)) << ": {\n"
-      << "    \"mu\": {\"value\": " << json_number(e.mu) << ", \"stderr\": " << json_number(e.sigma) << "},\n"
-      << "    \"stderr_statistical\": " << json_number(e.sigma_stat) << ",\n"
-      << "    \"stderr_systematic\": " << json_number(e.sigma_syst) << ",\n"
-      << "    \"stderr_scaled\": " << json_number(e.sigma_scaled) << ",\n"
-      << "    \"chi2\": " << json_number(e.chi2) << ",\n    \"dof\": " << e.dof << ",\n"
-      << "    \"chi2_dof\": " << json_number(e.chi2_dof) << ",\n    \"p_value\": " << json_number(e.p_value)
-      << ",\n    \"consistent\": " << (e.consistent ? "true" : "false") << ",\n    \"equations\": {";
-    bool first = true;
-    for (const auto& [k, n] : eqs) {
-      j << (first ? "" : ", ") << json_string(k) << ": " << n;
-      first = false;
-    }
-    j << "}\n  }";
+    json equations = json::object();
+    for (const auto& [k, n] : eqs) equations[k] = n;
+    doc[icor::to_string(e.pressure)] = {{"mu", {{"value", json_number(e.mu)}, {"stderr", json_number(e.sigma)}}},
+                                        {"stderr_statistical", json_number(e.sigma_stat)},
+                                        {"stderr_systematic", json_number(e.sigma_syst)},
+                                        {"stderr_scaled", json_number(e.sigma_scaled)},
+                                        {"chi2", json_number(e.chi2)},
+                                        {"dof", e.dof},
+                                        {"chi2_dof", json_number(e.chi2_dof)},
+                                        {"p_value", json_number(e.p_value)},
+                                        {"consistent", e.consistent},
+                                        {"equations", std::move(equations)}};
   }
-  j << "\n}\n";
-  return j.str();
+  return json_text(doc);
 }
 
 void write_outputs(const Options& o, const Data& d, const std::vector<icor::BatchEstimate>& est) {
@@ -235,9 +237,9 @@ void write_outputs(const Options& o, const Data& d, const std::vector<icor::Batc
   RunInfo run;
   for (const auto& e : est) {
     const std::string p = icor::to_string(e.pressure);
-    run.push_back({"mu_" + p, csv_number(e.mu)});
-    run.push_back({"stderr_" + p, csv_number(e.sigma)});
-    if (std::isfinite(e.chi2_dof)) run.push_back({"chi2_dof_" + p, csv_number(e.chi2_dof)});
+    run.push_back({"mu_" + p, e.mu});
+    run.push_back({"stderr_" + p, e.sigma});
+    if (std::isfinite(e.chi2_dof)) run.push_back({"chi2_dof_" + p, e.chi2_dof});
   }
   write_csv_atomic(csv, cols, rows, {}, run);
   write_file_atomic(dir / "fit_icor.json", summary_json(o, d, est));

@@ -8,6 +8,7 @@
 
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/outputs/io.hpp"
+#include "nanopush/outputs/json.hpp"
 #include "nanopush/outputs/plot.hpp"
 #include "nanopush/planning/plan.hpp"
 #include "cli_checks.hpp"
@@ -67,15 +68,15 @@ void write_outputs(const Scene& sc, const plan::PlanResult& r, const std::filesy
   std::filesystem::create_directories(dir);
   {
     CsvWriter w(dir / "plan.csv", plan_columns(), sc.name);
-    w.run_info({{"status", json_string(r.status)},
-                {"verified", r.verified ? "true" : "false"},
-                {"goal_x_m", csv_number(r.goal.x)},
-                {"goal_y_m", csv_number(r.goal.y)},
-                {"goal_theta_rad", csv_number(r.goal.theta)},
-                {"final_distance_m", csv_number(r.final_distance)},
-                {"final_angle_rad", csv_number(r.final_angle)},
-                {"forward_runs", std::to_string(r.forward_runs)},
-                {"planning_seconds", csv_number(r.planning_seconds)}});
+    w.run_info({{"status", r.status},
+                {"verified", r.verified},
+                {"goal_x_m", r.goal.x},
+                {"goal_y_m", r.goal.y},
+                {"goal_theta_rad", r.goal.theta},
+                {"final_distance_m", r.final_distance},
+                {"final_angle_rad", r.final_angle},
+                {"forward_runs", r.forward_runs},
+                {"planning_seconds", r.planning_seconds}});
     int i = 1;
     for (const auto& p : r.pushes)
       w.row({double(i++), p.start_x, p.start_y, p.direction, p.speed, p.travel, p.end.x, p.end.y, p.end.theta});
@@ -111,24 +112,33 @@ void write_outputs(const Scene& sc, const plan::PlanResult& r, const std::filesy
     outline(-1, r.goal);
     w.commit();
   }
-  std::ostringstream js;
-  js << std::setprecision(17) << "{\n  \"scene\": " << json_string(sc.name) << ",\n  \"status\": " << json_string(r.status)
-     << ",\n  \"verified\": " << (r.verified ? "true" : "false") << ",\n  \"message\": " << json_string(r.message)
-     << ",\n  \"start\": [" << r.start.x << ", " << r.start.y << ", " << r.start.theta << "],\n  \"goal\": [" << r.goal.x
-     << ", " << r.goal.y << ", " << r.goal.theta << "],\n  \"final\": [" << r.final_pose.x << ", " << r.final_pose.y
-     << ", " << r.final_pose.theta << "],\n  \"final_distance_m\": " << r.final_distance
-     << ",\n  \"final_angle_rad\": " << r.final_angle << ",\n  \"tip_travel_m\": " << r.tip_travel
-     << ",\n  \"time_s\": " << r.time << ",\n  \"forward_runs\": " << r.forward_runs
-     << ",\n  \"planning_seconds\": " << r.planning_seconds << ",\n  \"pushes\": [";
-  for (std::size_t i = 0; i < r.pushes.size(); ++i) {
-    const auto& p = r.pushes[i];
-    js << (i ? "," : "") << "\n    {\"start\": [" << p.start_x << ", " << p.start_y << "], \"direction\": " << p.direction
-       << ", \"speed\": " << p.speed << ", \"travel\": " << p.travel << ", \"end\": [" << p.end.x << ", " << p.end.y << ", "
-       << p.end.theta << "], \"face\": " << json_string(p.face) << ", \"offset\": " << p.offset
-       << ", \"max_force_N\": " << p.max_force << ", \"verified_deviation\": " << p.verified_deviation << "}";
-  }
-  js << "\n  ]\n}\n";
-  write_file_atomic(dir / "plan.json", js.str());
+  const auto pose = [](const plan::Pose& p) { return json::array({json_number(p.x), json_number(p.y), json_number(p.theta)}); };
+  json pushes = json::array();
+  for (const auto& p : r.pushes)
+    pushes.push_back({{"start", json::array({json_number(p.start_x), json_number(p.start_y)})},
+                      {"direction", json_number(p.direction)},
+                      {"speed", json_number(p.speed)},
+                      {"travel", json_number(p.travel)},
+                      {"end", pose(p.end)},
+                      {"face", p.face},
+                      {"offset", json_number(p.offset)},
+                      {"max_force_N", json_number(p.max_force)},
+                      {"verified_deviation", json_number(p.verified_deviation)}});
+  const json doc = {{"scene", sc.name},
+                    {"status", r.status},
+                    {"verified", r.verified},
+                    {"message", r.message},
+                    {"start", pose(r.start)},
+                    {"goal", pose(r.goal)},
+                    {"final", pose(r.final_pose)},
+                    {"final_distance_m", json_number(r.final_distance)},
+                    {"final_angle_rad", json_number(r.final_angle)},
+                    {"tip_travel_m", json_number(r.tip_travel)},
+                    {"time_s", json_number(r.time)},
+                    {"forward_runs", r.forward_runs},
+                    {"planning_seconds", json_number(r.planning_seconds)},
+                    {"pushes", std::move(pushes)}};
+  write_file_atomic(dir / "plan.json", json_text(doc));
   const std::string body =
       "set size ratio -1\nset xlabel 'x (nm)'\nset ylabel 'y (nm)'\nset key outside right noenhanced\n"
       "set datafile separator ','\n"
@@ -188,8 +198,8 @@ int closed_loop_cmd(const PlanCliOptions& o, const Scene& sc, const plan::Pose& 
                {"start_y", "m", "tip start y"}, {"direction", "rad", "tip direction"}, {"travel", "m", "tip travel"},
                {"plan_pushes", "1", "pushes the re-plan from this image needed"}},
               sc.name);
-  w.run_info({{"status", json_string(r.status)}, {"final_distance_m", csv_number(r.final_distance)},
-              {"final_angle_rad", csv_number(r.final_angle)}, {"seed", std::to_string(o.seed)}});
+  w.run_info({{"status", r.status}, {"final_distance_m", r.final_distance},
+              {"final_angle_rad", r.final_angle}, {"seed", o.seed}});
   int k = 1;
   for (const auto& s : r.steps)
     w.row({double(k++), s.observed.x, s.observed.y, s.observed.theta, s.truth.x, s.truth.y, s.truth.theta, s.push.start_x,
@@ -250,9 +260,9 @@ int plan_cmd(const PlanCliOptions& o) {
                 {{"trial", "1", "trial number"}, {"final_distance", "m", "true end pose's distance from the goal"},
                  {"final_angle", "rad", "true end pose's angle from the goal"}, {"success", "1", "1: within tolerance"}},
                 sc.name);
-    w.run_info({{"probability", csv_number(c.probability)}, {"wilson95_low", csv_number(c.low)},
-                {"wilson95_high", csv_number(c.high)}, {"noise", json_string(o.noise)},
-                {"mu_range", json_string(o.mu_range)}, {"seed", std::to_string(o.seed)}});
+    w.run_info({{"probability", c.probability}, {"wilson95_low", c.low},
+                {"wilson95_high", c.high}, {"noise", o.noise},
+                {"mu_range", o.mu_range}, {"seed", o.seed}});
     for (int k = 0; k < c.trials; ++k) {
       const bool ok = c.final_distance[k] <= po.tolerance_distance && c.final_angle[k] <= po.tolerance_angle;
       w.row({double(k + 1), c.final_distance[k], c.final_angle[k], ok ? 1.0 : 0.0});

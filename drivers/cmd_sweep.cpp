@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "nanopush/numerics/error.hpp"
+#include "nanopush/sweeps/progress.hpp"
 #include "nanopush/sweeps/sweep.hpp"
 #include "cli_checks.hpp"
 #include "registry.hpp"
@@ -94,18 +95,16 @@ std::pair<std::size_t, std::size_t> parse_shard(const std::string& s) {
   throw InputError("--shard", s, "must be i/n with 0 <= i < n <= 100000 (e.g. 0/4)");
 }
 
-/// Progress on stderr: points done/total, rate, time left (a terminal only).
+/// Progress on stderr: points done/total, rate, time left (a terminal only). The rate is over
+/// the last ten seconds from the first report, which the runner makes when the work starts
+/// (sweep::ProgressRate), so setting up and resumed points do not dilute it.
 std::function<void(std::size_t, std::size_t)> progress_line(bool quiet) {
   if (quiet || !::isatty(2)) return {};
-  auto start = std::make_shared<std::chrono::steady_clock::time_point>(std::chrono::steady_clock::now());
-  auto first = std::make_shared<std::size_t>(SIZE_MAX);
-  return [start, first](std::size_t done, std::size_t total) {
-    if (*first == SIZE_MAX) *first = done;
-    const double el = std::chrono::duration<double>(std::chrono::steady_clock::now() - *start).count();
-    const double rate = el > 0 ? static_cast<double>(done - *first) / el : 0;
-    const double left = rate > 0 ? static_cast<double>(total - done) / rate : 0;
-    std::fprintf(stderr, "\rsweep: %zu/%zu points, %.3g points/s, %.0f s left   %s", done, total, rate, left,
-                 done >= total ? "\n" : "");
+  auto meter = std::make_shared<sweep::ProgressRate>();
+  const auto t0 = std::chrono::steady_clock::now();
+  return [meter, t0](std::size_t done, std::size_t total) {
+    meter->sample(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), done);
+    std::fprintf(stderr, "\rsweep: %s   %s", meter->line(total).c_str(), done >= total ? "\n" : "");
   };
 }
 
@@ -197,9 +196,16 @@ int sweep_cmd(SweepOptions o) {
   const std::vector<NetcdfAxis> axes = output.netcdf() && o.points.empty() && o.shard.empty()
                                            ? grid_axes(o.vary, o.vary_log, sweep::table_columns(plan, *task))
                                            : std::vector<NetcdfAxis>{};
+  // Each row's trajectory (--trajectories), for the .nc: point i of the shard's rows.
+  std::vector<std::filesystem::path> trajectories;
+  if (output.netcdf() && !o.trajectories.empty()) {
+    const auto [index, count] = o.shard.empty() ? std::pair<std::size_t, std::size_t>{0, 1} : parse_shard(o.shard);
+    for (std::size_t i = index; i < plan.size(); i += count)
+      trajectories.push_back(std::filesystem::path(o.trajectories) / ("point_" + std::to_string(i) + ".csv"));
+  }
   if (mpi_launched()) {
     const int rc = run_mpi_sweep(plan, *task, opt, o.quiet, &g_signal);
-    if (rc < 128 && table_rank()) (void)output.finish(axes);
+    if (rc < 128 && table_rank()) (void)output.finish(axes, trajectories);
     return rc;
   }
 
@@ -209,7 +215,7 @@ int sweep_cmd(SweepOptions o) {
               << sweep::journal_path(opt.out).string() << "; run the same command again to resume\n";
     return 128 + (g_signal ? static_cast<int>(g_signal) : SIGINT);
   }
-  const std::string where = output.finish(axes);
+  const std::string where = output.finish(axes, trajectories);
   if (!o.quiet) {
     std::cerr << "sweep: " << r.points << " points (" << r.resumed << " from the journal), " << r.failed
               << " failed: " << where << "\n";

@@ -95,7 +95,7 @@ TEST_CASE("inputs: a merge table's out-of-range point index is bad input naming 
   auto sidecar = [&](const char* name, const char* shard, int rows) {
     std::ofstream(dir / name) << "{\n  \"nanopush\": {\n    \"run\": {\"task\": \"friction\", \"plan\": \"0123456789abcdef\", "
                                  "\"plan_points\": 3, \"shard\": \""
-                              << shard << "\", \"rows\": " << rows << ", \"failed\": 0},\n  }\n}\n";
+                              << shard << "\", \"rows\": " << rows << ", \"failed\": 0}\n  }\n}\n";
   };
   sidecar("s0.schema.json", "0/2", 2);
   sidecar("s1.schema.json", "1/2", 2);

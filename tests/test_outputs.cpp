@@ -13,6 +13,8 @@
 #include <sstream>
 #include <unistd.h>
 
+#include <nlohmann/json.hpp>
+
 #include "nanopush/outputs/io.hpp"
 
 using nanopush::csv_number;
@@ -115,14 +117,29 @@ TEST_CASE("CsvWriter: the CSV and its Table Schema sidecar appear together", "[o
   }
   CHECK(slurp(csv) == "t,mu,label\n3e-08,,\"a, b\"\n");
   const std::string j = slurp(dir / "a.schema.json");
-  CHECK(j.find(R"({"name": "t", "type": "number", "unit": "s", "description": "time"})") != std::string::npos);
-  CHECK(j.find(R"("nanopush:parameters": {"mu": 0.1})") != std::string::npos);
-  CHECK(j.find(R"({"name": "label", "type": "string", "unit": "")") != std::string::npos);
-  CHECK(j.find(R"("missingValues": [""])") != std::string::npos);
+  const auto doc = nlohmann::json::parse(j);  // a JSON document, read as one
+  CHECK(doc["fields"][0] == nlohmann::json{{"name", "t"}, {"type", "number"}, {"unit", "s"}, {"description", "time"}});
+  CHECK(doc["fields"][1]["nanopush:parameters"] == nlohmann::json{{"mu", 0.1}});
+  CHECK(doc["fields"][2]["type"] == "string");
+  CHECK(doc["fields"][2]["unit"] == "");
+  CHECK(doc["missingValues"] == nlohmann::json::array({""}));
+  CHECK(doc["nanopush"]["command"] == "nanopush test \"quoted\"");
   CHECK(j.find(R"("version": "9.9.9")") != std::string::npos);
   CHECK(j.find(R"("command": "nanopush test \"quoted\"")") != std::string::npos);
   CHECK(j.find(R"("scene": "thesis/fig3_6a")") != std::string::npos);
   CHECK(j.find(R"("created": "20)") != std::string::npos);
+  // A command line that is not UTF-8 (bytes of a file name) still gives a sidecar: U+FFFD.
+  nanopush::set_provenance("9.9.9", "nanopush run x --out \xff\xfe.csv");
+  {
+    nanopush::CsvWriter w(dir / "c.csv", {{"x", "m", "x"}});
+    w.row({1.0});
+    w.commit();
+  }
+  CHECK(nlohmann::json::parse(slurp(dir / "c.schema.json"))["nanopush"]["command"] ==
+        "nanopush run x --out \xef\xbf\xbd\xef\xbf\xbd.csv");
+  fs::remove(dir / "c.csv");
+  fs::remove(dir / "c.schema.json");
+  nanopush::set_provenance("9.9.9", "nanopush test \"quoted\"");
   // A writer that never commits leaves nothing, not even temporaries.
   {
     nanopush::CsvWriter w(dir / "b.csv", {{"x", "m", "x"}});

@@ -15,6 +15,7 @@
 #include "nanopush/fitting/fit.hpp"
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/outputs/io.hpp"
+#include "nanopush/outputs/json.hpp"
 #include "nanopush/scenes/scene_keys.hpp"
 
 namespace nanopush::fit {
@@ -474,52 +475,48 @@ FitResult fit_trajectory(const Scene& scene, const Observations& obs, const FitO
   return res;
 }
 
-namespace {
-std::string jnum(double v) { return std::isfinite(v) ? csv_number(v) : "null"; }
-}  // namespace
-
 std::string fit_json(const FitResult& r) {
-  std::ostringstream s;
-  s << "{\n  \"parameters\": {";
-  for (std::size_t k = 0; k < r.parameters.size(); ++k) {
-    const auto& p = r.parameters[k];
-    s << (k ? "," : "") << "\n    " << json_string(p.key) << ": {\"value\": " << jnum(p.value)
-      << ", \"stderr\": " << jnum(p.stderr_) << ", \"unit\": " << json_string(p.unit) << ", \"start\": " << jnum(p.start)
-      << ", \"lower\": " << jnum(p.lower) << ", \"upper\": " << jnum(p.upper)
-      << ", \"at_bound\": " << (p.at_bound ? "true" : "false") << "}";
+  json params = json::object();
+  for (const auto& p : r.parameters)
+    params[p.key] = {{"value", json_number(p.value)}, {"stderr", json_number(p.stderr_)}, {"unit", p.unit}, {"start", json_number(p.start)},
+                     {"lower", json_number(p.lower)}, {"upper", json_number(p.upper)}, {"at_bound", p.at_bound}};
+  json correlation = json::array();
+  for (const auto& row : r.correlation) {
+    json jr = json::array();
+    for (double c : row) jr.push_back(json_number(c));
+    correlation.push_back(std::move(jr));
   }
-  s << "\n  },\n  \"correlation\": [";
-  for (std::size_t a = 0; a < r.correlation.size(); ++a) {
-    s << (a ? ", " : "") << "[";
-    for (std::size_t b = 0; b < r.correlation[a].size(); ++b) s << (b ? ", " : "") << jnum(r.correlation[a][b]);
-    s << "]";
-  }
-  s << "],\n  \"chi2\": " << jnum(r.chi2) << ",\n  \"chi2_dof\": " << jnum(r.chi2_dof) << ",\n  \"dof\": " << r.dof
-    << ",\n  \"converged\": " << (r.converged ? "true" : "false") << ",\n  \"status\": " << json_string(r.status)
-    << ",\n  \"iterations\": " << r.iterations << ",\n  \"n_forward_solves\": " << r.n_forward_solves
-    << ",\n  \"n_sensitivity_solves\": " << r.n_sensitivity_solves << ",\n  \"gradients\": " << json_string(r.gradients)
-    << ",\n  \"law\": " << json_string(r.law) << ",\n  \"n_observations\": " << r.t.size();
+  json doc = {{"parameters", std::move(params)},
+              {"correlation", std::move(correlation)},
+              {"chi2", json_number(r.chi2)},
+              {"chi2_dof", json_number(r.chi2_dof)},
+              {"dof", r.dof},
+              {"converged", r.converged},
+              {"status", r.status},
+              {"iterations", r.iterations},
+              {"n_forward_solves", r.n_forward_solves},
+              {"n_sensitivity_solves", r.n_sensitivity_solves},
+              {"gradients", r.gradients},
+              {"law", r.law},
+              {"n_observations", r.t.size()}};
   if (r.accuracy.requested > 0)
-    s << ",\n  \"accuracy\": {\"requested\": " << jnum(r.accuracy.requested) << ", \"rtol_used\": "
-      << jnum(r.accuracy.rtol_used) << ", \"estimate\": " << jnum(r.accuracy.estimate)
-      << ", \"reached\": " << (r.accuracy.reached ? "true" : "false") << "}";
+    doc["accuracy"] = {{"requested", json_number(r.accuracy.requested)},
+                       {"rtol_used", json_number(r.accuracy.rtol_used)},
+                       {"estimate", json_number(r.accuracy.estimate)},
+                       {"reached", r.accuracy.reached}};
   const auto& id = r.identifiability;
-  s << ",\n  \"identifiability\": {\"identifiable\": " << (id.identifiable ? "true" : "false") << ", \"condition\": "
-    << jnum(id.condition) << ", \"singular_values\": [";
-  for (std::size_t i = 0; i < id.singular_values.size(); ++i) s << (i ? ", " : "") << jnum(id.singular_values[i]);
-  s << "], \"undetermined\": [";
-  for (std::size_t i = 0; i < id.undetermined.size(); ++i) s << (i ? ", " : "") << json_string(id.undetermined[i]);
-  s << "], \"determined\": [";
-  for (std::size_t i = 0; i < id.determined.size(); ++i) {
-    const auto& c = id.determined[i];
-    s << (i ? ", " : "") << "{\"name\": " << json_string(c.name) << ", \"value\": " << jnum(c.value)
-      << ", \"stderr_relative\": " << jnum(c.stderr_relative) << ", \"exponents\": {";
-    for (std::size_t e = 0; e < c.exponents.size(); ++e)
-      s << (e ? ", " : "") << json_string(c.exponents[e].first) << ": " << jnum(c.exponents[e].second);
-    s << "}}";
+  json sv = json::array(), determined = json::array();
+  for (double v : id.singular_values) sv.push_back(json_number(v));
+  for (const auto& c : id.determined) {
+    json ex = json::object();
+    for (const auto& [name, e] : c.exponents) ex[name] = json_number(e);
+    determined.push_back(
+        {{"name", c.name}, {"value", json_number(c.value)}, {"stderr_relative", json_number(c.stderr_relative)}, {"exponents", ex}});
   }
-  s << "], \"message\": " << json_string(id.message) << "}\n}\n";
-  return s.str();
+  doc["identifiability"] = {{"identifiable", id.identifiable}, {"condition", json_number(id.condition)},
+                            {"singular_values", std::move(sv)}, {"undetermined", id.undetermined},
+                            {"determined", std::move(determined)}, {"message", id.message}};
+  return json_text(doc);
 }
 
 }  // namespace nanopush::fit

@@ -17,6 +17,7 @@
 #include <unistd.h>
 
 #include "nanopush/numerics/error.hpp"
+#include "nanopush/outputs/json.hpp"
 
 namespace nanopush {
 
@@ -298,28 +299,6 @@ std::string csv_quote(const std::string& s) {
   return q + "\"";
 }
 
-std::string json_string(const std::string& s) {
-  std::string r = "\"";
-  for (unsigned char c : s) {
-    switch (c) {
-      case '"': r += "\\\""; break;
-      case '\\': r += "\\\\"; break;
-      case '\n': r += "\\n"; break;
-      case '\t': r += "\\t"; break;
-      case '\r': r += "\\r"; break;
-      default:
-        if (c < 0x20) {
-          char b[8];
-          std::snprintf(b, sizeof b, "\\u%04x", c);
-          r += b;
-        } else {
-          r += static_cast<char>(c);
-        }
-    }
-  }
-  return r + "\"";
-}
-
 // ---- provenance -------------------------------------------------------------------------
 
 namespace {
@@ -389,44 +368,52 @@ std::filesystem::path schema_path(const std::filesystem::path& csv) {
   return p;
 }
 
+namespace {
+json json_value(const RunValue& v) {
+  return std::visit(
+      [](const auto& x) -> json {
+        using T = std::decay_t<decltype(x)>;
+        if constexpr (std::is_same_v<T, double>) {
+          return json_number(x);
+        } else if constexpr (std::is_same_v<T, RunValue::Object>) {
+          json o = json::object();
+          for (const auto& [k, t] : x) o[k] = t;
+          return o;
+        } else {
+          return x;
+        }
+      },
+      v.value());
+}
+}  // namespace
+
 std::string table_schema_json(const Columns& columns, const std::string& scene, const RunInfo& run) {
   const auto& pv = provenance();
-  std::ostringstream j;
-  j << "{\n  \"fields\": [\n";
-  for (std::size_t i = 0; i < columns.size(); ++i) {
-    const auto& c = columns[i];
-    j << "    {\"name\": " << json_string(c.name) << ", \"type\": " << json_string(c.type)
-      << ", \"unit\": " << json_string(c.unit) << ", \"description\": " << json_string(c.description);
+  json fields = json::array();
+  for (const auto& c : columns) {
+    json f = {{"name", c.name}, {"type", c.type}, {"unit", c.unit}, {"description", c.description}};
     if (!c.parameters.empty()) {
-      j << ", \"nanopush:parameters\": {";
-      bool first = true;
-      for (const auto& [k, v] : c.parameters) {
-        j << (first ? "" : ", ") << json_string(k) << ": " << (std::isfinite(v) ? csv_number(v) : std::string("null"));
-        first = false;
-      }
-      j << "}";
+      json par = json::object();
+      for (const auto& [k, v] : c.parameters) par[k] = json_number(v);
+      f["nanopush:parameters"] = std::move(par);
     }
-    j << "}" << (i + 1 < columns.size() ? "," : "") << "\n";
+    fields.push_back(std::move(f));
   }
-  j << "  ],\n"
-    << "  \"missingValues\": [\"\"],\n"
-    << "  \"nanopush\": {\n"
-    << "    \"convention\": \"docs/outputs.md\",\n"
-    << "    \"version\": " << json_string(pv.version) << ",\n"
-    << "    \"command\": " << json_string(pv.command) << ",\n"
-    << "    \"scene\": " << json_string(scene.empty() ? pv.scene : scene) << ",\n"
-    << "    \"created\": " << json_string(utc_now()) << ",\n";
+  json np = {{"convention", "docs/outputs.md"},
+             {"version", pv.version},
+             {"command", pv.command},
+             {"scene", scene.empty() ? pv.scene : scene},
+             {"created", utc_now()}};
   if (!run.empty()) {
-    j << "    \"run\": {";
-    for (std::size_t i = 0; i < run.size(); ++i)
-      j << (i ? ", " : "") << json_string(run[i].first) << ": " << run[i].second;
-    j << "},\n";
+    json r = json::object();
+    for (const auto& [k, v] : run) r[k] = json_value(v);
+    np["run"] = std::move(r);
   }
-  j
-    << "    \"number_format\": \"shortest decimal that reads back to the same IEEE double; inf and -inf for "
-       "infinities; the empty cell for a missing value\"\n"
-    << "  }\n}\n";
-  return j.str();
+  np["number_format"] =
+      "shortest decimal that reads back to the same IEEE double; inf and -inf for infinities; the empty cell for a "
+      "missing value";
+  const json doc = {{"fields", std::move(fields)}, {"missingValues", json::array({""})}, {"nanopush", std::move(np)}};
+  return json_text(doc);
 }
 
 // ---- CSV ----------------------------------------------------------------------------------

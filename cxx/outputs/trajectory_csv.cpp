@@ -32,30 +32,29 @@ const Columns& trajectory_column_specs() {
 }
 
 RunInfo trajectory_run_info(const Trajectory& tr) {
-  const auto num = [](double v) { return std::isfinite(v) ? csv_number(v) : std::string("null"); };
-  RunInfo info{{"engine", json_string(tr.engine_label)},
-               {"precision", json_string(tr.precision)},
-               {"outcome", json_string(to_string(tr.outcome))},
-               {"rtol", num(tr.rtol)},
-               {"nfcn", std::to_string(tr.stats.nfcn)},
-               {"nfcn_total", std::to_string(tr.nfcn_total())}};
+  RunInfo info{{"engine", tr.engine_label},
+               {"precision", tr.precision},
+               {"outcome", to_string(tr.outcome)},
+               {"rtol", tr.rtol},
+               {"nfcn", tr.stats.nfcn},
+               {"nfcn_total", tr.nfcn_total()}};
   const ErrorEstimate& e = tr.error;
   if (e.available || !e.note.empty()) {
-    info.push_back({"error_estimate", num(e.norm)});
-    info.push_back({"error_x_m", num(e.x)});
-    info.push_back({"error_y_m", num(e.y)});
-    info.push_back({"error_theta_rad", num(e.theta)});
-    info.push_back({"error_trajectory", num(e.trajectory)});
-    info.push_back({"error_length_scale_m", num(e.length_scale)});
-    info.push_back({"error_basis", json_string(e.basis)});
-    info.push_back({"error_companion", json_string(e.companion)});
-    info.push_back({"error_companion_rtol", num(e.companion_rtol)});
-    if (!e.note.empty()) info.push_back({"error_note", json_string(e.note)});
+    info.push_back({"error_estimate", e.norm});
+    info.push_back({"error_x_m", e.x});
+    info.push_back({"error_y_m", e.y});
+    info.push_back({"error_theta_rad", e.theta});
+    info.push_back({"error_trajectory", e.trajectory});
+    info.push_back({"error_length_scale_m", e.length_scale});
+    info.push_back({"error_basis", e.basis});
+    info.push_back({"error_companion", e.companion});
+    info.push_back({"error_companion_rtol", e.companion_rtol});
+    if (!e.note.empty()) info.push_back({"error_note", e.note});
   }
   if (tr.accuracy.requested > 0) {
-    info.push_back({"accuracy_requested", num(tr.accuracy.requested)});
-    info.push_back({"accuracy_reached", tr.accuracy.reached ? "true" : "false"});
-    info.push_back({"accuracy_runs", std::to_string(tr.accuracy.runs)});
+    info.push_back({"accuracy_requested", tr.accuracy.requested});
+    info.push_back({"accuracy_reached", tr.accuracy.reached});
+    info.push_back({"accuracy_runs", tr.accuracy.runs});
   }
   return info;
 }

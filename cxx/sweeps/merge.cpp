@@ -2,31 +2,14 @@
 #include <algorithm>
 #include <optional>
 
-#include <nlohmann/json.hpp>
-
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/outputs/input_file.hpp"
+#include "nanopush/outputs/json.hpp"
 #include "nanopush/sweeps/sweep.hpp"
 
 namespace nanopush::sweep {
 
 namespace {
-
-/// The value of `"name": ` on a sidecar's run line: a JSON string's text or a bare number's
-/// digits; nullopt when absent.
-std::optional<std::string> run_field(const std::string& line, const std::string& name) {
-  const std::string key = "\"" + name + "\": ";
-  const auto at = line.find(key);
-  if (at == std::string::npos) return std::nullopt;
-  std::size_t p = at + key.size();
-  if (p < line.size() && line[p] == '"') {
-    const auto end = line.find('"', p + 1);
-    if (end == std::string::npos) return std::nullopt;
-    return line.substr(p + 1, end - p - 1);
-  }
-  const auto end = line.find_first_of(",}", p);
-  return line.substr(p, end == std::string::npos ? std::string::npos : end - p);
-}
 
 bool known_status(const std::string& s) {
   for (const char* k : {"ok", "at_rest", "no_static_friction", "law_blowup", "accuracy_not_reached",
@@ -36,9 +19,10 @@ bool known_status(const std::string& s) {
 }
 
 /// What a shard's sidecar says of its sweep: the plan's identity and size, the shard i/n, its
-/// rows; the sidecar's text with the run line marked (merge writes it back as the whole's).
+/// rows; the whole sidecar (merge writes it back with the run record of the whole).
 struct ShardRecord {
-  std::string plan, task, schema_before, schema_after;
+  std::string plan, task;
+  json sidecar;
   PlanRecord record;  ///< the sidecar's plan_record (empty in sidecars of older versions)
   std::uint64_t plan_points = 0, rows = 0, index = 0, count = 1;
 };
@@ -49,69 +33,61 @@ ShardRecord read_shard_sidecar(const std::filesystem::path& table) {
     throw InputError("--merge", table.string(),
                      "has no sidecar " + side.string() +
                          ": merge checks each shard's plan and size there; copy it with the table");
-  InputFile file(side, "--merge sidecar", kMaxSidecarBytes);
   ShardRecord r;
-  std::string line;
-  std::size_t lineno = 0;
-  bool seen = false;
-  while (read_line(file.stream(), line, "--merge sidecar", side.string(), ++lineno)) {
-    const auto at = line.find("\"run\": {");
-    if (at == std::string::npos || seen) {
-      (seen ? r.schema_after : r.schema_before) += line + "\n";
-      continue;
-    }
-    seen = true;
-    r.schema_before += line.substr(0, at);
-    const std::string where = side.string() + ":" + std::to_string(lineno);
-    auto need = [&](const char* name) {
-      auto v = run_field(line, name);
-      if (!v)
-        throw InputError("--merge", where,
-                         std::string("no \"") + name + "\" in the run record: not the sidecar of a sweep shard (or "
-                         "one written before merge checked plans: run that shard again)");
-      return *v;
-    };
-    auto count = [&](const char* name, std::uint64_t max) {
-      const std::string v = need(name);
-      const auto n = parse_count(v, max);
-      if (!n)
-        throw InputError("--merge", where,
-                         std::string(name) + " = " + v.substr(0, 40) + ": must be a whole number in [0, " +
-                             std::to_string(max) + "]");
-      return *n;
-    };
-    r.plan = need("plan");
-    r.task = need("task");
-    r.plan_points = count("plan_points", kMaxPlanPoints);
-    r.rows = count("rows", kMaxPlanPoints);
-    const std::string shard = need("shard");
-    if (shard.rfind("merged from ", 0) == 0) {
-      r.index = 0;
-      r.count = 1;
-    } else {
-      const auto slash = shard.find('/');
-      const auto i = parse_count(shard.substr(0, slash), 99999), n = slash == std::string::npos
-                                                                          ? std::nullopt
-                                                                          : parse_count(shard.substr(slash + 1), 100000);
-      if (!i || !n || *n == 0 || *i >= *n)
-        throw InputError("--merge", where, "shard = " + shard.substr(0, 40) + ": must be i/n with 0 <= i < n <= 100000");
-      r.index = *i;
-      r.count = *n;
-    }
-  }
-  if (!seen) throw InputError("--merge", side.string(), "no run record: not the sidecar of a sweep shard");
-  // The plan record, field by field (to name what differs between shards of two sweeps).
   try {
-    const auto j = nlohmann::json::parse(read_input_file(side, "--merge sidecar", kMaxSidecarBytes));
-    const nlohmann::json* run = nullptr;
-    if (j.is_object() && j.contains("nanopush") && j["nanopush"].is_object() && j["nanopush"].contains("run"))
-      run = &j["nanopush"]["run"];
-    if (run && run->is_object() && run->contains("plan_record") && (*run)["plan_record"].is_object())
-      for (const auto& [k, v] : (*run)["plan_record"].items())
-        if (v.is_string()) r.record.emplace_back(k, v.get<std::string>());
-  } catch (const nlohmann::json::exception&) {
-    // Not JSON: the run line's fields above are what merge checks.
+    r.sidecar = json::parse(read_input_file(side, "--merge sidecar", kMaxSidecarBytes));
+  } catch (const json::parse_error& e) {
+    throw InputError("--merge", side.string(), std::string("not JSON (") + e.what() + "): not the sidecar of a sweep shard");
   }
+  const json* run = nullptr;
+  if (r.sidecar.is_object() && r.sidecar.contains("nanopush") && r.sidecar["nanopush"].is_object() &&
+      r.sidecar["nanopush"].contains("run") && r.sidecar["nanopush"]["run"].is_object())
+    run = &r.sidecar["nanopush"]["run"];
+  if (!run) throw InputError("--merge", side.string(), "no run record: not the sidecar of a sweep shard");
+  const std::string where = side.string() + " (nanopush.run)";
+  auto need = [&](const char* name) -> const json& {
+    if (!run->contains(name))
+      throw InputError("--merge", where,
+                       std::string("no \"") + name + "\" in the run record: not the sidecar of a sweep shard (or "
+                       "one written before merge checked plans: run that shard again)");
+    return (*run)[name];
+  };
+  auto text = [&](const char* name) {
+    const json& v = need(name);
+    if (!v.is_string())
+      throw InputError("--merge", where, std::string(name) + " = " + v.dump().substr(0, 40) + ": must be text");
+    return v.get<std::string>();
+  };
+  auto count = [&](const char* name, std::uint64_t max) {
+    const json& v = need(name);
+    if (!v.is_number_unsigned() || v.get<std::uint64_t>() > max)
+      throw InputError("--merge", where,
+                       std::string(name) + " = " + v.dump().substr(0, 40) + ": must be a whole number in [0, " +
+                           std::to_string(max) + "]");
+    return v.get<std::uint64_t>();
+  };
+  r.plan = text("plan");
+  r.task = text("task");
+  r.plan_points = count("plan_points", kMaxPlanPoints);
+  r.rows = count("rows", kMaxPlanPoints);
+  const std::string shard = text("shard");
+  if (shard.rfind("merged from ", 0) == 0) {
+    r.index = 0;
+    r.count = 1;
+  } else {
+    const auto slash = shard.find('/');
+    const auto i = parse_count(shard.substr(0, slash), 99999), n = slash == std::string::npos
+                                                                        ? std::nullopt
+                                                                        : parse_count(shard.substr(slash + 1), 100000);
+    if (!i || !n || *n == 0 || *i >= *n)
+      throw InputError("--merge", where, "shard = " + shard.substr(0, 40) + ": must be i/n with 0 <= i < n <= 100000");
+    r.index = *i;
+    r.count = *n;
+  }
+  // The plan record, field by field (to name what differs between shards of two sweeps).
+  if (run->contains("plan_record") && (*run)["plan_record"].is_object())
+    for (const auto& [k, v] : (*run)["plan_record"].items())
+      if (v.is_string()) r.record.emplace_back(k, v.get<std::string>());
   return r;
 }
 
@@ -247,15 +223,21 @@ std::size_t merge_tables(const std::vector<std::filesystem::path>& shards, const
     } while (line.empty());
     os << line << "\n";
   }
-  std::string record;
-  for (const auto& [k, v] : first.record) record += (record.empty() ? "" : ", ") + json_string(k) + ": " + json_string(v);
-  const std::string schema = first.schema_before + "\"run\": {\"task\": " + json_string(first.task) +
-                             ", \"plan\": " + json_string(first.plan) +
-                             ", \"plan_points\": " + std::to_string(first.plan_points) + ", \"shard\": \"merged from " +
-                             std::to_string(shards.size()) + "\", \"rows\": " + std::to_string(first.plan_points) +
-                             ", \"failed\": " + std::to_string(failed) +
-                             (record.empty() ? std::string() : ", \"plan_record\": {" + record + "}") + "},\n" +
-                             first.schema_after;
+  // The first shard's sidecar with the run record of the whole (its timings were the shard's).
+  json merged = first.sidecar;
+  json run = {{"task", first.task},
+              {"plan", first.plan},
+              {"plan_points", first.plan_points},
+              {"shard", "merged from " + std::to_string(shards.size())},
+              {"rows", first.plan_points},
+              {"failed", failed}};
+  if (!first.record.empty()) {
+    json record = json::object();
+    for (const auto& [k, v] : first.record) record[k] = v;
+    run["plan_record"] = std::move(record);
+  }
+  merged["nanopush"]["run"] = std::move(run);
+  const std::string schema = json_text(merged);
   // A device or a descriptor (written through) gets the table only, as standard output does.
   const bool through = table.write_through();
   table.commit();

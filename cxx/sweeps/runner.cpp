@@ -55,16 +55,14 @@ void OrderedTable::add(std::size_t index, std::string line, bool failed) {
 void OrderedTable::commit(const RunInfo& timings, const PlanRecord& record) {
   if (!complete()) throw std::logic_error("OrderedTable::commit before every row was written");
   if (!impl_->csv) return;
-  std::string rec;
-  for (const auto& [k, v] : record) rec += (rec.empty() ? "" : ", ") + json_string(k) + ": " + json_string(v);
-  RunInfo run = {{"task", json_string(impl_->task)},
-                 {"plan", json_string(impl_->plan_hash)},
-                 {"plan_points", std::to_string(impl_->plan_points)},
-                 {"shard", json_string(std::to_string(index_) + "/" + std::to_string(count_))},
-                 {"rows", std::to_string(written_)},
-                 {"failed", std::to_string(failed_)}};
+  RunInfo run = {{"task", impl_->task},
+                 {"plan", impl_->plan_hash},
+                 {"plan_points", impl_->plan_points},
+                 {"shard", std::to_string(index_) + "/" + std::to_string(count_)},
+                 {"rows", written_},
+                 {"failed", failed_}};
   run.insert(run.end(), timings.begin(), timings.end());
-  run.emplace_back("plan_record", "{" + rec + "}");
+  run.emplace_back("plan_record", RunValue::Object(record.begin(), record.end()));
   impl_->csv->run_info(run);
   impl_->csv->commit();
 }
@@ -72,11 +70,11 @@ void OrderedTable::commit(const RunInfo& timings, const PlanRecord& record) {
 std::string plan_identity(const Plan& plan, const Task& task) { return hex(fnv1a(sweep_identity(plan, task, 0, 1))); }
 
 RunInfo sweep_timings(double wall_s, unsigned threads, int ranks, std::size_t resumed, double cpu_s) {
-  RunInfo r = {{"wall_s", csv_number(wall_s)}};
-  if (cpu_s >= 0) r.emplace_back("cpu_s", csv_number(cpu_s));
-  r.emplace_back("threads", std::to_string(threads));
-  r.emplace_back("ranks", std::to_string(ranks));
-  r.emplace_back("resumed", std::to_string(resumed));
+  RunInfo r = {{"wall_s", wall_s}};
+  if (cpu_s >= 0) r.emplace_back("cpu_s", cpu_s);
+  r.emplace_back("threads", threads);
+  r.emplace_back("ranks", ranks);
+  r.emplace_back("resumed", resumed);
   return r;
 }
 
@@ -212,11 +210,14 @@ Result run_local(const Plan& plan, const Task& task, const Options& o) {
   std::vector<std::thread> threads;
   for (unsigned t = 0; t + 1 < jobs; ++t) threads.emplace_back(worker);
   if (o.progress) {
-    // This thread reports progress twice a second; the workers compute.
+    // This thread reports progress when the work starts and then twice a second (not at each
+    // finished point: a point's notification only ends the wait when the last worker is done).
     threads.emplace_back(worker);
     std::unique_lock<std::mutex> lock(mutex);
+    auto next = std::chrono::steady_clock::now();
     while (running > 0) {
-      cv.wait_for(lock, std::chrono::milliseconds(500));
+      if (cv.wait_until(lock, next, [&] { return running == 0; })) break;
+      next += std::chrono::milliseconds(500);
       const std::size_t done = table.done();
       lock.unlock();
       o.progress(done, res.points);

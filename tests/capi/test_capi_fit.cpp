@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "../support/capi_check.hpp"
 #include "nanopush.h"
 #include "nanopush/fitting/fit.hpp"
@@ -73,8 +75,9 @@ int main(int argc, char** argv) {
                                 nullptr, json.data(), len + 1, &len2) == NANOPUSH_OK &&
             len2 == len && std::strlen(json.data()) == static_cast<std::size_t>(len),
         "fit: JSON length");
-  check(std::string(json.data()).find("\"parameters\": {\n    \"push.force\": {\"value\": ") != std::string::npos &&
-            std::string(json.data()).find("\"converged\": true") != std::string::npos,
+  const auto doc = nlohmann::json::parse(json.data());
+  check(doc["parameters"]["push.force"]["value"].is_number() && doc["parameters"]["push.force"]["value"] == value &&
+            doc["converged"] == true,
         "fit: JSON shape");
   // The scene's solver.accuracy is the fit's: its rtol chosen, the record in the JSON.
   check(nanopush_scene_set_real(err, scene, "solver.accuracy", 1e-9) == NANOPUSH_OK, "set solver.accuracy");
@@ -83,9 +86,8 @@ int main(int argc, char** argv) {
                                 nullptr, json_acc.data(), static_cast<int>(json_acc.size()), &len2) == NANOPUSH_OK &&
             len2 < static_cast<int>(json_acc.size()),
         "fit with accuracy");
-  check(std::string(json_acc.data()).find("\"accuracy\": {\"requested\": 1e-09") != std::string::npos &&
-            std::string(json_acc.data()).find("\"reached\": true}") != std::string::npos,
-        "fit: accuracy record");
+  const auto acc = nlohmann::json::parse(json_acc.data())["accuracy"];
+  check(acc["requested"] == 1e-9 && acc["reached"] == true && acc["rtol_used"].is_number(), "fit: accuracy record");
   check(nanopush_scene_set_real(err, scene, "solver.accuracy", 0.0) == NANOPUSH_OK, "unset solver.accuracy");
 
   // Bad input: the status, the message, nothing written.

@@ -47,7 +47,8 @@ program test_fortran_fit
   ! The scene's solver.accuracy is the fit's: its rtol chosen, the record in the JSON.
   call nanopush_scene_set(scene, "solver.accuracy", 1e-9_dp)
   call nanopush_fit(scene, data, "push.force", values, stderrs, json=json, stat=stat, errmsg=msg)
-  call check(stat == NANOPUSH_OK .and. index(json, '"accuracy": {"requested": 1e-09') > 0, "fit: accuracy " // msg)
+  call check(stat == NANOPUSH_OK .and. index(json, '"accuracy": {') > 0 .and. index(json, '"requested": 1e-09') > 0, &
+             "fit: accuracy " // msg)
   call nanopush_scene_set(scene, "solver.accuracy", 0.0_dp)
 
   call nanopush_fit(scene, data, "push.nonsense", values, stderrs, stat=stat, errmsg=msg)

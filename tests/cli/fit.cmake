@@ -13,7 +13,7 @@ add_test(NAME cli.fit.json
          COMMAND $<TARGET_FILE:nanopush> fit fig3_20 ${_fit_dir}/data.csv ${_fit_span} --set surface.mu=0.1 --free surface.mu
                  --json - --out ${_fit_dir}/out)
 set_tests_properties(cli.fit.json PROPERTIES FIXTURES_REQUIRED fit_data PASS_REGULAR_EXPRESSION
-  "\"parameters\": {\n    \"surface.mu\": {\"value\": 0\\.0[78][0-9]*, \"stderr\": [0-9][.0-9e-]*,.*\"chi2_dof\": [01]\\.[0-9]*,.*\"converged\": true")
+  "\"parameters\": {\n    \"surface.mu\": {\n      \"value\": 0\\.0[78][0-9]*,\n      \"stderr\": [0-9][.0-9e-]*,.*\"chi2_dof\": [01]\\.[0-9]*,.*\"converged\": true")
 
 add_test(NAME cli.fit.summary
          COMMAND $<TARGET_FILE:nanopush> fit fig3_20 ${_fit_dir}/data.csv ${_fit_span} --set surface.mu=0.1 --free surface.mu

@@ -39,7 +39,7 @@ set_tests_properties(cli.fit_icor.outputs PROPERTIES FIXTURES_REQUIRED cli_fit_i
   FIXTURES_SETUP cli_fit_icor_out)
 add_test(NAME cli.fit_icor.json COMMAND ${CMAKE_COMMAND} -E cat ${_o}/summary.json)
 set_tests_properties(cli.fit_icor.json PROPERTIES FIXTURES_REQUIRED cli_fit_icor_out PASS_REGULAR_EXPRESSION
-  "\"known\": {\n    \"mu\": {\"value\": 0\\.(2|19999999999[0-9]*|2000000000[0-9]*), \"stderr\": 0\\.0[0-9]+},\n    \"stderr_statistical\": [^\n]*\n    \"stderr_systematic\": 0\\.0[0-9]+,.*\"chi2_dof\": [0-9.e-]+,.*\"unknown\": {\n    \"mu\": {\"value\": ")
+  "\"known\": {\n    \"mu\": {\n      \"value\": 0\\.(2|19999999999[0-9]*|2000000000[0-9]*),\n      \"stderr\": 0\\.0[0-9]+\n    },\n    \"stderr_statistical\": [^\n]*\n    \"stderr_systematic\": 0\\.0[0-9]+,.*\"chi2_dof\": [0-9.e-]+,.*\"unknown\": {\n    \"mu\": {\n      \"value\": ")
 add_test(NAME cli.fit_icor.table COMMAND ${CMAKE_COMMAND} -E cat ${_o}/fit_icor.csv)
 set_tests_properties(cli.fit_icor.table PROPERTIES FIXTURES_REQUIRED cli_fit_icor_out PASS_REGULAR_EXPRESSION
   "^row,line,F,sigma_F,yn,sigma_yn,R,sigma_R,mu_known,sigma_known,equation_known,weight_known,pull_known,mu_unknown,sigma_unknown,equation_unknown,weight_unknown,pull_unknown\n1,3,")

@@ -86,7 +86,7 @@ int main(int argc, char** argv) {
       w.cells({csv_number(static_cast<double>(i)), csv_number(mu[i / 2]), law[i % 2], csv_number(x[i]),
                i == 2 ? "" : csv_number(static_cast<double>(100 * i + 7)),
                csv_quote(i == 2 ? "solver failure, \"quoted\"" : "ok")});
-    w.run_info({{"wall_s", "0.5"}, {"threads", "2"}, {"task", "\"run\""}});
+    w.run_info({{"wall_s", 0.5}, {"threads", 2}, {"task", "run"}});
     w.commit();
   }
   const fs::path nc = dir / "grid.nc";

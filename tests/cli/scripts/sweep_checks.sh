@@ -9,6 +9,8 @@ rm -rf "$dir" && mkdir -p "$dir" && cd "$dir"
 grid=(fig3_18 --set surface.law=coulomb --vary surface.mu=0.02:0.2:5 --vary push.yn=0:45e-9:4 --quiet)
 fail() { echo "FAIL: $*"; exit 1; }
 status() { set +e; "$@"; local rc=$?; set -e; echo $rc; }
+# run_holds SIDECAR EXPR: the Python expression EXPR holds of r, the sidecar's nanopush.run object
+run_holds() { python3 -c 'import json, sys; r = json.load(open(sys.argv[1]))["nanopush"]["run"]; sys.exit(0 if eval(sys.argv[2]) else 1)' "$1" "$2"; }
 
 case $mode in
 jobs)  # the table is the same bytes for 1 and 2 threads
@@ -27,7 +29,7 @@ shards)  # two shards merged equal one run
   cmp all.csv merged.csv || fail "merged shards differ from one run"
   [ "$(status "$np" sweep --merge s0.csv --out part.csv --quiet 2> err.txt)" = 2 ] || fail "a missing shard must be an error"
   grep -q "shard 1/2: is missing" err.txt || fail "message: $(cat err.txt)"
-  grep -q '"shard": "merged from 2", "rows": 20' merged.schema.json || fail "merged sidecar: $(grep '"run"' merged.schema.json)"
+  run_holds merged.schema.json 'r["shard"] == "merged from 2" and r["rows"] == 20' || fail "merged sidecar: $(cat merged.schema.json)"
   # Missing trailing points leave no gap: the plan's size in the sidecar finds them.
   three=(fig3_18 --vary surface.mu=0.05,0.06,0.07 --quiet)
   for i in 0 1 2; do "$np" sweep "${three[@]}" --shard $i/3 --out t$i.csv; done
@@ -99,8 +101,8 @@ tasks)  # sweeps of closed-form evaluations
   grep -q '^0,1e-08,force,' mu.csv || fail "estimate-mu row: $(cat mu.csv)"
   [ "$(status "$np" sweep --task friction --vary Q=1,2 --out bad.csv --quiet 2> err.txt)" = 2 ] || fail "bad key accepted"
   grep -q "Q = (varied): not a parameter of --task friction" err.txt || fail "message: $(cat err.txt)"
-  grep -q '"run": {"task": "icor", "plan": "[0-9a-f]\{16\}", "plan_points": 3, "shard": "0/1", "rows": 3, "failed": 0, "wall_s": ' ic.schema.json \
-    || fail "sidecar run: $(grep '"run"' ic.schema.json)"
+  run_holds ic.schema.json 'list(r)[:7] == ["task", "plan", "plan_points", "shard", "rows", "failed", "wall_s"] and r["task"] == "icor" and len(r["plan"]) == 16 and int(r["plan"], 16) >= 0 and (r["plan_points"], r["shard"], r["rows"], r["failed"]) == (3, "0/1", 3, 0)' \
+    || fail "sidecar run: $(cat ic.schema.json)"
   "$np" sweep --task icor --vary yn=0:100e-9:3 --set cubic=eigen --out ice.csv --quiet
   head -1 ice.csv | grep -q ',R_constrained_negative,R_constrained_positive,' || fail "icor header $(head -1 ice.csv)"
   [ "$(status "$np" sweep --task icor --vary yn=0,1e-8 --set cubic=lapack --out bad.csv --quiet 2> err.txt)" = 2 ] || fail "bad choice accepted"
@@ -134,7 +136,7 @@ inputs)  # every input through the guarded reader: a FIFO never blocks, /dev/zer
   cp s0.csv t0.csv
   sed 's/"plan_points": 3/"plan_points": 18446744073709551616/' s0.schema.json > t0.schema.json
   grep -q 18446744073709551616 t0.schema.json || fail "the sidecar was not tampered"
-  refused 2 '^nanopush: error: --merge = t0\.schema\.json:[0-9]+: plan_points = 18446744073709551616: must be a whole number in \[0, 100000000\]' \
+  refused 2 '^nanopush: error: --merge = t0\.schema\.json \(nanopush\.run\): plan_points = 1\.8446744073709552e\+19: must be a whole number in \[0, 100000000\]' \
     sweep --merge t0.csv s1.csv --out m.csv --quiet
   [ ! -e m.csv ] || fail "a refused merge wrote a table"
   "$np" sweep --merge s0.csv s1.csv --out m.csv --quiet

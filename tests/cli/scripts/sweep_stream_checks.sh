@@ -77,9 +77,11 @@ foreign)  # a journal or a shard of another plan is refused, the difference name
   "$np" sweep "${other[@]}" --shard 1/2 --out s1.csv
   [ "$(status "$np" sweep --merge s0.csv s1.csv --out m.csv 2> err.txt)" = 2 ] || fail "merge of two plans"
   grep -q 'is a shard of another sweep than s0.csv (.*law: thesis there, coulomb here' err.txt || fail "merge message: $(cat err.txt)"
-  grep -q '"plan_record": {"task": "run", "scene": "fig3_18", "scene_hash": "' s0.schema.json || fail "sidecar plan record"
-  grep -q '"axis 1": "surface.mu=0.02:0.2:3"' s0.schema.json || fail "sidecar axis: $(grep plan_record s0.schema.json)"
-  grep -q '"set": "surface.law=coulomb"' s0.schema.json || fail "sidecar set"
+  record() { python3 -c 'import json, sys; print(json.dumps(json.load(open(sys.argv[1]))["nanopush"]["run"]["plan_record"]))' "$1"; }
+  rec=$(record s0.schema.json)
+  grep -q '^{"task": "run", "scene": "fig3_18", "scene_hash": "' <<< "$rec" || fail "sidecar plan record: $rec"
+  grep -q '"axis 1": "surface.mu=0.02:0.2:3"' <<< "$rec" || fail "sidecar axis: $rec"
+  grep -q '"set": "surface.law=coulomb"' <<< "$rec" || fail "sidecar set: $rec"
   # a journal of another sweep (its header's hash differs) is refused before any point
   printf 'nanopush-sweep-journal 1 0000000000000000\n' > j.csv.journal
   [ "$(status "$np" sweep "${grid[@]}" --out j.csv 2> err.txt)" = 2 ] || fail "a foreign journal must be refused"

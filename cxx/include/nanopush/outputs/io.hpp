@@ -16,6 +16,8 @@
 #include <stdexcept>
 #include <streambuf>
 #include <string>
+#include <variant>
+#include <type_traits>
 #include <vector>
 
 namespace nanopush {
@@ -134,10 +136,28 @@ std::string join_command_line(int argc, const char* const* argv);
 
 /// The sidecar of a CSV: FILE.csv -> FILE.schema.json (any other name: NAME.schema.json).
 std::filesystem::path schema_path(const std::filesystem::path& csv);
+/// One value of a sidecar's "run" record: text, a real number (null when not finite), a whole
+/// number, a truth value, or an object of named texts (a sweep's plan record). The sidecar is
+/// written by nlohmann-json from these values.
+class RunValue {
+ public:
+  using Object = std::vector<std::pair<std::string, std::string>>;
+  using Value = std::variant<std::string, double, long long, unsigned long long, bool, Object>;
+  RunValue(std::string v) : v_(std::move(v)) {}
+  RunValue(const char* v) : v_(std::string(v)) {}
+  RunValue(double v) : v_(v) {}
+  RunValue(bool v) : v_(v) {}
+  RunValue(Object v) : v_(std::move(v)) {}
+  template <class I, std::enable_if_t<std::is_integral_v<I> && !std::is_same_v<I, bool>, int> = 0>
+  RunValue(I v) : v_(std::is_signed_v<I> ? Value(static_cast<long long>(v)) : Value(static_cast<unsigned long long>(v))) {}
+  [[nodiscard]] const Value& value() const { return v_; }
+
+ private:
+  Value v_;
+};
 /// What a run measured about itself (timings, counts), recorded in the sidecar's
-/// "nanopush"."run" object and never in the table: name, and its value as a JSON literal
-/// (json_string or csv_number of a finite number).
-using RunInfo = std::vector<std::pair<std::string, std::string>>;
+/// "nanopush"."run" object and never in the table: name and value, in order.
+using RunInfo = std::vector<std::pair<std::string, RunValue>>;
 
 /// The Table Schema JSON for `columns` (with provenance; `scene` overrides the context's).
 std::string table_schema_json(const Columns& columns, const std::string& scene = {}, const RunInfo& run = {});
@@ -189,7 +209,5 @@ std::string csv_number(double v);
 /// Quote a text cell when it needs it (comma, quote, newline or leading/trailing blank).
 std::string csv_quote(const std::string& s);
 
-/// The JSON string literal of `s` (quotes included).
-std::string json_string(const std::string& s);
 
 }  // namespace nanopush
