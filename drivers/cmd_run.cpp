@@ -14,6 +14,7 @@
 #include "cli_checks.hpp"
 #include "registry.hpp"
 #include "scene_args.hpp"
+#include "sweep_output.hpp"
 
 namespace nanopush::cli {
 namespace {
@@ -113,6 +114,11 @@ int run_cmd(const RunOptions& o) {
       rows.push_back(std::move(cells));
     }
     std::cout << csv_document(trajectory_column_specs(), rows);
+  } else if (std::filesystem::path(out).extension() == ".nc") {
+    // netCDF-4 (docs/data.md): the trajectory over its times, `t` the coordinate.
+    const SweepOutput nc(out);
+    write_trajectory_csv(tr, nc.table());
+    (void)nc.finish({{"t", tr.rows.size()}});
   } else {
     write_trajectory_csv(tr, out);
   }
@@ -159,7 +165,7 @@ RegisterCommand reg_run{{"run", "Integrate a scene and write its trajectory as C
                                           "1e-17, ~7x), quad ~3e-24 (--method modern --rtol 1e-24, ~80-100x). The CSV holds "
                                           "the values rounded to double. Default: the scene's solver.precision (double)")
                                ->check(is_choice<Precision>());
-                           app.add_option("--out", o->out, "output CSV ('-' for standard output; default <scene>.<engine>.csv)");
+                           app.add_option("--out", o->out, "output CSV ('-' for standard output; FILE.nc: netCDF-4, docs/data.md; default <scene>.<engine>.csv)");
                            app.add_flag("--quiet", o->quiet, "no summary on standard error");
                            app.add_flag("--keep-partial", o->keep_partial,
                                         "when the integrator gives up, keep the samples computed so far in "

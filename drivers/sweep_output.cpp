@@ -39,12 +39,12 @@ SweepOutput::~SweepOutput() {
   }
 }
 
-std::string SweepOutput::finish(const std::vector<NetcdfAxis>& axes) const {
+std::string SweepOutput::finish(const std::vector<NetcdfAxis>& axes, const std::vector<fs::path>& trajectories) const {
   switch (kind_) {
     case Kind::csv:
       return out_.string();
     case Kind::netcdf: {
-      write_netcdf_from_table(table_, out_, axes);
+      write_netcdf_from_table(table_, out_, axes, trajectories);
       std::error_code ec;
       fs::remove(schema_path(table_), ec);
       fs::remove(table_, ec);

@@ -28,7 +28,8 @@ class SweepOutput {
   /// After a finished sweep: the CSV is the output; or it is converted into the .nc (a grid
   /// over `axes`; none: a `point` dimension) and removed with its sidecar; or it is copied to
   /// standard output. Returns what to name in the summary.
-  std::string finish(const std::vector<NetcdfAxis>& axes) const;
+  /// `trajectories` (netCDF only): one trajectory CSV per row, into the .nc's `trajectory`.
+  std::string finish(const std::vector<NetcdfAxis>& axes, const std::vector<std::filesystem::path>& trajectories = {}) const;
 
  private:
   enum class Kind { csv, netcdf, standard_output } kind_ = Kind::csv;

@@ -34,7 +34,7 @@ struct NetcdfLibrary {
 #define NANOPUSH_NC_FUNCTIONS(X)                                                                         \
   X(nc_strerror) X(nc_create) X(nc_def_dim) X(nc_def_var) X(nc_def_var_fill) X(nc_put_att_text)         \
   X(nc_put_att_double) X(nc_enddef) X(nc_put_var_string) X(nc_put_var_longlong) X(nc_put_var_double)    \
-  X(nc_close)
+  X(nc_put_vara_double) X(nc_close)
 #define NANOPUSH_NC_POINTER(f) decltype(&::f) f = nullptr;
   NANOPUSH_NC_FUNCTIONS(NANOPUSH_NC_POINTER)
 #undef NANOPUSH_NC_POINTER
@@ -136,6 +136,52 @@ void put_provenance(int nc, const json& prov, const fs::path& file) {
   }
 }
 
+/// The trajectories of a sweep's points (one CSV each, as `nanopush run` writes them; a point
+/// without one has none): their columns, from the first one's sidecar, and each one's samples.
+struct Trajectories {
+  std::vector<Field> columns;
+  std::vector<std::size_t> samples;  ///< rows of each point's trajectory (0: none)
+  std::size_t longest = 0;
+};
+
+Trajectories scan_trajectories(const std::vector<fs::path>& files) {
+  Trajectories t;
+  for (const auto& f : files) {
+    std::size_t n = 0;
+    std::error_code ec;
+    if (fs::is_regular_file(f, ec)) {
+      if (t.columns.empty()) t.columns = read_schema(f).first;
+      std::ifstream in(f, std::ios::binary);
+      csv::Reader reader(in, f.string());
+      csv::Record rec;
+      if (reader.next(rec))  // the header
+        while (reader.next(rec)) ++n;
+    }
+    t.samples.push_back(n);
+    t.longest = std::max(t.longest, n);
+  }
+  return t;
+}
+
+/// One point's trajectory as doubles, row after row (the columns `width`).
+std::vector<double> read_trajectory(const fs::path& f, std::size_t width) {
+  std::vector<double> v;
+  std::ifstream in(f, std::ios::binary);
+  csv::Reader reader(in, f.string());
+  csv::Record rec;
+  if (!reader.next(rec)) return v;
+  if (rec.fields.size() != width)
+    throw InputError("trajectory", f.string(), "has " + std::to_string(rec.fields.size()) + " columns, the first " +
+                                                   std::to_string(width) + " (trajectories of one sweep differ)");
+  while (reader.next(rec)) {
+    if (rec.fields.size() != width)
+      throw InputError(f.string() + ":" + std::to_string(rec.line), csv::join(rec.fields),
+                       std::to_string(width) + " cells expected");
+    for (const auto& c : rec.fields) v.push_back(parse_number(c, f, rec.line));
+  }
+  return v;
+}
+
 /// An open netCDF file closed on every path out (nc_close once).
 struct NcFile {
   int id = -1;
@@ -146,7 +192,8 @@ struct NcFile {
 
 }  // namespace
 
-void write_netcdf_from_table(const fs::path& csv, const fs::path& nc_path, const std::vector<NetcdfAxis>& axes) {
+void write_netcdf_from_table(const fs::path& csv, const fs::path& nc_path, const std::vector<NetcdfAxis>& axes,
+                             const std::vector<fs::path>& trajectories) {
   const auto [fields, prov] = read_schema(csv);
   // The whole table, column by column.
   std::ifstream in(csv, std::ios::binary);
@@ -197,6 +244,11 @@ void write_netcdf_from_table(const fs::path& csv, const fs::path& nc_path, const
                              cells[axis_col[k]][j * stride[k]] + ", last axis fastest)");
     }
 
+  if (!trajectories.empty() && trajectories.size() != rows)
+    throw std::logic_error("write_netcdf_from_table: " + std::to_string(trajectories.size()) + " trajectories for " +
+                           std::to_string(rows) + " rows");
+  const Trajectories traj = scan_trajectories(trajectories);
+
   // The file: a temporary beside the target, renamed over it when complete.
   const OutputTarget target = resolve_output(nc_path);
   if (target.write_through)
@@ -238,6 +290,32 @@ void write_netcdf_from_table(const fs::path& csv, const fs::path& nc_path, const
       if (t != NC_STRING && !fd.unit.empty()) put_text(f.id, var[c], "units", fd.unit, nc_path);
       if (!fd.description.empty()) put_text(f.id, var[c], "long_name", fd.description, nc_path);
     }
+    // The points' trajectories: one variable over the table's dimensions, the samples (time)
+    // and the trajectory's columns, NaN past a trajectory's end; `samples` says where it ends.
+    int traj_var = -1, samples_var = -1, column_var = -1, units_var = -1;
+    if (traj.longest > 0) {
+      int dt = -1, dc = -1;
+      check(netcdf().nc_def_dim(f.id, "time", traj.longest, &dt), nc_path, "define dimension time");
+      check(netcdf().nc_def_dim(f.id, "column", traj.columns.size(), &dc), nc_path, "define dimension column");
+      check(netcdf().nc_def_var(f.id, "column", NC_STRING, 1, &dc, &column_var), nc_path, "define variable column");
+      put_text(f.id, column_var, "long_name", "the trajectory's columns (as nanopush run's CSV names them)", nc_path);
+      check(netcdf().nc_def_var(f.id, "column_units", NC_STRING, 1, &dc, &units_var), nc_path, "define column_units");
+      put_text(f.id, units_var, "long_name", "the unit of each trajectory column", nc_path);
+      std::vector<int> td = dims;
+      td.push_back(dt);
+      td.push_back(dc);
+      check(netcdf().nc_def_var(f.id, "trajectory", NC_DOUBLE, static_cast<int>(td.size()), td.data(), &traj_var),
+            nc_path, "define variable trajectory");
+      check(netcdf().nc_def_var_fill(f.id, traj_var, 0, &nan), nc_path, "_FillValue");
+      put_text(f.id, traj_var, "long_name",
+               "each point's trajectory: its samples (time) by column; units per column in column_units; NaN after "
+               "the last sample",
+               nc_path);
+      check(netcdf().nc_def_var(f.id, "samples", NC_INT64, static_cast<int>(dims.size()), dims.data(), &samples_var),
+            nc_path, "define variable samples");
+      put_text(f.id, samples_var, "units", "1", nc_path);
+      put_text(f.id, samples_var, "long_name", "the number of samples of each point's trajectory (0: none)", nc_path);
+    }
     put_text(f.id, NC_GLOBAL, "Conventions", "CF-1.8", nc_path);
     put_text(f.id, NC_GLOBAL, "title", "nanopush table " + csv.filename().string(), nc_path);
     put_text(f.id, NC_GLOBAL, "source_table", csv.filename().string(), nc_path);
@@ -266,6 +344,37 @@ void write_netcdf_from_table(const fs::path& csv, const fs::path& nc_path, const
         std::vector<double> v;
         for (std::size_t r : pick) v.push_back(parse_number(cells[c][r], csv, lines[r]));
         check(netcdf().nc_put_var_double(f.id, var[c], v.data()), nc_path, ("write " + fd.name).c_str());
+      }
+    }
+    if (traj_var >= 0) {
+      std::vector<const char*> names, units;
+      for (const auto& c : traj.columns) {
+        names.push_back(c.name.c_str());
+        units.push_back(c.unit.c_str());
+      }
+      check(netcdf().nc_put_var_string(f.id, column_var, names.data()), nc_path, "write column");
+      check(netcdf().nc_put_var_string(f.id, units_var, units.data()), nc_path, "write column_units");
+      std::vector<long long> n(traj.samples.begin(), traj.samples.end());
+      check(netcdf().nc_put_var_longlong(f.id, samples_var, n.data()), nc_path, "write samples");
+      const std::size_t width = traj.columns.size();
+      for (std::size_t r = 0; r < rows; ++r) {
+        if (traj.samples[r] == 0) continue;
+        const std::vector<double> v = read_trajectory(trajectories[r], width);
+        // Row r of the table is grid point (i_1, ..., i_k), the last axis fastest (or point r).
+        std::vector<std::size_t> start, count;
+        if (axes.empty()) {
+          start.push_back(r);
+          count.push_back(1);
+        } else {
+          for (std::size_t k = 0; k < axes.size(); ++k) {
+            start.push_back((r / stride[k]) % axes[k].size);
+            count.push_back(1);
+          }
+        }
+        start.insert(start.end(), {0, 0});
+        count.insert(count.end(), {v.size() / width, width});
+        check(netcdf().nc_put_vara_double(f.id, traj_var, start.data(), count.data(), v.data()), nc_path,
+              "write trajectory");
       }
     }
     const int id = f.id;

@@ -98,3 +98,53 @@ def test_points_netcdf_over_point(tmp_path):
     for field in schema["fields"]:
         if field["type"] == "number":
             assert same_bits(ds[field["name"]].values, cols[field["name"]]), field["name"]
+
+
+def read_trajectory(path):
+    """A trajectory CSV as a (samples, columns) float array and its column names and units."""
+    cols, schema = read_csv(path)
+    names = [f["name"] for f in schema["fields"]]
+    return np.column_stack([cols[n] for n in names]), names, [f["unit"] for f in schema["fields"]]
+
+
+def test_grid_trajectories_in_netcdf(tmp_path):
+    """--trajectories with a .nc: one variable `trajectory` over the grid's axes, `time` (the
+    samples) and `column`, each point's CSV trajectory bit for bit, NaN after its last sample."""
+    grid = ["fig3_18", "--set", "surface.law=coulomb", "--set", "solver.samples=21", "--vary", "surface.mu=0.05,0.1,0.2",
+            "--vary", "push.yn=0,2e-8", "--quiet", "--jobs", "2"]
+    sweep(tmp_path, *grid, "--out", "g.nc", "--trajectories", "tr")
+    ds = xr.open_dataset(tmp_path / "g.nc")
+    assert ds.trajectory.dims == ("surface_mu", "push_yn", "time", "column")
+    assert ds.samples.dims == ("surface_mu", "push_yn")
+    first, names, units = read_trajectory(tmp_path / "tr" / "point_0.csv")
+    assert list(ds.column.values) == names and list(ds.column_units.values) == units
+    assert ds.sizes["column"] == len(names)
+    for i in range(6):  # point i is (mu index i // 2, yn index i % 2): the last axis fastest
+        tr, _, _ = read_trajectory(tmp_path / "tr" / f"point_{i}.csv")
+        n = int(ds.samples.values[i // 2, i % 2])
+        assert n == tr.shape[0]
+        cell = ds.trajectory.values[i // 2, i % 2]
+        assert same_bits(cell[:n], tr)
+        assert np.isnan(cell[n:]).all()
+    # xarray's labels reach a trajectory by its point's values.
+    x = ds.trajectory.sel(surface_mu=0.1, push_yn=2e-8, column="x").values
+    tr3, _, _ = read_trajectory(tmp_path / "tr" / "point_3.csv")
+    assert same_bits(x[:tr3.shape[0]], tr3[:, names.index("x")])
+
+
+def test_run_out_netcdf(tmp_path):
+    """`nanopush run --out FILE.nc`: the trajectory over a dimension `t` (its coordinate), each
+    column a variable with units, the CSV's values bit for bit; nothing else left beside it."""
+    p = subprocess.run([CLI, "run", "fig3_17", "--out", "r.csv", "--quiet"], capture_output=True, text=True, cwd=tmp_path)
+    assert p.returncode == 0, p.stderr
+    p = subprocess.run([CLI, "run", "fig3_17", "--out", "r.nc", "--quiet"], capture_output=True, text=True, cwd=tmp_path)
+    assert p.returncode == 0, p.stderr
+    assert sorted(q.name for q in tmp_path.iterdir()) == ["r.csv", "r.nc", "r.schema.json"]
+    cols, schema = read_csv(tmp_path / "r.csv")
+    ds = xr.open_dataset(tmp_path / "r.nc")
+    assert list(ds.sizes) == ["t"]
+    assert same_bits(ds.t.values, cols["t"])
+    for field in schema["fields"]:
+        assert same_bits(ds[field["name"]].values, cols[field["name"]]), field["name"]
+        assert ds[field["name"]].attrs["units"] == field["unit"]
+    assert ds.attrs["run_outcome"] == "ok" and ds.attrs["run_engine"]

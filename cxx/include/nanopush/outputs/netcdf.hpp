@@ -27,9 +27,15 @@ struct NetcdfAxis {
 /// NC_STRING. Attributes: `units` (the sidecar's unit, absent for text), `long_name` (its
 /// description); global: `Conventions` "CF-1.8", `title`, the sidecar's provenance
 /// (`nanopush_version`, `command`, `scene`, `created`, `run_<name>` for each timing or count).
+/// `trajectories`: empty, or one trajectory CSV per row of the table (a sweep's
+/// --trajectories files in point order; a file that does not exist: a point without one). They
+/// become one variable `trajectory` over the table's dimensions, `time` (the samples, as many as
+/// the longest) and `column` (string coordinate `column`, units in `column_units`), NaN after a
+/// trajectory's end, and `samples`, each point's number of samples.
 /// InputError when the table is not the grid the axes describe (nothing written); OutputError
 /// when the file cannot be written. The file appears whole or not at all.
 void write_netcdf_from_table(const std::filesystem::path& csv, const std::filesystem::path& nc,
-                             const std::vector<NetcdfAxis>& axes = {});
+                             const std::vector<NetcdfAxis>& axes = {},
+                             const std::vector<std::filesystem::path>& trajectories = {});
 
 }  // namespace nanopush
