@@ -5,3 +5,12 @@ add_test(NAME cli.startup.no_mpi
                  ${CMAKE_CURRENT_BINARY_DIR}/startup)
 set_tests_properties(cli.startup.no_mpi PROPERTIES ENVIRONMENT "NANOPUSH_SCENES=${NANOPUSH_SCENES}"
                      PASS_REGULAR_EXPRESSION "startup check: ok")
+# With NANOPUSH_STATIC_DEPS (the default) the plain command line takes SUNDIALS, LAPACK/BLAS and
+# the Fortran run time from their archives: none of them is a shared object it loads.
+if(NANOPUSH_STATIC_DEPS)
+  add_test(NAME cli.startup.static_deps
+           COMMAND bash -c "set -euo pipefail; deps=$(ldd \"$1\"); \
+if grep -E 'lib(sundials|lapack|blas|gfortran|quadmath)' <<< \"$deps\"; then echo 'FAIL: linked shared'; exit 1; fi; \
+echo \"$deps\" | wc -l | xargs echo shared objects:; \"$1\" --version" _ $<TARGET_FILE:nanopush>)
+  set_tests_properties(cli.startup.static_deps PROPERTIES PASS_REGULAR_EXPRESSION "shared objects: [0-9]+\nnanopush [0-9]")
+endif()
