@@ -244,33 +244,61 @@ std::string mu_name(double mu) {
   return s.str();
 }
 
-void step_fig4_3(ReproduceContext& ctx) {
-  const auto rod = icor::nanorod();
-  const double b = rod.half_length(), W = rod.load();
+/// A figure of a mu family (Figs 4.3-4.5) over the nanorod's push points yn in [0, b]: the CSV
+/// holds yn, the `shared` columns (outputs that do not depend on mu, read at the family's first
+/// mu), then one `per_mu(mu)` column a mu (the last of `outputs`); the figure draws the family's
+/// columns, x = `x` (a gnuplot using-expression), y = column scaled by `yscale` ("" or "*1e9").
+struct MuFamily {
+  std::string stem;                 ///< fig4_3: the CSV's and the PNG's name
+  const std::vector<double>& mus;   ///< the family
+  Columns shared;                   ///< columns between yn and the family's
+  std::function<Column(double)> per_mu;
+  std::vector<std::string> outputs;  ///< the shared columns' icor outputs, then the family's
+  std::optional<double> force;       ///< the push force, for the outputs that need one
+  std::string title, xlabel, ylabel, x, yscale;
+};
+
+void mu_family_figure(ReproduceContext& ctx, const MuFamily& f) {
+  const double b = icor::nanorod().half_length();
   const int n = ctx.quick ? 30 : 296;
-  const double F = 0.15 * W;  // one push force for the whole family: F >= mu W >= F_min for mu <= 0.15
-  const auto csv = ctx.out / "fig4_3.csv";
+  const auto csv = ctx.out / (f.stem + ".csv");
   Columns h = {{"yn", "m", "push point: distance from the CM along the rod"}};
-  for (double mu : kMuFamily43)
-    h.push_back({"R_known_pressure_mu_" + value_name(mu), "m",
-                 "iCOR distance, known uniform pressure (eq 4.7), F = 0.15 W, " + mu_name(mu), "number", {{"mu", mu}}});
+  h.insert(h.end(), f.shared.begin(), f.shared.end());
+  for (double mu : f.mus) h.push_back(f.per_mu(mu));
   CsvWriter w(csv, h);
   const auto yns = sweep(0.0, b, n, false);
-  const auto v = icor_by_sweep(yns, kMuFamily43, {"R_known_pressure"}, F);
+  const auto v = icor_by_sweep(yns, f.mus, f.outputs, f.force);
+  const std::size_t m = f.mus.size(), last = f.outputs.size() - 1;
   for (std::size_t i = 0; i < yns.size(); ++i) {
     std::vector<double> r = {yns[i]};
-    for (std::size_t k = 0; k < kMuFamily43.size(); ++k) r.push_back(v[i * kMuFamily43.size() + k][0]);
+    for (std::size_t j = 0; j < last; ++j) r.push_back(v[i * m][j]);
+    for (std::size_t k = 0; k < m; ++k) r.push_back(v[i * m + k][last]);
     w.row(r);
   }
   w.commit();
   ctx.produced(csv);
   plot::Figure fig;
-  fig.title = "Fig 4.3: iCOR for known pressure (eq 4.7), F = 0.15 W";
-  plot::Panel p{"", "push point yn [nm]", "R [nm]", false, true, "", {}};
-  for (std::size_t i = 0; i < kMuFamily43.size(); ++i)
-    p.series.push_back({csv, "($1*1e9)", "($" + std::to_string(i + 2) + "*1e9)", mu_name(kMuFamily43[i]), "lines lw 2"});
+  fig.title = f.title;
+  plot::Panel p{"", f.xlabel, f.ylabel, false, true, "", {}};
+  const std::size_t first = 2 + f.shared.size();  // the family's first column, from 1
+  for (std::size_t i = 0; i < m; ++i)
+    p.series.push_back({csv, f.x, "($" + std::to_string(i + first) + f.yscale + ")", mu_name(f.mus[i]), "lines lw 2"});
   fig.panels.push_back(p);
-  render_if_possible(ctx, fig, ctx.out / "fig4_3.png");
+  render_if_possible(ctx, fig, ctx.out / (f.stem + ".png"));
+}
+
+void step_fig4_3(ReproduceContext& ctx) {
+  const double W = icor::nanorod().load();
+  mu_family_figure(ctx, {"fig4_3", kMuFamily43, {},
+                         [](double mu) {
+                           return Column{"R_known_pressure_mu_" + value_name(mu), "m",
+                                         "iCOR distance, known uniform pressure (eq 4.7), F = 0.15 W, " + mu_name(mu),
+                                         "number", {{"mu", mu}}};
+                         },
+                         {"R_known_pressure"},
+                         0.15 * W,  // one push force for the whole family: F >= mu W >= F_min for mu <= 0.15
+                         "Fig 4.3: iCOR for known pressure (eq 4.7), F = 0.15 W", "push point yn [nm]", "R [nm]",
+                         "($1*1e9)", "*1e9"});
   ctx.report << "\n## Fig 4.3: iCOR for a known (uniform) pressure, eq 4.7\n\n"
              << "The thesis does not print the push force used; we hold F = 0.15 W fixed (W = m g + F_vdw = "
              << std::setprecision(4) << W << " N), which starts motion for every mu <= 0.15. With F = mu W (the\n"
@@ -278,62 +306,28 @@ void step_fig4_3(ReproduceContext& ctx) {
 }
 
 void step_fig4_4(ReproduceContext& ctx) {
-  const auto rod = icor::nanorod();
-  const double b = rod.half_length();
-  const int n = ctx.quick ? 30 : 296;
-  const auto csv = ctx.out / "fig4_4.csv";
-  Columns h = {{"yn", "m", "push point: distance from the CM along the rod"}};
-  for (double mu : kMuFamily44)
-    h.push_back({"F_min_mu_" + value_name(mu), "N", "minimum push force (eq 4.8), " + mu_name(mu), "number", {{"mu", mu}}});
-  CsvWriter w(csv, h);
-  const auto yns = sweep(0.0, b, n, false);
-  const auto v = icor_by_sweep(yns, kMuFamily44, {"F_min"});
-  for (std::size_t i = 0; i < yns.size(); ++i) {
-    std::vector<double> r = {yns[i]};
-    for (std::size_t k = 0; k < kMuFamily44.size(); ++k) r.push_back(v[i * kMuFamily44.size() + k][0]);
-    w.row(r);
-  }
-  w.commit();
-  ctx.produced(csv);
-  plot::Figure fig;
-  fig.title = "Fig 4.4: minimum push force (eq 4.8) vs push point";
-  plot::Panel p{"", "push point yn [nm]", "F_min [N]", false, true, "", {}};
-  for (std::size_t i = 0; i < kMuFamily44.size(); ++i)
-    p.series.push_back({csv, "($1*1e9)", "($" + std::to_string(i + 2) + ")", mu_name(kMuFamily44[i]), "lines lw 2"});
-  fig.panels.push_back(p);
-  render_if_possible(ctx, fig, ctx.out / "fig4_4.png");
+  mu_family_figure(ctx, {"fig4_4", kMuFamily44, {},
+                         [](double mu) {
+                           return Column{"F_min_mu_" + value_name(mu), "N", "minimum push force (eq 4.8), " + mu_name(mu),
+                                         "number", {{"mu", mu}}};
+                         },
+                         {"F_min"}, std::nullopt, "Fig 4.4: minimum push force (eq 4.8) vs push point",
+                         "push point yn [nm]", "F_min [N]", "($1*1e9)", ""});
   ctx.report << "\n## Fig 4.4: minimum push force, eq 4.8 (the map behind `nanopush icor estimate-mu --yn`)\n\n"
              << "F_min / (mu W) falls from 1 at yn = 0 to sqrt(2) - 1 at the rod end. Absolute forces scale with the\n"
-             << "assumed Hamaker constant H = " << rod.hamaker << " J (the thesis prints none for graphite).\n";
+             << "assumed Hamaker constant H = " << icor::nanorod().hamaker << " J (the thesis prints none for graphite).\n";
 }
 
 void step_fig4_5(ReproduceContext& ctx) {
-  const auto rod = icor::nanorod();
-  const double b = rod.half_length();
-  const int n = ctx.quick ? 30 : 296;
-  const auto csv = ctx.out / "fig4_5.csv";
-  Columns h = {{"yn", "m", "push point: distance from the CM along the rod"},
-               {"R_unknown_pressure", "m", "iCOR distance, unknown pressure (eq 4.13)"}};
-  for (double mu : kMuFamily44)
-    h.push_back({"F_from_icor_mu_" + value_name(mu), "N", "push force from the iCOR (eq 4.10), " + mu_name(mu), "number",
-                 {{"mu", mu}}});
-  CsvWriter w(csv, h);
-  const auto yns = sweep(0.0, b, n, false);
-  const auto v = icor_by_sweep(yns, kMuFamily44, {"R_unknown_pressure", "F_from_icor"});
-  for (std::size_t i = 0; i < yns.size(); ++i) {
-    std::vector<double> r = {yns[i], v[i * kMuFamily44.size()][0]};
-    for (std::size_t k = 0; k < kMuFamily44.size(); ++k) r.push_back(v[i * kMuFamily44.size() + k][1]);
-    w.row(r);
-  }
-  w.commit();
-  ctx.produced(csv);
-  plot::Figure fig;
-  fig.title = "Fig 4.5: push force (eq 4.10) vs quasi-static iCOR";
-  plot::Panel p{"", "iCOR distance R [nm]", "F [N]", false, true, "", {}};
-  for (std::size_t i = 0; i < kMuFamily44.size(); ++i)
-    p.series.push_back({csv, "($2*1e9)", "($" + std::to_string(i + 3) + ")", mu_name(kMuFamily44[i]), "lines lw 2"});
-  fig.panels.push_back(p);
-  render_if_possible(ctx, fig, ctx.out / "fig4_5.png");
+  const double b = icor::nanorod().half_length();
+  mu_family_figure(ctx, {"fig4_5", kMuFamily44, {{"R_unknown_pressure", "m", "iCOR distance, unknown pressure (eq 4.13)"}},
+                         [](double mu) {
+                           return Column{"F_from_icor_mu_" + value_name(mu), "N",
+                                         "push force from the iCOR (eq 4.10), " + mu_name(mu), "number", {{"mu", mu}}};
+                         },
+                         {"R_unknown_pressure", "F_from_icor"}, std::nullopt,
+                         "Fig 4.5: push force (eq 4.10) vs quasi-static iCOR", "iCOR distance R [nm]", "F [N]", "($2*1e9)",
+                         ""});
   ctx.report << "\n## Fig 4.5: push force against the iCOR, eq 4.10 (the map behind `estimate-mu --icor`)\n\n"
              << "R runs from (sqrt(2) - 1) b = " << std::setprecision(4) << (std::sqrt(2.0) - 1.0) * b * 1e9
              << " nm (push at the rod end; the thesis reads ~118 nm) to b = " << b * 1e9 << " nm (push at the CM).\n";
