@@ -295,6 +295,31 @@ double f77_fs(double F, double h, double r) {
   return fs;
 }
 
+/// Ends a rolling figure's report: the largest |C++ - F77| of fs (`over`: where it was taken),
+/// a failure when it exceeds 4 ulps of `scale`, and the Markdown into the report.
+void close_fs_report(ReproduceContext& ctx, std::ostringstream& md, const std::string& step, const std::string& over,
+                     double maxdiff, double scale) {
+  md << "\nLargest |C++ - F77| " << over << ": " << maxdiff << " N.\n";
+  if (maxdiff > 4 * std::numeric_limits<double>::epsilon() * scale)
+    ctx.failures.push_back(step + ": C++ and F77 differ by " + csv_number(maxdiff) + " N");
+  ctx.report << md.str();
+}
+
+/// Draws a plot of fs against h / r (the CSV's column 2) as `step`.png when gnuplot is there.
+void draw_fs(ReproduceContext& ctx, const std::string& step, const std::string& title, const std::string& ylabel,
+             const std::string& key, std::vector<plot::Series> series) {
+  if (!plot::available()) return;
+  plot::Figure fig;
+  fig.title = title;
+  plot::Panel p;
+  p.xlabel = "push height h / r";
+  p.ylabel = ylabel;
+  p.extra = "set xzeroaxis\nset key " + key;
+  p.series = std::move(series);
+  fig.panels.push_back(p);
+  ctx.produced(plot::render(fig, ctx.out / (step + ".png")));
+}
+
 void step_fig33(ReproduceContext& ctx) {
   const auto t = thesis_mwcnt();
   const double r = t.body.radius, k = 0.6e-9;
@@ -333,23 +358,9 @@ void step_fig33(ReproduceContext& ctx) {
        << (ok ? "yes" : "NO") << " |\n";
     if (!ok) ctx.failures.push_back(std::string("fig3_3: fs at ") + p.what + " is not exact");
   }
-  md << "\nLargest |C++ - F77| over the curve: " << maxdiff << " N.\n";
-  if (maxdiff > 4 * std::numeric_limits<double>::epsilon() * F)
-    ctx.failures.push_back("fig3_3: C++ and F77 differ by " + csv_number(maxdiff) + " N");
-  ctx.report << md.str();
-  if (plot::available()) {
-    const auto png = ctx.out / "fig3_3.png";
-    plot::Figure fig;
-    fig.title = "Fig 3.3: static friction for pure rolling (MWCNT r = 13.5 nm, k = 0.6 nm)";
-    plot::Panel p;
-    p.xlabel = "push height h / r";
-    p.ylabel = "fs / F";
-    p.extra = "set xzeroaxis\nset key top right";
-    p.series.push_back({csv, "2", "5", "C++ fs/F", "lines lw 2"});
-    p.series.push_back({csv, "2", "($4/" + csv_number(F) + ")", "F77 fs/F", "points pt 6 ps 0.6"});
-    fig.panels.push_back(p);
-    ctx.produced(plot::render(fig, png));
-  }
+  close_fs_report(ctx, md, "fig3_3", "over the curve", maxdiff, F);
+  draw_fs(ctx, "fig3_3", "Fig 3.3: static friction for pure rolling (MWCNT r = 13.5 nm, k = 0.6 nm)", "fs / F", "top right",
+          {{csv, "2", "5", "C++ fs/F", "lines lw 2"}, {csv, "2", "($4/" + csv_number(F) + ")", "F77 fs/F", "points pt 6 ps 0.6"}});
 }
 
 void step_fig34(ReproduceContext& ctx) {
@@ -438,27 +449,16 @@ void step_fig34(ReproduceContext& ctx) {
        << (mode >= 0 && mode < 4 ? names[mode] : "error") << " |\n";
     if (mode != static_cast<int>(d.motion)) ctx.failures.push_back("fig3_4: C++ and F77 rolling decisions differ");
   }
-  md << "\nLargest |C++ - F77| of fs over all curves: " << maxdiff << " N.\n";
-  if (maxdiff > 4 * std::numeric_limits<double>::epsilon() * W)
-    ctx.failures.push_back("fig3_4: C++ and F77 differ by " + csv_number(maxdiff) + " N");
-  ctx.report << md.str();
-  if (plot::available()) {
-    const auto png = ctx.out / "fig3_4.png";
-    plot::Figure fig;
-    fig.title = "Fig 3.4: static friction vs push height for rolling coefficients k (MWCNT r = 13.5 nm, L = 590 nm)";
-    plot::Panel p;
-    p.xlabel = "push height h / r";
-    p.ylabel = "fs (nN)";
-    p.extra = "set xzeroaxis\nset key outside right";
-    for (std::size_t j = 0; j < ks.size(); ++j) {
-      const std::string col = std::to_string(3 + j);
-      const std::string title =
-          j + 1 < ks.size() ? "k = " + fixed(ks[j] * 1e9, 1) + " nm" : "k = b (JKR) = " + fixed(kjkr * 1e9, 2) + " nm";
-      p.series.push_back({csv, "2", "($" + col + "*1e9)", title, j + 1 < ks.size() ? "lines lw 2" : "lines lw 3 dt 2"});
-    }
-    fig.panels.push_back(p);
-    ctx.produced(plot::render(fig, png));
+  close_fs_report(ctx, md, "fig3_4", "of fs over all curves", maxdiff, W);
+  std::vector<plot::Series> series;
+  for (std::size_t j = 0; j < ks.size(); ++j) {
+    const std::string col = std::to_string(3 + j);
+    const std::string title =
+        j + 1 < ks.size() ? "k = " + fixed(ks[j] * 1e9, 1) + " nm" : "k = b (JKR) = " + fixed(kjkr * 1e9, 2) + " nm";
+    series.push_back({csv, "2", "($" + col + "*1e9)", title, j + 1 < ks.size() ? "lines lw 2" : "lines lw 3 dt 2"});
   }
+  draw_fs(ctx, "fig3_4", "Fig 3.4: static friction vs push height for rolling coefficients k (MWCNT r = 13.5 nm, L = 590 nm)",
+          "fs (nN)", "outside right", std::move(series));
 }
 
 RegisterReproduce reg_t31{{"table3_1", "Table 3.1: old and corrected surface energies of 18 materials", 31, step_table31}};
