@@ -22,6 +22,7 @@
 #include "nanopush/outputs/plot.hpp"
 #include "nanopush/scenes/lhs.hpp"
 #include "cli_checks.hpp"
+#include "bench_report.hpp"
 #include "registry.hpp"
 
 namespace nanopush::cli {
@@ -213,11 +214,7 @@ int run_bench_accuracy(const BenchAccuracyOptions& o) {
   const bool ok = bench_accuracy(o, dir, md, std::cerr, nullptr);
   write_file_atomic(dir / "accuracy.md", md.str());
   std::cerr << "bench-accuracy: " << (dir / "accuracy.md").string() << ", accuracy_honesty.csv, accuracy_cost.csv\n";
-  if (!ok) {
-    std::cerr << "bench: the true error exceeds 10x the estimate at more than 1 % of the scenes (accuracy.md)\n";
-    return 4;
-  }
-  return 0;
+  return bench_status(ok, "bench: the true error exceeds 10x the estimate at more than 1 % of the scenes (accuracy.md)");
 }
 
 RegisterCommand reg{{"bench-accuracy",

@@ -23,6 +23,7 @@
 #include "nanopush/outputs/io.hpp"
 #include "nanopush/outputs/plot.hpp"
 #include "cli_checks.hpp"
+#include "bench_report.hpp"
 #include "registry.hpp"
 
 namespace nanopush::cli {
@@ -246,11 +247,7 @@ int run_bench_fit(const BenchFitOptions& o) {
   }
   write_file_atomic(dir / "fit_benchmark.md", md.str());
   std::cerr << "bench-fit: " << (dir / "fit_benchmark.md").string() << ", fit_benchmark.csv, fit_coverage.csv, fit_coverage.png\n";
-  if (!ok) {
-    std::cerr << "bench: coverage outside 90-99 % or a fit that did not converge (fit_benchmark.md)\n";
-    return 4;
-  }
-  return 0;
+  return bench_status(ok, "bench: coverage outside 90-99 % or a fit that did not converge (fit_benchmark.md)");
 }
 
 RegisterCommand reg{{"bench-fit",
