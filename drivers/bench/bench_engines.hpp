@@ -369,19 +369,33 @@ int to_outputs(const Problem& p, N_Vector y, std::vector<double>& yout, int flag
   }
   return flag;
 }
+
+/// The frame both SUNDIALS engines share: the state and tolerances (SunObjects); on the clock,
+/// `run(o, yout)` (create and configure the integrator, step to every output; the last flag);
+/// then the status, `count(o, flag, s)` (message and counts) and the outputs stored.
+template <class Run, class Count>
+Solve sundials_solve(const Problem& p, double rtol, double* seconds, Run&& run, Count&& count) {
+  const std::vector<double> atol = p.atol(rtol);
+  std::vector<double> yout(p.nout() * static_cast<std::size_t>(p.n), 0.0);
+  Solve s;
+  const auto t0 = Clock::now();
+  {
+    SunObjects o(p, atol);
+    const int flag = run(o, yout);
+    if (seconds) *seconds = seconds_since(t0);
+    s.status = flag < 0 ? -flag : 0;
+    count(o, flag, s);
+  }
+  store(s, yout);
+  return s;
+}
 }  // namespace detail
 
 /// CVODE Adams (fixed-point) or BDF (Newton + dense), outputs by CVODE's interpolation (CV_NORMAL).
 template <class Rhs>
 Solve solve_cvode(const Problem& p, const Rhs& rhs, double rtol, bool bdf, double* seconds) {
   const int n = p.n;
-  const std::size_t nu = static_cast<std::size_t>(n);
-  const std::vector<double> atol = p.atol(rtol);
-  std::vector<double> yout(p.nout() * nu, 0.0);
-  Solve s;
-  const auto t0 = detail::Clock::now();
-  {
-    detail::SunObjects o(p, atol);
+  const auto run = [&](detail::SunObjects& o, std::vector<double>& yout) {
     o.mem = CVodeCreate(bdf ? CV_BDF : CV_ADAMS, o.ctx);
     o.free_mem = &CVodeFree;
     int flag = CVodeInit(o.mem, &detail::sun_rhs<Rhs>, p.t0, o.y);
@@ -399,11 +413,11 @@ Solve solve_cvode(const Problem& p, const Rhs& rhs, double rtol, bool bdf, doubl
         flag = CVodeSetNonlinearSolver(o.mem, o.NLS);
       }
     }
-    flag = detail::to_outputs(p, o.y, yout, flag, [&](realtype tout, realtype* t) {
+    return detail::to_outputs(p, o.y, yout, flag, [&](realtype tout, realtype* t) {
       return CVode(o.mem, tout, o.y, t, CV_NORMAL);
     });
-    if (seconds) *seconds = detail::seconds_since(t0);
-    s.status = flag < 0 ? -flag : 0;
+  };
+  const auto count = [&](detail::SunObjects& o, int flag, Solve& s) {
     if (flag < 0) s.message = "CVODE: " + detail::flag_name(CVodeGetReturnFlagName(flag));
     long nfe = 0, nfels = 0, nst = 0, netf = 0, nncf = 0;
     CVodeGetNumRhsEvals(o.mem, &nfe);
@@ -414,22 +428,14 @@ Solve solve_cvode(const Problem& p, const Rhs& rhs, double rtol, bool bdf, doubl
     s.nfcn = nfe + nfels;
     s.naccpt = nst;
     s.nrejct = netf + nncf;
-  }
-  detail::store(s, yout);
-  return s;
+  };
+  return detail::sundials_solve(p, rtol, seconds, run, count);
 }
 
 /// ARKODE ERKStep with the order-8 Fehlberg table; outputs by ARKODE's interpolation (ARK_NORMAL).
 template <class Rhs>
 Solve solve_arkode_erk8(const Problem& p, const Rhs& rhs, double rtol, double* seconds) {
-  const int n = p.n;
-  const std::size_t nu = static_cast<std::size_t>(n);
-  const std::vector<double> atol = p.atol(rtol);
-  std::vector<double> yout(p.nout() * nu, 0.0);
-  Solve s;
-  const auto t0 = detail::Clock::now();
-  {
-    detail::SunObjects o(p, atol);
+  const auto run = [&](detail::SunObjects& o, std::vector<double>& yout) {
     o.mem = ERKStepCreate(&detail::sun_rhs<Rhs>, p.t0, o.y, o.ctx);
     o.free_mem = &ERKStepFree;
     int flag = ERKStepSetErrFile(o.mem, nullptr);
@@ -437,11 +443,11 @@ Solve solve_arkode_erk8(const Problem& p, const Rhs& rhs, double rtol, double* s
     if (flag == 0) flag = ERKStepSetUserData(o.mem, const_cast<void*>(static_cast<const void*>(&rhs)));
     if (flag == 0) flag = ERKStepSetTableNum(o.mem, ARKODE_FEHLBERG_13_7_8);
     if (flag == 0) flag = ERKStepSetMaxNumSteps(o.mem, 100000);  // the budget of every engine
-    flag = detail::to_outputs(p, o.y, yout, flag, [&](realtype tout, realtype* t) {
+    return detail::to_outputs(p, o.y, yout, flag, [&](realtype tout, realtype* t) {
       return ERKStepEvolve(o.mem, tout, o.y, t, ARK_NORMAL);
     });
-    if (seconds) *seconds = detail::seconds_since(t0);
-    s.status = flag < 0 ? -flag : 0;
+  };
+  const auto count = [](detail::SunObjects& o, int flag, Solve& s) {
     if (flag < 0) s.message = "ARKODE: " + detail::flag_name(ERKStepGetReturnFlagName(flag));
     long nfe = 0, nst = 0, netf = 0;
     ERKStepGetNumRhsEvals(o.mem, &nfe);
@@ -450,9 +456,8 @@ Solve solve_arkode_erk8(const Problem& p, const Rhs& rhs, double rtol, double* s
     s.nfcn = nfe;
     s.naccpt = nst;
     s.nrejct = netf;
-  }
-  detail::store(s, yout);
-  return s;
+  };
+  return detail::sundials_solve(p, rtol, seconds, run, count);
 }
 #endif  // NANOPUSH_HAVE_SUNDIALS
 
