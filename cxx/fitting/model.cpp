@@ -325,23 +325,19 @@ ModelPoses model_poses(const Scene& scene, const std::vector<std::string>& free,
     };
     // A side whose solve fails (an event the integrator cannot resolve there) leaves a
     // one-sided difference against the centre, at the same tolerance.
-    std::optional<std::vector<std::array<double, 3>>> a, b;
     std::string why;
     // A side beyond the key's range (surface.mu = 0 - h) is no scene: one-sided as well.
-    try {
-      a = fwd(pp);
-    } catch (const SolverError& e) {
-      why = e.what();
-    } catch (const InputError& e) {
-      why = e.what();
-    }
-    try {
-      b = fwd(pm);
-    } catch (const SolverError& e) {
-      why = e.what();
-    } catch (const InputError& e) {
-      why = e.what();
-    }
+    const auto side = [&](const auto& q) -> std::optional<std::vector<std::array<double, 3>>> {
+      try {
+        return fwd(q);
+      } catch (const SolverError& e) {
+        why = e.what();
+      } catch (const InputError& e) {
+        why = e.what();
+      }
+      return std::nullopt;
+    };
+    std::optional<std::vector<std::array<double, 3>>> a = side(pp), b = side(pm);
     double width = 2 * h;
     if (!a && !b) throw SolverError("differences in " + free[k] + " failed on both sides: " + why);
     if (!a) {
