@@ -353,6 +353,46 @@ TipRow make_row(const BarGeometry& g, double muN, const TipPath& tip, double t, 
   return r;
 }
 
+/// The first time in [0, t_path_end] the tip touches the bar (gap(t) <= 0, gap(0) = g0), or -1
+/// when it does not. The gap is convex along the straight path: its minimum by golden section,
+/// then the first zero before it by the Illinois method.
+template <class Gap>
+double first_contact(const Gap& gap, double g0, double t_path_end) {
+  double t_contact = -1;
+  if (g0 <= 0) {
+    t_contact = 0;
+  } else {
+    double lo = 0, hi = t_path_end;
+    const double phi = 0.5 * (std::sqrt(5.0) - 1);
+    double c1 = hi - phi * (hi - lo), c2 = lo + phi * (hi - lo), f1 = gap(c1), f2 = gap(c2);
+    for (int it = 0; it < 200 && hi - lo > 1e-15 * t_path_end; ++it) {
+      if (f1 < f2) {
+        hi = c2;
+        c2 = c1;
+        f2 = f1;
+        c1 = hi - phi * (hi - lo);
+        f1 = gap(c1);
+      } else {
+        lo = c1;
+        c1 = c2;
+        f1 = f2;
+        c2 = lo + phi * (hi - lo);
+        f2 = gap(c2);
+      }
+    }
+    double tmin = 0.5 * (lo + hi);
+    if (gap(t_path_end) < gap(tmin)) tmin = t_path_end;
+    if (gap(tmin) <= 0) {
+      double a = 0, b = tmin;
+      double ga = g0, gb = gap(tmin);
+      roots::illinois(a, b, ga, gb, 200, [&](double l, double h) { return h - l > 1e-15 * t_path_end; }, gap,
+                      [](int) {});
+      t_contact = b;
+    }
+  }
+  return t_contact;
+}
+
 }  // namespace
 
 TipRunResult run_quasi_static(const BarGeometry& g, double muN, const TipPath& tip, double x0, double y0,
@@ -388,40 +428,8 @@ TipRunResult run_quasi_static(const BarGeometry& g, double muN, const TipPath& t
     throw InputError("tip.start", "[" + fmt(tip.start_x) + ", " + fmt(tip.start_y) + "]",
                      "the tip (radius " + fmt(tip.radius) + " m) overlaps the bar at t = 0 by " + fmt(-g0) +
                          " m: start it outside the bar");
-  // The gap is convex along the straight path: its minimum by golden section, then the first zero.
   const double t_path_end = std::min(t_stop, t_end);
-  double t_contact = -1;
-  if (g0 <= 0) {
-    t_contact = 0;
-  } else {
-    double lo = 0, hi = t_path_end;
-    const double phi = 0.5 * (std::sqrt(5.0) - 1);
-    double c1 = hi - phi * (hi - lo), c2 = lo + phi * (hi - lo), f1 = gap(c1), f2 = gap(c2);
-    for (int it = 0; it < 200 && hi - lo > 1e-15 * t_path_end; ++it) {
-      if (f1 < f2) {
-        hi = c2;
-        c2 = c1;
-        f2 = f1;
-        c1 = hi - phi * (hi - lo);
-        f1 = gap(c1);
-      } else {
-        lo = c1;
-        c1 = c2;
-        f1 = f2;
-        c2 = lo + phi * (hi - lo);
-        f2 = gap(c2);
-      }
-    }
-    double tmin = 0.5 * (lo + hi);
-    if (gap(t_path_end) < gap(tmin)) tmin = t_path_end;
-    if (gap(tmin) <= 0) {
-      double a = 0, b = tmin;
-      double ga = g0, gb = gap(tmin);
-      roots::illinois(a, b, ga, gb, 200, [&](double l, double h) { return h - l > 1e-15 * t_path_end; }, gap,
-                      [](int) {});
-      t_contact = b;
-    }
-  }
+  const double t_contact = first_contact(gap, g0, t_path_end);
 
   std::size_t next = 0;  // next output index
   auto rest_rows_until = [&](double t_limit, bool inclusive) {
