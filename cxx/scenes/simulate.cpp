@@ -301,6 +301,38 @@ struct AsDouble {
   }
 };
 
+/// run_cxx_rough's coulomb law (event-located stick-slip; CVODE with --method cvode): the stats,
+/// the rest events and the outcome into `tr`; the integrator's failures become its status.
+template <typename S, class Tout, class Record>
+void run_coulomb_rough(Trajectory& tr, const Scene& sc, const ResolvedSettings& s, const RoughBarModel& model,
+                       const std::vector<S>& atol, S* y, const Tout& tout, Record& record) {
+  constexpr bool extended = !std::is_same_v<S, double>;
+  StickSlipResult r;
+  try {
+    if constexpr (extended)
+      r = integrate_coulomb_extended<S>(model, options_for<S>(sc, s, atol), y, tout, record);
+    else if (s.method == Method::cvode)
+      r = integrate_coulomb_cvode(model, s.rtol, tr.atol, y, tout, record);
+    else
+      r = integrate_coulomb(model, options_for(sc, s, tr.atol), y, tout, record);
+  } catch (const CoulombError& e) {
+    tr.stats.status = e.status();
+    tr.stats.message = e.what();
+    return;
+  } catch (const SolverError& e) {  // CVODE's failures
+    tr.stats.status = BsStatus::rhs_failed;
+    tr.stats.message = e.what();
+    return;
+  }
+  tr.stats = r.stats;
+  for (const auto& e : r.events) tr.events.push_back({e.t, e.stuck});
+  if (tr.events.size() == 1 && tr.events[0].t == 0.0 && tr.events[0].stuck) {
+    tr.outcome = Outcome::at_rest;
+    tr.outcome_message = "the push (F = " + fmt_short(sc.push.force) +
+                         " N) lies inside the limit surface: static friction holds the object where it is";
+  }
+}
+
 /// The rough bar in the C++ engine in scalar S: double (every method), long double and quad
 /// (modern, the thesis and coulomb laws; resolve_settings refuses the rest). Rows in double;
 /// extended runs also keep the pose and velocity in quad (Trajectory::extended).
@@ -435,30 +467,7 @@ Trajectory run_cxx_rough(const Scene& sc, const ResolvedSettings& s) {
     }
     return tr;
   }
-  StickSlipResult r;
-  try {
-    if constexpr (extended)
-      r = integrate_coulomb_extended<S>(model, options_for<S>(sc, s, atol), y.data(), tout, record);
-    else if (s.method == Method::cvode)
-      r = integrate_coulomb_cvode(model, s.rtol, tr.atol, y.data(), tout, record);
-    else
-      r = integrate_coulomb(model, options_for(sc, s, tr.atol), y.data(), tout, record);
-  } catch (const CoulombError& e) {
-    tr.stats.status = e.status();
-    tr.stats.message = e.what();
-    return tr;
-  } catch (const SolverError& e) {  // CVODE's failures
-    tr.stats.status = BsStatus::rhs_failed;
-    tr.stats.message = e.what();
-    return tr;
-  }
-  tr.stats = r.stats;
-  for (const auto& e : r.events) tr.events.push_back({e.t, e.stuck});
-  if (tr.events.size() == 1 && tr.events[0].t == 0.0 && tr.events[0].stuck) {
-    tr.outcome = Outcome::at_rest;
-    tr.outcome_message = "the push (F = " + fmt_short(sc.push.force) +
-                         " N) lies inside the limit surface: static friction holds the object where it is";
-  }
+  run_coulomb_rough<S>(tr, sc, s, model, atol, y.data(), tout, record);
   return tr;
 }
 
