@@ -16,6 +16,26 @@ function(nanopush_capi_program target source)
   endif()
 endfunction()
 
+# A Fortran program that calls the module without stat= and must error-stop: CTest NAME_message
+# passes on the library's MESSAGE (and fails if the program reaches its end), NAME_exit on the
+# nonzero exit status.
+function(nanopush_capi_error_stop name target source message)
+  nanopush_capi_program(${target} ${source})
+  add_test(NAME ${name}_message COMMAND ${target})
+  set_tests_properties(${name}_message PROPERTIES PASS_REGULAR_EXPRESSION "${message}"
+                                                 FAIL_REGULAR_EXPRESSION "not reached")
+  add_test(NAME ${name}_exit COMMAND ${target})
+  set_tests_properties(${name}_exit PROPERTIES WILL_FAIL TRUE)
+endfunction()
+
+# A C API test program run as CTest NAME with ARGN as its arguments; it passes when its output
+# matches PASS (the program's closing line).
+function(nanopush_capi_test name target source pass)
+  nanopush_capi_program(${target} ${source})
+  add_test(NAME ${name} COMMAND ${target} ${ARGN})
+  set_tests_properties(${name} PROPERTIES PASS_REGULAR_EXPRESSION "${pass}")
+endfunction()
+
 # Shared Fortran test problems (a module over `use nanopush`).
 add_library(capi_test_problems STATIC ${_capi_dir}/problems.f90)
 target_link_libraries(capi_test_problems PUBLIC nanopush_fortran PRIVATE nanopush_warnings)
@@ -35,13 +55,8 @@ nanopush_capi_program(capi_test_errors test_fortran_errors.f90 capi_test_problem
 add_test(NAME capi.fortran_errors COMMAND capi_test_errors)
 
 # Without stat: error stop with the C++ message (message test + non-zero exit test).
-nanopush_capi_program(capi_error_stop error_stop_without_stat.f90)
-add_test(NAME capi.fortran_error_stop_message COMMAND capi_error_stop)
-set_tests_properties(capi.fortran_error_stop_message PROPERTIES
-  PASS_REGULAR_EXPRESSION "nanopush: nanopush_parse_scene: object.mass = -1: must be > 0 \\(kg\\)"
-  FAIL_REGULAR_EXPRESSION "not reached")
-add_test(NAME capi.fortran_error_stop_exit COMMAND capi_error_stop)
-set_tests_properties(capi.fortran_error_stop_exit PROPERTIES WILL_FAIL TRUE)
+nanopush_capi_error_stop(capi.fortran_error_stop capi_error_stop error_stop_without_stat.f90
+                         "nanopush: nanopush_parse_scene: object.mass = -1: must be > 0 \\(kg\\)")
 
 # Two pthreads integrating different problems through the Fortran API = sequential runs.
 find_package(Threads REQUIRED)
@@ -76,13 +91,8 @@ add_test(NAME capi.estimate_mu_cli
   COMMAND ${CMAKE_COMMAND} -DNANOPUSH=$<TARGET_FILE:nanopush> -DFORTRAN_EXE=$<TARGET_FILE:capi_test_estimate_mu_fortran>
     -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/capi_estimate_mu -P ${_capi_dir}/run_estimate_mu_cli.cmake)
 set_tests_properties(capi.estimate_mu_cli PROPERTIES PASS_REGULAR_EXPRESSION "estimate-mu CLI comparison: all checks hold")
-nanopush_capi_program(capi_error_stop_estimate_mu error_stop_estimate_mu.f90)
-add_test(NAME capi.fortran_estimate_mu_error_stop_message COMMAND capi_error_stop_estimate_mu)
-set_tests_properties(capi.fortran_estimate_mu_error_stop_message PROPERTIES
-  PASS_REGULAR_EXPRESSION "nanopush: nanopush_estimate_mu_from_icor: R = 0: must be > 0 \\(m\\)"
-  FAIL_REGULAR_EXPRESSION "not reached")
-add_test(NAME capi.fortran_estimate_mu_error_stop_exit COMMAND capi_error_stop_estimate_mu)
-set_tests_properties(capi.fortran_estimate_mu_error_stop_exit PROPERTIES WILL_FAIL TRUE)
+nanopush_capi_error_stop(capi.fortran_estimate_mu_error_stop capi_error_stop_estimate_mu error_stop_estimate_mu.f90
+                         "nanopush: nanopush_estimate_mu_from_icor: R = 0: must be > 0 \\(m\\)")
 
 # A rough-surface scene from Fortran, law chosen by the caller = `nanopush run --law` exactly.
 nanopush_capi_program(capi_test_rough test_fortran_rough.f90)
@@ -99,48 +109,35 @@ foreach(_law thesis coulomb)
 endforeach()
 
 # Extended precision from Fortran: nanopush_run(..., precision=, state_ext=) in kind nanopush_qp.
-nanopush_capi_program(capi_test_precision test_fortran_precision.f90)
-add_test(NAME capi.fortran_precision COMMAND capi_test_precision)
-set_tests_properties(capi.fortran_precision PROPERTIES PASS_REGULAR_EXPRESSION "test_fortran_precision: all checks hold")
+nanopush_capi_test(capi.fortran_precision capi_test_precision test_fortran_precision.f90 "test_fortran_precision: all checks hold")
 
 # Scene keys set through the C API and the Fortran module (issue: scenes from code).
 set(_capi_rough_scene ${PROJECT_SOURCE_DIR}/drivers/scenes/thesis/fig3_18.toml)
-nanopush_capi_program(capi_test_scene_set test_capi_scene_set.c)
-add_test(NAME capi.c_scene_set COMMAND capi_test_scene_set ${_capi_rough_scene})
-set_tests_properties(capi.c_scene_set PROPERTIES PASS_REGULAR_EXPRESSION "capi scene_set: all checks hold")
-nanopush_capi_program(capi_test_fortran_scene_set test_fortran_scene_set.f90)
-add_test(NAME capi.fortran_scene_set COMMAND capi_test_fortran_scene_set ${_capi_rough_scene})
-set_tests_properties(capi.fortran_scene_set PROPERTIES PASS_REGULAR_EXPRESSION "fortran scene_set: all checks hold")
+nanopush_capi_test(capi.c_scene_set capi_test_scene_set test_capi_scene_set.c "capi scene_set: all checks hold"
+                   ${_capi_rough_scene})
+nanopush_capi_test(capi.fortran_scene_set capi_test_fortran_scene_set test_fortran_scene_set.f90 "fortran scene_set: all checks hold"
+                   ${_capi_rough_scene})
 
 # Hardening of the C API (issue: hardening): CVODE's start checks, non-finite arguments, bounded
 # counts, derived quantities, conflicts; the Fortran names of the new statuses.
-nanopush_capi_program(capi_test_hardening test_capi_hardening.c)
-add_test(NAME capi.c_hardening COMMAND capi_test_hardening ${PROJECT_SOURCE_DIR}/drivers/scenes/thesis/fig3_6a.toml)
-set_tests_properties(capi.c_hardening PROPERTIES PASS_REGULAR_EXPRESSION "capi hardening: all checks hold")
+nanopush_capi_test(capi.c_hardening capi_test_hardening test_capi_hardening.c "capi hardening: all checks hold"
+                   ${PROJECT_SOURCE_DIR}/drivers/scenes/thesis/fig3_6a.toml)
 
 # The engine comparison (nanopush_compare = compare_engines) from C and from Fortran.
-nanopush_capi_program(capi_test_compare test_capi_compare.c)
-add_test(NAME capi.compare_c COMMAND capi_test_compare ${_capi_scene})
-set_tests_properties(capi.compare_c PROPERTIES PASS_REGULAR_EXPRESSION "capi compare: ok")
-nanopush_capi_program(capi_test_compare_fortran test_fortran_compare.f90)
-add_test(NAME capi.compare_fortran COMMAND capi_test_compare_fortran ${_capi_scene})
-set_tests_properties(capi.compare_fortran PROPERTIES PASS_REGULAR_EXPRESSION "fortran compare: ok")
+nanopush_capi_test(capi.compare_c capi_test_compare test_capi_compare.c "capi compare: ok" ${_capi_scene})
+nanopush_capi_test(capi.compare_fortran capi_test_compare_fortran test_fortran_compare.f90 "fortran compare: ok"
+                   ${_capi_scene})
 
 # The error estimate, the accuracy asked for and the outcomes, from C and from Fortran.
 set(_capi_rough ${PROJECT_SOURCE_DIR}/drivers/scenes/thesis/fig3_18.toml)
-nanopush_capi_program(capi_test_accuracy test_capi_accuracy.c)
-add_test(NAME capi.accuracy_c COMMAND capi_test_accuracy ${_capi_rough})
-set_tests_properties(capi.accuracy_c PROPERTIES PASS_REGULAR_EXPRESSION "capi accuracy: ok")
-nanopush_capi_program(capi_test_accuracy_fortran test_fortran_accuracy.f90)
-add_test(NAME capi.accuracy_fortran COMMAND capi_test_accuracy_fortran ${_capi_rough})
-set_tests_properties(capi.accuracy_fortran PROPERTIES PASS_REGULAR_EXPRESSION "fortran accuracy: ok")
+nanopush_capi_test(capi.accuracy_c capi_test_accuracy test_capi_accuracy.c "capi accuracy: ok" ${_capi_rough})
+nanopush_capi_test(capi.accuracy_fortran capi_test_accuracy_fortran test_fortran_accuracy.f90 "fortran accuracy: ok"
+                   ${_capi_rough})
 
 # A preset scene by name (nanopush_scene_preset) from C and from Fortran: the file the command
 # line's preset rule finds, from scenes_dir or $NANOPUSH_SCENES; what is missing is named.
-nanopush_capi_program(capi_test_preset test_capi_preset.c)
-add_test(NAME capi.c_preset COMMAND capi_test_preset ${PROJECT_SOURCE_DIR}/drivers/scenes)
-set_tests_properties(capi.c_preset PROPERTIES PASS_REGULAR_EXPRESSION "capi preset: all checks hold")
-nanopush_capi_program(capi_test_fortran_preset test_fortran_preset.f90)
+nanopush_capi_test(capi.c_preset capi_test_preset test_capi_preset.c "capi preset: all checks hold"
+                   ${PROJECT_SOURCE_DIR}/drivers/scenes)
+nanopush_capi_test(capi.fortran_preset capi_test_fortran_preset test_fortran_preset.f90 "fortran preset: all checks hold"
+                   ${PROJECT_SOURCE_DIR}/drivers/scenes)
 target_link_libraries(capi_test_fortran_preset PRIVATE nanopush_test_support_f)  # module test_support (tests/CMakeLists.txt)
-add_test(NAME capi.fortran_preset COMMAND capi_test_fortran_preset ${PROJECT_SOURCE_DIR}/drivers/scenes)
-set_tests_properties(capi.fortran_preset PROPERTIES PASS_REGULAR_EXPRESSION "fortran preset: all checks hold")
