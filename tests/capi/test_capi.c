@@ -263,10 +263,5 @@ int main(int argc, char** argv) {
   nanopush_delete_error(&err);
   CHECK(err == NULL);
 
-  if (failures) {
-    fprintf(stderr, "%d failures\n", failures);
-    return 1;
-  }
-  printf("all checks hold\n");
-  return 0;
+  return finish("all checks hold");
 }

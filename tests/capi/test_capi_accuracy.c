@@ -11,12 +11,8 @@
 #include "check.h"
 
 int main(int argc, char** argv) {
-  if (argc < 2) {
-    fprintf(stderr, "usage: test_capi_accuracy SCENE.toml\n");
-    return 2;
-  }
   nanopush_error err = nanopush_new_error();
-  nanopush_scene scene = nanopush_load_scene(err, argv[1]);
+  nanopush_scene scene = scene_argument(argc, argv, err, "test_capi_accuracy");
   CHECK(scene != NULL);
   double e[NANOPUSH_ERROR_SIZE];
   char outcome[32];
@@ -58,7 +54,5 @@ int main(int argc, char** argv) {
   CHECK(strcmp(nanopush_status_name(NANOPUSH_NO_STATIC_FRICTION), "unknown status") != 0);
   nanopush_delete_scene(&scene);
   nanopush_delete_error(&err);
-  if (failures) fprintf(stderr, "%d failure(s)\n", failures);
-  else printf("capi accuracy: ok\n");
-  return failures ? 1 : 0;
+  return finish("capi accuracy: ok");
 }

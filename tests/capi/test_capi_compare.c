@@ -8,12 +8,8 @@
 #include "check.h"
 
 int main(int argc, char** argv) {
-  if (argc < 2) {
-    fprintf(stderr, "usage: test_capi_compare SCENE.toml\n");
-    return 2;
-  }
   nanopush_error err = nanopush_new_error();
-  nanopush_scene scene = nanopush_load_scene(err, argv[1]);
+  nanopush_scene scene = scene_argument(argc, argv, err, "test_capi_compare");
   CHECK(scene != NULL);
   int agree = -1, kind = -1;
   double figures[9];
@@ -34,7 +30,5 @@ int main(int argc, char** argv) {
   CHECK(nanopush_compare(err, NULL, NULL, NULL, 0.0, -1.0, 0.0, &agree, NULL, NULL) == NANOPUSH_NULL_HANDLE);
   nanopush_delete_scene(&scene);
   nanopush_delete_error(&err);
-  if (failures) fprintf(stderr, "%d failure(s)\n", failures);
-  else printf("capi compare: ok\n");
-  return failures ? 1 : 0;
+  return finish("capi compare: ok");
 }

@@ -112,10 +112,5 @@ int main(int argc, char** argv) {
          "scene.name = \"../x\": must be an identifier", "scene.name = ../x");
   nanopush_delete_scene(&sc);
   nanopush_delete_error(&err);
-  if (failures) {
-    fprintf(stderr, "%d check(s) failed\n", failures);
-    return 1;
-  }
-  printf("capi hardening: all checks hold\n");
-  return 0;
+  return finish("capi hardening: all checks hold");
 }

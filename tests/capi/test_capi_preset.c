@@ -108,10 +108,5 @@ int main(int argc, char** argv) {
   CHECK(nanopush_scene_preset(NULL, "fig9_99", dir) == NULL);
 
   nanopush_delete_error(&err);
-  if (failures) {
-    fprintf(stderr, "capi preset: %d failures\n", failures);
-    return 1;
-  }
-  printf("capi preset: all checks hold\n");
-  return 0;
+  return finish("capi preset: all checks hold");
 }

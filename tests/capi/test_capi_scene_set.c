@@ -107,10 +107,5 @@ int main(int argc, char** argv) {
   nanopush_delete_scene(&set);
   nanopush_delete_scene(&edited);
   nanopush_delete_error(&err);
-  if (failures) {
-    fprintf(stderr, "%d checks failed\n", failures);
-    return 1;
-  }
-  printf("capi scene_set: all checks hold\n");
-  return 0;
+  return finish("capi scene_set: all checks hold");
 }
