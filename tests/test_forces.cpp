@@ -19,7 +19,6 @@ namespace {
 namespace NANOPUSH_UNITY_ID {
 namespace {
 using nanopush::test::rel_close;
-constexpr double eps = std::numeric_limits<double>::epsilon();
 /// |value/unit - printed| <= half a unit in the last printed digit: "to all given digits".
 bool to_printed_digits(double value, double unit, double printed, int decimals) {
   return std::abs(value / unit - printed) <= 0.5 * std::pow(10.0, -decimals);
@@ -31,7 +30,7 @@ TEST_CASE("Issue 6 oracles for A = 1e-19 J, R = 10 nm, to all given digits", "[f
   SECTION("sphere-flat van der Waals A R/(6 D^2) = 1.041666667 nN at D = 0.4 nm (eq 2.22)") {
     const double F = sphere_flat_vdw_force(A, R, 0.4e-9);
     CHECK(to_printed_digits(F, 1e-9, 1.041666667, 9));
-    CHECK(rel_close(F, 1e-27 / 9.6e-19, 4 * eps));
+    CHECK(rel_close(F, 1e-27 / 9.6e-19, 4 * test::kEps));
   }
   SECTION("JKR pull-off 1.5 pi R W = 4.71238898 nN at W = 0.1 J/m^2 (eq 2.52)") {
     CHECK(to_printed_digits(jkr_pull_off_force(R, 0.1), 1e-9, 4.71238898, 8));
@@ -52,8 +51,8 @@ TEST_CASE("Issue 6 oracles for A = 1e-19 J, R = 10 nm, to all given digits", "[f
 
 TEST_CASE("gamma versus W = 2 gamma: Derjaguin sphere-flat equals 4 pi R gamma (eq 2.48)", "[forces][unit]") {
   const double R = 7e-9, gamma = 0.05;
-  CHECK(rel_close(derjaguin_adhesion_force(R, work_of_cohesion(gamma)), 4 * kPi * R * gamma, 4 * eps));
-  CHECK(rel_close(jkr_pull_off_force(R, 2 * gamma), 3 * kPi * R * gamma, 4 * eps));  // eq 2.52
+  CHECK(rel_close(derjaguin_adhesion_force(R, work_of_cohesion(gamma)), 4 * kPi * R * gamma, 4 * test::kEps));
+  CHECK(rel_close(jkr_pull_off_force(R, 2 * gamma), 3 * kPi * R * gamma, 4 * test::kEps));  // eq 2.52
   CHECK(work_of_adhesion_dispersion(gamma, gamma) == 2 * gamma);                     // eq 2.35, like materials
   CHECK(interfacial_energy(gamma, gamma, 2 * gamma) == 0.0);                          // eq 2.32
   // eq 2.36 in terms of Dupre: W132 = gamma13 + gamma23 - gamma12
@@ -68,7 +67,7 @@ TEST_CASE("van der Waals forms are minus the derivatives of their energies", "[f
   const double C = 1e-77, rho = 3e28;
   CHECK(rel_close(molecule_surface_force(C, rho, D), deriv([&](double x) { return molecule_surface_energy(C, rho, x); }, D), 1e-8));
   // Two equal spheres: half the sphere-flat force (text after eq 2.23).
-  CHECK(rel_close(sphere_sphere_vdw_force(A, R, R, D), 0.5 * sphere_flat_vdw_force(A, R, D), 4 * eps));
+  CHECK(rel_close(sphere_sphere_vdw_force(A, R, R, D), 0.5 * sphere_flat_vdw_force(A, R, D), 4 * test::kEps));
 }
 
 TEST_CASE("Parsegian rod-plane force is the Derjaguin integral of the flat-flat pressure", "[forces][numeric]") {
@@ -92,7 +91,7 @@ TEST_CASE("Parsegian rod-plane force is the Derjaguin integral of the flat-flat 
 TEST_CASE("JKR sphere: round trip, Hertz limit, a0 and separation radius (eqs 2.50-2.58)", "[forces][unit]") {
   const double R = 10e-9, E = 50e9, W = 0.1;
   const double a0 = jkr_zero_load_radius(R, E, W);
-  CHECK(rel_close(jkr_contact_radius(R, E, W, 0.0), a0, 8 * eps));
+  CHECK(rel_close(jkr_contact_radius(R, E, W, 0.0), a0, 8 * test::kEps));
   for (double F : {-1e-9, 0.0, 1e-9, 1e-7}) {
     const double a = jkr_contact_radius(R, E, W, F);
     CHECK(std::abs(jkr_load_for_radius(R, E, W, a) - F) <= 1e-12 * (std::abs(F) + jkr_pull_off_force(R, W)));
@@ -101,11 +100,11 @@ TEST_CASE("JKR sphere: round trip, Hertz limit, a0 and separation radius (eqs 2.
   CHECK(rel_close(jkr_contact_radius(R, E, W, -jkr_pull_off_force(R, W)), jkr_separation_radius(R, E, W), 1e-12));
   CHECK(jkr_separation_radius(R, E, W) / a0 == Approx(0.63).margin(0.005));
   // W = 0: Hertz (eq 2.56-2.58).
-  CHECK(rel_close(jkr_contact_radius(R, E, 0.0, 2e-9), hertz_contact_radius(R, E, 2e-9), 8 * eps));
-  CHECK(rel_close(jkr_central_displacement(R, E, 0.0, hertz_contact_radius(R, E, 2e-9)), hertz_displacement(R, E, 2e-9), 8 * eps));
+  CHECK(rel_close(jkr_contact_radius(R, E, 0.0, 2e-9), hertz_contact_radius(R, E, 2e-9), 8 * test::kEps));
+  CHECK(rel_close(jkr_central_displacement(R, E, 0.0, hertz_contact_radius(R, E, 2e-9)), hertz_displacement(R, E, 2e-9), 8 * test::kEps));
   // Hertz centre pressure is 1.5 times the mean (text after eq 2.59).
   const double a = hertz_contact_radius(R, E, 2e-9);
-  CHECK(rel_close(hertz_pressure(R, E, 2e-9, 0.0), 1.5 * 2e-9 / (kPi * a * a), 8 * eps));
+  CHECK(rel_close(hertz_pressure(R, E, 2e-9, 0.0), 1.5 * 2e-9 / (kPi * a * a), 8 * test::kEps));
   // JKR pressure integrates to the load: int_0^a P 2 pi r dr (x = sin t substitution).
   const double F = 3e-9, aj = jkr_contact_radius(R, E, W, F);
   const int n = 4000;
@@ -157,7 +156,7 @@ TEST_CASE("Metallic adhesion (eq 2.37): minimum -2 gamma at D0 (erratum: sign of
   CHECK(std::abs(slope) < 1e-5 * 2 * gamma / lam);
   CHECK(metallic_adhesion_pressure(gamma, D0, D0, lam) == 0.0);
   // Maximum attraction 2 gamma/(e lambda) at D = D0 + lambda.
-  CHECK(rel_close(metallic_adhesion_pressure(gamma, D0 + lam, D0, lam), 2 * gamma / (std::exp(1.0) * lam), 4 * eps));
+  CHECK(rel_close(metallic_adhesion_pressure(gamma, D0 + lam, D0, lam), 2 * gamma / (std::exp(1.0) * lam), 4 * test::kEps));
   // The printed form -2 gamma [1 - x] e^-x has slope 4 gamma/lambda at D0: no minimum there.
   auto printed = [&](double D) { const double x = (D - D0) / lam; return -2 * gamma * (1 - x) * std::exp(-x); };
   CHECK(rel_close((printed(D0 + h) - printed(D0)) / h, 4 * gamma / lam, 1e-5));
@@ -170,7 +169,7 @@ TEST_CASE("Kelvin radius of water: 0.54 nm / ln(RH) at 20 C (eq 2.60)", "[forces
   const double rk = kelvin_radius(w.surface_tension, w.molar_volume, 293.15, std::exp(-1.0));
   CHECK(rk < 0.0);
   CHECK(std::round(-rk * 1e11) == 54.0);
-  CHECK(rel_close(rk, -w.surface_tension * w.molar_volume / (kGasConstant * 293.15), 4 * eps));
+  CHECK(rel_close(rk, -w.surface_tension * w.molar_volume / (kGasConstant * 293.15), 4 * test::kEps));
   CHECK(kelvin_radius(0.072, 18.07e-6, 293.15, 0.0) == 0.0);
   // Laplace (2.63): r2 >> r1 gives gamma/r1.
   CHECK(laplace_pressure(0.072, 1e-9, std::numeric_limits<double>::infinity()) == 0.072 / 1e-9);
@@ -179,12 +178,12 @@ TEST_CASE("Kelvin radius of water: 0.54 nm / ln(RH) at 20 C (eq 2.60)", "[forces
 TEST_CASE("Capillary cylinder and plate extensions vanish without a meniscus", "[forces][unit]") {
   CHECK(capillary_force_cylinder(13.5e-9, 590e-9, 0.072, 0.0, 0.1e-9, 0.2e-9) == 0.0);  // d = 0.2 nm <= D
   const double r1 = 1e-9, R = 13.5e-9, L = 1e-6;
-  CHECK(rel_close(capillary_force_cylinder(R, L, 0.072, 0.0, r1, 0.0), 4 * L * 0.072 * std::sqrt(R / r1), 8 * eps));
+  CHECK(rel_close(capillary_force_cylinder(R, L, 0.072, 0.0, r1, 0.0), 4 * L * 0.072 * std::sqrt(R / r1), 8 * test::kEps));
   CHECK(capillary_force_plate(1e-14, 0.072, 0.0, 0.05e-9, 0.2e-9) == 0.0);
 }
 
 TEST_CASE("Hamaker combining relation", "[forces][unit]") {
-  CHECK(rel_close(hamaker_combined(4e-20, 9e-20), 6e-20, 4 * eps));
+  CHECK(rel_close(hamaker_combined(4e-20, 9e-20), 6e-20, 4 * test::kEps));
   CHECK(hamaker_combined(4e-20, 4e-20, 4e-20) == 0.0);
   CHECK(hamaker_combined(9e-20, 1e-20, 4e-20) < 0.0);  // repulsion across a medium in between
 }

@@ -21,8 +21,7 @@ using namespace nanopush::forces;
 namespace {
 namespace NANOPUSH_UNITY_ID {
 namespace {
-constexpr double eps = std::numeric_limits<double>::epsilon();
-bool rel_close(double a, double b, double tol) { return nanopush::test::close_to_ref(a, b, tol); }
+using nanopush::test::close_to_ref;
 /// Round v / unit to `digits` decimals.
 double rounded(double v, double unit, int digits) {
   const double s = std::pow(10.0, digits);
@@ -62,8 +61,8 @@ TEST_CASE("One material, one set of constants: chapters 2-3 and 4-5 read the sam
   // The same F_vdw for the thesis' nanorod from both paths: the iCOR's Parsegian force and the
   // scene's normal-load assembly (chapter 3, graphite on graphite in vacuum).
   const LoadReport r = assemble_normal_load(Environment{}, mwcnt(*g));
-  CHECK(rel_close(r.term("van_der_waals").value, rod.vdw_force(), 4 * eps));
-  CHECK(rel_close(r.hamaker, rod.hamaker, 4 * eps));
+  CHECK(close_to_ref(r.term("van_der_waals").value, rod.vdw_force(), 4 * test::kEps));
+  CHECK(close_to_ref(r.hamaker, rod.hamaker, 4 * test::kEps));
   // Independent oracle: L A d^0.5 / (16 z0^2.5) with the printed inputs.
   CHECK(rounded(rod.vdw_force(), 1e-6, 6) == 5.034273);
   // Every named material: the table entry is what a scene naming it gets, and gamma follows eq
@@ -73,7 +72,7 @@ TEST_CASE("One material, one set of constants: chapters 2-3 and 4-5 read the sam
     REQUIRE(f);
     CHECK(f->hamaker == m.hamaker);
     CHECK(f->surface_energy == m.surface_energy);
-    if (m.name != "gold") CHECK(rel_close(m.surface_energy, m.hamaker / kThesisHamakerPerGamma, 2 * eps));
+    if (m.name != "gold") CHECK(close_to_ref(m.surface_energy, m.hamaker / kThesisHamakerPerGamma, 2 * test::kEps));
   }
   // The environment's default condensate is the table's water.
   const auto w = find_liquid("water");
@@ -104,7 +103,7 @@ TEST_CASE("Kelvin radius regenerates the thesis' 0.54 nm at the 20 C it states (
   CHECK(w->molar_volume == 18.01528e-3 / 998.21);
   // r_k = gamma V / (R T) at RH = 1/e; the thesis prints 0.54 nm.
   const double rk = std::abs(kelvin_radius(w->surface_tension, w->molar_volume, 293.15, std::exp(-1.0)));
-  CHECK(rel_close(rk, w->surface_tension * w->molar_volume / (kGasConstant * 293.15), 4 * eps));
+  CHECK(close_to_ref(rk, w->surface_tension * w->molar_volume / (kGasConstant * 293.15), 4 * test::kEps));
   CHECK(rounded(rk, 1e-9, 2) == 0.54);
   CHECK(rounded(rk, 1e-9, 4) == 0.5386);
   // The former table value (0.072 N/m, the 25 C surface tension) does not round to 0.54.
@@ -146,7 +145,7 @@ TEST_CASE("Nanobar F_vdw from the chapter 2-3 formulas against the printed 0.400
   // Oracle: eq 2.26 pressure A/(6 pi D^3) times the footprint; the finite thickness changes it
   // by (z0/(z0+T))^3 = 6.3e-8 relative.
   const double flat = A / (6 * kPi * z0 * z0 * z0) * L * Wd;
-  CHECK(rel_close(F, flat * (1 - std::pow(z0 / (z0 + T), 3)), 8 * eps));
+  CHECK(close_to_ref(F, flat * (1 - std::pow(z0 / (z0 + T), 3)), 8 * test::kEps));
   CHECK(rounded(F, 1e-5, 4) == 1.7142);
   CHECK(rounded(F / printed, 1.0, 3) == 0.428);
   // What the printed value would need: A = 1.097e-18 J at z0 = 0.2 nm (2.3 x any graphite

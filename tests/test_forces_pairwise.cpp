@@ -21,8 +21,7 @@ using namespace nanopush::forces;
 namespace {
 namespace NANOPUSH_UNITY_ID {
 namespace {
-constexpr double eps = std::numeric_limits<double>::epsilon();
-bool rel_close(double a, double b, double tol) { return nanopush::test::close_to_ref(a, b, tol); }
+using nanopush::test::close_to_ref;
 /// Gauss-Legendre (composite, 64 panels x 8 points) of eq 2.18's integrand for n = 6:
 /// w = -(A/6) int_0^{2R} (2R - z) z / (D + z)^3 dz.
 double sphere_energy_quadrature(double A, double R, double D) {
@@ -65,8 +64,8 @@ TEST_CASE("Eq 2.12 and A = pi^2 C rho^2: methane's London coefficient and Hamake
   CHECK(std::round(C / 1e-79) == 102.0);
   // Close packing at sigma = 0.4 nm: rho = sqrt(2)/sigma^3; A = pi^2 C rho^2.
   const double rho = close_packed_density(0.4e-9);
-  CHECK(rel_close(rho, std::sqrt(2.0) / 6.4e-29, 2 * eps));
-  CHECK(rel_close(hamaker_from_london(C, rho, rho), kPi * kPi * C * rho * rho, 2 * eps));
+  CHECK(close_to_ref(rho, std::sqrt(2.0) / 6.4e-29, 2 * test::kEps));
+  CHECK(close_to_ref(hamaker_from_london(C, rho, rho), kPi * kPi * C * rho * rho, 2 * test::kEps));
   CHECK_THROWS_AS(london_coefficient(-1e-30, 1e-18), InputError);
 }
 
@@ -75,34 +74,34 @@ TEST_CASE("Eq 2.18 (n = 6): exact sphere-flat energy against quadrature and its 
   const double A = 1e-19, R = 10e-9;
   for (double D : {0.2e-9, 1e-9, 10e-9, 100e-9, 1e-6}) {
     INFO("D = " << D);
-    CHECK(rel_close(sphere_flat_vdw_energy_exact(A, R, D), sphere_energy_quadrature(A, R, D), 1e-10));
+    CHECK(close_to_ref(sphere_flat_vdw_energy_exact(A, R, D), sphere_energy_quadrature(A, R, D), 1e-10));
     // Force = -dw/dD by a central difference (relative step 1e-4: error ~1e-8).
     const double h = 1e-4 * D;
     const double fd = (sphere_flat_vdw_energy_exact(A, R, D + h) - sphere_flat_vdw_energy_exact(A, R, D - h)) / (2 * h);
-    CHECK(rel_close(sphere_flat_vdw_force_exact(A, R, D), fd, 1e-7));
+    CHECK(close_to_ref(sphere_flat_vdw_force_exact(A, R, D), fd, 1e-7));
   }
   // D << R: eq 2.21-2.22, relative corrections (1/2 + ln(D/2R)) D/R and 4 D/R (1.7e-6, 4e-7 here);
   // D >> R: eq 2.23 (a molecule count 4 pi R^3 rho/3 times eq 2.16), corrections 3R/D, 4R/D.
   const double Dn = 1e-15;
-  CHECK(rel_close(sphere_flat_vdw_energy_exact(A, R, Dn), sphere_flat_vdw_energy(A, R, Dn), 2e-6));
-  CHECK(rel_close(sphere_flat_vdw_force_exact(A, R, Dn), sphere_flat_vdw_force(A, R, Dn), 5e-7));
+  CHECK(close_to_ref(sphere_flat_vdw_energy_exact(A, R, Dn), sphere_flat_vdw_energy(A, R, Dn), 2e-6));
+  CHECK(close_to_ref(sphere_flat_vdw_force_exact(A, R, Dn), sphere_flat_vdw_force(A, R, Dn), 5e-7));
   const double Df = 1e-3;
-  CHECK(rel_close(sphere_flat_vdw_energy_exact(A, R, Df), -2.0 / 9.0 * A * std::pow(R / Df, 3), 1e-4));
-  CHECK(rel_close(sphere_flat_vdw_force_exact(A, R, Df), 2.0 / 3.0 * A * std::pow(R, 3) / std::pow(Df, 4), 1e-4));
+  CHECK(close_to_ref(sphere_flat_vdw_energy_exact(A, R, Df), -2.0 / 9.0 * A * std::pow(R / Df, 3), 1e-4));
+  CHECK(close_to_ref(sphere_flat_vdw_force_exact(A, R, Df), 2.0 / 3.0 * A * std::pow(R, 3) / std::pow(Df, 4), 1e-4));
   // The series branch (R/D < 1e-2) joins the closed form.
   const double Ds = R / 1e-2;
-  CHECK(rel_close(sphere_flat_vdw_energy_exact(A, R, Ds * (1 - 1e-12)), sphere_flat_vdw_energy_exact(A, R, Ds * (1 + 1e-12)), 1e-10));
+  CHECK(close_to_ref(sphere_flat_vdw_energy_exact(A, R, Ds * (1 - 1e-12)), sphere_flat_vdw_energy_exact(A, R, Ds * (1 + 1e-12)), 1e-10));
 }
 
 TEST_CASE("Eqs 2.27-2.30: contact energies of molecular-scale bodies", "[forces][pairwise][unit]") {
   const double C = 1e-77, s = 0.3e-9, u = C / std::pow(s, 6);
-  CHECK(rel_close(molecule_surface_contact_energy(C, s), -std::sqrt(2.0) * kPi / 6 * u, 4 * eps));
+  CHECK(close_to_ref(molecule_surface_contact_energy(C, s), -std::sqrt(2.0) * kPi / 6 * u, 4 * test::kEps));
   CHECK(std::round(-molecule_surface_contact_energy(C, s) / u * 100) == 74.0);  // -0.74 C/sigma^6
   CHECK(std::round(-sphere_surface_contact_energy(C, s, 0.5 * s) / u * 10) == 16.0);  // 2.28: -1.6
   CHECK(std::round(-atomic_spheres_contact_energy(C, s) / u * 10) == 8.0);            // 2.29: -0.8
   // 2.30: linear in R, -1.6 (2R/sigma) C/sigma^6 (1.645 unrounded = pi^2/6).
   for (double R : {0.5 * s, 2 * s, 10 * s})
-    CHECK(rel_close(sphere_surface_contact_energy(C, s, R), -kPi * kPi / 6 * (2 * R / s) * u, 4 * eps));
+    CHECK(close_to_ref(sphere_surface_contact_energy(C, s, R), -kPi * kPi / 6 * (2 * R / s) * u, 4 * test::kEps));
   CHECK_THROWS_AS(sphere_surface_contact_energy(C, s, 0.4 * s), InputError);
 }
 
@@ -114,21 +113,21 @@ TEST_CASE("Eqs 2.42-2.44, 3.7: effective surface energies; 3.7 equals 2.42 with 
   CHECK(std::round(effective_surface_energy(w, s, MolecularSurface::cluster_of_13) / u * 10) == 15.0);
   // 3.7: gamma = sqrt(3) C rho^2 / (2 sigma^2) with A = pi^2 C rho^2 -- i.e. 2.42 with w = C rho^2/2.
   const double C = 1e-77, rho = close_packed_density(s), A = hamaker_from_london(C, rho, rho);
-  CHECK(rel_close(surface_energy_molecular(A, s), effective_surface_energy(C * rho * rho / 2, s, MolecularSurface::planar), 8 * eps));
+  CHECK(close_to_ref(surface_energy_molecular(A, s), effective_surface_energy(C * rho * rho / 2, s, MolecularSurface::planar), 8 * test::kEps));
   // The thesis' 3.8-3.9 route: gamma = A/(24 pi (sigma/2.5)^2) is (2.5^2 pi/(12 sqrt(3))) = 0.94 of 3.7.
   CHECK(std::round(surface_energy_from_hamaker(A, s / 2.5) / surface_energy_molecular(A, s) * 100) == 94.0);
 }
 
 TEST_CASE("Eqs 3.2-3.5: lattice energy and the work of adhesion at a gap", "[forces][pairwise][unit]") {
   const double C = 1e-77, s = 0.4e-9;
-  CHECK(rel_close(lattice_energy(C, s), 7.22 * kAvogadro * C / std::pow(s, 6), 4 * eps));
+  CHECK(close_to_ref(lattice_energy(C, s), 7.22 * kAvogadro * C / std::pow(s, 6), 4 * test::kEps));
   const double A = 4.7e-19, D0 = 0.165e-9;
   // 3.5: at D -> infinity the work is A/(12 pi D0^2) = 2 gamma (gamma of eq 3.6).
-  CHECK(rel_close(work_of_adhesion_at_gap(A, D0, 1.0), 2 * surface_energy_from_hamaker(A, D0), 1e-12));
+  CHECK(close_to_ref(work_of_adhesion_at_gap(A, D0, 1.0), 2 * surface_energy_from_hamaker(A, D0), 1e-12));
   CHECK(work_of_adhesion_at_gap(A, D0, D0) == 0.0);
   // 3.4: W (1 - D0^2/D^2).
   for (double D : {0.2e-9, 0.5e-9, 2e-9})
-    CHECK(rel_close(work_of_adhesion_at_gap(A, D0, D), 2 * surface_energy_from_hamaker(A, D0) * (1 - D0 * D0 / (D * D)), 1e-14));
+    CHECK(close_to_ref(work_of_adhesion_at_gap(A, D0, D), 2 * surface_energy_from_hamaker(A, D0) * (1 - D0 * D0 / (D * D)), 1e-14));
   CHECK_THROWS_AS(work_of_adhesion_at_gap(A, D0, 0.1e-9), InputError);
 }
 

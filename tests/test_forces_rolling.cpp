@@ -9,15 +9,13 @@
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/models/rolling.hpp"
 #include "nanopush/models/surface_forces.hpp"
+#include "support/support.hpp"
 
 using namespace nanopush;
 
 // File-local: its own namespace in the unity build (tests/CMakeLists.txt).
 namespace {
 namespace NANOPUSH_UNITY_ID {
-namespace {
-constexpr double eps = std::numeric_limits<double>::epsilon();
-}
 
 TEST_CASE("Fig 3.3: fs = 0 at h = r/2, -F/3 at h = r, F/3 at h = 0, exactly (C++ and F77)", "[rolling][unit]") {
   for (double r : {13.5e-9, 1e-9, 7.3e-8}) {
@@ -43,7 +41,7 @@ TEST_CASE("Eq 3.16 follows from eqs 3.10 and 3.12 with a_x = r alpha", "[rolling
     const double fs = rolling::static_friction(F, h, r);
     const double a = (F - fs) / m;
     const double alpha = (F * h + fs * r) / (0.5 * m * r * r);
-    CHECK(std::abs(a - r * alpha) <= 16 * eps * std::abs(F / m));
+    CHECK(std::abs(a - r * alpha) <= 16 * test::kEps * std::abs(F / m));
   }
 }
 
@@ -65,7 +63,7 @@ TEST_CASE("C++ and F77 rolling formulas agree over a grid", "[rolling][cross][re
   }
   double fv = 0;
   REQUIRE(np_f77_rod_plane_vdw(2.38e-19, 590e-9, 27e-9, 0.2e-9, &fv) == 0);
-  CHECK(std::abs(fv - forces::rod_plane_vdw_force(2.38e-19, 590e-9, 27e-9, 0.2e-9)) <= 4 * eps * fv);
+  CHECK(std::abs(fv - forces::rod_plane_vdw_force(2.38e-19, 590e-9, 27e-9, 0.2e-9)) <= 4 * test::kEps * fv);
   for (double W : {0.0, 0.05, 0.25}) {
     for (double p : {0.0, 1.0, 4.32, 50.0}) {
       double b = 0;
