@@ -50,6 +50,14 @@ std::size_t lhs_size(std::size_t dflt) {
   return e ? static_cast<std::size_t>(std::atol(e)) : dflt;
 }
 
+/// Settings under `law` that take a partial answer (a run that ends early, with its reason).
+RunSettings partial(Law law) {
+  RunSettings s;
+  s.law = law;
+  s.allow_partial = true;
+  return s;
+}
+
 struct Honesty {
   std::size_t scenes = 0, answered = 0, judged = 0, dishonest = 0, solver_failures = 0;
 };
@@ -59,9 +67,7 @@ Honesty judge_lhs(Law law, std::size_t n, std::uint64_t seed, double accuracy = 
   Honesty h;
   for (const Scene& sc : rough_lhs_scenes(thesis_preset("fig3_18"), n, seed)) {
     ++h.scenes;
-    RunSettings s;
-    s.law = law;
-    s.allow_partial = true;
+    RunSettings s = partial(law);
     s.accuracy = accuracy;
     const Trajectory tr = run_engine(sc, s);
     if (tr.outcome == Outcome::solver_failure) {
@@ -153,9 +159,7 @@ TEST_CASE("The printed law's failures are classified: energy injected, or a jump
   for (const double yn : {-21e-9, -9e-9}) {
     Scene sc = thesis_preset("fig3_18");
     sc.set({{"surface.mu", 0.005}, {"push.yn", yn}});
-    RunSettings s;
-    s.law = Law::printed;
-    s.allow_partial = true;
+    RunSettings s = partial(Law::printed);
     const Trajectory tr = run_engine(sc, s);
     INFO("yn " << yn << ": " << tr.outcome_text());
     CHECK(tr.outcome == Outcome::law_blowup);
@@ -224,9 +228,7 @@ TEST_CASE("Thesis law, method auto: the same stiff start is handed over and clas
   // While the body slides the thesis law's wrench is the coulomb law's: CVODE's coulomb-law run
   // is the thesis trajectory up to its first rest, where the thesis law has no static friction.
   Scene sc = stiff_start_scene();
-  RunSettings s;
-  s.law = Law::thesis;
-  s.allow_partial = true;
+  RunSettings s = partial(Law::thesis);
   const Trajectory tr = run_engine(sc, s);
   CHECK(tr.outcome == Outcome::no_static_friction);
   CHECK(tr.engine_label == "cxx-cvode-thesis");
@@ -260,9 +262,7 @@ TEST_CASE("fig3_18's mu x yn grid ends in an answer or a reason under every law"
     int failures = 0;
     for (const auto& [mu, yn] : points) {
       sc.set({{"surface.mu", mu}, {"push.yn", yn}});
-      RunSettings s;
-      s.law = law;
-      s.allow_partial = true;
+      RunSettings s = partial(law);
       s.error_estimate = false;
       const Trajectory tr = run_engine(sc, s);
       if (tr.outcome == Outcome::solver_failure) {

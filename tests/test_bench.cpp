@@ -28,6 +28,22 @@ Scene smooth_scene(const std::string& c = "a") {
                     ("fig3_6" + c + ".toml"));
 }
 
+/// The bench of the scene drivers/scenes/PATH with the engines `only`.
+bench::Bench bench_of(const std::string& path, std::vector<std::string> only) {
+  bench::EngineConfig cfg;
+  cfg.only = std::move(only);
+  return bench::make_bench(load_scene(std::string(NANOPUSH_SOURCE_DIR) + "/drivers/scenes/" + path), cfg);
+}
+
+/// Fig 3.6a's scene, its bench problem, the exact solution at its outputs and a quad C++ BS run
+/// (rtol 1e-28, dense output) that must have succeeded: where the reference tests start.
+struct QuadRun {
+  Scene sc = smooth_scene("a");
+  Problem p = problem_from_scene(sc);
+  std::vector<quad> exact = smooth_exact(sc, p);
+  Solve q = extended_run(sc, p, 1e-28, true);
+};
+
 const bench::Engine& find(const std::vector<bench::Engine>& v, const std::string& name, const std::string& prec = "double") {
   for (const auto& e : v)
     if (e.name == name && e.precision == prec) return e;
@@ -94,10 +110,8 @@ TEST_CASE("bench: the exact smooth solution solves the ODE (quad finite differen
 }
 
 TEST_CASE("bench: extended precision reaches 1e-25 against the exact smooth solution", "[bench][numeric]") {
-  const Scene sc = smooth_scene("a");
-  const Problem p = problem_from_scene(sc);
-  const auto exact = smooth_exact(sc, p);
-  const Solve q = extended_run(sc, p, 1e-28, true);
+  const QuadRun run;
+  const auto& [sc, p, exact, q] = run;
   REQUIRE(q.status == 0);
   CHECK(scaled_max_error(p, q.y, exact) <= 1e-25);
   // long double cannot: its floor is its epsilon (1.1e-19) times the accumulated rounding.
@@ -117,10 +131,8 @@ TEST_CASE("bench: extended precision reaches 1e-25 against the exact smooth solu
 }
 
 TEST_CASE("bench: reference acceptance (two runs agree to 1e-3 of the smallest plotted error)", "[bench][numeric]") {
-  const Scene sc = smooth_scene("a");
-  const Problem p = problem_from_scene(sc);
-  const auto exact = smooth_exact(sc, p);
-  const Solve q = extended_run(sc, p, 1e-28, true);
+  const QuadRun run;
+  const auto& [sc, p, exact, q] = run;
   REQUIRE(q.status == 0);
   // Exact vs quad C++ BS: they agree to < 1e-25, so a plot down to 1e-16 is resolved.
   const Acceptance ok = accept_reference(p, exact, q.y, 1e-16);
@@ -527,10 +539,7 @@ TEST_CASE("bench: the overhead plot, with and without the replay panel", "[bench
 
 TEST_CASE("bench: rough scene against the extended-precision F77 program (-freal-8-real-16)",
           "[bench][rough][regression]") {
-  const Scene sc = load_scene(std::string(NANOPUSH_SOURCE_DIR) + "/drivers/scenes/thesis/fig3_17.toml");
-  bench::EngineConfig cfg;
-  cfg.only = {"cxx-faithful", "f77-callback"};
-  const bench::Bench b = bench::make_bench(sc, cfg);
+  const bench::Bench b = bench_of("thesis/fig3_17.toml", {"cxx-faithful", "f77-callback"});
   REQUIRE(b.problem.n == 8);
   CHECK(b.reference.kind == "extended");
   // The two REAL(16) runs (rtol 1e-20 and 1e-18) agree far below any double-precision error.
@@ -548,10 +557,7 @@ TEST_CASE("bench: rough scene against the extended-precision F77 program (-freal
 
 TEST_CASE("bench: stick-slip scene, the event-locating engines against their reference",
           "[bench][rough][coulomb][numeric]") {
-  const Scene sc = load_scene(std::string(NANOPUSH_SOURCE_DIR) + "/drivers/scenes/bench/stick_mu015.toml");
-  bench::EngineConfig cfg;
-  cfg.only = {"cxx-events", "cvode-events"};
-  const bench::Bench b = bench::make_bench(sc, cfg);
+  const bench::Bench b = bench_of("bench/stick_mu015.toml", {"cxx-events", "cvode-events"});
   REQUIRE(b.engines.size() == 2);
   // Two independent double runs of the event-locating integrator (faithful 1e-14, modern
   // 1e-13, dense output) agree to ~1.3e-12: by the acceptance rule (1e-3 of the error plotted) this

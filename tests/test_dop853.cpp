@@ -70,6 +70,41 @@ double smooth_scene_error(const Scene& sc, const Trajectory& tr) {
   return bench::scaled_max_error(p, y, ex);
 }
 
+/// A Runge-Kutta tableau's columns and matrix over stages 1..16 (index 0 unused).
+using Stages = std::array<long double, 17>;
+using StageMatrix = std::array<Stages, 17>;
+
+/// sum_i w_i c_i^(k-1) over stages 1..n: a quadrature condition (1/k for order >= k).
+long double quadrature(const Stages& w, const Stages& c, std::size_t n, int k) {
+  long double s = 0;
+  for (std::size_t i = 1; i <= n; ++i) s += w[i] * std::pow(c[i], static_cast<long double>(k - 1));
+  return s;
+}
+
+/// sum_i w_i c_i^q a_ij c_j^r over stages 1..n (j < i): a bushy non-quadrature condition.
+long double bushy(const Stages& w, const Stages& c, const StageMatrix& a, std::size_t n, int q, int r) {
+  long double s = 0;
+  for (std::size_t i = 1; i <= n; ++i)
+    for (std::size_t j = 1; j < i; ++j)
+      s += w[i] * std::pow(c[i], static_cast<long double>(q)) * a[i][j] * std::pow(c[j], static_cast<long double>(r));
+  return s;
+}
+
+/// w A^p c over stages 1..n: the tall tree of order p + 2 (1 / (p + 2)!).
+long double tall_tree(const Stages& w, const Stages& c, const StageMatrix& a, std::size_t n, int p) {
+  Stages v{};
+  for (std::size_t i = 1; i <= n; ++i) v[i] = c[i];
+  for (int m = 0; m < p; ++m) {
+    Stages u{};
+    for (std::size_t i = 1; i <= n; ++i)
+      for (std::size_t j = 1; j < i; ++j) u[i] += a[i][j] * v[j];
+    v = u;
+  }
+  long double s = 0;
+  for (std::size_t i = 1; i <= n; ++i) s += w[i] * v[i];
+  return s;
+}
+
 }  // namespace
 
 TEST_CASE("dop853: the transcribed tableau satisfies the order conditions", "[dop853][unit]") {
@@ -112,40 +147,25 @@ TEST_CASE("dop853: the transcribed tableau satisfies the order conditions", "[do
   }
   SECTION("order 8: quadrature and some non-quadrature conditions") {
     for (int k = 1; k <= 8; ++k) {
-      long double s = 0;
-      for (std::size_t i = 1; i <= 12; ++i) s += b[i] * std::pow(c[i], static_cast<long double>(k - 1));
+      const long double s = quadrature(b, c, 12, k);
       INFO("sum b c^" << k - 1);
       CHECK(std::fabs(static_cast<double>(s - 1.0L / k)) <= static_cast<double>(tol));
     }
     // sum b_i c_i^q a_ij c_j^r = 1 / ((r + 1)(q + r + 2)) for q + r + 2 <= 8
     for (int q = 0; q <= 5; ++q)
       for (int r = 0; q + r + 2 <= 8; ++r) {
-        long double s = 0;
-        for (std::size_t i = 1; i <= 12; ++i)
-          for (std::size_t j = 1; j < i; ++j)
-            s += b[i] * std::pow(c[i], static_cast<long double>(q)) * a[i][j] * std::pow(c[j], static_cast<long double>(r));
+        const long double s = bushy(b, c, a, 12, q, r);
         INFO("q " << q << " r " << r);
         CHECK(std::fabs(static_cast<double>(s - 1.0L / ((r + 1) * (q + r + 2)))) <= static_cast<double>(tol));
       }
     // The tall tree of order 8: b A^6 c = 1/8!.
-    std::array<long double, 17> v{};
-    for (std::size_t i = 1; i <= 12; ++i) v[i] = c[i];
-    for (int p = 0; p < 6; ++p) {
-      std::array<long double, 17> w{};
-      for (std::size_t i = 1; i <= 12; ++i)
-        for (std::size_t j = 1; j < i; ++j) w[i] += a[i][j] * v[j];
-      v = w;
-    }
-    long double s = 0;
-    for (std::size_t i = 1; i <= 12; ++i) s += b[i] * v[i];
-    CHECK(std::fabs(static_cast<double>(s * 40320.0L - 1.0L)) <= 1e-14);
+    CHECK(std::fabs(static_cast<double>(tall_tree(b, c, a, 12, 6) * 40320.0L - 1.0L)) <= 1e-14);
   }
   SECTION("the error estimators: the order-5 one is the difference of two solutions of order >= 5") {
     const std::array<long double, 17> er = {0,       T::er1, 0,       0,        0,        0,       T::er6,
                                             T::er7,  T::er8, T::er9,  T::er10,  T::er11,  T::er12};
     for (int k = 1; k <= 5; ++k) {
-      long double s = 0;
-      for (std::size_t i = 1; i <= 12; ++i) s += er[i] * std::pow(c[i], static_cast<long double>(k - 1));
+      const long double s = quadrature(er, c, 12, k);
       INFO("sum er c^" << k - 1);
       CHECK(std::fabs(static_cast<double>(s)) <= static_cast<double>(tol));
     }
@@ -173,8 +193,7 @@ TEST_CASE("dop853: the transcribed tableau satisfies the order conditions", "[do
         w[i] = s * (bi + s1 * ((e1 - bi) + s * ((2 * bi - e1 - e13) + s1 * conpar)));
       }
       for (int k = 1; k <= 7; ++k) {
-        long double sum = 0;
-        for (std::size_t i = 1; i <= 16; ++i) sum += w[i] * std::pow(c[i], static_cast<long double>(k - 1));
+        const long double sum = quadrature(w, c, 16, k);
         INFO("s " << static_cast<double>(s) << " k " << k);
         CHECK(std::fabs(static_cast<double>(sum - std::pow(s, static_cast<long double>(k)) / k)) <= 1e-15);
       }
@@ -182,25 +201,12 @@ TEST_CASE("dop853: the transcribed tableau satisfies the order conditions", "[do
       // ((r + 1)(q + r + 2)), and the tall tree w(s) A^5 c = s^7 / 7!.
       for (int q = 0; q <= 4; ++q)
         for (int r = 0; q + r + 2 <= 7; ++r) {
-          long double sum = 0;
-          for (std::size_t i = 1; i <= 16; ++i)
-            for (std::size_t j = 1; j < i; ++j)
-              sum += w[i] * std::pow(c[i], static_cast<long double>(q)) * a[i][j] *
-                     std::pow(c[j], static_cast<long double>(r));
+          const long double sum = bushy(w, c, a, 16, q, r);
           INFO("s " << static_cast<double>(s) << " q " << q << " r " << r);
           CHECK(std::fabs(static_cast<double>(sum - std::pow(s, static_cast<long double>(q + r + 2)) /
                                                          ((r + 1) * (q + r + 2)))) <= 1e-15);
         }
-      std::array<long double, 17> v{};
-      for (std::size_t i = 1; i <= 16; ++i) v[i] = c[i];
-      for (int p = 0; p < 5; ++p) {
-        std::array<long double, 17> u{};
-        for (std::size_t i = 1; i <= 16; ++i)
-          for (std::size_t j = 1; j < i; ++j) u[i] += a[i][j] * v[j];
-        v = u;
-      }
-      long double tall = 0;
-      for (std::size_t i = 1; i <= 16; ++i) tall += w[i] * v[i];
+      const long double tall = tall_tree(w, c, a, 16, 5);
       CHECK(std::fabs(static_cast<double>(tall * 5040.0L - std::pow(s, 7.0L))) <= 1e-13);
     }
   }
