@@ -11,7 +11,7 @@
 program test_fortran_estimate_mu
   use nanopush
   use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
-  use test_support, only: check, finish, same, argument, field, fields
+  use test_support, only: check, finish, same, argument, open_csv, field, fields
   implicit none
   integer :: i
   real(dp) :: rod(6), F, sF, x, sx, sL, sH
@@ -71,9 +71,7 @@ contains
     integer :: unit, ios, stat, rows, k
     call estimate(mode == "icor", rod, F, sF, x, sx, sL, sH, mu, sigma, load, d, stat, msg)
     call check(stat == NANOPUSH_OK, "estimate: stat = NANOPUSH_OK (" // msg // ")")
-    open (newunit=unit, file=path, status="old", action="read")
-    read (unit, '(a)') line
-    call check(trim(line) == "input,value,sigma,dmu_dinput,contribution", "CLI CSV: header")
+    unit = open_csv(path, "input,value,sigma,dmu_dinput,contribution", "CLI CSV: header")
     rows = 0
     do
       read (unit, '(a)', iostat=ios) line

@@ -10,7 +10,7 @@
 program test_fortran_friction_icor
   use nanopush
   use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
-  use test_support, only: check, finish, same, argument, field, fields
+  use test_support, only: check, finish, same, argument, open_csv, field, fields
   implicit none
   real(dp) :: rod(6), L, k2, W, mu, ratio
   real(dp), parameter :: a_bar = 27.5e-9_dp, b_bar = 50e-9_dp
@@ -48,11 +48,9 @@ contains
     real(dp), allocatable :: roots(:)
     integer :: unit, ios, rows
     character(len=32) :: at
-    open (newunit=unit, file=path, status="old", action="read")
-    read (unit, '(a)') line
-    call check(trim(line) == "yn,R_experimental_fit,R_falvo,R_li,R_unknown_pressure,R_known_pressure," // &
-               "F_min,F_from_icor,R_constrained_negative,R_constrained_positive,F_constrained_negative," // &
-               "R_impulsive", "formulas: header")
+    unit = open_csv(path, "yn,R_experimental_fit,R_falvo,R_li,R_unknown_pressure,R_known_pressure," // &
+                   "F_min,F_from_icor,R_constrained_negative,R_constrained_positive,F_constrained_negative," // &
+                   "R_impulsive", "formulas: header")
     rows = 0
     do
       read (unit, '(a)', iostat=ios) line
@@ -101,10 +99,8 @@ contains
     real(dp), allocatable :: roots(:)
     integer :: unit, ios, rows, method, nc, ni, i
     character(len=48) :: at
-    open (newunit=unit, file=path, status="old", action="read")
-    read (unit, '(a)') line
-    call check(trim(line) == "yn,solver,language,n_real,n_complex,n_infinite,root_1,root_2,root_3," // &
-               "negative_branch,positive_branch,max_relative_residual", "roots: header")
+    unit = open_csv(path, "yn,solver,language,n_real,n_complex,n_infinite,root_1,root_2,root_3," // &
+                   "negative_branch,positive_branch,max_relative_residual", "roots: header")
     rows = 0
     do
       read (unit, '(a)', iostat=ios) line
@@ -146,9 +142,7 @@ contains
     real(dp) :: c(5), wr(3)
     integer :: unit, ios, rows
     character(len=64) :: at
-    open (newunit=unit, file=path, status="old", action="read")
-    read (unit, '(a)') line
-    call check(trim(line) == "R,alpha,fx,fy,mf", "friction: header")
+    unit = open_csv(path, "R,alpha,fx,fy,mf", "friction: header")
     rows = 0
     do
       read (unit, '(a)', iostat=ios) line

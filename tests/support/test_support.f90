@@ -2,14 +2,15 @@
 !> check() counts and reports failed checks, finish() ends the program with a nonzero status
 !> when any failed, and the thresholds below name the agreement the tests ask for; same()
 !> checks two doubles are the same (NaN equals NaN), argument() reads a command-line argument,
-!> field() and fields() read the comma-separated fields of a CSV line (no quoting), and
-!> compare_with_run() holds a trajectory to the CSV `nanopush run` wrote, number for number.
+!> open_csv() opens a CSV and checks its header, field() and fields() read the comma-separated
+!> fields of a CSV line (no quoting), and compare_with_run() holds a trajectory to the CSV
+!> `nanopush run` wrote, number for number.
 module test_support
   use, intrinsic :: iso_fortran_env, only: real64
   implicit none
   private
-  public :: check, finish, failures, checks, tol_agree, tol_round_trip, same, argument, field, fields, &
-            compare_with_run
+  public :: check, finish, failures, checks, tol_agree, tol_round_trip, same, argument, open_csv, field, &
+            fields, compare_with_run
 
   !> Two implementations of the same double-precision computation (C++ against F77, Brent
   !> against LAPACK, one integration through two front ends): the arithmetic is reordered, so
@@ -63,6 +64,17 @@ contains
     allocate (character(len=length) :: a)
     call get_command_argument(i, a)
   end function argument
+
+  !> Opens the CSV at `path` for reading, checks (as `what`) that its header line is `header`,
+  !> and returns the unit, at the first data row.
+  function open_csv(path, header, what) result(unit)
+    character(len=*), intent(in) :: path, header, what
+    integer :: unit
+    character(len=4096) :: line
+    open (newunit=unit, file=path, status="old", action="read")
+    read (unit, '(a)') line
+    call check(trim(line) == header, what)
+  end function open_csv
 
   !> The i-th comma-separated field of a CSV line (no quoting in these files); "" past the last.
   function field(line, i) result(f)
