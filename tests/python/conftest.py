@@ -1,10 +1,13 @@
 """Shared fixtures of the Python package's tests: the nanopush command line (the oracle the
-package must match bit for bit) and CSV readers that keep every number exact."""
+package must match bit for bit), CSV readers that keep every number exact, and the check of an
+installed copy of the package."""
 
 import csv
 import io
 import os
+import pathlib
 import subprocess
+import sys
 import threading
 import time
 
@@ -48,6 +51,23 @@ def cli():
 @pytest.fixture(scope="session")
 def source_dir():
     return _required_env("NANOPUSH_SOURCE_DIR")
+
+
+def assert_installed_package_works(site, cwd):
+    """A fresh interpreter with `site` alone on PYTHONPATH (no NANOPUSH_SCENES) imports nanopush
+    from below `site`, finds its preset scenes and gives the numbers of the package under test."""
+    import nanopush
+
+    code = ("import nanopush; r = nanopush.run('fig3_6a'); print(nanopush.__file__); print(repr(r.theta[-1])); "
+            "print(len(nanopush.presets()))")
+    env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "NANOPUSH_SCENES")}
+    env["PYTHONPATH"] = str(site)
+    q = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env, cwd=cwd)
+    assert q.returncode == 0, q.stderr
+    where, theta, npresets = q.stdout.split()
+    assert pathlib.Path(where).is_relative_to(site)
+    assert float(theta) == nanopush.run("fig3_6a").theta[-1]
+    assert int(npresets) == len(nanopush.presets())
 
 
 def read_csv(text_or_path):

@@ -3,11 +3,9 @@ P with PYTHONPATH alone (outside the build and source trees), with its preset sc
 gives the numbers of the build tree's package."""
 
 import os
-import pathlib
 import subprocess
-import sys
 
-import nanopush
+from conftest import assert_installed_package_works
 
 
 def test_installed_package(tmp_path):
@@ -20,13 +18,4 @@ def test_installed_package(tmp_path):
     assert len(inits) == 1, inits
     site = inits[0].parent.parent
     assert site.name == "site-packages"
-    code = ("import nanopush, sys; r = nanopush.run('fig3_6a'); "
-            "print(nanopush.__file__); print(repr(r.theta[-1])); print(len(nanopush.presets()))")
-    env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "NANOPUSH_SCENES")}
-    env["PYTHONPATH"] = str(site)
-    q = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env, cwd=tmp_path)
-    assert q.returncode == 0, q.stderr
-    where, theta, npresets = q.stdout.split()
-    assert pathlib.Path(where).is_relative_to(prefix)
-    assert float(theta) == nanopush.run("fig3_6a").theta[-1]
-    assert int(npresets) == len(nanopush.presets())
+    assert_installed_package_works(site, tmp_path)

@@ -14,6 +14,8 @@ import zipfile
 
 import nanopush
 
+from conftest import assert_installed_package_works
+
 SOURCE = pathlib.Path(os.environ["NANOPUSH_SOURCE_DIR"])
 BUILD = pathlib.Path(os.environ["NANOPUSH_BUILD_DIR"])
 # What a compile or a CMake build would print in pip's verbose log.
@@ -53,16 +55,7 @@ def test_wheel_from_build_tree(tmp_path):
     target = tmp_path / "site"
     q = pip("install", "--no-deps", "--no-cache-dir", "--target", str(target), str(wheels[0]), tree=BUILD, cwd=tmp_path)
     assert q.returncode == 0, q.stdout + q.stderr
-    code = ("import nanopush; r = nanopush.run('fig3_6a'); print(nanopush.__file__); print(repr(r.theta[-1])); "
-            "print(len(nanopush.presets()))")
-    env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "NANOPUSH_SCENES")}
-    env["PYTHONPATH"] = str(target)
-    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env, cwd=tmp_path)
-    assert r.returncode == 0, r.stderr
-    where, theta, npresets = r.stdout.split()
-    assert pathlib.Path(where).is_relative_to(target)
-    assert float(theta) == nanopush.run("fig3_6a").theta[-1]
-    assert int(npresets) == len(nanopush.presets())
+    assert_installed_package_works(target, tmp_path)
 
 
 def test_unusable_tree_refused(tmp_path):
