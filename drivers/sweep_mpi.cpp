@@ -73,9 +73,34 @@ bool stop_from_rank0() {
   return true;
 }
 
-/// A worker rank after its kDone: wait for rank 0's kFinal (the exit status), sleeping between
-/// looks (a blocking MPI call would spin on a core), a late kStop received and dropped.
+using std::chrono::microseconds;
+
+/// How a rank waits for a message without a core: Open MPI's blocking calls (MPI_Recv,
+/// MPI_Wait, MPI_Barrier) poll its shared-memory queues in a loop, so a rank waiting in one
+/// burns a whole core (mpi_yield_when_idle only adds sched_yield to that loop: still 100 % of
+/// an otherwise idle core). A waiting rank here looks (MPI_Iprobe) and sleeps, the sleep
+/// doubling from `first` to `most` while nothing comes: an answer that comes at once is seen
+/// within `first`, a long wait costs one look per `most` (docs/sweeps.md, "Benchmark").
+class Backoff {
+ public:
+  Backoff(microseconds first, microseconds most) : first_(first), most_(most), next_(first) {}
+  void reset() { next_ = first_; }
+  /// The next sleep (then twice as long, up to `most`).
+  microseconds next() {
+    const microseconds d = next_;
+    next_ = std::min(2 * next_, most_);
+    return d;
+  }
+  void sleep() { std::this_thread::sleep_for(next()); }
+
+ private:
+  microseconds first_, most_, next_;
+};
+
+/// A worker rank after its kDone: wait for rank 0's kFinal (the exit status), which comes when
+/// rank 0's last points are done (seconds, for a slow point), a late kStop received and dropped.
 int final_status() {
+  Backoff wait(microseconds(500), microseconds(20000));
   for (;;) {
     int flag = 0;
     MPI_Status st;
@@ -86,7 +111,7 @@ int final_status() {
       if (st.MPI_TAG == kFinal) return v;
       continue;
     }
-    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    wait.sleep();
   }
 }
 
@@ -132,21 +157,25 @@ void worker(LocalWork& w, const sweep::Plan& plan, const sweep::Task& task, cons
   }
 }
 
-/// How long the main thread of a rank sleeps between looks at MPI when no local row wakes it.
-/// Its own core is shared with a worker thread (Open MPI binds a rank to a core), so it must
-/// not spin: blocking MPI calls busy-poll, and a short poll interval steals the worker's time.
-constexpr auto kPoll = std::chrono::milliseconds(1);
+/// How long the main thread of a rank sleeps between looks at MPI when no local row wakes it:
+/// kPollFirst after a message (while points are handed out, requests come every few ms), then
+/// twice as long while none comes, up to kPollMost (a rank 0 whose own thread computes a slow
+/// point while the others are done). Its own core is shared with a worker thread (Open MPI
+/// binds a rank to a core), so it must not spin: every look and wake-up is CPU the points do
+/// not get.
+constexpr microseconds kPollFirst(1000), kPollMost(4000);
 
 /// Points a worker rank holds per thread (running and queued), asked for before its threads
-/// run dry: a rank 0 that answers within kPoll then never leaves them idle, and at the end
-/// at most kAhead - 1 points per thread wait behind a slow one. Measured on the benchmark's
-/// grid (docs/sweeps.md): 2 and 4 within noise at kPoll = 1 ms, 5 ms starves the threads.
+/// run dry: a rank 0 that answers within kPollFirst (a worker's request follows its row, so
+/// rank 0 is at its shortest sleep) then never leaves them idle, and at the end at most
+/// kAhead - 1 points per thread wait behind a slow one. Measured on the benchmark's grid
+/// (docs/sweeps.md): 2 and 4 within noise at a fixed 1 ms poll, a fixed 5 ms starves the threads.
 constexpr int kAhead = 4;
 
-/// Sleep until a local row is ready or kPoll passes.
-void wait_for_rows(LocalWork& w) {
+/// Sleep until a local row is ready or `most` passes.
+void wait_for_rows(LocalWork& w, microseconds most) {
   std::unique_lock<std::mutex> lock(w.m);
-  w.done_cv.wait_for(lock, kPoll, [&] { return !w.outbox.empty() || w.failure; });
+  w.done_cv.wait_for(lock, most, [&] { return !w.outbox.empty() || w.failure; });
 }
 
 unsigned threads_per_rank(unsigned asked) {
@@ -181,10 +210,23 @@ void prefer_shared_memory_on_one_node() {
   ::setenv("OMPI_MCA_pml", "ob1", 0);
 }
 
+/// MPI_Init opens every component of every framework it may need (dlopen and symbol lookup:
+/// most of a rank's ~30 ms of start-up CPU). The sweep uses point-to-point messages only:
+/// no collective, no one-sided window, no reduction; so unless the user chose otherwise
+/// (OMPI_MCA_x, or mpirun --mca x, which mpirun passes as OMPI_MCA_x), only the collective
+/// components every communicator needs are opened (self, basic, libnbc), one one-sided
+/// component (sm) and no AVX reduction ops.
+void open_only_what_the_sweep_uses() {
+  ::setenv("OMPI_MCA_coll", "self,basic,libnbc", 0);
+  ::setenv("OMPI_MCA_osc", "sm", 0);
+  ::setenv("OMPI_MCA_op", "^avx", 0);
+}
+
 /// The answer to a request sent to rank 0: the point indices (none: no more work), or nothing
-/// yet. With `wait`, sleeps in short steps until it comes (never a blocking MPI call, which
-/// would spin on a core another rank may need).
+/// yet. With `wait`, sleeps (Backoff) until it comes: never a blocking MPI call, which would
+/// spin on a core another rank may need.
 std::optional<std::vector<long long>> work_reply(bool wait) {
+  Backoff backoff(microseconds(50), kPollMost);
   for (;;) {
     int flag = 0;
     MPI_Status st;
@@ -197,7 +239,7 @@ std::optional<std::vector<long long>> work_reply(bool wait) {
       return got;
     }
     if (!wait) return std::nullopt;
-    std::this_thread::sleep_for(std::chrono::microseconds(100));
+    backoff.sleep();
   }
 }
 
@@ -269,6 +311,7 @@ int run_mpi_sweep(const sweep::Plan& plan, const sweep::Task& task, const sweep:
                   const volatile std::sig_atomic_t* sig) {
   const auto start = std::chrono::steady_clock::now();
   prefer_shared_memory_on_one_node();
+  open_only_what_the_sweep_uses();
   // mpirun (or its daemon) is this rank's parent: when it dies, even by SIGKILL, the rank gets
   // SIGTERM and stops as on any SIGTERM, instead of computing on as an orphan.
   const pid_t parent = ::getppid();
@@ -340,6 +383,7 @@ int run_mpi_sweep(const sweep::Plan& plan, const sweep::Task& task, const sweep:
         return true;
       };
       auto last = std::chrono::steady_clock::now();
+      Backoff poll(kPollFirst, kPollMost);
       while (true) {
         if (!stop_sig && o.stop && o.stop->load()) stop_sig = signal_of(sig);
         const bool stopping = stop_sig != 0;
@@ -390,6 +434,7 @@ int run_mpi_sweep(const sweep::Plan& plan, const sweep::Task& task, const sweep:
             worker_cpu += cpu;
             ++done_ranks;
           }
+          poll.reset();  // another message may follow at once
           continue;
         }
         bool local_idle;
@@ -402,7 +447,7 @@ int run_mpi_sweep(const sweep::Plan& plan, const sweep::Task& task, const sweep:
           last = std::chrono::steady_clock::now();
           o.progress(table.done(), table.positions());
         }
-        wait_for_rows(w);
+        wait_for_rows(w, poll.next());
       }
       {
         std::lock_guard<std::mutex> lock(w.m);
@@ -442,6 +487,7 @@ int run_mpi_sweep(const sweep::Plan& plan, const sweep::Task& task, const sweep:
         for (unsigned t = 0; t < jobs; ++t)
           threads.emplace_back(worker, std::ref(w), std::cref(plan), std::cref(task), &stop_all);
         bool finished = false, asked = false, remote = false;
+        Backoff poll(kPollFirst, kPollMost);
         while (true) {
           if (!remote) remote = stop_from_rank0();
           const bool local = o.stop && o.stop->load();
@@ -475,6 +521,7 @@ int run_mpi_sweep(const sweep::Plan& plan, const sweep::Task& task, const sweep:
                 for (long long i : *got) w.queue.push_back(static_cast<std::size_t>(i));
               }
               w.cv.notify_all();
+              poll.reset();
               continue;
             }
           }
@@ -482,7 +529,7 @@ int run_mpi_sweep(const sweep::Plan& plan, const sweep::Task& task, const sweep:
             std::lock_guard<std::mutex> lock(w.m);
             if (finished && w.queue.empty() && w.busy == 0 && w.outbox.empty()) break;
           }
-          wait_for_rows(w);
+          wait_for_rows(w, poll.next());
         }
         send_done();
         w.cv.notify_all();
