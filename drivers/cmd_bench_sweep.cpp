@@ -23,6 +23,8 @@
 #include <limits>
 #include <sstream>
 #include <thread>
+#include <tuple>
+#include <utility>
 
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/outputs/io.hpp"
@@ -45,6 +47,7 @@ using Clock = std::chrono::steady_clock;
 constexpr double kOverheadTarget = 0.02;   // (wall - sum of point times) / sum of point times
 constexpr double kEfficiencyTarget = 0.9;  // (points/s at N) / (N x points/s at 1)
 constexpr double kCpuEfficiencyTarget = 0.95;  // CPU of the points alone / CPU of the run (every rank)
+constexpr double kIdleRankTarget = 0.01;  // CPU time / wall time of a rank waiting for the others
 constexpr const char* kScene = "fig3_18";
 constexpr const char* kLaw = "surface.law=coulomb";
 
@@ -124,9 +127,9 @@ fs::path find_on_path(const std::string& name) {
   return {};
 }
 
-/// Run argv[0] (a full path) with `extra_env` added, stdin from /dev/null, stdout and stderr
-/// into `log`; wait for it. Returns the exit status (128 + signal when killed).
-int spawn_and_wait(const std::vector<std::string>& argv, const std::vector<std::string>& extra_env, const fs::path& log) {
+/// Start argv[0] (a full path) with `extra_env` added, stdin from /dev/null, stdout and stderr
+/// into `log`. Returns its process id.
+pid_t spawn(const std::vector<std::string>& argv, const std::vector<std::string>& extra_env, const fs::path& log) {
   std::vector<std::string> env;
   for (char** e = environ; e && *e; ++e) {
     const std::string kv(*e);
@@ -150,12 +153,100 @@ int spawn_and_wait(const std::vector<std::string>& argv, const std::vector<std::
   const int rc = ::posix_spawn(&pid, av[0], &fa, nullptr, av.data(), ev.data());
   posix_spawn_file_actions_destroy(&fa);
   if (rc != 0) throw std::runtime_error("bench-sweep: cannot start " + argv[0] + ": " + std::strerror(rc));
+  return pid;
+}
+
+/// The exit status of a status from waitpid (128 + signal when killed).
+int exit_status(int status) {
+  if (WIFEXITED(status)) return WEXITSTATUS(status);
+  return 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+}
+
+/// Run argv (see spawn) and wait for it. Returns the exit status (128 + signal when killed).
+int spawn_and_wait(const std::vector<std::string>& argv, const std::vector<std::string>& extra_env, const fs::path& log) {
+  const pid_t pid = spawn(argv, extra_env, log);
   int status = 0;
   while (::waitpid(pid, &status, 0) < 0) {
     if (errno != EINTR) throw std::runtime_error("bench-sweep: waitpid failed for " + argv[0]);
   }
-  if (WIFEXITED(status)) return WEXITSTATUS(status);
-  return 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+  return exit_status(status);
+}
+
+/// The MPI rank (OMPI_COMM_WORLD_RANK in its environment) of a child of process `parent`, and
+/// its CPU time (user + system, clock ticks) from /proc; rank -1 where unreadable.
+struct RankSample {
+  int rank = -1;
+  long long ticks = 0;
+};
+std::vector<RankSample> rank_samples(pid_t parent) {
+  std::vector<RankSample> out;
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator("/proc", ec)) {
+    const std::string name = e.path().filename().string();
+    if (name.empty() || name.find_first_not_of("0123456789") != std::string::npos) continue;
+    std::ifstream st(e.path() / "stat");
+    std::string line;
+    if (!std::getline(st, line)) continue;
+    const auto close = line.rfind(')');  // the command name may hold spaces
+    if (close == std::string::npos) continue;
+    std::istringstream f(line.substr(close + 2));
+    std::vector<std::string> v;  // from field 3 (state) on
+    for (std::string x; f >> x && v.size() < 13;) v.push_back(x);
+    if (v.size() < 13 || std::atoll(v[1].c_str()) != parent) continue;
+    RankSample r;
+    r.ticks = std::atoll(v[11].c_str()) + std::atoll(v[12].c_str());  // utime + stime
+    std::ifstream env(e.path() / "environ", std::ios::binary);
+    for (std::string kv; std::getline(env, kv, '\0');)
+      if (kv.rfind("OMPI_COMM_WORLD_RANK=", 0) == 0) r.rank = std::atoi(kv.c_str() + 21);
+    if (r.rank >= 0) out.push_back(r);
+  }
+  return out;
+}
+
+/// A waiting rank's CPU: `mpirun -np 2 nanopush-mpi sweep` of one slow point (rank 0's thread
+/// computes it; rank 1, given no work, waits for the exit status), rank 1's CPU time over the
+/// wall time from the journal's appearance (every rank past MPI_Init) to the last look before
+/// the job ends, read from /proc every 50 ms. Returns (share of a core, seconds watched);
+/// NaN when the job was too short to watch.
+std::pair<double, double> idle_rank_cpu(const fs::path& mpirun, const fs::path& mpi_exe,
+                                        const std::vector<std::string>& env, const fs::path& dir) {
+  const fs::path table = dir / "idle.csv", log = dir / "idle.log";
+  const std::vector<std::string> argv = {
+      mpirun.string(), "--oversubscribe", "-np", "2", mpi_exe.string(), "sweep", kScene, "--set", kLaw,
+      "--set", "solver.t_end=3e-5", "--set", "solver.max_steps=100000000", "--set", "solver.samples=3",
+      "--vary", "surface.mu=0.02", "--no-error-estimate", "--task", "run", "--jobs", "1", "--quiet", "--out",
+      table.string()};
+  const pid_t pid = spawn(argv, env, log);
+  const long hz = ::sysconf(_SC_CLK_TCK);
+  bool watching = false;
+  long long t0 = 0, t1 = 0;
+  Clock::time_point w0{}, w1{};
+  int status = 0;
+  for (;;) {
+    const pid_t w = ::waitpid(pid, &status, WNOHANG);
+    if (w == pid) break;
+    if (w < 0 && errno != EINTR) throw std::runtime_error("bench-sweep: waitpid failed for mpirun");
+    std::error_code ec;
+    if (fs::exists(fs::path(table.string() + ".journal"), ec)) {
+      for (const auto& r : rank_samples(pid)) {
+        if (r.rank != 1) continue;
+        if (!watching) {
+          watching = true;
+          t0 = r.ticks;
+          w0 = Clock::now();
+        }
+        t1 = r.ticks;
+        w1 = Clock::now();
+      }
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  if (exit_status(status) != 0)
+    throw std::runtime_error("bench-sweep: the idle-rank sweep exited with " + std::to_string(exit_status(status)) +
+                             "; its output:\n" + read_file(log));
+  const double seconds = std::chrono::duration<double>(w1 - w0).count();
+  if (!watching || seconds < 0.5) return {std::numeric_limits<double>::quiet_NaN(), seconds};
+  return {static_cast<double>(t1 - t0) / static_cast<double>(hz) / seconds, seconds};
 }
 
 /// A timing the sweep recorded in its sidecar ("run": {"wall_s": ..., "cpu_s": ...}).
@@ -278,7 +369,6 @@ int bench_sweep(const BenchSweepOptions& o) {
       const std::string tag = c.mode + std::to_string(c.mode == "mpi" ? c.ranks : c.threads) + "_r" + std::to_string(r);
       const fs::path table = tmp.path / (tag + ".csv");
       double wall = 0, cpu = 0;
-      constexpr double nan_cpu = std::numeric_limits<double>::quiet_NaN();
       if (c.mode == "direct") {
         // The points alone: evaluate_row on this thread, each call timed, the times summed.
         std::vector<std::vector<std::string>> rows;
@@ -316,7 +406,9 @@ int bench_sweep(const BenchSweepOptions& o) {
           argv.push_back("--vary");
           argv.push_back(s);
         }
-        for (const char* a : {"--task", "run", "--jobs", "1", "--quiet", "--out"}) argv.emplace_back(a);
+        // The same settings as the in-process runs (rs.error_estimate = false above).
+        for (const char* a : {"--no-error-estimate", "--task", "run", "--jobs", "1", "--quiet", "--out"})
+          argv.emplace_back(a);
         argv.push_back(table.string());
         std::vector<std::string> env;
         if (::geteuid() == 0) env = {"OMPI_ALLOW_RUN_AS_ROOT=1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1"};
@@ -335,15 +427,12 @@ int bench_sweep(const BenchSweepOptions& o) {
           }
           c.launches.push_back(seconds_since(l0));
         }
-        const double c0 = cpu_seconds();
         const auto t0 = Clock::now();
         const int rc = spawn_and_wait(argv, env, log);
         c.mpirun_walls.push_back(seconds_since(t0));
         // Open MPI's ranks are reaped by its launcher daemon, not always by mpirun (this
-        // process's RUSAGE_CHILDREN misses them): the sweep records every rank's CPU time
+        // process's RUSAGE_CHILDREN may miss them): the sweep records every rank's CPU time
         // (process start to its last row) in its sidecar.
-        (void)c0;
-        (void)nan_cpu;
         // The sweep's exit status: 0, or 64 + the number of failed points (at most 127).
         const int expected = failed_points ? 64 + static_cast<int>(std::min<std::size_t>(failed_points, 63)) : 0;
         std::error_code ec;
@@ -375,6 +464,37 @@ int bench_sweep(const BenchSweepOptions& o) {
       fs::remove(schema_path(table), ec);
     }
   }
+  // MPI alone, without the points: the fixed CPU of a job (every rank's process start-up,
+  // MPI_Init, the scene, the table), from a sweep of the grid's first point, less that point's
+  // own CPU; and a waiting rank's CPU (idle_rank_cpu).
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  double startup_m2 = nan, idle_share = nan, idle_seconds = 0;
+  if (!mpirun.empty()) {
+    std::vector<std::string> env;
+    if (::geteuid() == 0) env = {"OMPI_ALLOW_RUN_AS_ROOT=1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1"};
+    std::vector<double> fixed_cpu;
+    const double c0 = cpu_seconds();
+    (void)sweep::evaluate_row(plan, *task, 0);
+    const double point0 = cpu_seconds() - c0;
+    for (int r = 0; r < o.repeats; ++r) {
+      const fs::path table = tmp.path / "startup.csv", log = tmp.path / "startup.log";
+      const int rc = spawn_and_wait({mpirun.string(), "--oversubscribe", "-np", "2", mpi_exe.string(), "sweep", kScene,
+                                     "--set", kLaw, "--vary", "surface.mu=0.02", "--no-error-estimate", "--task", "run",
+                                     "--jobs", "1", "--quiet", "--out", table.string()},
+                                    env, log);
+      if (rc != 0) {
+        tmp.keep = true;
+        throw std::runtime_error("bench-sweep: the one-point MPI sweep exited with " + std::to_string(rc) +
+                                 "; its output:\n" + read_file(log));
+      }
+      fixed_cpu.push_back(sidecar_number(table, "cpu_s") - point0);
+    }
+    startup_m2 = median(fixed_cpu);
+    std::tie(idle_share, idle_seconds) = idle_rank_cpu(mpirun, mpi_exe, env, tmp.path);
+    if (!o.quiet)
+      std::cerr << "bench-sweep: MPI start-up, 2 ranks: CPU " << fixed(startup_m2, 3) << " s; a waiting rank: "
+                << fixed(100 * idle_share, 2) << " % of a core over " << fixed(idle_seconds, 1) << " s\n";
+  }
   const auto load_end = load_average();
 
   // ---- figures
@@ -386,7 +506,6 @@ int bench_sweep(const BenchSweepOptions& o) {
   auto pps = [&](const Config* c) {
     return c ? static_cast<double>(n) / median(c->walls) : std::numeric_limits<double>::quiet_NaN();
   };
-  const double nan = std::numeric_limits<double>::quiet_NaN();
   const Config* t1 = find("threads", 1, 1);
   const Config* t2 = find("threads", 2, 1);
   const Config* m1 = find("mpi", 1, 1);
@@ -539,11 +658,20 @@ int bench_sweep(const BenchSweepOptions& o) {
      << "| parallel efficiency, 2 threads >= " << fixed(kEfficiencyTarget, 2) << " | " << fixed(eff_t2, 3)
      << " (CPU time: " << fixed(cpu_eff_t2, 3) << ") | "
      << met(eff_t2 >= kEfficiencyTarget) << " |\n";
+  md << "| CPU efficiency (points' CPU / the run's CPU): 1 thread, 2 threads" << (m1 ? ", 1 MPI rank, 2 MPI ranks" : "")
+     << " | " << fixed(cpu_eff(t1), 3) << ", " << fixed(cpu_eff(t2), 3);
+  if (m1) md << ", " << fixed(cpu_eff(m1), 3) << ", " << fixed(cpu_eff(m2), 3);
+  md << " | |\n";
   if (m2)
     md << "| parallel efficiency, 2 MPI ranks >= " << fixed(kEfficiencyTarget, 2) << " | " << fixed(eff_m2, 3)
        << " | " << met(eff_m2 >= kEfficiencyTarget) << " |\n"
        << "| CPU efficiency, 2 MPI ranks (points' CPU / every rank's CPU) >= " << fixed(kCpuEfficiencyTarget, 2)
-       << " | " << fixed(cpu_eff_m2, 3) << " | " << met(cpu_eff_m2 >= kCpuEfficiencyTarget) << " |\n";
+       << " | " << fixed(cpu_eff_m2, 3) << " (without the job's fixed start-up, " << fixed(startup_m2, 3)
+       << " s CPU for 2 ranks: " << fixed(median(direct->cpus) / (median(m2->cpus) - startup_m2), 3) << ") | "
+       << met(cpu_eff_m2 >= kCpuEfficiencyTarget) << " |\n"
+       << "| a waiting rank's CPU (rank 1 of 2 with no work, while rank 0 computes) <= "
+       << fixed(100 * kIdleRankTarget, 0) << " % of a core | " << fixed(100 * idle_share, 2) << " % over "
+       << fixed(idle_seconds, 1) << " s | " << met(idle_share <= kIdleRankTarget) << " |\n";
   else
     md << "| parallel efficiency, 2 MPI ranks >= " << fixed(kEfficiencyTarget, 2) << " | n/a | " << mpi_note
        << " |\n";

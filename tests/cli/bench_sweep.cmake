@@ -38,6 +38,7 @@ if(CMAKE_SCRIPT_MODE_FILE)
   file(READ "${DIR}/report.md" _md)
   foreach(_re "sweep overhead \\(1 thread\\) <= 2 % \\| [0-9.-]+ % \\(CPU time: [0-9.-]+ %\\) \\| (met|\\*\\*NOT met\\*\\*) \\|"
               "parallel efficiency, 2 threads >= 0.90 \\| [0-9.]+ \\(CPU time: [0-9.]+\\) \\| (met|\\*\\*NOT met\\*\\*) \\|"
+              "CPU efficiency \\(points' CPU / the run's CPU\\): 1 thread, 2 threads \\| [0-9.]+, [0-9.]+ \\|"
               "parallel efficiency, 2 MPI ranks >= 0.90 \\| n/a \\| MPI configurations skipped"
               "load average \\(1, 5, 15 min\\) [0-9.]+ [0-9.]+ [0-9.]+ at the start")
     if(NOT _md MATCHES "${_re}")
