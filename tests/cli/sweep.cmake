@@ -17,6 +17,11 @@ if(NANOPUSH_MPI)
   add_test(NAME cli.sweep.mpi COMMAND bash ${_sweep_sh} mpi ${_np} ${_sweep_dir}/mpi ${MPIEXEC_EXECUTABLE})
   set_tests_properties(cli.sweep.mpi PROPERTIES PASS_REGULAR_EXPRESSION "sweep check mpi: ok"
     ENVIRONMENT "${_env};OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1;OMPI_MCA_rmaps_base_oversubscribe=1")
+  # A rank waiting for the others does not spin: its CPU over a wall interval is well below a core.
+  add_test(NAME cli.sweep.mpi_idle COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/mpi_idle_check.sh ${_np}
+           ${_sweep_dir}/mpi_idle ${MPIEXEC_EXECUTABLE})
+  set_tests_properties(cli.sweep.mpi_idle PROPERTIES PASS_REGULAR_EXPRESSION "mpi idle check: ok"
+    ENVIRONMENT "${_env};OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1")
 endif()
 
 # --set: bad keys and values are refused with key, value and range (exit 2), nothing written.
