@@ -465,7 +465,9 @@ void fig3_10_11(ReproduceContext& ctx) {
                                     : "Fig 3.11: normalised friction moment M_{fn} = |m_f|/({/Symbol m}N max(a,b))")
         << " vs iCOR position (100 x 55 nm bar)'\n"
         << "set xlabel 'iCOR x'' (nm, across the width)'\nset ylabel 'iCOR y'' (nm, along the length)'\n"
-        << "set size ratio -1\nset palette rgbformulae 33,13,10\nset cblabel '" << (k == 0 ? "F_{fn}" : "M_{fn}")
+        // viridis (perceptually uniform, readable in grey), not a rainbow that invents edges
+        << "set size ratio -1\nset palette defined (0 '#440154', 1 '#482878', 2 '#3e4a89', 3 '#31688e', "
+           "4 '#26828e', 5 '#1f9e89', 6 '#35b779', 7 '#6dcd59', 8 '#fde725')\nset cblabel '" << (k == 0 ? "F_{fn}" : "M_{fn}")
         << "'\n"
         << "set xrange [" << -xmax * 1e9 << ":" << xmax * 1e9 << "]\nset yrange [" << -ymax * 1e9 << ":"
         << ymax * 1e9 << "]\n"
