@@ -36,6 +36,7 @@ from ._nanopush import (  # noqa: F401  (re-exported)
     MuBatch,
     MuEstimate,
     MuEstimates,
+    PlanResult,
     Result,
     Scene,
     SolverError,
@@ -55,7 +56,7 @@ friction_from_velocity = _signatures.function(_nanopush.friction_from_velocity)
 friction_wrench = _signatures.function(_nanopush.friction_wrench)
 scene_keys = _signatures.function(_nanopush.scene_keys)
 synthesize = _signatures.function(_nanopush.synthesize)
-for _cls in (FitResult, MuBatch, MuEstimate, MuEstimates, Result, Scene, Wrench):
+for _cls in (FitResult, MuBatch, MuEstimate, MuEstimates, PlanResult, Result, Scene, Wrench):
     _signatures.methods(_cls)
 FitResult.report = _fitting.report
 FitResult.plot = _fitting.plot
@@ -66,7 +67,7 @@ __all__ = [
     "Scene", "presets", "scenes_dir", "scene_keys", "run", "compare", "Result", "Comparison",
     "friction_wrench", "friction_from_velocity", "Wrench", "icor", "estimate_mu", "MuEstimate",
     "MuEstimates", "estimate_mu_batch", "MuBatch", "fit", "FitResult", "synthesize",
-    "sweep", "SweepResult", "SweepFile", "InputError", "SolverError", "__version__",
+    "sweep", "SweepResult", "SweepFile", "plan", "PlanResult", "InputError", "SolverError", "__version__",
 ]
 
 # ---- presets ----------------------------------------------------------------------------
@@ -257,6 +258,18 @@ class Comparison:
         worst = max((c["relative"] for c in self.columns.values()), default=0.0)
         return (f"<nanopush.Comparison {self.cxx.engine} vs {self.f77.engine}: worst relative deviation "
                 f"{worst:.3g}, tolerance {self.tolerance:.3g} -> {verdict}>")
+
+
+def plan(scene, goal, *, tolerance=(1e-9, 0.01), objective="pushes", max_pushes=10, half_turn_symmetric=True,
+         baseline=False):
+    """Tip pushes that bring the scene's bar from its initial pose to `goal` = (x [m], y [m],
+    theta [rad]) within `tolerance` = (distance [m], angle [rad]) (docs/planning.md), planned
+    through the quasi-static tip model and verified by forward runs; the numbers of
+    `nanopush plan SCENE --goal X,Y,THETA`. `objective`: "pushes", "travel", "time" or "force";
+    `baseline=True` plans as the target-oriented baseline does. The scene needs a rough surface;
+    its tip.* keys (push.mode = "tip") give the tip's radius, speed and friction. Returns a
+    PlanResult (status "found" or "not_found" with the best plan); bad input is InputError."""
+    return _nanopush._plan(_as_scene(scene), goal, tolerance, str(objective), max_pushes, half_turn_symmetric, baseline)
 
 
 def compare(scene, method="faithful", rtol=None, atol=None, tolerance=None, law=None):

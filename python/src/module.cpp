@@ -96,6 +96,7 @@ PyObject* g_solver_error = nullptr;
 py::object make_result(const Trajectory& tr);  // run.cpp
 void register_fit_icor(py::module_& m);     // fit_icor.cpp
 void register_fit(py::module_& m);          // fit.cpp
+void register_plan(py::module_& m);         // plan.cpp
 
 void register_errors(py::module_& m) {
   // nanopush.InputError(ValueError): bad input, the library's "field = value: requirement".
@@ -180,6 +181,7 @@ PYBIND11_MODULE(_nanopush, m) {
   register_estimate_mu(m);
   register_fit_icor(m);
   register_fit(m);
+  register_plan(m);
   register_sweep(m);
   m.def(
       "_write_file",

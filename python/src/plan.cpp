@@ -1,0 +1,129 @@
+// nanopush.plan: tip pushes that bring a bar to a goal pose (cxx/include/nanopush/planning/plan.hpp;
+// the numbers of `nanopush plan`, docs/planning.md).
+#include "common.hpp"
+
+#include <cmath>
+
+#include "nanopush/planning/plan.hpp"
+
+namespace nanopush::python {
+
+namespace {
+
+plan::Pose pose_arg(const py::handle& g, const std::string& name) {
+  const py::object v = plain_value(g, name);
+  if (py::isinstance<py::str>(v) || !py::isinstance<py::sequence>(v) || py::len(v) != 3)
+    throw InputError(name, py::repr(v).cast<std::string>(), "must be (x [m], y [m], theta [rad])");
+  const auto s = v.cast<py::sequence>();
+  return {arg_double(s[0], name + "[0] (x)"), arg_double(s[1], name + "[1] (y)"), arg_double(s[2], name + "[2] (theta)")};
+}
+
+py::tuple pose_tuple(const plan::Pose& p) { return py::make_tuple(p.x, p.y, p.theta); }
+
+/// The pushes as plan.csv's columns: start_x, start_y, direction, speed, travel, x_end,
+/// y_end, theta_end (one row per push).
+py::array_t<double> push_table(const plan::PlanResult& r) {
+  const auto n = static_cast<py::ssize_t>(r.pushes.size());
+  py::array_t<double> a({n, static_cast<py::ssize_t>(8)});
+  auto m = a.mutable_unchecked<2>();
+  for (py::ssize_t i = 0; i < n; ++i) {
+    const auto& p = r.pushes[static_cast<std::size_t>(i)];
+    const double row[8] = {p.start_x, p.start_y, p.direction, p.speed, p.travel, p.end.x, p.end.y, p.end.theta};
+    for (py::ssize_t c = 0; c < 8; ++c) m(i, c) = row[c];
+  }
+  return a;
+}
+
+py::dict push_dict(const plan::PlannedPush& p) {
+  py::dict d;
+  d["start_x"] = p.start_x;
+  d["start_y"] = p.start_y;
+  d["direction"] = p.direction;
+  d["speed"] = p.speed;
+  d["travel"] = p.travel;
+  d["end"] = pose_tuple(p.end);
+  d["face"] = p.face;
+  d["offset"] = p.offset;
+  d["max_force"] = p.max_force;
+  d["verified_deviation"] = p.verified_deviation;
+  return d;
+}
+
+plan::PlanResult plan_scene(const Scene& scene, const py::object& goal, const py::object& tolerance,
+                            const std::string& objective, const py::object& max_pushes, const py::object& half_turn,
+                            const py::object& baseline) {
+  const plan::Pose g = pose_arg(goal, "goal");
+  plan::PlanOptions o;
+  const py::object tol = plain_value(tolerance, "tolerance");
+  if (py::isinstance<py::str>(tol) || !py::isinstance<py::sequence>(tol) || py::len(tol) != 2)
+    throw InputError("tolerance", py::repr(tol).cast<std::string>(), "must be (distance [m], angle [rad])");
+  o.tolerance_distance = arg_double(tol.cast<py::sequence>()[0], "tolerance[0] (distance)");
+  o.tolerance_angle = arg_double(tol.cast<py::sequence>()[1], "tolerance[1] (angle)");
+  o.objective = plan::parse_objective(objective);
+  const double n = arg_double(max_pushes, "max_pushes");
+  if (!(n >= 1 && n <= 1000 && n == std::floor(n)))
+    throw InputError("max_pushes", py::repr(max_pushes).cast<std::string>(), "must be a whole number in [1, 1000]");
+  o.max_pushes = static_cast<int>(n);
+  o.half_turn_symmetric = arg_bool(half_turn, "half_turn_symmetric");
+  const bool base = arg_bool(baseline, "baseline");
+  py::gil_scoped_release release;
+  return base ? plan::plan_baseline(scene, g, o) : plan::plan_pushes(scene, g, o);
+}
+
+}  // namespace
+
+void register_plan(py::module_& m) {
+  py::class_<plan::PlanResult>(m, "PlanResult", R"doc(A push plan (nanopush.plan; docs/planning.md).
+
+status          "found" or "not_found" (then the best plan found); found: the same as a flag
+verified        every push re-run by the full model matches, and the chain ends within tolerance
+start, goal     poses (x [m], y [m], theta [rad]); final_pose: where the pushes end, end to end
+final_distance  |CM - goal| [m]; final_angle: |theta - goal| [rad] (modulo pi when half-turn symmetric)
+pushes          one dict per push: start_x, start_y, direction, speed, travel (the scene's tip.* keys),
+                end (pose), face, offset, max_force [N], verified_deviation
+table           the pushes as an (n, 8) array: start_x, start_y, direction, speed, travel, x_end,
+                y_end, theta_end (plan.csv's columns after `push`)
+tip_travel [m], time [s], forward_runs, planning_seconds)doc")
+      .def_property_readonly("status", [](const plan::PlanResult& r) { return r.status; })
+      .def_property_readonly("found", &plan::PlanResult::found)
+      .def_property_readonly("message", [](const plan::PlanResult& r) { return r.message; })
+      .def_property_readonly("verified", [](const plan::PlanResult& r) { return r.verified; })
+      .def_property_readonly("start", [](const plan::PlanResult& r) { return pose_tuple(r.start); })
+      .def_property_readonly("goal", [](const plan::PlanResult& r) { return pose_tuple(r.goal); })
+      .def_property_readonly("final_pose", [](const plan::PlanResult& r) { return pose_tuple(r.final_pose); })
+      .def_property_readonly("final_distance", [](const plan::PlanResult& r) { return r.final_distance; })
+      .def_property_readonly("final_angle", [](const plan::PlanResult& r) { return r.final_angle; })
+      .def_property_readonly("tip_travel", [](const plan::PlanResult& r) { return r.tip_travel; })
+      .def_property_readonly("time", [](const plan::PlanResult& r) { return r.time; })
+      .def_property_readonly("forward_runs", [](const plan::PlanResult& r) { return r.forward_runs; })
+      .def_property_readonly("planning_seconds", [](const plan::PlanResult& r) { return r.planning_seconds; })
+      .def_property_readonly("pushes",
+                             [](const plan::PlanResult& r) {
+                               py::list l;
+                               for (const auto& p : r.pushes) l.append(push_dict(p));
+                               return l;
+                             })
+      .def_property_readonly("table", &push_table)
+      .def(
+          "push_scene",
+          [](const plan::PlanResult& r, const Scene& scene, const py::object& k) {
+            const double i = arg_double(k, "k");
+            if (!(i >= 0 && i < static_cast<double>(r.pushes.size()) && i == std::floor(i)))
+              throw InputError("k", py::repr(k).cast<std::string>(),
+                               "must be a push index in [0, " + std::to_string(r.pushes.size()) + ")");
+            const auto n = static_cast<std::size_t>(i);
+            return plan::push_scene(scene, n == 0 ? r.start : r.pushes[n - 1].end, r.pushes[n]);
+          },
+          py::arg("scene"), py::arg("k"),
+          "The scene that replays push k (from the pose push k-1 left): push.mode = tip and the push's tip keys; "
+          "nanopush.run(it) is the forward run that verified it.")
+      .def("__repr__", [](const plan::PlanResult& r) {
+        return "<nanopush.PlanResult " + r.status + (r.verified ? " (verified)" : "") + ", " +
+               std::to_string(r.pushes.size()) + " pushes, final distance " + py::repr(py::float_(r.final_distance)).cast<std::string>() +
+               " m, angle " + py::repr(py::float_(r.final_angle)).cast<std::string>() + " rad>";
+      });
+  m.def("_plan", &plan_scene, py::arg("scene"), py::arg("goal"), py::arg("tolerance"), py::arg("objective"),
+        py::arg("max_pushes"), py::arg("half_turn_symmetric"), py::arg("baseline"));
+}
+
+}  // namespace nanopush::python

@@ -1,0 +1,68 @@
+"""nanopush.plan against `nanopush plan` (the same pushes, bit for bit), each push replayed by
+its own scene, and bad input as InputError naming the argument (docs/planning.md)."""
+
+import math
+import tomllib
+
+import numpy as np
+import pytest
+
+import nanopush
+from conftest import read_csv
+
+SCENE = "tip_push_nanorod"
+GOAL = (60e-9, 40e-9, 0.3)
+TOL = (2e-9, 0.02)
+
+
+def test_plan_equals_the_command_line(cli, tmp_path):
+    r = nanopush.plan(SCENE, GOAL, tolerance=TOL)
+    assert r.status == "found" and r.found and r.verified, r.message
+    assert r.goal == GOAL and len(r.pushes) >= 1
+    assert r.final_distance <= TOL[0] and r.final_angle <= TOL[1]
+    cli("plan", SCENE, "--goal", ",".join(map(repr, GOAL)), "--tolerance", ",".join(map(repr, TOL)),
+        "--out", tmp_path / "p", "--quiet")
+    header, rows = read_csv(tmp_path / "p" / "plan.csv")
+    assert header[1:] == ["start_x", "start_y", "direction", "speed", "travel", "x_end", "y_end", "theta_end"]
+    table = np.array([[float(c) for c in row[1:]] for row in rows])
+    assert r.table.shape == table.shape
+    assert np.array_equal(r.table, table)  # bit for bit: one computation
+    assert r.pushes[0]["start_x"] == r.table[0, 0] and r.pushes[-1]["end"] == tuple(r.table[-1, 5:])
+    assert r.pushes[0]["face"] in ("-x'", "+x'", "-y'", "+y'")
+    assert "found (verified)" in repr(r)
+
+
+def test_each_push_replays_as_its_own_scene():
+    r = nanopush.plan(SCENE, GOAL, tolerance=TOL)
+    scene = nanopush.Scene.preset(SCENE)
+    for k, p in enumerate(r.pushes):
+        s = r.push_scene(scene, k)
+        keys = tomllib.loads(s.to_toml())
+        assert keys["push"]["mode"] == "tip"
+        assert all(keys["tip"][k] == p[k] for k in ("start_x", "start_y", "direction", "speed", "travel"))
+        run = nanopush.run(s)
+        end = (run.x[-1], run.y[-1], run.theta[-1])
+        assert all(math.isclose(a, b, rel_tol=0, abs_tol=1e-15) for a, b in zip(end[:2], p["end"][:2])), (k, end, p["end"])
+        assert math.isclose(end[2], p["end"][2], rel_tol=0, abs_tol=1e-12)
+
+
+def test_a_goal_out_of_reach_is_not_found_with_the_best_plan():
+    r = nanopush.plan(SCENE, (400e-9, -300e-9, 1.2), tolerance=TOL, max_pushes=1)
+    assert r.status == "not_found" and not r.found
+    assert len(r.pushes) <= 1 and r.final_distance > TOL[0]
+
+
+def test_bad_input_names_the_argument():
+    with pytest.raises(nanopush.InputError, match="goal"):
+        nanopush.plan(SCENE, (1e-9, 2e-9))
+    with pytest.raises(nanopush.InputError, match="max_pushes"):
+        nanopush.plan(SCENE, GOAL, max_pushes=0)
+    with pytest.raises(nanopush.InputError, match="objective"):
+        nanopush.plan(SCENE, GOAL, objective="fastest")
+    with pytest.raises(nanopush.InputError, match="tolerance"):
+        nanopush.plan(SCENE, GOAL, tolerance=1e-9)
+    with pytest.raises(nanopush.InputError, match="goal"):
+        nanopush.plan(SCENE, ("a", 0, 0))
+    r = nanopush.plan(SCENE, GOAL, tolerance=TOL)
+    with pytest.raises(nanopush.InputError, match="k"):
+        r.push_scene(nanopush.Scene.preset(SCENE), len(r.pushes))
