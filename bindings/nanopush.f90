@@ -121,7 +121,7 @@ module nanopush
             nanopush_icor_constrained_force, nanopush_icor_impulsive, nanopush_icor_cubic_roots, &
             nanopush_icor_nanorod, nanopush_icor_rod_properties
   public :: nanopush_estimate_mu_from_force, nanopush_estimate_mu_from_icor
-  public :: nanopush_estimate_mu_batch, nanopush_fit
+  public :: nanopush_estimate_mu_batch, nanopush_fit, nanopush_plan
 
   !> Set a scene key after loading, validated as in the file (docs/scenes.md):
   !> call nanopush_scene_set(scene, "surface.mu", 0.1_dp, stat=stat); a value may be real(dp),
@@ -470,6 +470,16 @@ module nanopush
       integer(c_int), intent(inout) :: converged, json_length
       character(kind=c_char), intent(inout) :: json(*)
     end function c_fit_trajectory
+    integer(c_int) function c_plan(error, scene, goal, tolerance, objective, max_pushes, capacity, pushes, &
+        n_pushes, summary) bind(C, name="nanopush_plan")
+      import :: c_int, c_ptr, c_double, c_char
+      type(c_ptr), value, intent(in) :: error, scene
+      real(c_double), intent(in) :: goal(3), tolerance(2)
+      character(kind=c_char), intent(in) :: objective(*)
+      integer(c_int), value, intent(in) :: max_pushes, capacity
+      real(c_double), intent(inout) :: pushes(*), summary(8)
+      integer(c_int), intent(inout) :: n_pushes
+    end function c_plan
     integer(c_int) function c_strlen(s) bind(C, name="strlen")
       import :: c_int, c_ptr
       type(c_ptr), value, intent(in) :: s
@@ -1352,6 +1362,61 @@ contains
     if (present(json)) json = from_c(buf, int(min(jlen, max(jsize - 1, 0))))
     if (present(errmsg)) errmsg = msg
   end subroutine nanopush_fit
+
+  ! ---- Push planning (C: nanopush_plan; docs/planning.md, `nanopush plan`) ------------------
+
+  !> Tip pushes that bring the scene's bar from its initial pose to goal = (x [m], y [m],
+  !> theta [rad]), as `nanopush plan`. pushes(n, 8) is allocated to the plan's pushes, one row
+  !> each: start_x, start_y [m], direction [rad], speed [m/s], travel [m] (the tip.* keys), then
+  !> the pose it leaves (x_end, y_end [m], theta_end [rad]): plan.csv's columns. Optional:
+  !> tolerance(2) (distance [m], angle [rad]; default 1e-9 m, 0.01 rad), objective ("pushes",
+  !> "travel", "time", "force"), max_pushes (default 10), found and verified, summary(8) = (found
+  !> 1/0, verified 1/0, final x, y, theta, distance and angle from the goal, forward runs). A goal
+  !> no plan reaches is not an error: found = .false. and the best plan is returned. On failure
+  !> pushes is allocated to (0, 8) and the real outputs are NaN.
+  subroutine nanopush_plan(scene, goal, pushes, tolerance, objective, max_pushes, found, verified, summary, &
+                           stat, errmsg)
+    type(nanopush_scene), intent(in) :: scene
+    real(dp), intent(in) :: goal(3)
+    real(dp), allocatable, intent(out) :: pushes(:, :)
+    real(dp), intent(in), optional :: tolerance(2)
+    character(len=*), intent(in), optional :: objective
+    integer, intent(in), optional :: max_pushes
+    logical, intent(out), optional :: found, verified
+    real(dp), intent(out), optional :: summary(8)
+    integer, intent(out), optional :: stat
+    character(len=:), allocatable, intent(out), optional :: errmsg
+    type(c_ptr) :: err
+    character(len=:), allocatable :: msg
+    real(c_double), allocatable :: rows(:, :)
+    real(c_double) :: s(8), tol(2)
+    integer(c_int) :: n, maxp
+    integer :: st
+    maxp = 10
+    if (present(max_pushes)) maxp = int(max_pushes, c_int)
+    tol = [1e-9_dp, 0.01_dp]
+    if (present(tolerance)) tol = tolerance
+    allocate (rows(8, max(maxp, 1)))  ! C's row-major rows are Fortran's columns
+    s = nan()
+    n = 0
+    err = c_new_error()
+    if (c_plan(err, scene%ptr, goal, tol, to_c(opt(objective)), maxp, max(maxp, 0_c_int), rows, n, s) /= 0) continue
+    call finish(err, "nanopush_plan", msg, st)
+    if (present(stat)) then
+      stat = st
+    else if (st /= NANOPUSH_OK) then
+      error stop "nanopush: nanopush_plan: " // msg
+    end if
+    if (st == NANOPUSH_OK) then
+      pushes = transpose(rows(:, 1:n))
+    else
+      allocate (pushes(0, 8))
+    end if
+    if (present(found)) found = st == NANOPUSH_OK .and. s(1) == 1
+    if (present(verified)) verified = st == NANOPUSH_OK .and. s(2) == 1
+    if (present(summary)) summary = s
+    if (present(errmsg)) errmsg = msg
+  end subroutine nanopush_plan
 
   ! ---- helpers --------------------------------------------------------------------------
 

@@ -399,6 +399,29 @@ int nanopush_estimate_mu_batch(nanopush_error error, const double* rod, int n, c
                                double sigma_H, double alpha, double* result, int* dof, int* consistent,
                                double* rows, int* equations);
 
+/* ---- Push planning (docs/planning.md, `nanopush plan`) ----------------------------------------- */
+#define NANOPUSH_PLAN_PUSH_SIZE 8
+#define NANOPUSH_PLAN_SUMMARY_SIZE 8
+/* Tip pushes that bring the bar of `scene` (a rough surface; its tip.* keys give the tip's radius,
+ * speed and friction) from its initial pose to `goal`, planned through the quasi-static tip
+ * model and verified by forward runs; the numbers of `nanopush plan`.
+ *   goal[3]       x [m], y [m], theta [rad] (world axes)
+ *   tolerance[2]  distance [m], angle [rad]; NULL = (1e-9 m, 0.01 rad)
+ *   objective     "pushes", "travel", "time" or "force"; NULL or "" = "pushes"
+ *   max_pushes    the most pushes a plan may have, 1 ... 1000
+ *   capacity      rows `pushes` holds: at least max_pushes (else NANOPUSH_BUFFER_TOO_SMALL)
+ *   pushes        out: one row of NANOPUSH_PLAN_PUSH_SIZE per push, row-major: start_x, start_y
+ *                 [m], direction [rad], speed [m/s], travel [m] (the scene's tip.* keys), then the
+ *                 pose it leaves, x_end, y_end [m], theta_end [rad] (plan.csv's columns)
+ *   n_pushes      out: the plan's pushes
+ *   summary[NANOPUSH_PLAN_SUMMARY_SIZE] out: found (1/0), verified (1/0), the final pose x, y
+ *                 [m], theta [rad], its distance [m] and angle [rad] from the goal, forward runs
+ * A goal no plan reaches within max_pushes is not an error: found = 0 and the best plan is
+ * given. Any output pointer may be NULL. Bad input: NANOPUSH_BAD_INPUT naming the argument;
+ * NULL scene or goal: NANOPUSH_NULL_HANDLE. A failed call writes no output. */
+int nanopush_plan(nanopush_error error, nanopush_scene scene, const double* goal, const double* tolerance,
+                  const char* objective, int max_pushes, int capacity, double* pushes, int* n_pushes, double* summary);
+
 /* ---- Trajectory fit (docs/fitting.md, `nanopush fit`) ---------------------------------------- */
 #define NANOPUSH_FIT_SUMMARY_SIZE 6
 /* Fit scene keys to observed motion: weighted least squares over the forward model, starting

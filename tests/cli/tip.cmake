@@ -46,3 +46,16 @@ rc=0; \"$0\" plan tip_push_nanorod --goal 1e-8,0,0 --closed-loop --noise x=-1 --
 test $rc -eq 2; echo closed-loop: ok" ${_np} ${CMAKE_CURRENT_BINARY_DIR}/cli_plan_cl)
 set_tests_properties(cli.plan.closed_loop PROPERTIES ENVIRONMENT "NANOPUSH_SCENES=${NANOPUSH_SCENES}"
                      PASS_REGULAR_EXPRESSION "closed-loop: ok")
+# The planner from C and Fortran (bindings/nanopush.h nanopush_plan, the module's nanopush_plan):
+# the C API's pushes equal the command line's plan.csv bit for bit.
+set(_tip_scene ${PROJECT_SOURCE_DIR}/drivers/scenes/examples/tip_push_nanorod.toml)
+add_test(NAME cli.plan.for_capi
+         COMMAND ${_np} plan ${_tip_scene} --goal 60e-9,40e-9,0.3 --tolerance 2e-9,0.02 --quiet
+                 --out ${CMAKE_CURRENT_BINARY_DIR}/cli_plan_capi)
+set_tests_properties(cli.plan.for_capi PROPERTIES FIXTURES_SETUP plan_capi)
+nanopush_capi_test(capi.plan_c capi_test_plan test_capi_plan.c "capi plan: all checks hold"
+                   ${_tip_scene} ${CMAKE_CURRENT_BINARY_DIR}/cli_plan_capi/plan.csv)
+set_tests_properties(capi.plan_c PROPERTIES FIXTURES_REQUIRED plan_capi)
+nanopush_capi_test(capi.plan_fortran capi_test_plan_fortran test_fortran_plan.f90 "[0-9]+ checks, 0 failures"
+                   ${_tip_scene})
+target_link_libraries(capi_test_plan_fortran PRIVATE nanopush_test_support_f)

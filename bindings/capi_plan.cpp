@@ -1,0 +1,55 @@
+// C API: push planning (bindings/nanopush.h) over nanopush::plan::plan_pushes
+// (cxx/include/nanopush/planning/plan.hpp, the numbers of `nanopush plan`). Everything is computed
+// before anything is stored, so a failed call leaves every output untouched.
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "capi_internal.hpp"
+#include "nanopush/planning/plan.hpp"
+
+using namespace nanopush::capi;
+namespace plan = nanopush::plan;
+
+extern "C" {
+
+int nanopush_plan(nanopush_error error, nanopush_scene scene, const double* goal, const double* tolerance,
+                  const char* objective, int max_pushes, int capacity, double* pushes, int* n_pushes, double* summary) {
+  return guarded(error, [&] {
+    require_handle(scene, "scene");
+    require_handle(goal, "goal");
+    if (max_pushes < 1 || max_pushes > 1000)
+      throw nanopush::InputError("max_pushes", std::to_string(max_pushes), "must be a whole number in [1, 1000]");
+    if (capacity < 0) throw nanopush::InputError("capacity", std::to_string(capacity), "must be >= 0");
+    if (pushes && capacity < max_pushes)
+      throw StatusError(NANOPUSH_BUFFER_TOO_SMALL, "capacity = " + std::to_string(capacity) + ": pushes holds fewer " +
+                                                       "rows than max_pushes = " + std::to_string(max_pushes));
+    plan::PlanOptions o;
+    if (tolerance) {
+      o.tolerance_distance = tolerance[0];
+      o.tolerance_angle = tolerance[1];
+    }
+    const std::string obj = opt_string(objective);
+    if (!obj.empty()) o.objective = plan::parse_objective(obj);
+    o.max_pushes = max_pushes;
+    const plan::PlanResult r = plan::plan_pushes(scene->scene, {goal[0], goal[1], goal[2]}, o);
+    // everything computed: store
+    if (pushes)
+      for (std::size_t i = 0; i < r.pushes.size(); ++i) {
+        const auto& p = r.pushes[i];
+        const double row[NANOPUSH_PLAN_PUSH_SIZE] = {p.start_x, p.start_y, p.direction, p.speed,
+                                                     p.travel,  p.end.x,   p.end.y,     p.end.theta};
+        std::copy(row, row + NANOPUSH_PLAN_PUSH_SIZE, pushes + i * NANOPUSH_PLAN_PUSH_SIZE);
+      }
+    if (n_pushes) *n_pushes = static_cast<int>(r.pushes.size());
+    if (summary) {
+      const double s[NANOPUSH_PLAN_SUMMARY_SIZE] = {r.found() ? 1.0 : 0.0, r.verified ? 1.0 : 0.0, r.final_pose.x,
+                                                    r.final_pose.y,         r.final_pose.theta,     r.final_distance,
+                                                    r.final_angle,          static_cast<double>(r.forward_runs)};
+      std::copy(s, s + NANOPUSH_PLAN_SUMMARY_SIZE, summary);
+    }
+    return NANOPUSH_OK;
+  });
+}
+
+}  // extern "C"
