@@ -28,6 +28,10 @@ struct BenchPlanOptions {
   int max_pushes = 20;
   std::uint64_t seed = 20121;
   double tolerance_distance = 1e-9, tolerance_angle = 0.01;
+  /// The closed loop: the first N tasks again, mu of the truth unknown within +-30 %, imaging
+  /// noise sigma 1 nm (x, y) and 0.01 rad, tolerance three of those sigmas.
+  int closed_loop = 40;
+  double noise_distance = 1e-9, noise_angle = 0.01;
 };
 
 /// The two bars of the thesis: the nanobar of chapter 3 and the nanorod of chapters 4-5.
@@ -49,6 +53,58 @@ double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   const std::size_t n = v.size();
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+/// The closed loop a lab runs (plan::closed_loop) on the first o.closed_loop tasks: the truth's
+/// surface mu uniform within +-30 % of the model's, imaging noise o.noise_*, a tolerance of three
+/// noise sigmas (a true pose cannot be judged finer than the images show it). Writes
+/// plan_closed_loop.csv; returns the Markdown paragraph.
+std::string closed_loop_bench(const BenchPlanOptions& o, const Scene (&bars)[2], const std::vector<plan::Pose>& goals) {
+  const int n = std::min<int>(o.closed_loop, static_cast<int>(goals.size()));
+  if (n <= 0) return {};
+  plan::PlanOptions po;
+  po.tolerance_distance = 3 * o.noise_distance;
+  po.tolerance_angle = 3 * o.noise_angle;
+  po.max_pushes = o.max_pushes;
+  const plan::Noise noise{o.noise_distance, o.noise_distance, o.noise_angle};
+  std::mt19937_64 rng(o.seed + 1);
+  CsvWriter w(fs::path(o.out) / "plan_closed_loop.csv",
+              {{"task", "1", "task number (the open-loop task of the same number)"},
+               text_column("bar", "nanobar (100 x 55 nm) or nanorod (590 x 27 nm)"),
+               {"mu_truth", "1", "the true surface mu (the model's is 0.1)"},
+               {"reached", "1", "1: the true pose within the tolerance"},
+               {"pushes", "1", "pushes made"},
+               {"tip_travel", "m", "summed tip travel"},
+               {"planning_time", "s", "wall time of the re-plans"},
+               {"final_distance", "m", "distance of the true final centre from the goal"},
+               {"final_angle", "rad", "angle of the true final pose from the goal"}},
+              "bench-plan");
+  int reached = 0;
+  std::vector<double> pushes, planning;
+  for (int k = 0; k < n; ++k) {
+    const bool rod = k % 2 == 1;
+    Scene truth = bars[rod];
+    const double mu = 0.1 * (0.7 + 0.6 * uniform(rng));
+    truth.set("surface.mu", mu);
+    const plan::ClosedLoopResult r =
+        plan::closed_loop(bars[rod], truth, goals[static_cast<std::size_t>(k)], po, noise, o.seed + static_cast<std::uint64_t>(k));
+    reached += r.reached() ? 1 : 0;
+    pushes.push_back(static_cast<double>(r.steps.size()));
+    planning.push_back(r.planning_seconds);
+    w.cells({csv_number(k + 1), rod ? "nanorod" : "nanobar", csv_number(mu), r.reached() ? "1" : "0",
+             csv_number(static_cast<double>(r.steps.size())), csv_number(r.tip_travel), csv_number(r.planning_seconds),
+             csv_number(r.final_distance), csv_number(r.final_angle)});
+    std::cerr << "\rbench-plan: closed loop " << k + 1 << "/" << n << std::flush;
+  }
+  std::cerr << "\n";
+  w.commit();
+  std::ostringstream md;
+  md << std::setprecision(3) << "\n**Closed loop** (the first " << n << " tasks; the true surface mu uniform in 0.07-0.13, "
+     << "the model's 0.1; imaging noise " << o.noise_distance * 1e9 << " nm and " << o.noise_angle
+     << " rad; tolerance " << po.tolerance_distance * 1e9 << " nm and " << po.tolerance_angle << " rad): reached " << reached
+     << "/" << n << " (" << 100.0 * reached / n << " %), median pushes " << median(pushes) << ", median planning "
+     << median(planning) << " s. plan_closed_loop.csv has each task.\n";
+  return md.str();
 }
 
 int run_bench_plan(const BenchPlanOptions& o) {
@@ -79,11 +135,13 @@ int run_bench_plan(const BenchPlanOptions& o) {
     std::vector<double> pushes, travel, time, planning;
   } st[2];
   std::vector<double> ratio;  // planner pushes / baseline pushes, tasks both solve
+  std::vector<plan::Pose> goals;
   for (int k = 0; k < o.tasks; ++k) {
     const bool rod = k % 2 == 1;
     const Scene& sc = bars[rod];
     const double L = sc.length, r = 5 * L * std::sqrt(uniform(rng)), phi = 2 * M_PI * uniform(rng);
     const plan::Pose goal{r * std::cos(phi), r * std::sin(phi), M_PI * (2 * uniform(rng) - 1)};
+    goals.push_back(goal);
     int pushes[2] = {0, 0};
     bool found[2] = {false, false};
     for (int which = 0; which < 2; ++which) {
@@ -109,6 +167,7 @@ int run_bench_plan(const BenchPlanOptions& o) {
   }
   std::cerr << "\n";
   w.commit();
+  const std::string loop_md = closed_loop_bench(o, bars, goals);
   std::ostringstream md;
   md << std::setprecision(3) << "| planner | success | median pushes | median tip travel (nm) | median time (s) | median planning (s) |\n"
      << "|---|---|---|---|---|---|\n";
@@ -121,7 +180,7 @@ int run_bench_plan(const BenchPlanOptions& o) {
   md << "\nTasks both solve: " << ratio.size() << "; median ratio of pushes (plan / baseline): " << median(ratio)
      << ". Seed " << o.seed << ", " << o.tasks << " tasks (nanobar and nanorod alternately), goals uniform within five "
      << "body lengths, any orientation, tolerance " << o.tolerance_distance << " m and " << o.tolerance_angle
-     << " rad, at most " << o.max_pushes << " pushes.\n";
+     << " rad, at most " << o.max_pushes << " pushes.\n" << loop_md;
   write_file_atomic(fs::path(o.out) / "plan_benchmark.md", md.str());
   plot::Figure fig;
   fig.title = "bench-plan: pushes per task";
@@ -148,6 +207,10 @@ RegisterCommand reg{{"bench-plan",
                            ->check(count(1, 1000))
                            ->capture_default_str();
                        app.add_option("--seed", o->seed, "seed of the tasks")->check(count(0, 1000000000000LL))->capture_default_str();
+                       app.add_option("--closed-loop", o->closed_loop,
+                                      "closed-loop tasks (the first N tasks again, mu unknown within +-30 %, imaging noise; 0: none)")
+                           ->check(count(0, 100000))
+                           ->capture_default_str();
                        return [o] { return run_bench_plan(*o); };
                      }}};
 

@@ -59,3 +59,11 @@ set_tests_properties(capi.plan_c PROPERTIES FIXTURES_REQUIRED plan_capi)
 nanopush_capi_test(capi.plan_fortran capi_test_plan_fortran test_fortran_plan.f90 "[0-9]+ checks, 0 failures"
                    ${_tip_scene})
 target_link_libraries(capi_test_plan_fortran PRIVATE nanopush_test_support_f)
+# bench-plan on two tasks, open and closed loop: its tables, report and figure are written.
+add_test(NAME cli.bench.plan_quick
+         COMMAND bash -c "set -e; d=\"$1\"; rm -rf \"$d\"; \"$0\" bench-plan --tasks 2 --closed-loop 2 --max-pushes 10 \
+--out \"$d\" > /dev/null 2> \"$d.err\"; grep -q '^| plan | ' \"$d/plan_benchmark.md\"; \
+grep -q 'Closed loop.*reached [0-2]/2' \"$d/plan_benchmark.md\"; test \"$(wc -l < \"$d/plan_closed_loop.csv\")\" -eq 3; \
+head -1 \"$d/plan_closed_loop.csv\" | grep -qx 'task,bar,mu_truth,reached,pushes,tip_travel,planning_time,final_distance,final_angle'; \
+test -s \"$d/plan_benchmark.csv\"; echo bench-plan: ok" ${_np} ${CMAKE_CURRENT_BINARY_DIR}/cli_bench_plan)
+set_tests_properties(cli.bench.plan_quick PROPERTIES PASS_REGULAR_EXPRESSION "bench-plan: ok")
