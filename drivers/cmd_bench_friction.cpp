@@ -25,6 +25,7 @@
 #include "nanopush/outputs/plot.hpp"
 #include "nanopush/scenes/simulate.hpp"
 #include "cli_checks.hpp"
+#include "bench_report.hpp"
 #include "registry.hpp"
 #include "scene_args.hpp"
 
@@ -357,12 +358,8 @@ int bench_friction(const BenchFrictionOptions& o) {
 
   // ---- plot: ns per wrench, old and new, per workload (log scale)
   const fs::path png = out_dir / "friction_bench.png";
-  std::string plot_note;
-  if (o.no_plot) {
-    plot_note = "no plot (--no-plot)";
-  } else if (!plot::available()) {
-    plot_note = "no plot: gnuplot is not on PATH";
-  } else {
+  const std::string plot_note = plot_skipped(o.no_plot);
+  if (plot_note.empty()) {
     std::ostringstream b;
     b << "set title 'friction wrench: ns per call, F77 forms and production forms (median of " << o.repeats
       << " interleaved pairs)' noenhanced\n"
@@ -435,11 +432,7 @@ int bench_friction(const BenchFrictionOptions& o) {
     md << "; " << plot_note << ".\n";
   write_file_atomic(out_dir / "report.md", md.str());
   std::cout << md.str();
-  if (!all_agree) {
-    std::cerr << "bench-friction: the new and the old forms disagree beyond the tests' bounds (report.md)\n";
-    return 4;
-  }
-  return 0;
+  return bench_status(all_agree, "bench-friction: the new and the old forms disagree beyond the tests' bounds (report.md)");
 }
 
 RegisterCommand reg{
