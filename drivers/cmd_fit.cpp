@@ -51,6 +51,17 @@ fit::SigmaOverrides parse_sigma(const std::vector<std::string>& texts) {
 
 /// The fitted trajectory over the data: CSV (+ schema) with observed values, sigmas and
 /// normalised residuals, and a PNG per observed column.
+/// "key = value +- stderr" with `digits` and `sigma_digits` significant digits, or `undetermined`
+/// in place of the uncertainty when the fit could not give one.
+void put_estimate(std::ostream& s, const fit::ParameterEstimate& p, int digits, int sigma_digits,
+                  const char* undetermined) {
+  s << p.key << " = " << std::setprecision(digits) << p.value;
+  if (std::isfinite(p.stderr_))
+    s << " +- " << std::setprecision(sigma_digits) << p.stderr_;
+  else
+    s << undetermined;
+}
+
 void write_outputs(const fit::FitResult& r, const fit::Observations& obs, const fs::path& dir, const std::string& base,
                    bool plot_it, std::vector<fs::path>& produced) {
   fs::create_directories(dir);
@@ -92,11 +103,8 @@ void write_outputs(const fit::FitResult& r, const fit::Observations& obs, const 
   std::ostringstream title;
   title << "fit of " << base << ":";
   for (const auto& p : r.parameters) {
-    title << " " << p.key << " = " << std::setprecision(5) << p.value;
-    if (std::isfinite(p.stderr_))
-      title << " +- " << std::setprecision(2) << p.stderr_;
-    else
-      title << " (undetermined)";
+    title << " ";
+    put_estimate(title, p, 5, 2, " (undetermined)");
   }
   title << ", chi2/dof = " << std::setprecision(3) << r.chi2_dof;
   f.title = title.str();
@@ -125,11 +133,8 @@ std::string summary_text(const fit::FitResult& r, const fit::Observations& obs, 
   s << "fit of " << name << " to " << obs.source << ": " << obs.t.size() << " times, " << obs.count()
     << " values; gradients: " << r.gradients << (r.law.empty() ? "" : ", law " + r.law) << "\n";
   for (const auto& p : r.parameters) {
-    s << "  " << p.key << " = " << std::setprecision(8) << p.value;
-    if (std::isfinite(p.stderr_))
-      s << " +- " << std::setprecision(3) << p.stderr_;
-    else
-      s << " (not determined separately)";
+    s << "  ";
+    put_estimate(s, p, 8, 3, " (not determined separately)");
     s << (p.unit == "1" ? "" : " " + p.unit) << " (start " << std::setprecision(6) << p.start << ")" << (p.at_bound ? " AT BOUND" : "") << "\n";
   }
   if (r.parameters.size() > 1) {
