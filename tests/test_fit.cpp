@@ -216,6 +216,18 @@ TEST_CASE("fit synthetic: rough scene, coulomb law, surface.mu", "[fit][numeric]
   CHECK(r.gradients == "differences");
 }
 
+/// The fit found the keys `undetermined` not determined separately, and the data determine
+/// their combination `combination` (first in the list).
+void check_undetermined(const FitResult& r, const std::vector<std::string>& undetermined,
+                        const std::string& combination) {
+  const auto& id = r.identifiability;
+  INFO(id.message);
+  CHECK_FALSE(id.identifiable);
+  CHECK(id.undetermined == undetermined);
+  REQUIRE_FALSE(id.determined.empty());
+  CHECK(id.determined[0].name == combination);
+}
+
 TEST_CASE("fit identifiability: mu and the adhesion load enter only as mu*N", "[fit][numeric]") {
   const Scene s = short_scene("thesis/fig3_20.toml", 0.8e-9, 41);
   const Observations obs = synthesize(s, {1e-9, 1e-9, 0.01}, 21, Law::thesis);
@@ -224,12 +236,9 @@ TEST_CASE("fit identifiability: mu and the adhesion load enter only as mu*N", "[
   FitOptions o;
   o.free = {"surface.mu", "surface.f_vdw"};
   const FitResult r = fit_trajectory(start, obs, o);
+  check_undetermined(r, {"surface.mu", "surface.f_vdw"}, "mu*N");
   const auto& id = r.identifiability;
   INFO(id.message);
-  CHECK_FALSE(id.identifiable);
-  CHECK(id.undetermined == std::vector<std::string>{"surface.mu", "surface.f_vdw"});
-  REQUIRE_FALSE(id.determined.empty());
-  CHECK(id.determined[0].name == "mu*N");
   // mu*N itself is determined: near the truth, within 3 of its standard errors.
   const double truth = s.surface.mu * s.normal_load();
   CHECK(std::abs(std::log(id.determined[0].value / truth)) < 3 * id.determined[0].stderr_relative);
@@ -298,12 +307,7 @@ TEST_CASE("fit identifiability: push force and density enter only as F/m on a sm
   FitOptions o;
   o.free = {"push.force", "object.density", "initial.theta"};
   const FitResult r = fit_trajectory(start, obs, o);
-  const auto& id = r.identifiability;
-  INFO(id.message);
-  CHECK_FALSE(id.identifiable);
-  CHECK(id.undetermined == std::vector<std::string>{"push.force", "object.density"});
-  REQUIRE_FALSE(id.determined.empty());
-  CHECK(id.determined[0].name == "F/m");
+  check_undetermined(r, {"push.force", "object.density"}, "F/m");
   // initial.theta is outside the undetermined direction: it keeps its standard error.
   CHECK(std::isfinite(r.parameters[2].stderr_));
   CHECK(std::abs(r.parameters[2].value - s.initial[kTheta]) < 3 * r.parameters[2].stderr_);
