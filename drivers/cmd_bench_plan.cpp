@@ -79,7 +79,7 @@ std::string closed_loop_bench(const BenchPlanOptions& o, const Scene (&bars)[2],
                {"final_distance", "m", "distance of the true final centre from the goal"},
                {"final_angle", "rad", "angle of the true final pose from the goal"}},
               "bench-plan");
-  int reached = 0;
+  int reached = 0, unsimulated = 0;
   std::vector<double> pushes, planning;
   for (int k = 0; k < n; ++k) {
     const bool rod = k % 2 == 1;
@@ -89,6 +89,7 @@ std::string closed_loop_bench(const BenchPlanOptions& o, const Scene (&bars)[2],
     const plan::ClosedLoopResult r =
         plan::closed_loop(bars[rod], truth, goals[static_cast<std::size_t>(k)], po, noise, o.seed + static_cast<std::uint64_t>(k));
     reached += r.reached() ? 1 : 0;
+    unsimulated += r.unsimulated;
     pushes.push_back(static_cast<double>(r.steps.size()));
     planning.push_back(r.planning_seconds);
     w.cells({csv_number(k + 1), rod ? "nanorod" : "nanobar", csv_number(mu), r.reached() ? "1" : "0",
@@ -103,7 +104,9 @@ std::string closed_loop_bench(const BenchPlanOptions& o, const Scene (&bars)[2],
      << "the model's 0.1; imaging noise " << o.noise_distance * 1e9 << " nm and " << o.noise_angle
      << " rad; tolerance " << po.tolerance_distance * 1e9 << " nm and " << po.tolerance_angle << " rad): reached " << reached
      << "/" << n << " (" << 100.0 * reached / n << " %), median pushes " << median(pushes) << ", median planning "
-     << median(planning) << " s. plan_closed_loop.csv has each task.\n";
+     << median(planning) << " s; " << unsimulated << " planned pushes could not be made on the true bar (the tip would "
+     << "start inside it, or the model could not follow the push there) and the bar was imaged again. "
+     << "plan_closed_loop.csv has each task.\n";
   return md.str();
 }
 

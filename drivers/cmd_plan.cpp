@@ -199,7 +199,7 @@ int closed_loop_cmd(const PlanCliOptions& o, const Scene& sc, const plan::Pose& 
                {"plan_pushes", "1", "pushes the re-plan from this image needed"}},
               sc.name);
   w.run_info({{"status", r.status}, {"final_distance_m", r.final_distance},
-              {"final_angle_rad", r.final_angle}, {"seed", o.seed}});
+              {"final_angle_rad", r.final_angle}, {"seed", o.seed}, {"pushes_not_made", r.unsimulated}});
   int k = 1;
   for (const auto& s : r.steps)
     w.row({double(k++), s.observed.x, s.observed.y, s.observed.theta, s.truth.x, s.truth.y, s.truth.theta, s.push.start_x,
@@ -211,6 +211,9 @@ int closed_loop_cmd(const PlanCliOptions& o, const Scene& sc, const plan::Pose& 
               << " s\n  true final pose " << r.final_truth.x << " m, " << r.final_truth.y << " m, " << r.final_truth.theta
               << " rad: " << r.final_distance << " m and " << r.final_angle << " rad from the goal\n  steps: "
               << (dir / "closed_loop.csv").string() << "\n";
+    if (r.unsimulated)
+      std::cerr << "  " << r.unsimulated << " planned push(es) not made: the tip would start inside the true bar, or the "
+                << "model could not follow the push there; the bar was imaged again\n";
     if (!r.reached()) std::cerr << "nanopush: not_reached: " << r.message << "\n";
   }
   return r.reached() ? 0 : 3;

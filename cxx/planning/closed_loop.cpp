@@ -64,6 +64,12 @@ ClosedLoopResult closed_loop(const Scene& model, const Scene& truth, const Pose&
     } catch (const InputError&) {
       // The planned tip start lies inside the true bar (the image was off by more than the
       // clearance): the AFM would touch down on the bar; the push is not made, image again.
+      ++res.unsimulated;
+    } catch (const SolverError&) {
+      // The model cannot follow this push on the true bar (the quasi-static solve fails where
+      // the tip meets a corner): it is not made, and the bar is imaged again. Counted, so a
+      // benchmark says how often the loop had to step around its own model.
+      ++res.unsimulated;
     }
     res.tip_travel += step.push.travel;
     res.time += step.push.travel / step.push.speed;

@@ -96,6 +96,9 @@ struct ClosedLoopResult {
   Pose final_truth, final_observed;
   double final_distance = 0, final_angle = 0;  ///< of the true pose from the goal
   double tip_travel = 0, time = 0, planning_seconds = 0;
+  /// Planned pushes not made: the tip would start inside the true bar, or the model could not
+  /// follow the push on it (a solver failure); the bar was imaged again instead.
+  int unsimulated = 0;
   [[nodiscard]] bool reached() const { return status == "reached"; }
 };
 
