@@ -192,6 +192,10 @@ struct NcFile {
 
 }  // namespace
 
+// Long (~190 lines) on purpose: netCDF's define mode and data mode are two halves of one
+// transaction over the same variable ids, strides and the cells read once; its sections (read,
+// grid check, define, write table, write trajectories) are marked, and cutting them into
+// functions would pass those ten locals around without making any of them testable alone.
 void write_netcdf_from_table(const fs::path& csv, const fs::path& nc_path, const std::vector<NetcdfAxis>& axes,
                              const std::vector<fs::path>& trajectories) {
   const auto [fields, prov] = read_schema(csv);
