@@ -41,5 +41,8 @@ program test_fortran_plan
   call check(stat == NANOPUSH_BAD_INPUT .and. index(msg, "fastest") > 0, "bad objective: " // msg)
 
   call nanopush_destroy(scene)
+  ! Main-program allocatables are not freed at the end (LeakSanitizer counts them): free them.
+  if (allocated(pushes)) deallocate(pushes)
+  if (allocated(msg)) deallocate(msg)
   call finish("test_fortran_plan")
 end program test_fortran_plan
