@@ -10,10 +10,13 @@
 #include "nanopush/outputs/io.hpp"
 #include "nanopush/outputs/json.hpp"
 #include "nanopush/outputs/plot.hpp"
+#include "nanopush/planning/check.hpp"
 #include "nanopush/planning/plan.hpp"
 #include "cli_checks.hpp"
 #include "registry.hpp"
 #include "scene_args.hpp"
+#include "sweep_mpi.hpp"
+#include "sweep_output.hpp"
 
 namespace nanopush::cli {
 namespace {
@@ -29,6 +32,7 @@ struct PlanCliOptions {
   std::uint64_t seed = 1;
   int check = 0;
   std::string mu_range;
+  unsigned jobs = 0;
   bool quiet = false;
 };
 
@@ -219,6 +223,59 @@ int closed_loop_cmd(const PlanCliOptions& o, const Scene& sc, const plan::Pose& 
   return r.reached() ? 0 : 3;
 }
 
+/// --check N: the plan made open loop in N worlds, as a sweep of trials (planning/check.hpp) on
+/// --jobs threads, or across the ranks when mpirun started nanopush-mpi: DIR/check.csv (a sweep
+/// table with its sidecar; interrupted, it resumes from its journal) and DIR/check.json (the
+/// success probability and its 95 % Wilson interval). Returns 0, or the sweep's exit status.
+int check_cmd(const PlanCliOptions& o, const Scene& sc, const plan::PlanResult& r, const plan::PlanOptions& po,
+              const std::filesystem::path& dir) {
+  plan::CheckWorlds w;
+  w.noise = parse_noise(o.noise);
+  w.seed = o.seed;
+  if (!o.mu_range.empty()) {
+    const auto colon = o.mu_range.find(':');
+    if (colon == std::string::npos) throw InputError("--mu-range", o.mu_range, "must be LO:HI");
+    w.mu_lo = numbers("--mu-range", o.mu_range.substr(0, colon), 1, "LO:HI, two numbers")[0];
+    w.mu_hi = numbers("--mu-range", o.mu_range.substr(colon + 1), 1, "LO:HI, two numbers")[0];
+  }
+  const sweep::Plan trials = plan::check_points(o.check);
+  const auto task = plan::make_check_task(sc, r, po, w);
+  sweep::Options opt;
+  opt.jobs = o.jobs;
+  opt.out = dir / "check.csv";
+  opt.progress = progress_line(o.quiet || !table_rank(), "check");
+  opt.stop = install_sweep_stop();
+  opt.fixed = {"--noise " + o.noise, "--mu-range " + o.mu_range, "--seed " + std::to_string(o.seed)};
+  if (mpi_launched()) {
+    const int rc = run_mpi_sweep(trials, *task, opt, o.quiet, sweep_signal());
+    if (rc != 0 || !table_rank()) return rc;
+  } else {
+    const auto res = sweep::run_local(trials, *task, opt);
+    if (!res.complete) {
+      std::cerr << "plan: check interrupted: " << res.done << " of " << res.points << " trials are in "
+                << sweep::journal_path(opt.out).string() << "; run the same command again to resume\n";
+      return 128 + (*sweep_signal() ? static_cast<int>(*sweep_signal()) : SIGINT);
+    }
+  }
+  const plan::PlanCheck c = plan::read_check_table(opt.out);
+  json j;
+  j["trials"] = c.trials;
+  j["successes"] = c.successes;
+  j["probability"] = json_number(c.probability);
+  j["wilson95_low"] = json_number(c.low);
+  j["wilson95_high"] = json_number(c.high);
+  j["noise"] = o.noise;
+  j["mu_range"] = o.mu_range;
+  j["seed"] = o.seed;
+  j["table"] = "check.csv";
+  write_file_atomic(dir / "check.json", json_text(j));
+  if (!o.quiet)
+    std::cerr << "  check: success " << c.successes << "/" << c.trials << " = " << c.probability << " (95 % interval "
+              << c.low << " to " << c.high << ") over start noise " << o.noise
+              << (o.mu_range.empty() ? std::string() : " and mu in " + o.mu_range) << ": " << opt.out.string() << "\n";
+  return 0;
+}
+
 int plan_cmd(const PlanCliOptions& o) {
   const Scene sc = load_scene_arg(o.scene, o.sets);
   set_provenance_scene(o.scene);
@@ -235,8 +292,11 @@ int plan_cmd(const PlanCliOptions& o) {
   if (!o.truth.empty()) throw InputError("--truth", o.truth, "is the closed loop's: add --closed-loop");
   const plan::PlanResult r = plan::plan_pushes(sc, {g[0], g[1], g[2]}, po);
   const std::filesystem::path dir = o.out.empty() ? sc.name + ".plan" : o.out;
-  write_outputs(sc, r, dir);
-  if (!o.quiet) {
+  // Under mpirun every rank plans (the search is deterministic) for --check's sweep; rank 0
+  // writes and speaks.
+  const bool speaker = table_rank();
+  if (speaker) write_outputs(sc, r, dir);
+  if (!o.quiet && speaker) {
     std::cerr << std::setprecision(6) << sc.name << ": " << r.status << (r.verified ? " (verified)" : "") << ", "
               << r.pushes.size() << " push(es), tip travel " << r.tip_travel << " m, time " << r.time << " s\n"
               << "  final pose " << r.final_pose.x << " m, " << r.final_pose.y << " m, " << r.final_pose.theta
@@ -251,31 +311,8 @@ int plan_cmd(const PlanCliOptions& o) {
     if (!r.found()) std::cerr << "nanopush: not_found: " << r.message << "\n";
   }
   if (o.check > 0 && r.found()) {
-    double lo = 0, hi = 0;
-    if (!o.mu_range.empty()) {
-      const auto colon = o.mu_range.find(':');
-      if (colon == std::string::npos) throw InputError("--mu-range", o.mu_range, "must be LO:HI");
-      lo = numbers("--mu-range", o.mu_range.substr(0, colon), 1, "LO:HI, two numbers")[0];
-      hi = numbers("--mu-range", o.mu_range.substr(colon + 1), 1, "LO:HI, two numbers")[0];
-    }
-    const plan::PlanCheck c = plan::check_plan(sc, r, po, parse_noise(o.noise), o.check, lo, hi, o.seed);
-    CsvWriter w(dir / "check.csv",
-                {{"trial", "1", "trial number"}, {"final_distance", "m", "true end pose's distance from the goal"},
-                 {"final_angle", "rad", "true end pose's angle from the goal"}, {"success", "1", "1: within tolerance"}},
-                sc.name);
-    w.run_info({{"probability", c.probability}, {"wilson95_low", c.low},
-                {"wilson95_high", c.high}, {"noise", o.noise},
-                {"mu_range", o.mu_range}, {"seed", o.seed}});
-    for (int k = 0; k < c.trials; ++k) {
-      const bool ok = c.final_distance[k] <= po.tolerance_distance && c.final_angle[k] <= po.tolerance_angle;
-      w.row({double(k + 1), c.final_distance[k], c.final_angle[k], ok ? 1.0 : 0.0});
-    }
-    w.commit();
-    if (!o.quiet)
-      std::cerr << "  check: success " << c.successes << "/" << c.trials << " = " << c.probability << " (95 % interval "
-                << c.low << " to " << c.high << ") over start noise " << o.noise
-                << (o.mu_range.empty() ? std::string() : " and mu in " + o.mu_range) << ": "
-                << (dir / "check.csv").string() << "\n";
+    const int rc = check_cmd(o, sc, r, po, dir);
+    if (rc != 0) return rc;
   }
   return r.found() ? 0 : 3;
 }
@@ -331,9 +368,12 @@ RegisterCommand reg_plan{
                     "theta and theta + pi are different goals (default: the bar is symmetric under a half turn)");
        app.add_option("--check", o->check,
                       "after planning: the plan's success probability over N worlds (start pose noise from --noise, "
-                      "mu uniform in --mu-range), made open loop; check.csv")
+                      "mu uniform in --mu-range), made open loop, as a sweep of trials; check.csv, check.json")
            ->check(count(0, 1000000));
        app.add_option("--mu-range", o->mu_range, "--check: surface mu uniform in LO:HI (default: the scene's mu)");
+       app.add_option("--jobs", o->jobs,
+                      "--check: threads (default: every core; under mpirun -np R nanopush-mpi, the cores per rank)")
+           ->check(count(1, 1024));
        app.add_flag("--closed-loop", o->closed_loop,
                     "simulate the AFM loop: image (truth + noise), re-plan, push the truth, repeat (closed_loop.csv)");
        app.add_option("--truth", o->truth,

@@ -10,7 +10,6 @@
 #include <sstream>
 
 #include "nanopush/numerics/error.hpp"
-#include "nanopush/sweeps/progress.hpp"
 #include "nanopush/sweeps/sweep.hpp"
 #include "cli_checks.hpp"
 #include "registry.hpp"
@@ -21,15 +20,6 @@
 namespace nanopush::cli {
 namespace {
 namespace NANOPUSH_UNITY_ID {
-
-std::atomic<bool> g_stop{false};
-volatile std::sig_atomic_t g_signal = 0;
-
-extern "C" void on_signal(int sig) {
-  g_signal = sig;
-  g_stop.store(true);
-  std::signal(sig, SIG_DFL);  // a second signal ends the process at once
-}
 
 struct SweepOptions {
   std::string scene, task = "run", out, trajectories, shard, engine, method, law;
@@ -93,19 +83,6 @@ std::pair<std::size_t, std::size_t> parse_shard(const std::string& s) {
   } catch (const std::exception&) {
   }
   throw InputError("--shard", s, "must be i/n with 0 <= i < n <= 100000 (e.g. 0/4)");
-}
-
-/// Progress on stderr: points done/total, rate, time left (a terminal only). The rate is over
-/// the last ten seconds from the first report, which the runner makes when the work starts
-/// (sweep::ProgressRate), so setting up and resumed points do not dilute it.
-std::function<void(std::size_t, std::size_t)> progress_line(bool quiet) {
-  if (quiet || !::isatty(2)) return {};
-  auto meter = std::make_shared<sweep::ProgressRate>();
-  const auto t0 = std::chrono::steady_clock::now();
-  return [meter, t0](std::size_t done, std::size_t total) {
-    meter->sample(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), done);
-    std::fprintf(stderr, "\rsweep: %s   %s", meter->line(total).c_str(), done >= total ? "\n" : "");
-  };
 }
 
 int sweep_cmd(SweepOptions o) {
@@ -183,11 +160,9 @@ int sweep_cmd(SweepOptions o) {
   opt.jobs = o.jobs;
   if (!o.shard.empty()) std::tie(opt.shard_index, opt.shard_count) = parse_shard(o.shard);
   opt.out = o.out.empty() ? default_out : o.out;
-  opt.progress = progress_line(o.quiet);
+  opt.progress = progress_line(o.quiet, "sweep");
   opt.fixed = o.sets;
-  opt.stop = &g_stop;
-  std::signal(SIGINT, on_signal);
-  std::signal(SIGTERM, on_signal);
+  opt.stop = install_sweep_stop();
 
   // The table's format, by the extension of --out (docs/data.md): the sweep writes CSV, which
   // a .nc is converted from once complete; a grid's axes become its dimensions.
@@ -204,7 +179,7 @@ int sweep_cmd(SweepOptions o) {
       trajectories.push_back(std::filesystem::path(o.trajectories) / ("point_" + std::to_string(i) + ".csv"));
   }
   if (mpi_launched()) {
-    const int rc = run_mpi_sweep(plan, *task, opt, o.quiet, &g_signal);
+    const int rc = run_mpi_sweep(plan, *task, opt, o.quiet, sweep_signal());
     if (rc < 128 && table_rank()) (void)output.finish(axes, trajectories);
     return rc;
   }
@@ -213,7 +188,7 @@ int sweep_cmd(SweepOptions o) {
   if (!r.complete) {
     std::cerr << "sweep: interrupted: " << r.done << " of " << r.points << " points are in "
               << sweep::journal_path(opt.out).string() << "; run the same command again to resume\n";
-    return 128 + (g_signal ? static_cast<int>(g_signal) : SIGINT);
+    return 128 + (*sweep_signal() ? static_cast<int>(*sweep_signal()) : SIGINT);
   }
   const std::string where = output.finish(axes, trajectories);
   if (!o.quiet) {

@@ -2,16 +2,49 @@
 
 #include <unistd.h>
 
+#include <chrono>
+#include <cstdio>
 #include <cstdlib>
+#include <memory>
 #include <fstream>
 #include <iostream>
 #include <system_error>
 
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/outputs/io.hpp"
+#include "nanopush/sweeps/progress.hpp"
 
 namespace nanopush::cli {
 namespace fs = std::filesystem;
+
+namespace {
+std::atomic<bool> g_stop{false};
+volatile std::sig_atomic_t g_signal = 0;
+
+extern "C" void on_sweep_signal(int sig) {
+  g_signal = sig;
+  g_stop.store(true);
+  std::signal(sig, SIG_DFL);  // a second signal ends the process at once
+}
+}  // namespace
+
+const std::atomic<bool>* install_sweep_stop() {
+  std::signal(SIGINT, on_sweep_signal);
+  std::signal(SIGTERM, on_sweep_signal);
+  return &g_stop;
+}
+
+const volatile std::sig_atomic_t* sweep_signal() { return &g_signal; }
+
+std::function<void(std::size_t, std::size_t)> progress_line(bool quiet, const std::string& label) {
+  if (quiet || !::isatty(2)) return {};
+  auto meter = std::make_shared<sweep::ProgressRate>();
+  const auto t0 = std::chrono::steady_clock::now();
+  return [meter, t0, label](std::size_t done, std::size_t total) {
+    meter->sample(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), done);
+    std::fprintf(stderr, "\r%s: %s   %s", label.c_str(), meter->line(total).c_str(), done >= total ? "\n" : "");
+  };
+}
 
 SweepOutput::SweepOutput(const fs::path& out) : out_(out) {
   const std::string ext = out.extension().string();

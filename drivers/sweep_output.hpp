@@ -3,7 +3,11 @@
 // from the finished CSV (outputs/netcdf.hpp); `-` the CSV on standard output. Any other
 // extension is bad input (exit 2), refused before any work.
 #pragma once
+#include <atomic>
+#include <csignal>
+#include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -35,6 +39,19 @@ class SweepOutput {
   enum class Kind { csv, netcdf, standard_output } kind_ = Kind::csv;
   std::filesystem::path out_, table_, tmpdir_;
 };
+
+/// Progress of a sweep on stderr ("LABEL: done/total, rate, time left"), on a terminal only
+/// (an empty function when quiet or not a terminal). The rate is over the last ten seconds from
+/// the first report, which the runner makes when the work starts (sweep::ProgressRate), so
+/// setting up and resumed points do not dilute it.
+std::function<void(std::size_t, std::size_t)> progress_line(bool quiet, const std::string& label);
+
+/// SIGINT and SIGTERM stop a sweep between points (points in flight finish and are kept in the
+/// journal; a second signal ends the process at once): installs the handler and returns the
+/// flag for sweep::Options::stop.
+const std::atomic<bool>* install_sweep_stop();
+/// The signal that stopped the sweep (0: none), for run_mpi_sweep and the exit status.
+const volatile std::sig_atomic_t* sweep_signal();
 
 /// True unless this process is an MPI rank other than 0 (the rank that writes the table).
 bool table_rank();

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "nanopush/numerics/error.hpp"
+#include "nanopush/planning/check.hpp"
 #include "nanopush/planning/plan.hpp"
 #include "nanopush/scenes/scene.hpp"
 #include "nanopush/scenes/simulate.hpp"
@@ -141,6 +142,30 @@ TEST_CASE("Planning: --check gives the success probability over start-pose noise
   CHECK(noisy.low <= noisy.probability);
   CHECK(noisy.probability <= noisy.high);
   CHECK_THROWS_WITH(plan::check_plan(sc, r, o, {}, 5, 0.5, 0.1, 1), Catch::Contains("--mu-range"));
+  CHECK_THROWS_WITH(plan::check_plan(sc, r, o, {}, 0, 0, 0, 1), Catch::Contains("--check"));
+  // The trials run through the sweep engine, each from its own stream (seed, trial): the same
+  // worlds and end poses, bit for bit, on one thread or two.
+  const auto one = plan::check_plan(sc, r, o, {5e-9, 5e-9, 0.05}, 6, 0, 0, 7, 1);
+  const auto two = plan::check_plan(sc, r, o, {5e-9, 5e-9, 0.05}, 6, 0, 0, 7, 2);
+  CHECK(one.successes == two.successes);
+  CHECK(one.final_distance == two.final_distance);
+  CHECK(one.final_angle == two.final_angle);
+}
+
+TEST_CASE("Planning: the check's 95 % Wilson interval", "[plan][unit]") {
+  // Closed forms: 0 of n -> [0, z^2 / (n + z^2)]; n of n -> [n / (n + z^2), 1].
+  const double z2 = 1.959963984540054 * 1.959963984540054;
+  plan::PlanCheck none;
+  none.trials = 20;
+  plan::wilson_interval(none);
+  CHECK(none.probability == 0);
+  CHECK(none.low == 0);
+  CHECK(none.high == Approx(z2 / (20 + z2)).epsilon(1e-14));
+  plan::PlanCheck all;
+  all.trials = all.successes = 20;
+  plan::wilson_interval(all);
+  CHECK(all.low == Approx(20 / (20 + z2)).epsilon(1e-14));
+  CHECK(all.high == 1.0);
 }
 
 }  // namespace NANOPUSH_UNITY_ID

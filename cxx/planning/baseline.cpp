@@ -23,6 +23,7 @@ PlanResult plan_baseline(const Scene& scene, const Pose& goal, const PlanOptions
   PlanResult res;
   res.start = {scene.initial[kX], scene.initial[kY], scene.initial[kTheta]};
   res.goal = goal;
+  res.options = o;
   Pose pose = res.start;
   auto within = [&](const Pose& p) {
     return std::hypot(p.x - goal.x, p.y - goal.y) <= o.tolerance_distance &&

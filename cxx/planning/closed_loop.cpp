@@ -10,17 +10,7 @@
 
 namespace nanopush::plan {
 
-namespace {
-
-/// A standard normal from the generator's raw bits (Box-Muller on 53-bit uniforms): the same
-/// numbers for a seed on every platform, unlike std::normal_distribution.
-double standard_normal(std::mt19937_64& rng) {
-  const double u1 = (static_cast<double>(rng() >> 11) + 1.0) * 0x1.0p-53;  // (0, 1]
-  const double u2 = static_cast<double>(rng() >> 11) * 0x1.0p-53;
-  return std::sqrt(-2.0 * std::log(u1)) * std::cos(2 * M_PI * u2);
-}
-
-}  // namespace
+using detail::standard_normal;
 
 ClosedLoopResult closed_loop(const Scene& model, const Scene& truth, const Pose& goal, const PlanOptions& o,
                              const Noise& noise, std::uint64_t seed) {
@@ -115,48 +105,6 @@ ClosedLoopResult closed_loop(const Scene& model, const Scene& truth, const Pose&
                   (within(seen) ? "says it is there: the noise hides the rest)" : "says it is not)");
   res.planning_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return res;
-}
-
-PlanCheck check_plan(const Scene& scene, const PlanResult& plan, const PlanOptions& o, const Noise& noise, int trials,
-                     double mu_lo, double mu_hi, std::uint64_t seed) {
-  if (trials < 1 || trials > 1000000) throw InputError("--check", std::to_string(trials), "must be in [1, 1000000] trials");
-  for (double s : {noise.x, noise.y, noise.theta})
-    if (!(s >= 0 && std::isfinite(s))) throw InputError("--noise", std::to_string(s), "standard deviations must be >= 0");
-  const bool vary_mu = !(mu_lo == 0 && mu_hi == 0);
-  if (vary_mu && !(mu_lo > 0 && mu_hi >= mu_lo && mu_hi <= 10))
-    throw InputError("--mu-range", std::to_string(mu_lo) + ":" + std::to_string(mu_hi), "must be LO:HI with 0 < LO <= HI <= 10");
-  std::mt19937_64 rng(seed);
-  PlanCheck c;
-  c.trials = trials;
-  for (int k = 0; k < trials; ++k) {
-    Pose at{plan.start.x + noise.x * standard_normal(rng), plan.start.y + noise.y * standard_normal(rng),
-            plan.start.theta + noise.theta * standard_normal(rng)};
-    Scene world = scene;
-    if (vary_mu) world.set("surface.mu", mu_lo + (mu_hi - mu_lo) * static_cast<double>(rng() >> 11) * 0x1.0p-53);
-    bool ok = true;
-    for (const PlannedPush& p : plan.pushes) {
-      try {
-        const Trajectory tr = run_scene(push_scene(world, at, p));
-        const auto& r = tr.rows.back();
-        at = {r[col::x], r[col::y], r[col::theta]};
-      } catch (const InputError&) {
-        ok = false;  // the tip would touch down on the bar
-        break;
-      }
-    }
-    const double d = std::hypot(at.x - plan.goal.x, at.y - plan.goal.y);
-    const double a = std::fabs(angle_error(at.theta, plan.goal.theta, o.half_turn_symmetric));
-    c.final_distance.push_back(d);
-    c.final_angle.push_back(a);
-    if (ok && d <= o.tolerance_distance && a <= o.tolerance_angle) ++c.successes;
-  }
-  const double n = trials, p = c.successes / n, z = 1.959963984540054;
-  c.probability = p;
-  const double centre = (p + z * z / (2 * n)) / (1 + z * z / n);
-  const double half = z * std::sqrt(p * (1 - p) / n + z * z / (4 * n * n)) / (1 + z * z / n);
-  c.low = std::max(0.0, centre - half);
-  c.high = std::min(1.0, centre + half);
-  return c;
 }
 
 }  // namespace nanopush::plan

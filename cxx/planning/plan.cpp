@@ -234,6 +234,7 @@ PlanResult plan_pushes(const Scene& scene, const Pose& goal, const PlanOptions& 
   PlanResult res;
   res.start = {scene.initial[kX], scene.initial[kY], scene.initial[kTheta]};
   res.goal = goal;
+  res.options = o;
 
   // Candidates: the long faces at offsets across their length (off-centre pushes turn the bar
   // about the iCOR of chapters 4-5, central ones translate it), the short faces at three.

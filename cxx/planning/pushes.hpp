@@ -1,6 +1,8 @@
 // What the planners share (internal to the planning layer): the faces of the bar, the tip's
 // start for a push on a face, and one trial push by the quasi-static model.
 #pragma once
+#include <cmath>
+#include <random>
 #include <vector>
 
 #include "nanopush/models/tip_push.hpp"
@@ -38,6 +40,14 @@ void verify(const Scene& scene, PlanResult& res, const PlanOptions& o);
 
 /// The checks every planner makes of its task (InputError naming the option).
 void check_task(const Scene& scene, const Pose& goal, const PlanOptions& o);
+
+/// A standard normal from the generator's raw bits (Box-Muller on 53-bit uniforms): the same
+/// numbers for a seed on every platform, unlike std::normal_distribution.
+inline double standard_normal(std::mt19937_64& rng) {
+  const double u1 = (static_cast<double>(rng() >> 11) + 1.0) * 0x1.0p-53;  // (0, 1]
+  const double u2 = static_cast<double>(rng() >> 11) * 0x1.0p-53;
+  return std::sqrt(-2.0 * std::log(u1)) * std::cos(2 * M_PI * u2);
+}
 
 /// True once the tip has touched the bar at or before row r.
 inline bool pushed(const tip::TipRow& r) { return r.contact != tip::ContactMode::none || r.work_tip != 0; }

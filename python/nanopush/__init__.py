@@ -67,7 +67,7 @@ __all__ = [
     "Scene", "presets", "scenes_dir", "scene_keys", "run", "compare", "Result", "Comparison",
     "friction_wrench", "friction_from_velocity", "Wrench", "icor", "estimate_mu", "MuEstimate",
     "MuEstimates", "estimate_mu_batch", "MuBatch", "fit", "FitResult", "synthesize",
-    "sweep", "SweepResult", "SweepFile", "plan", "PlanResult", "InputError", "SolverError", "__version__",
+    "sweep", "SweepResult", "SweepFile", "plan", "PlanResult", "check_plan", "PlanCheck", "InputError", "SolverError", "__version__",
 ]
 
 # ---- presets ----------------------------------------------------------------------------
@@ -272,6 +272,22 @@ def plan(scene, goal, *, tolerance=(1e-9, 0.01), objective="pushes", max_pushes=
     return _nanopush._plan(_as_scene(scene), goal, tolerance, str(objective), max_pushes, half_turn_symmetric, baseline)
 
 
+def check_plan(plan_result, scene, trials, *, noise=(0.0, 0.0, 0.0), mu_range=None, seed=1, jobs=None,
+               progress=None):
+    """How often `plan_result` (from nanopush.plan on `scene`) reaches its goal when made open
+    loop in `trials` worlds that are not the model's: the start pose plus Gaussian noise
+    `noise` = (sx [m], sy [m], stheta [rad]), the surface mu uniform in `mu_range` = (lo, hi)
+    (None: the scene's), trial k drawn from its own stream (seed, k); the numbers of
+    ``nanopush plan ... --check N`` (docs/planning.md). The trials run through the sweep
+    engine on `jobs` threads (None: every core), with `progress` and Ctrl-C as in
+    nanopush.sweep. Returns a PlanCheck: the per-trial table (a SweepResult: start_x, ...,
+    final_distance, final_angle, success) with ``probability``, ``successes``, ``trials`` and
+    ``interval`` (the 95 % Wilson interval)."""
+    names, units, data, summary = plan_result._check(_as_scene(scene), trials, noise, mu_range, seed,
+                                                     _count("jobs", 0 if jobs is None else jobs), progress)
+    return PlanCheck(names, units, data, summary)
+
+
 def compare(scene, method="faithful", rtol=None, atol=None, tolerance=None, law=None):
     """Run a scene with both engines, the C++ (``method``: faithful, modern or dop853) and
     the F77, under ``law`` (thesis or printed, the laws both implement; default the scene's,
@@ -347,6 +363,20 @@ class SweepResult:
 
     def __repr__(self):
         return f"<nanopush.SweepResult {len(self)} points, {self.failed} failed, columns {self.columns}>"
+
+
+class PlanCheck(SweepResult):
+    """nanopush.check_plan's answer: the per-trial table (a SweepResult) and its summary,
+    ``trials``, ``successes``, ``probability`` and ``interval`` (95 % Wilson)."""
+
+    def __init__(self, names, units, data, summary):
+        super().__init__(names, units, data)
+        self.trials, self.successes = int(summary["trials"]), int(summary["successes"])
+        self.probability, self.interval = float(summary["probability"]), tuple(summary["interval"])
+
+    def __repr__(self):
+        return (f"<nanopush.PlanCheck {self.successes}/{self.trials} reached, probability {self.probability:.3g} "
+                f"(95 % interval {self.interval[0]:.3g} to {self.interval[1]:.3g})>")
 
 
 class SweepFile:

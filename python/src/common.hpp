@@ -170,6 +170,20 @@ std::array<py::array_t<double>, NOut> broadcast_apply(const std::array<py::handl
   return out;
 }
 
+}  // namespace nanopush::python
+
+namespace nanopush::sweep {
+struct Plan;
+class Task;
+}  // namespace nanopush::sweep
+
+namespace nanopush::python {
+
+/// The sweep engine in memory with Python's progress callable and Ctrl-C (sweep.cpp): every
+/// point of `plan` evaluated by `task` on `jobs` threads (0: every core), returned as
+/// (column names, units, columns as NumPy arrays), what nanopush.SweepResult is built from.
+py::tuple sweep_in_memory(const sweep::Plan& plan, const sweep::Task& task, unsigned jobs, const py::object& progress);
+
 // Registration, one function per topic (module.cpp calls them in order).
 void register_errors(py::module_& m);
 void register_scenes(py::module_& m);

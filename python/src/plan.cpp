@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "nanopush/planning/check.hpp"
 #include "nanopush/planning/plan.hpp"
 
 namespace nanopush::python {
@@ -70,6 +71,49 @@ plan::PlanResult plan_scene(const Scene& scene, const py::object& goal, const py
   return base ? plan::plan_baseline(scene, g, o) : plan::plan_pushes(scene, g, o);
 }
 
+/// PlanResult._check: plan --check in memory (planning/check.hpp): (names, units, columns,
+/// summary) with the summary's trials, successes, probability and Wilson interval.
+py::tuple check_plan(const plan::PlanResult& r, const Scene& scene, const py::object& trials, const py::object& noise,
+                     const py::object& mu_range, const py::object& seed, const py::object& jobs,
+                     const py::object& progress) {
+  const double n = arg_double(trials, "trials");
+  if (!(n >= 1 && n <= 1000000 && n == std::floor(n)))
+    throw InputError("trials", py::repr(trials).cast<std::string>(), "must be a whole number in [1, 1000000]");
+  plan::CheckWorlds w;
+  const plan::Pose sd = pose_arg(noise, "noise");
+  w.noise = {sd.x, sd.y, sd.theta};
+  if (!plain_value(mu_range, "mu_range").is_none()) {
+    const py::object m = plain_value(mu_range, "mu_range");
+    if (py::isinstance<py::str>(m) || !py::isinstance<py::sequence>(m) || py::len(m) != 2)
+      throw InputError("mu_range", py::repr(m).cast<std::string>(), "must be (lo, hi) or None (the scene's mu)");
+    w.mu_lo = arg_double(m.cast<py::sequence>()[0], "mu_range[0]");
+    w.mu_hi = arg_double(m.cast<py::sequence>()[1], "mu_range[1]");
+  }
+  const double s = arg_double(seed, "seed");
+  if (!(s >= 0 && s <= 1e12 && s == std::floor(s)))
+    throw InputError("seed", py::repr(seed).cast<std::string>(), "must be a whole number in [0, 1e12]");
+  w.seed = static_cast<std::uint64_t>(s);
+  const double j = arg_double(jobs, "jobs");
+  if (!(j >= 0 && j <= 1024 && j == std::floor(j)))
+    throw InputError("jobs", py::repr(jobs).cast<std::string>(), "must be a whole number in [0, 1024] (0: every core)");
+  const sweep::Plan points = plan::check_points(static_cast<int>(n));
+  const auto task = plan::make_check_task(scene, r, r.options, w);
+  const py::tuple t = sweep_in_memory(points, *task, static_cast<unsigned>(j), progress);
+  plan::PlanCheck c;
+  const auto success = t[2].cast<py::dict>()["success"].cast<py::array_t<double>>();
+  for (py::ssize_t i = 0; i < success.size(); ++i) {
+    ++c.trials;
+    if (success.at(i) == 1) ++c.successes;
+  }
+  plan::wilson_interval(c);
+  py::dict summary;
+  summary["trials"] = c.trials;
+  summary["successes"] = c.successes;
+  summary["probability"] = c.probability;
+  summary["interval"] = py::make_tuple(c.low, c.high);
+  return py::make_tuple(t[0], t[1], t[2], summary);
+}
+
 }  // namespace
 
 void register_plan(py::module_& m) {
@@ -117,6 +161,8 @@ tip_travel [m], time [s], forward_runs, planning_seconds)doc")
           py::arg("scene"), py::arg("k"),
           "The scene that replays push k (from the pose push k-1 left): push.mode = tip and the push's tip keys; "
           "nanopush.run(it) is the forward run that verified it.")
+      .def("_check", &check_plan, py::arg("scene"), py::arg("trials"), py::arg("noise"), py::arg("mu_range"),
+           py::arg("seed"), py::arg("jobs"), py::arg("progress"))
       .def("__repr__", [](const plan::PlanResult& r) {
         return "<nanopush.PlanResult " + r.status + (r.verified ? " (verified)" : "") + ", " +
                std::to_string(r.pushes.size()) + " pushes, final distance " + py::repr(py::float_(r.final_distance)).cast<std::string>() +

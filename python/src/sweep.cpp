@@ -242,8 +242,8 @@ py::tuple run_sweep(const std::string& task_name, const py::object& scene_obj, c
   (void)sweep::table_columns(plan, *task);  // every key and value checked before any work
   if (!progress.is_none() && !PyCallable_Check(progress.ptr()))
     throw InputError("progress", py::repr(progress).cast<std::string>(), "must be a callable progress(done, total)");
-  Poll poll(progress);
   if (!out.is_none()) {  // streamed to a file by the runner, with its journal (resumable)
+    Poll poll(progress);
     sweep::Options o;
     o.jobs = jobs;
     o.out = arg_text(out, "out");
@@ -264,23 +264,30 @@ py::tuple run_sweep(const std::string& task_name, const py::object& scene_obj, c
     d["complete"] = r.complete;
     return py::make_tuple(py::none(), py::none(), d);
   }
+  return sweep_in_memory(plan, *task, jobs, progress);
+}
+
+}  // namespace
+
+py::tuple sweep_in_memory(const sweep::Plan& plan, const sweep::Task& task, unsigned jobs, const py::object& progress) {
+  if (!progress.is_none() && !PyCallable_Check(progress.ptr()))
+    throw InputError("progress", py::repr(progress).cast<std::string>(), "must be a callable progress(done, total)");
+  Poll poll(progress);
   std::vector<std::vector<std::string>> rows;
   {
     py::gil_scoped_release release;
-    rows = evaluate_polled(plan, *task, jobs, poll);
+    rows = evaluate_polled(plan, task, jobs, poll);
   }
   poll.rethrow();  // Ctrl-C: KeyboardInterrupt, or what the progress callable raised
-  const Columns cols = sweep::table_columns(plan, *task);
+  const Columns cols = sweep::table_columns(plan, task);
   py::list names;
   py::dict units;
   for (const auto& c : cols) {
     names.append(c.name);
     units[py::str(c.name)] = c.unit;
   }
-  return py::make_tuple(names, units, table(plan, *task, rows));
+  return py::make_tuple(names, units, table(plan, task, rows));
 }
-
-}  // namespace
 
 void register_sweep(py::module_& m) {
   m.def("_sweep", &run_sweep, py::arg("task"), py::arg("scene"), py::arg("axes"), py::arg("points"), py::arg("fixed"),

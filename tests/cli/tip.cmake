@@ -24,7 +24,9 @@ set_tests_properties(cli.tip.bad_input PROPERTIES ENVIRONMENT "NANOPUSH_SCENES=$
 add_test(NAME cli.plan.found
          COMMAND bash -c "set -e; d=\"$1\"; rm -rf \"$d\"; \"$0\" plan tip_push_nanorod --goal 60e-9,40e-9,0.3 --tolerance 2e-9,0.02 \
 --check 5 --noise x=0.2e-9,theta=0.001 --mu-range 0.05:0.2 --out \"$d\" 2> \"$d.err\"; grep -q 'found (verified)' \"$d.err\"; \
-grep -q 'check: success ' \"$d.err\"; head -1 \"$d/check.csv\" | grep -qx 'trial,final_distance,final_angle,success'; \
+grep -q 'check: success ' \"$d.err\"; \
+head -1 \"$d/check.csv\" | grep -qx 'point,trial,start_x,start_y,start_theta,mu,pushes_made,final_x,final_y,final_theta,final_distance,final_angle,success,status,message'; \
+test -s \"$d/check.schema.json\"; grep -q '\"trials\": 5' \"$d/check.json\"; test ! -e \"$d/check.csv.journal\"; \
 head -1 \"$d/plan.csv\" | grep -qx 'push,start_x,start_y,direction,speed,travel,x_end,y_end,theta_end'; \
 test -s \"$d/plan.json\"; test -s \"$d/tip_path.csv\"; test -s \"$d/plan.png\"; test -s \"$d/plan.schema.json\"; \
 echo plan: ok" ${_np} ${CMAKE_CURRENT_BINARY_DIR}/cli_plan_found)
@@ -67,3 +69,18 @@ grep -q 'Closed loop.*reached [0-2]/2' \"$d/plan_benchmark.md\"; test \"$(wc -l 
 head -1 \"$d/plan_closed_loop.csv\" | grep -qx 'task,bar,mu_truth,reached,pushes,tip_travel,planning_time,final_distance,final_angle'; \
 test -s \"$d/plan_benchmark.csv\"; echo bench-plan: ok" ${_np} ${CMAKE_CURRENT_BINARY_DIR}/cli_bench_plan)
 set_tests_properties(cli.bench.plan_quick PROPERTIES PASS_REGULAR_EXPRESSION "bench-plan: ok")
+
+# plan --check through the sweep engine: two threads, and two MPI ranks of nanopush-mpi, write
+# the table of one thread byte for byte (each trial draws its world from its own stream).
+if(NANOPUSH_MPI)
+  add_test(NAME cli.plan.check_threads_mpi
+           COMMAND bash -c "set -e; d=\"$1\"; rm -rf \"$d\"; mkdir -p \"$d\"; \
+a=(plan tip_push_nanorod --goal 60e-9,40e-9,0.3 --tolerance 2e-9,0.02 --check 8 --noise x=1e-9,theta=0.01 --seed 5 --quiet); \
+\"$0\" \"\${a[@]}\" --jobs 1 --out \"$d/one\"; \"$0\" \"\${a[@]}\" --jobs 2 --out \"$d/two\"; \
+\"$2\" --oversubscribe -np 2 \"$(dirname \"$0\")/nanopush-mpi\" \"\${a[@]}\" --jobs 1 --out \"$d/mpi\"; \
+cmp \"$d/one/check.csv\" \"$d/two/check.csv\"; cmp \"$d/one/check.csv\" \"$d/mpi/check.csv\"; \
+cmp \"$d/one/check.json\" \"$d/mpi/check.json\"; cmp \"$d/one/plan.csv\" \"$d/mpi/plan.csv\"; \
+grep -q '\"ranks\": 2' \"$d/mpi/check.schema.json\"; echo check: ok" ${_np} ${CMAKE_CURRENT_BINARY_DIR}/cli_plan_check ${MPIEXEC_EXECUTABLE})
+  set_tests_properties(cli.plan.check_threads_mpi PROPERTIES PASS_REGULAR_EXPRESSION "check: ok"
+    ENVIRONMENT "NANOPUSH_SCENES=${NANOPUSH_SCENES};OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1;OMPI_MCA_rmaps_base_oversubscribe=1")
+endif()

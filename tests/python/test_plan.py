@@ -66,3 +66,21 @@ def test_bad_input_names_the_argument():
     r = nanopush.plan(SCENE, GOAL, tolerance=TOL)
     with pytest.raises(nanopush.InputError, match="k"):
         r.push_scene(nanopush.Scene.preset(SCENE), len(r.pushes))
+
+
+def test_check_plan_equals_the_command_line(cli, tmp_path):
+    r = nanopush.plan(SCENE, GOAL, tolerance=TOL)
+    c = nanopush.check_plan(r, SCENE, 6, noise=(1e-9, 1e-9, 0.01), seed=5, jobs=2)
+    cli("plan", SCENE, "--goal", ",".join(map(repr, GOAL)), "--tolerance", ",".join(map(repr, TOL)),
+        "--check", "6", "--noise", "x=1e-9,theta=0.01", "--seed", "5", "--out", tmp_path / "p", "--quiet")
+    header, rows = read_csv(tmp_path / "p" / "check.csv")
+    assert c.columns == header
+    for name in ("start_x", "start_theta", "final_distance", "final_angle"):
+        col = header.index(name)
+        assert np.array_equal(c[name], np.array([float(row[col]) for row in rows]))  # bit for bit
+    assert c.trials == 6 and c.successes == int(np.sum(c["success"]))
+    assert c.interval[0] <= c.probability <= c.interval[1]
+    with pytest.raises(nanopush.InputError, match="trials"):
+        nanopush.check_plan(r, SCENE, 0)
+    with pytest.raises(nanopush.InputError, match="mu-range"):
+        nanopush.check_plan(r, SCENE, 2, mu_range=(0.5, 0.1))

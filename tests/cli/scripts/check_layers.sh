@@ -26,7 +26,7 @@ allowed() {  # the cxx layers a cxx layer may include
     outputs)  echo "numerics models scenes outputs" ;;
     sweeps)   echo "numerics models scenes engines outputs sweeps" ;;
     fitting)  echo "numerics models scenes engines outputs fitting" ;;
-    planning) echo "numerics models scenes planning" ;;
+    planning) echo "numerics models scenes engines outputs sweeps planning" ;;
     front)    echo "$layers" ;;   # bindings, python, drivers, tests
   esac
 }

@@ -56,6 +56,7 @@ struct PlanResult {
   double tip_travel = 0;      ///< summed over pushes [m]
   double time = 0;            ///< summed push durations [s]
   long forward_runs = 0;      ///< model runs the search took
+  PlanOptions options;        ///< what the plan was asked for (tolerance, symmetry, ...)
   double planning_seconds = 0;
   [[nodiscard]] bool found() const { return status == "found"; }
 };
@@ -121,10 +122,12 @@ struct PlanCheck {
 /// Monte Carlo over `trials` worlds: the bar starts at the plan's start plus seeded noise, the
 /// surface's mu is uniform in [mu_lo, mu_hi] (mu_lo = mu_hi = 0: the scene's), and the plan's
 /// pushes are made open loop (the tip paths fixed in world axes). A trial succeeds when the bar
-/// ends within the tolerance. A push that cannot start (the tip would touch down on the bar)
-/// fails its trial.
+/// ends within the tolerance. A push that cannot start (the tip would touch down on the bar), or
+/// that the model cannot follow, fails its trial. The trials run through the sweep engine on
+/// `jobs` threads (0: every core; planning/check.hpp), each from its own random stream, so the
+/// result does not depend on `jobs`.
 PlanCheck check_plan(const Scene& scene, const PlanResult& plan, const PlanOptions& options, const Noise& noise,
-                     int trials, double mu_lo, double mu_hi, std::uint64_t seed);
+                     int trials, double mu_lo, double mu_hi, std::uint64_t seed, unsigned jobs = 0);
 
 /// The scene that replays push `p` from pose `from` (push.mode = tip and the push's tip keys).
 Scene push_scene(const Scene& scene, const Pose& from, const PlannedPush& p);
