@@ -335,7 +335,7 @@ RegisterCommand reg{{"icor",
                        f->add_option("--mu", fo->mu, "friction coefficient for 4.7, 4.8, 4.10, 5.2 [-]")->capture_default_str();
                        f->add_option("--force-ratio", fo->force_ratio, "push force for eq 4.7 as F/(mu W) [-]")
                            ->capture_default_str();
-                       f->add_option("--out", fo->out, "CSV file (default: standard output)");
+                       f->add_option("--out", fo->out, "CSV file, or FILE.nc: netCDF-4 (default: standard output)");
                        f->callback([action, fo] { *action = [fo] { return run_formulas(*fo); }; });
 
                        auto* r = app.add_subcommand("roots", "roots of the constrained cubic (5.4): Brent and "
@@ -347,7 +347,7 @@ RegisterCommand reg{{"icor",
                        r->add_option("--yn-min", ro->yn_min, "sweep start [m]")->capture_default_str();
                        r->add_option("--yn-max", ro->yn_max, "sweep end [m] (default b = L/2)");
                        r->add_flag("--log", ro->log, "logarithmic sweep");
-                       r->add_option("--out", ro->out, "CSV file (default: standard output)");
+                       r->add_option("--out", ro->out, "CSV file, or FILE.nc: netCDF-4 (default: standard output)");
                        r->callback([action, ro] { *action = [ro] { return run_roots(*ro); }; });
 
                        auto* m = app.add_subcommand(
@@ -394,7 +394,7 @@ RegisterCommand reg{{"icor",
                                      "automatic | bulirsch-stoer | cvode (automatic: CVODE below 1.09 F_min, else BS)")
                            ->capture_default_str();
                        d->add_option("--rtol", dopt->rtol, "relative tolerance [-]")->capture_default_str();
-                       d->add_option("--out", dopt->out, "CSV file (default: standard output)");
+                       d->add_option("--out", dopt->out, "CSV file, or FILE.nc: netCDF-4 (default: standard output)");
                        d->callback([action, dopt] { *action = [dopt] { return run_dynamic(*dopt); }; });
 
                        auto* q = app.add_subcommand("rectangle",
@@ -407,7 +407,7 @@ RegisterCommand reg{{"icor",
                        q->add_option("--n", qo->n, "number of push points")->check(count(1, kMaxCount))->capture_default_str();
                        q->add_option("--yn-min", qo->yn_min, "first push distance from the CM [m]")->capture_default_str();
                        q->add_option("--yn-max", qo->yn_max, "last push distance [m] (default b = L/2)");
-                       q->add_option("--out", qo->out, "CSV file (default: standard output)");
+                       q->add_option("--out", qo->out, "CSV file, or FILE.nc: netCDF-4 (default: standard output)");
                        q->callback([action, qo] { *action = [qo] { return run_rectangle(*qo); }; });
 
                        return [action] { return (*action) ? (*action)() : 0; };

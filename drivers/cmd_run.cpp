@@ -84,6 +84,8 @@ int run_cmd(const RunOptions& o) {
   rs.accuracy = o.accuracy;
   if (o.no_estimate) rs.error_estimate = false;
   check_engine_method(sc, rs);
+  // An output name of unknown extension is refused before the run (docs/data.md).
+  if (!o.out.empty() && o.out != "-") (void)SweepOutput(o.out);
   const auto t0 = std::chrono::steady_clock::now();
   const Trajectory tr = run_engine(sc, rs);
   const double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -17,6 +17,7 @@
 #include "nanopush/outputs/io.hpp"
 #include "nanopush/outputs/plot.hpp"
 #include "registry.hpp"
+#include "sweep_output.hpp"
 
 namespace nanopush::cli::icor_cli {
 
@@ -53,10 +54,13 @@ inline std::string cell(const std::optional<double>& v) { return v ? csv_number(
 
 /// A CSV whose cells may be empty (a branch that does not exist), with its sidecar
 /// (docs/outputs.md): written atomically, or to standard output (no sidecar) when the path is
-/// empty or "-".
+/// empty or "-"; FILE.nc is netCDF-4 over a `point` dimension (docs/data.md). Any other
+/// extension is refused when the table is made, before any work.
 class Table {
  public:
-  Table(const std::filesystem::path& path, Columns columns) : path_(path), columns_(std::move(columns)) {}
+  Table(const std::filesystem::path& path, Columns columns) : path_(path), columns_(std::move(columns)) {
+    if (!to_stdout()) (void)SweepOutput(path_);
+  }
   void row(std::vector<std::string> cells) {
     if (cells.size() != columns_.size())
       throw std::logic_error(path_.string() + ": row of " + std::to_string(cells.size()) + " cells for " +
@@ -65,11 +69,17 @@ class Table {
   }
   std::string text() const { return csv_document(columns_, rows_); }
   void write() const {
-    if (path_.empty() || path_ == "-") std::cout << text();
-    else write_csv_atomic(path_, columns_, rows_);
+    if (to_stdout()) {
+      std::cout << text();
+      return;
+    }
+    const SweepOutput out(path_);  // the CSV itself, or FILE.nc.csv converted into FILE.nc
+    write_csv_atomic(out.table(), columns_, rows_);
+    (void)out.finish({});
   }
 
  private:
+  [[nodiscard]] bool to_stdout() const { return path_.empty() || path_ == "-"; }
   std::filesystem::path path_;
   Columns columns_;
   std::vector<std::vector<std::string>> rows_;

@@ -148,3 +148,23 @@ def test_run_out_netcdf(tmp_path):
         assert same_bits(ds[field["name"]].values, cols[field["name"]]), field["name"]
         assert ds[field["name"]].attrs["units"] == field["unit"]
     assert ds.attrs["run_outcome"] == "ok" and ds.attrs["run_engine"]
+
+
+def test_icor_table_out_netcdf(tmp_path):
+    """Every table written by a command's --out FILE takes FILE.nc (here `icor formulas`): the
+    CSV's columns over `point`, bit for bit; an unknown extension is refused, nothing written."""
+    for out in ("f.csv", "f.nc"):
+        p = subprocess.run([CLI, "icor", "formulas", "--n", "7", "--out", out], capture_output=True, text=True,
+                           cwd=tmp_path)
+        assert p.returncode == 0, p.stderr
+    assert sorted(q.name for q in tmp_path.iterdir()) == ["f.csv", "f.nc", "f.schema.json"]
+    cols, schema = read_csv(tmp_path / "f.csv")
+    ds = xr.open_dataset(tmp_path / "f.nc")
+    assert list(ds.sizes) == ["point"] and ds.sizes["point"] == 7
+    for field in schema["fields"]:
+        if field["type"] == "number":
+            assert same_bits(ds[field["name"]].values, cols[field["name"]]), field["name"]
+            assert ds[field["name"]].attrs["units"] == field["unit"]
+    p = subprocess.run([CLI, "icor", "formulas", "--out", "f.parquet"], capture_output=True, text=True, cwd=tmp_path)
+    assert p.returncode == 2 and "unknown extension '.parquet'" in p.stderr
+    assert not (tmp_path / "f.parquet").exists()
