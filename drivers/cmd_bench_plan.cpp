@@ -56,8 +56,10 @@ double median(std::vector<double> v) {
 }
 
 /// The closed loop a lab runs (plan::closed_loop) on the first o.closed_loop tasks: the truth's
-/// surface mu uniform within +-30 % of the model's, imaging noise o.noise_*, a tolerance of three
-/// noise sigmas (a true pose cannot be judged finer than the images show it). Writes
+/// surface mu uniform within +-30 % of the model's and its tip friction uniform in 0-0.3 (the
+/// model assumes a frictionless tip), imaging noise o.noise_*, a tolerance of three noise sigmas
+/// (a true pose cannot be judged finer than the images show it). Each task runs twice: re-fitting
+/// the tip friction after every push (the loop's default) and keeping the model's. Writes
 /// plan_closed_loop.csv; returns the Markdown paragraph.
 std::string closed_loop_bench(const BenchPlanOptions& o, const Scene (&bars)[2], const std::vector<plan::Pose>& goals) {
   const int n = std::min<int>(o.closed_loop, static_cast<int>(goals.size()));
@@ -72,28 +74,39 @@ std::string closed_loop_bench(const BenchPlanOptions& o, const Scene (&bars)[2],
               {{"task", "1", "task number (the open-loop task of the same number)"},
                text_column("bar", "nanobar (100 x 55 nm) or nanorod (590 x 27 nm)"),
                {"mu_truth", "1", "the true surface mu (the model's is 0.1)"},
+               {"tip_mu_truth", "1", "the true tip friction (the model's is 0)"},
+               {"tip_mu_fit", "1", "the model's tip friction at the end, re-fitted along the loop"},
                {"reached", "1", "1: the true pose within the tolerance"},
                {"pushes", "1", "pushes made"},
+               {"reached_kept", "1", "the same task keeping the model's tip friction: 1 reached"},
+               {"pushes_kept", "1", "pushes made keeping the model's tip friction"},
                {"tip_travel", "m", "summed tip travel"},
                {"planning_time", "s", "wall time of the re-plans"},
                {"final_distance", "m", "distance of the true final centre from the goal"},
                {"final_angle", "rad", "angle of the true final pose from the goal"}},
               "bench-plan");
-  int reached = 0, unsimulated = 0;
-  std::vector<double> pushes, planning;
+  int reached = 0, reached_kept = 0, unsimulated = 0;
+  std::vector<double> pushes, pushes_kept, planning, fit_error;
   for (int k = 0; k < n; ++k) {
     const bool rod = k % 2 == 1;
     Scene truth = bars[rod];
     const double mu = 0.1 * (0.7 + 0.6 * uniform(rng));
-    truth.set("surface.mu", mu);
-    const plan::ClosedLoopResult r =
-        plan::closed_loop(bars[rod], truth, goals[static_cast<std::size_t>(k)], po, noise, o.seed + static_cast<std::uint64_t>(k));
+    const double tip_mu = 0.3 * uniform(rng);
+    truth.set({{"surface.mu", mu}, {"tip.mu", tip_mu}});
+    const auto& goal = goals[static_cast<std::size_t>(k)];
+    const std::uint64_t seed = o.seed + static_cast<std::uint64_t>(k);
+    const plan::ClosedLoopResult r = plan::closed_loop(bars[rod], truth, goal, po, noise, seed);
+    const plan::ClosedLoopResult kept = plan::closed_loop(bars[rod], truth, goal, po, noise, seed, plan::Refit{false});
+    reached_kept += kept.reached() ? 1 : 0;
+    pushes_kept.push_back(static_cast<double>(kept.steps.size()));
+    fit_error.push_back(std::fabs(r.tip_mu - tip_mu));
     reached += r.reached() ? 1 : 0;
     unsimulated += r.unsimulated;
     pushes.push_back(static_cast<double>(r.steps.size()));
     planning.push_back(r.planning_seconds);
-    w.cells({csv_number(k + 1), rod ? "nanorod" : "nanobar", csv_number(mu), r.reached() ? "1" : "0",
-             csv_number(static_cast<double>(r.steps.size())), csv_number(r.tip_travel), csv_number(r.planning_seconds),
+    w.cells({csv_number(k + 1), rod ? "nanorod" : "nanobar", csv_number(mu), csv_number(tip_mu), csv_number(r.tip_mu),
+             r.reached() ? "1" : "0", csv_number(static_cast<double>(r.steps.size())), kept.reached() ? "1" : "0",
+             csv_number(static_cast<double>(kept.steps.size())), csv_number(r.tip_travel), csv_number(r.planning_seconds),
              csv_number(r.final_distance), csv_number(r.final_angle)});
     std::cerr << "\rbench-plan: closed loop " << k + 1 << "/" << n << std::flush;
   }
@@ -101,10 +114,12 @@ std::string closed_loop_bench(const BenchPlanOptions& o, const Scene (&bars)[2],
   w.commit();
   std::ostringstream md;
   md << std::setprecision(3) << "\n**Closed loop** (the first " << n << " tasks; the true surface mu uniform in 0.07-0.13, "
-     << "the model's 0.1; imaging noise " << o.noise_distance * 1e9 << " nm and " << o.noise_angle
-     << " rad; tolerance " << po.tolerance_distance * 1e9 << " nm and " << po.tolerance_angle << " rad): reached " << reached
-     << "/" << n << " (" << 100.0 * reached / n << " %), median pushes " << median(pushes) << ", median planning "
-     << median(planning) << " s; " << unsimulated << " planned pushes could not be made on the true bar (the tip would "
+     << "the model's 0.1; the true tip friction uniform in 0-0.3, the model's 0; imaging noise " << o.noise_distance * 1e9
+     << " nm and " << o.noise_angle << " rad; tolerance " << po.tolerance_distance * 1e9 << " nm and " << po.tolerance_angle
+     << " rad): re-fitting the tip friction after each push, reached " << reached << "/" << n << " ("
+     << 100.0 * reached / n << " %), median pushes " << median(pushes) << ", median planning " << median(planning)
+     << " s, median |tip mu fitted - true| " << median(fit_error) << "; keeping the model's tip friction, reached "
+     << reached_kept << "/" << n << ", median pushes " << median(pushes_kept) << "; " << unsimulated << " planned pushes could not be made on the true bar (the tip would "
      << "start inside it, or the model could not follow the push there) and the bar was imaged again. "
      << "plan_closed_loop.csv has each task.\n";
   return md.str();

@@ -28,6 +28,7 @@ struct PlanCliOptions {
   int max_pushes = 10;
   bool distinguish_ends = false;
   bool closed_loop = false;
+  bool no_refit = false;
   std::string truth, noise = "x=0,theta=0";
   std::uint64_t seed = 1;
   int check = 0;
@@ -192,7 +193,9 @@ plan::Noise parse_noise(const std::string& text) {
 int closed_loop_cmd(const PlanCliOptions& o, const Scene& sc, const plan::Pose& goal, const plan::PlanOptions& po) {
   const Scene truth = truth_scene(sc, o.truth);
   const plan::Noise noise = parse_noise(o.noise);
-  const plan::ClosedLoopResult r = plan::closed_loop(sc, truth, goal, po, noise, o.seed);
+  plan::Refit refit;
+  refit.enabled = !o.no_refit;
+  const plan::ClosedLoopResult r = plan::closed_loop(sc, truth, goal, po, noise, o.seed, refit);
   const std::filesystem::path dir = o.out.empty() ? sc.name + ".plan" : o.out;
   std::filesystem::create_directories(dir);
   CsvWriter w(dir / "closed_loop.csv",
@@ -200,20 +203,26 @@ int closed_loop_cmd(const PlanCliOptions& o, const Scene& sc, const plan::Pose& 
                {"seen_theta", "rad", "imaged orientation"}, {"true_x", "m", "true x when imaged"}, {"true_y", "m", "true y"},
                {"true_theta", "rad", "true orientation"}, {"start_x", "m", "tip start x of the push made"},
                {"start_y", "m", "tip start y"}, {"direction", "rad", "tip direction"}, {"travel", "m", "tip travel"},
-               {"plan_pushes", "1", "pushes the re-plan from this image needed"}},
+               {"plan_pushes", "1", "pushes the re-plan from this image needed"},
+               {"tip_mu", "1", "the model's tip friction the push was planned with (re-fitted after each push; empty: not a tip scene)"}},
               sc.name);
   w.run_info({{"status", r.status}, {"final_distance_m", r.final_distance},
-              {"final_angle_rad", r.final_angle}, {"seed", o.seed}, {"pushes_not_made", r.unsimulated}});
+              {"final_angle_rad", r.final_angle}, {"seed", o.seed}, {"pushes_not_made", r.unsimulated},
+              {"tip_mu_final", r.tip_mu < 0 ? std::nan("") : r.tip_mu}, {"refit", !o.no_refit}});
   int k = 1;
   for (const auto& s : r.steps)
     w.row({double(k++), s.observed.x, s.observed.y, s.observed.theta, s.truth.x, s.truth.y, s.truth.theta, s.push.start_x,
-           s.push.start_y, s.push.direction, s.push.travel, double(s.plan_pushes)});
+           s.push.start_y, s.push.direction, s.push.travel, double(s.plan_pushes), s.tip_mu < 0 ? std::nan("") : s.tip_mu});
   w.commit();
   if (!o.quiet) {
     std::cerr << std::setprecision(6) << sc.name << " closed loop: " << r.status << ", " << r.steps.size()
               << " push(es), tip travel " << r.tip_travel << " m, time " << r.time << " s, planning " << r.planning_seconds
               << " s\n  true final pose " << r.final_truth.x << " m, " << r.final_truth.y << " m, " << r.final_truth.theta
-              << " rad: " << r.final_distance << " m and " << r.final_angle << " rad from the goal\n  steps: "
+              << " rad: " << r.final_distance << " m and " << r.final_angle << " rad from the goal\n"
+              << (r.tip_mu >= 0 ? "  model's tip friction: " + std::to_string(r.tip_mu) +
+                                      (o.no_refit ? " (kept)\n" : " (re-fitted to the images)\n")
+                                : std::string())
+              << "  steps: "
               << (dir / "closed_loop.csv").string() << "\n";
     if (r.unsimulated)
       std::cerr << "  " << r.unsimulated << " planned push(es) not made: the tip would start inside the true bar, or the "
@@ -376,6 +385,8 @@ RegisterCommand reg_plan{
            ->check(count(1, 1024));
        app.add_flag("--closed-loop", o->closed_loop,
                     "simulate the AFM loop: image (truth + noise), re-plan, push the truth, repeat (closed_loop.csv)");
+       app.add_flag("--no-refit", o->no_refit,
+                    "closed loop: keep the model's tip friction (default: re-fit tip.mu to the images after each push)");
        app.add_option("--truth", o->truth,
                       "closed loop: the true scene (a file or preset), or KEY=VALUE,... changed from SCENE "
                       "(e.g. tip.mu=0.3,object.length=110e-9); default: SCENE itself");

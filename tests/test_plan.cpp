@@ -98,6 +98,55 @@ TEST_CASE("Planning: the closed loop reaches the goal when the truth's tip frict
   CHECK_THROWS_WITH(plan::closed_loop(model, truth, goal, o, plan::Noise{-1, 0, 0}, 7), Catch::Contains("--noise"));
 }
 
+TEST_CASE("Planning: the tip friction is re-fitted from what the pushes did", "[plan][numeric]") {
+  const Scene model = parse_scene(kRodScene, "rod.toml");  // a frictionless tip
+  Scene truth = model;
+  truth.set("tip.mu", 0.3);
+  plan::PlanOptions o;
+  o.tolerance_distance = 2e-9;
+  o.tolerance_angle = 0.02;
+  const auto r = plan::plan_pushes(model, {40e-9, 25e-9, 0.4}, o);
+  REQUIRE(r.found());
+  // Noiseless images of the truth making the model's pushes: the fit must find a tip friction
+  // whose model predicts each image from the one before (the truth's own 0.3 does, exactly).
+  std::vector<plan::SeenPush> seen;
+  plan::Pose at = r.start;
+  for (const auto& p : r.pushes) {
+    const Trajectory tr = run_scene(plan::push_scene(truth, at, p));
+    const plan::Pose after{tr.rows.back()[col::x], tr.rows.back()[col::y], tr.rows.back()[col::theta]};
+    seen.push_back({at, after, p});
+    at = after;
+  }
+  const double mu = plan::fit_tip_mu(model, seen, {}, o, 0.0, 1.0);
+  Scene fitted = model;
+  fitted.set("tip.mu", mu);
+  for (const auto& s : seen) {
+    const Trajectory tr = run_scene(plan::push_scene(fitted, s.before, s.push));
+    CHECK(std::hypot(tr.rows.back()[col::x] - s.after.x, tr.rows.back()[col::y] - s.after.y) <=
+          1e-3 * o.tolerance_distance);
+    CHECK(std::fabs(tr.rows.back()[col::theta] - s.after.theta) <= 1e-3 * o.tolerance_angle);
+  }
+  // The frictionless model does not predict them (the pushes slide the tip differently).
+  double worst = 0;
+  for (const auto& s : seen) {
+    const Trajectory tr = run_scene(plan::push_scene(model, s.before, s.push));
+    worst = std::max(worst, std::fabs(tr.rows.back()[col::theta] - s.after.theta));
+  }
+  CHECK(worst > 1e-2 * o.tolerance_angle);
+  // Nothing seen, or not a tip scene: the current value stays.
+  CHECK(plan::fit_tip_mu(model, {}, {}, o, 0.25, 1.0) == 0.25);
+  // In the closed loop the model learns the truth's tip friction.
+  o.max_pushes = 15;
+  const auto loop = plan::closed_loop(model, truth, {40e-9, 25e-9, 0.4}, o, {0.3e-9, 0.3e-9, 0.003}, 7);
+  INFO(loop.message);
+  REQUIRE(loop.reached());
+  REQUIRE(loop.tip_mu >= 0);
+  CHECK(loop.steps.front().tip_mu == 0.0);  // the first push is planned with the model's own
+  const auto kept = plan::closed_loop(model, truth, {40e-9, 25e-9, 0.4}, o, {0.3e-9, 0.3e-9, 0.003}, 7,
+                                      plan::Refit{false, 1.0, 6});
+  CHECK(kept.tip_mu == 0.0);
+}
+
 TEST_CASE("Planning: a push the model cannot follow on the true bar is not made, and the loop goes on",
           "[plan][numeric]") {
   // bench-plan's closed-loop task 36 (seed 20121): the nanorod, whose loop once ended in the

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <random>
 
+#include <boost/math/tools/minima.hpp>
+
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/planning/plan.hpp"
 #include "nanopush/scenes/simulate.hpp"
@@ -12,8 +14,50 @@ namespace nanopush::plan {
 
 using detail::standard_normal;
 
-ClosedLoopResult closed_loop(const Scene& model, const Scene& truth, const Pose& goal, const PlanOptions& o,
-                             const Noise& noise, std::uint64_t seed) {
+double fit_tip_mu(const Scene& model, const std::vector<SeenPush>& seen, const Noise& noise, const PlanOptions& o,
+                  double current, double mu_max) {
+  if (seen.empty() || model.push_mode != PushMode::tip) return current;
+  const double sx = noise.x > 0 ? noise.x : 1e-3 * o.tolerance_distance,
+               sy = noise.y > 0 ? noise.y : 1e-3 * o.tolerance_distance,
+               st = noise.theta > 0 ? noise.theta : 1e-3 * o.tolerance_angle;
+  constexpr double kCannot = 1e12;  // a push the model cannot make at this mu
+  auto cost = [&](double mu) {
+    Scene m = model;
+    m.set("tip.mu", mu);
+    double s = 0;
+    for (const SeenPush& p : seen) {
+      try {
+        const Trajectory tr = run_scene(push_scene(m, p.before, p.push));
+        const auto& r = tr.rows.back();
+        const double dx = (r[col::x] - p.after.x) / sx, dy = (r[col::y] - p.after.y) / sy,
+                     dt = angle_error(r[col::theta], p.after.theta, false) / st;
+        s += dx * dx + dy * dy + dt * dt;
+      } catch (const InputError&) {
+        s += kCannot;
+      } catch (const SolverError&) {
+        s += kCannot;
+      }
+    }
+    return s;
+  };
+  constexpr int kScan = 9;
+  std::vector<double> mu(kScan), c(kScan);
+  for (int i = 0; i < kScan; ++i) {
+    mu[static_cast<std::size_t>(i)] = mu_max * i / (kScan - 1);
+    c[static_cast<std::size_t>(i)] = cost(mu[static_cast<std::size_t>(i)]);
+  }
+  const auto best = static_cast<std::size_t>(std::min_element(c.begin(), c.end()) - c.begin());
+  const double lo = mu[best > 0 ? best - 1 : 0], hi = mu[std::min<std::size_t>(best + 1, kScan - 1)];
+  std::uintmax_t iterations = 20;
+  const auto r = boost::math::tools::brent_find_minima(cost, lo, hi, 20, iterations);
+  return r.second <= c[best] ? r.first : mu[best];
+}
+
+ClosedLoopResult closed_loop(const Scene& model_in, const Scene& truth, const Pose& goal, const PlanOptions& o,
+                             const Noise& noise, std::uint64_t seed, const Refit& refit) {
+  Scene model = model_in;  // its tip.mu is re-fitted along the loop
+  const bool tip_scene = model.push_mode == PushMode::tip;
+  std::vector<SeenPush> seen_pushes;
   const auto t0 = std::chrono::steady_clock::now();
   detail::check_task(model, goal, o);
   for (double s : {noise.x, noise.y, noise.theta})
@@ -74,11 +118,14 @@ ClosedLoopResult closed_loop(const Scene& model, const Scene& truth, const Pose&
     step.truth = true_pose;
     step.push = plan.pushes.front();
     step.plan_pushes = static_cast<int>(plan.pushes.size());
+    step.tip_mu = tip_scene ? model.tip.mu : -1;
+    bool made = false;
     // The tip follows the planned path in world axes; the bar is where it truly is.
     try {
       const Trajectory tr = run_scene(push_scene(truth, true_pose, step.push));
       const auto& r = tr.rows.back();
       true_pose = {r[col::x], r[col::y], r[col::theta]};
+      made = true;
     } catch (const InputError&) {
       // The planned tip start lies inside the true bar (the image was off by more than the
       // clearance): the AFM would touch down on the bar; the push is not made, image again.
@@ -92,8 +139,15 @@ ClosedLoopResult closed_loop(const Scene& model, const Scene& truth, const Pose&
     res.tip_travel += step.push.travel;
     res.time += step.push.travel / step.push.speed;
     res.steps.push_back(step);
+    const Pose before = seen;
     seen = image(true_pose);
+    if (made && refit.enabled && tip_scene) {
+      seen_pushes.push_back({before, seen, step.push});
+      if (static_cast<int>(seen_pushes.size()) > refit.window) seen_pushes.erase(seen_pushes.begin());
+      model.set("tip.mu", fit_tip_mu(model, seen_pushes, noise, o, model.tip.mu, refit.mu_max));
+    }
   }
+  res.tip_mu = tip_scene ? model.tip.mu : -1;
   res.final_truth = true_pose;
   res.final_observed = seen;
   res.final_distance = std::hypot(true_pose.x - goal.x, true_pose.y - goal.y);

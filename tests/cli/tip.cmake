@@ -65,8 +65,8 @@ target_link_libraries(capi_test_plan_fortran PRIVATE nanopush_test_support_f)
 add_test(NAME cli.bench.plan_quick
          COMMAND bash -c "set -e; d=\"$1\"; rm -rf \"$d\"; \"$0\" bench-plan --tasks 2 --closed-loop 2 --max-pushes 10 \
 --out \"$d\" > /dev/null 2> \"$d.err\"; grep -q '^| plan | ' \"$d/plan_benchmark.md\"; \
-grep -q 'Closed loop.*reached [0-2]/2' \"$d/plan_benchmark.md\"; test \"$(wc -l < \"$d/plan_closed_loop.csv\")\" -eq 3; \
-head -1 \"$d/plan_closed_loop.csv\" | grep -qx 'task,bar,mu_truth,reached,pushes,tip_travel,planning_time,final_distance,final_angle'; \
+grep -q 'Closed loop.*after each push, reached [0-2]/2.*keeping the model.s tip friction, reached [0-2]/2' \"$d/plan_benchmark.md\"; test \"$(wc -l < \"$d/plan_closed_loop.csv\")\" -eq 3; \
+head -1 \"$d/plan_closed_loop.csv\" | grep -qx 'task,bar,mu_truth,tip_mu_truth,tip_mu_fit,reached,pushes,reached_kept,pushes_kept,tip_travel,planning_time,final_distance,final_angle'; \
 test -s \"$d/plan_benchmark.csv\"; echo bench-plan: ok" ${_np} ${CMAKE_CURRENT_BINARY_DIR}/cli_bench_plan)
 set_tests_properties(cli.bench.plan_quick PROPERTIES PASS_REGULAR_EXPRESSION "bench-plan: ok")
 

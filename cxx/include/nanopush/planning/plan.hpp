@@ -88,6 +88,7 @@ struct LoopStep {
   Pose truth;           ///< the true pose when the image was taken
   PlannedPush push;     ///< the push made (its `end` is what the model predicted)
   int plan_pushes = 0;  ///< pushes the re-plan needed from this image
+  double tip_mu = -1;   ///< the model's tip friction this push was planned with (< 0: not a tip scene)
 };
 
 struct ClosedLoopResult {
@@ -100,16 +101,45 @@ struct ClosedLoopResult {
   /// Planned pushes not made: the tip would start inside the true bar, or the model could not
   /// follow the push on it (a solver failure); the bar was imaged again instead.
   int unsimulated = 0;
+  double tip_mu = -1;  ///< the model's tip friction at the end (the last fit; < 0: not a tip scene)
   [[nodiscard]] bool reached() const { return status == "reached"; }
 };
+
+/// How the closed loop learns what the model does not know. The quasi-static path depends on the
+/// tip's friction and not on the surface's mu (which scales every force), so what is re-fitted
+/// is tip.mu: after each push, the value in [0, mu_max] whose model predicts best the images
+/// seen after the pushes made so far (the last `window`), each from the image before it
+/// (fit_tip_mu).
+struct Refit {
+  bool enabled = true;
+  double mu_max = 1.0;
+  int window = 6;
+};
+
+/// One push seen by the loop: the image before it, the push made, the image after it.
+struct SeenPush {
+  Pose before, after;
+  PlannedPush push;
+};
+
+/// The tip friction in [0, mu_max] that minimises the sum over `seen` of the squared
+/// differences between the model's end pose of each push (from the image before it, the
+/// model's tip.mu replaced) and the image after it, each component over its noise (or, without
+/// noise, over a thousandth of the tolerance): a coarse scan of 9 values then Brent's method
+/// (Boost.Math) in the best bracket. A push the model cannot make at some mu costs that mu a
+/// large penalty. Returns `current` when `seen` is empty or the model is not a tip scene.
+double fit_tip_mu(const Scene& model, const std::vector<SeenPush>& seen, const Noise& noise, const PlanOptions& options,
+                  double current, double mu_max);
 
 /// The AFM loop a lab runs: image the bar (the truth's pose plus seeded Gaussian noise), plan
 /// from the image with the model scene, make the plan's first push on the truth scene (the tip
 /// path in world axes, as an AFM would), image again; until the image is within tolerance and
 /// stays so, or max_pushes pushes were made. `truth` is the model scene with what the model
 /// does not know changed (tip friction, the bar's size, ...).
+/// With `refit` enabled and a tip scene, the model's tip.mu is re-fitted after every push
+/// (fit_tip_mu) and the next plan made with it.
 ClosedLoopResult closed_loop(const Scene& model, const Scene& truth, const Pose& goal, const PlanOptions& options,
-                             const Noise& noise, std::uint64_t seed);
+                             const Noise& noise, std::uint64_t seed, const Refit& refit = {});
 
 /// How often an open-loop plan succeeds when the world is not the model's (plan --check).
 struct PlanCheck {
