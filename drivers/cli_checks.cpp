@@ -2,8 +2,10 @@
 
 #include <charconv>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
+#include "nanopush/numerics/error.hpp"
 #include "nanopush/outputs/io.hpp"
 
 namespace nanopush::cli {
@@ -30,6 +32,26 @@ std::string range_text(double lo, double hi, bool lo_open, bool hi_open) {
 }
 
 }  // namespace
+
+std::vector<double> number_list(const std::string& option, const std::string& text, std::size_t n,
+                                const std::string& what) {
+  std::vector<double> v;
+  std::stringstream ss(text);
+  std::string part;
+  while (std::getline(ss, part, ',')) {
+    std::size_t used = 0;
+    double x = 0;
+    try {
+      x = std::stod(part, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used == 0 || used != part.size() || !std::isfinite(x)) throw InputError(option, text, "must be " + what);
+    v.push_back(x);
+  }
+  if (v.size() != n) throw InputError(option, text, "must be " + what);
+  return v;
+}
 
 CLI::Validator real_in(double lo, double hi, bool lo_open, bool hi_open) {
   const std::string want = range_text(lo, hi, lo_open, hi_open);

@@ -39,6 +39,11 @@ CLI::IsMember is_choice(std::initializer_list<E> only = {}) {
 /// bound): every table of that many rows still fits in memory.
 inline constexpr long long kMaxCount = 1000000;
 
+/// "a,b,c" -> exactly n finite numbers, or InputError naming the option, what was written and
+/// `what` it must be (e.g. --goal X,Y,THETA).
+std::vector<double> number_list(const std::string& option, const std::string& text, std::size_t n,
+                                const std::string& what);
+
 /// For every option of `app` and its subcommands: reals get finite(); an integer option
 /// without a count() validator is a programming error (std::logic_error).
 void harden(CLI::App& app);

@@ -37,26 +37,6 @@ struct PlanCliOptions {
   bool quiet = false;
 };
 
-/// "a,b,c" -> numbers (exactly n), or InputError naming the option and what was written.
-std::vector<double> numbers(const std::string& option, const std::string& text, std::size_t n, const std::string& what) {
-  std::vector<double> v;
-  std::stringstream ss(text);
-  std::string part;
-  while (std::getline(ss, part, ',')) {
-    std::size_t used = 0;
-    double x = 0;
-    try {
-      x = std::stod(part, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used == 0 || used != part.size() || !std::isfinite(x)) throw InputError(option, text, "must be " + what);
-    v.push_back(x);
-  }
-  if (v.size() != n) throw InputError(option, text, "must be " + what);
-  return v;
-}
-
 Columns plan_columns() {
   return {{"push", "1", "push number, from 1"},
           {"start_x", "m", "tip centre where the push starts, x (world axes): tip.start_x"},
@@ -176,7 +156,7 @@ plan::Noise parse_noise(const std::string& text) {
   while (std::getline(ss, part, ',')) {
     const auto eq = part.find('=');
     const std::string key = part.substr(0, eq);
-    const double v = eq == std::string::npos ? -1 : numbers("--noise", part.substr(eq + 1), 1, "x=SX,y=SY,theta=ST (m, m, rad), each >= 0")[0];
+    const double v = eq == std::string::npos ? -1 : number_list("--noise", part.substr(eq + 1), 1, "x=SX,y=SY,theta=ST (m, m, rad), each >= 0")[0];
     if (!(v >= 0)) throw InputError("--noise", text, "must be x=SX,y=SY,theta=ST (m, m, rad), each >= 0");
     if (key == "x") n.x = v;
     else if (key == "y") {
@@ -244,8 +224,8 @@ int check_cmd(const PlanCliOptions& o, const Scene& sc, const plan::PlanResult& 
   if (!o.mu_range.empty()) {
     const auto colon = o.mu_range.find(':');
     if (colon == std::string::npos) throw InputError("--mu-range", o.mu_range, "must be LO:HI");
-    w.mu_lo = numbers("--mu-range", o.mu_range.substr(0, colon), 1, "LO:HI, two numbers")[0];
-    w.mu_hi = numbers("--mu-range", o.mu_range.substr(colon + 1), 1, "LO:HI, two numbers")[0];
+    w.mu_lo = number_list("--mu-range", o.mu_range.substr(0, colon), 1, "LO:HI, two numbers")[0];
+    w.mu_hi = number_list("--mu-range", o.mu_range.substr(colon + 1), 1, "LO:HI, two numbers")[0];
   }
   const sweep::Plan trials = plan::check_points(o.check);
   const auto task = plan::make_check_task(sc, r, po, w);
@@ -289,8 +269,8 @@ int plan_cmd(const PlanCliOptions& o) {
   const Scene sc = load_scene_arg(o.scene, o.sets);
   set_provenance_scene(o.scene);
   plot::set_format(plot::parse_format(o.format));
-  const auto g = numbers("--goal", o.goal, 3, "three numbers X,Y,THETA (m, m, rad)");
-  const auto tol = numbers("--tolerance", o.tolerance, 2, "two numbers D,A (m, rad)");
+  const auto g = number_list("--goal", o.goal, 3, "three numbers X,Y,THETA (m, m, rad)");
+  const auto tol = number_list("--tolerance", o.tolerance, 2, "two numbers D,A (m, rad)");
   plan::PlanOptions po;
   po.tolerance_distance = tol[0];
   po.tolerance_angle = tol[1];

@@ -24,13 +24,13 @@ namespace fs = std::filesystem;
 
 namespace {
 namespace NANOPUSH_UNITY_ID {
-fs::path scratch(const std::string& what) { return test::scratch_dir("inputs_" + what); }
+fs::path input_scratch(const std::string& what) { return test::scratch_dir("inputs_" + what); }
 }  // namespace NANOPUSH_UNITY_ID
 }  // namespace
 using namespace NANOPUSH_UNITY_ID;
 
 TEST_CASE("inputs: only regular files are opened; FIFOs, devices and directories are refused", "[inputs][unit]") {
-  const fs::path dir = scratch("kinds");
+  const fs::path dir = input_scratch("kinds");
   const fs::path fifo = dir / "pipe.csv";
   REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
   // No writer ever comes: opening it would block; SIGALRM ends the process after 10 s instead.
@@ -53,7 +53,7 @@ TEST_CASE("inputs: only regular files are opened; FIFOs, devices and directories
 }
 
 TEST_CASE("inputs: the size cap and the line cap say what they allow", "[inputs][unit]") {
-  const fs::path dir = scratch("caps");
+  const fs::path dir = input_scratch("caps");
   std::ofstream(dir / "big.csv") << std::string(5000, 'x') << "\n";
   CHECK_THROWS_WITH(InputFile(dir / "big.csv", "--points", 4096), Catch::EndsWith("larger than such a file may be (4 KiB)"));
   CHECK(read_input_file(dir / "big.csv", "--points", 8192).size() == 5001);
@@ -90,7 +90,7 @@ TEST_CASE("inputs: integers are parsed with range checks, never by exceptions", 
 }
 
 TEST_CASE("inputs: a merge table's out-of-range point index is bad input naming file, line and value", "[inputs][sweep][unit]") {
-  const fs::path dir = scratch("merge");
+  const fs::path dir = input_scratch("merge");
   // Shards of a 3-point plan with their sidecars (merge needs them: plan, size, shard).
   auto sidecar = [&](const char* name, const char* shard, int rows) {
     std::ofstream(dir / name) << "{\n  \"nanopush\": {\n    \"run\": {\"task\": \"friction\", \"plan\": \"0123456789abcdef\", "

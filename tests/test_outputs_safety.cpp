@@ -39,13 +39,13 @@ std::size_t temporaries(const fs::path& dir) {
   for (const auto& e : fs::recursive_directory_iterator(dir)) n += e.path().filename().string().find(".tmp.") != std::string::npos;
   return n;
 }
-fs::path scratch(const std::string& what) { return test::scratch_dir("outputs_" + what); }
+fs::path output_scratch(const std::string& what) { return test::scratch_dir("outputs_" + what); }
 }  // namespace NANOPUSH_UNITY_ID
 }  // namespace
 using namespace NANOPUSH_UNITY_ID;
 
 TEST_CASE("outputs: a FIFO or a directory is refused (OutputError) and left as it was", "[outputs][unit]") {
-  const fs::path dir = scratch("refused");
+  const fs::path dir = output_scratch("refused");
   const fs::path fifo = dir / "pipe.csv";
   REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
   CHECK_THROWS_AS(write_file_atomic(fifo, "x\n"), OutputError);
@@ -79,7 +79,7 @@ TEST_CASE("outputs: a FIFO or a directory is refused (OutputError) and left as i
 }
 
 TEST_CASE("outputs: a symbolic link is followed, its target replaced in its own directory", "[outputs][unit]") {
-  const fs::path dir = scratch("links");
+  const fs::path dir = output_scratch("links");
   fs::create_directories(dir / "data");
   fs::create_directories(dir / "links");
   const fs::path target = dir / "data" / "real.csv";
@@ -127,7 +127,7 @@ TEST_CASE("outputs: a symbolic link is followed, its target replaced in its own 
 }
 
 TEST_CASE("outputs: a character device is written through, never replaced", "[outputs][unit]") {
-  const fs::path dir = scratch("devices");
+  const fs::path dir = output_scratch("devices");
   const fs::path null = dir / "null.csv", full = dir / "full.csv";
   if (::mknod(null.c_str(), S_IFCHR | 0600, makedev(1, 3)) != 0 || ::mknod(full.c_str(), S_IFCHR | 0600, makedev(1, 7)) != 0) {
     // Not root: no device node can be made in the scratch directory, and nothing is ever
@@ -159,7 +159,7 @@ TEST_CASE("outputs: a character device is written through, never replaced", "[ou
 }
 
 TEST_CASE("outputs: a killed writer's temporary is swept by the next write of the same output", "[outputs][unit]") {
-  const fs::path dir = scratch("stale");
+  const fs::path dir = output_scratch("stale");
   // A pid that no longer exists: a child that has exited and been reaped.
   const pid_t child = ::fork();
   if (child == 0) ::_exit(0);
@@ -181,7 +181,7 @@ TEST_CASE("outputs: a killed writer's temporary is swept by the next write of th
 }
 
 TEST_CASE("outputs: a regular file is replaced whole, a failed writer leaves nothing", "[outputs][unit]") {
-  const fs::path dir = scratch("regular");
+  const fs::path dir = output_scratch("regular");
   const fs::path target = dir / "real.csv";
   write_file_atomic(target, "kept\n");
   {
@@ -196,7 +196,7 @@ TEST_CASE("outputs: a regular file is replaced whole, a failed writer leaves not
 }
 
 TEST_CASE("outputs: a sweep's journal is never put beside a device", "[outputs][sweep][unit]") {
-  const fs::path dir = scratch("journal");
+  const fs::path dir = output_scratch("journal");
   CHECK(sweep::journal_path(dir / "t.csv") == fs::path((dir / "t.csv").string() + ".journal"));
   fs::create_symlink("t.csv", dir / "l.csv");
   CHECK(sweep::journal_path(dir / "l.csv") == fs::path((dir / "l.csv").string() + ".journal"));

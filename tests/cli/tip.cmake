@@ -84,3 +84,20 @@ grep -q '\"ranks\": 2' \"$d/mpi/check.schema.json\"; echo check: ok" ${_np} ${CM
   set_tests_properties(cli.plan.check_threads_mpi PROPERTIES PASS_REGULAR_EXPRESSION "check: ok"
     ENVIRONMENT "NANOPUSH_SCENES=${NANOPUSH_SCENES};OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1;OMPI_MCA_rmaps_base_oversubscribe=1")
 endif()
+
+# nanopush assemble: two nanorods into a two-slot pattern (each rod to the other's side):
+# assembled (exit 0) with its tables; a pattern of another size, or an unknown column, is bad
+# input (exit 2) and writes nothing.
+add_test(NAME cli.assemble.two_rods
+         COMMAND bash -c "set -e; d=\"$1\"; rm -rf \"$d\"; mkdir -p \"$d\"; cd \"$d\"; \
+printf 'x,y,theta\\n0,0,0\\n100e-9,0,0\\n' > o.csv; printf 'x,y,theta\\n110e-9,20e-9,0.1\\n10e-9,20e-9,0.1\\n' > p.csv; \
+printf 'x,y,theta\\n0,0,0\\n' > one.csv; printf 'x,y,phi\\n0,0,0\\n100e-9,0,0\\n' > bad.csv; \
+\"$0\" assemble o.csv p.csv --tolerance 2e-9,0.02 --out a 2> err; grep -q 'assembled, 2 bars, 2 moved' err; \
+head -1 a/assembly.csv | grep -qx 'bar,slot,push,start_x,start_y,direction,speed,travel,x_end,y_end,theta_end'; \
+grep -q '\"status\": \"assembled\"' a/assembly.json; test -s a/assembly.png; test -s a/assembly.schema.json; \
+rc1=0; \"$0\" assemble o.csv one.csv --out b 2> err1 || rc1=$?; \
+rc2=0; \"$0\" assemble bad.csv p.csv --out c 2> err2 || rc2=$?; \
+grep -q 'one slot per bar (2)' err1; grep -q 'phi: unknown column' err2; test ! -e b; test ! -e c; \
+echo \"assemble: ok $rc1 $rc2\"" ${_np} ${CMAKE_CURRENT_BINARY_DIR}/cli_assemble)
+set_tests_properties(cli.assemble.two_rods PROPERTIES ENVIRONMENT "NANOPUSH_SCENES=${NANOPUSH_SCENES}"
+                     PASS_REGULAR_EXPRESSION "assemble: ok 2 2")
