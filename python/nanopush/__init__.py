@@ -67,7 +67,7 @@ __all__ = [
     "Scene", "presets", "scenes_dir", "scene_keys", "run", "compare", "Result", "Comparison",
     "friction_wrench", "friction_from_velocity", "Wrench", "icor", "estimate_mu", "MuEstimate",
     "MuEstimates", "estimate_mu_batch", "MuBatch", "fit", "FitResult", "synthesize",
-    "sweep", "SweepResult", "SweepFile", "plan", "PlanResult", "check_plan", "PlanCheck", "InputError", "SolverError", "__version__",
+    "sweep", "SweepResult", "SweepFile", "plan", "PlanResult", "check_plan", "PlanCheck", "assemble", "Assembly", "InputError", "SolverError", "__version__",
 ]
 
 # ---- presets ----------------------------------------------------------------------------
@@ -286,6 +286,32 @@ def check_plan(plan_result, scene, trials, *, noise=(0.0, 0.0, 0.0), mu_range=No
     names, units, data, summary = plan_result._check(_as_scene(scene), trials, noise, mu_range, seed,
                                                      _count("jobs", 0 if jobs is None else jobs), progress)
     return PlanCheck(names, units, data, summary)
+
+
+class Assembly:
+    """nanopush.assemble's answer: ``status`` ("assembled" or "not_found"), ``message``,
+    ``slot_of`` (per bar, its slot), ``order`` (the bars in the order they move), ``final_poses``
+    ((n, 3): x [m], y [m], theta [rad]), ``plans`` (one PlanResult per move, in order) and
+    ``assignment_cost`` [m]."""
+
+    def __init__(self, status, message, slot_of, order, final_poses, plans, cost):
+        self.status, self.message, self.slot_of, self.order = status, message, list(slot_of), list(order)
+        self.final_poses, self.plans, self.assignment_cost = final_poses, list(plans), cost
+
+    @property
+    def assembled(self):
+        return self.status == "assembled"
+
+    def __repr__(self):
+        return f"<nanopush.Assembly {self.status}, {len(self.slot_of)} bars, {len(self.plans)} moved>"
+
+
+def assemble(scene, objects, slots, *, tolerance=(1e-9, 0.01), objective="pushes", max_pushes=10, gap=2e-9):
+    """Move several bars of `scene`'s kind from `objects` into `slots` (both (n, 3) array-likes
+    of x [m], y [m], theta [rad]), as ``nanopush assemble`` (docs/planning.md): the assignment
+    of least summed distance, then bar by bar, each bar's pushes planned and kept `gap` [m]
+    clear (bar and tip) of the others. Returns an Assembly; bad input is InputError."""
+    return Assembly(*_nanopush._assemble(_as_scene(scene), objects, slots, tolerance, str(objective), max_pushes, gap))
 
 
 def compare(scene, method="faithful", rtol=None, atol=None, tolerance=None, law=None):

@@ -347,6 +347,12 @@ def check_plan(plan_result: Any, scene: Any, trials: Any, *, noise: Any = ..., m
 class PlanCheck:
     ...
 
+def assemble(scene: Any, objects: Any, slots: Any, *, tolerance: Any = ..., objective: Any = 'pushes', max_pushes: Any = 10, gap: Any = 2e-09) -> Any: ...
+
+class Assembly:
+    @property
+    def assembled(self) -> Any: ...
+
 class InputError(ValueError):
     field: str
     index: Optional[Tuple[int, ...]]

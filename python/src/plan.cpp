@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "nanopush/planning/assemble.hpp"
 #include "nanopush/planning/check.hpp"
 #include "nanopush/planning/plan.hpp"
 
@@ -114,6 +115,56 @@ py::tuple check_plan(const plan::PlanResult& r, const Scene& scene, const py::ob
   return py::make_tuple(t[0], t[1], t[2], summary);
 }
 
+/// Poses from an (n, 3) array-like of (x, y, theta).
+std::vector<plan::Pose> poses_arg(const py::object& v, const std::string& name) {
+  py::array_t<double> a;
+  try {
+    a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(v);
+  } catch (const py::error_already_set&) {
+  }
+  if (!a || a.ndim() != 2 || a.shape(1) != 3)
+    throw InputError(name, py::repr(v).cast<std::string>().substr(0, 80), "must be an (n, 3) array of (x [m], y [m], theta [rad])");
+  std::vector<plan::Pose> p;
+  for (py::ssize_t i = 0; i < a.shape(0); ++i) p.push_back({a.at(i, 0), a.at(i, 1), a.at(i, 2)});
+  return p;
+}
+
+/// nanopush.assemble: (status, message, slot_of, order, final poses (n, 3), the moves' plans).
+py::tuple assemble_bars(const Scene& scene, const py::object& objects, const py::object& slots, const py::object& tolerance,
+                        const std::string& objective, const py::object& max_pushes, const py::object& gap) {
+  plan::AssemblyOptions o;
+  const py::object tol = plain_value(tolerance, "tolerance");
+  if (py::isinstance<py::str>(tol) || !py::isinstance<py::sequence>(tol) || py::len(tol) != 2)
+    throw InputError("tolerance", py::repr(tol).cast<std::string>(), "must be (distance [m], angle [rad])");
+  o.plan.tolerance_distance = arg_double(tol.cast<py::sequence>()[0], "tolerance[0] (distance)");
+  o.plan.tolerance_angle = arg_double(tol.cast<py::sequence>()[1], "tolerance[1] (angle)");
+  o.plan.objective = plan::parse_objective(objective);
+  const double n = arg_double(max_pushes, "max_pushes");
+  if (!(n >= 1 && n <= 1000 && n == std::floor(n)))
+    throw InputError("max_pushes", py::repr(max_pushes).cast<std::string>(), "must be a whole number in [1, 1000]");
+  o.plan.max_pushes = static_cast<int>(n);
+  o.gap = arg_double(gap, "gap");
+  const auto obj = poses_arg(objects, "objects"), sl = poses_arg(slots, "slots");
+  plan::AssemblyResult r;
+  {
+    py::gil_scoped_release release;
+    r = plan::assemble(scene, obj, sl, o);
+  }
+  py::array_t<double> final_poses({static_cast<py::ssize_t>(r.final_poses.size()), static_cast<py::ssize_t>(3)});
+  for (std::size_t i = 0; i < r.final_poses.size(); ++i) {
+    const auto k = static_cast<py::ssize_t>(i);
+    final_poses.mutable_at(k, 0) = r.final_poses[i].x;
+    final_poses.mutable_at(k, 1) = r.final_poses[i].y;
+    final_poses.mutable_at(k, 2) = r.final_poses[i].theta;
+  }
+  py::list order, plans;
+  for (const auto& m : r.moves) {
+    order.append(m.object);
+    plans.append(py::cast(m.plan));
+  }
+  return py::make_tuple(r.status, r.message, py::cast(r.slot_of), order, final_poses, plans, r.assignment_cost);
+}
+
 }  // namespace
 
 void register_plan(py::module_& m) {
@@ -168,6 +219,8 @@ tip_travel [m], time [s], forward_runs, planning_seconds)doc")
                std::to_string(r.pushes.size()) + " pushes, final distance " + py::repr(py::float_(r.final_distance)).cast<std::string>() +
                " m, angle " + py::repr(py::float_(r.final_angle)).cast<std::string>() + " rad>";
       });
+  m.def("_assemble", &assemble_bars, py::arg("scene"), py::arg("objects"), py::arg("slots"), py::arg("tolerance"),
+        py::arg("objective"), py::arg("max_pushes"), py::arg("gap"));
   m.def("_plan", &plan_scene, py::arg("scene"), py::arg("goal"), py::arg("tolerance"), py::arg("objective"),
         py::arg("max_pushes"), py::arg("half_turn_symmetric"), py::arg("baseline"));
 }

@@ -84,3 +84,27 @@ def test_check_plan_equals_the_command_line(cli, tmp_path):
         nanopush.check_plan(r, SCENE, 0)
     with pytest.raises(nanopush.InputError, match="mu-range"):
         nanopush.check_plan(r, SCENE, 2, mu_range=(0.5, 0.1))
+
+
+def test_assemble_equals_the_command_line(cli, tmp_path):
+    objects = np.array([[0, 0, 0], [100e-9, 0, 0]])
+    slots = np.array([[110e-9, 20e-9, 0.1], [10e-9, 20e-9, 0.1]])
+    a = nanopush.assemble(SCENE, objects, slots, tolerance=TOL)
+    assert a.assembled and a.slot_of == [1, 0] and len(a.plans) == 2, a.message
+    for k, p in enumerate(a.plans):
+        assert p.found and p.verified
+    for name, arr in (("o.csv", objects), ("p.csv", slots)):
+        (tmp_path / name).write_text("x,y,theta\n" + "".join(",".join(repr(float(v)) for v in row) + "\n" for row in arr))
+    cli("assemble", tmp_path / "o.csv", tmp_path / "p.csv", "--tolerance", ",".join(map(repr, TOL)),
+        "--out", tmp_path / "a", "--quiet")
+    header, rows = read_csv(tmp_path / "a" / "assembly.csv")
+    table = np.array([[float(c) for c in row[3:]] for row in rows])
+    mine = np.vstack([p.table for p in a.plans])
+    assert np.array_equal(mine, table)  # bit for bit: one computation
+    ends = {int(r[0]) - 1: [float(c) for c in r[8:11]] for r in rows}
+    for bar, end in ends.items():
+        assert np.array_equal(a.final_poses[bar], np.array(end))
+    with pytest.raises(nanopush.InputError, match="objects"):
+        nanopush.assemble(SCENE, [[0, 0]], slots)
+    with pytest.raises(nanopush.InputError, match="one slot per bar"):
+        nanopush.assemble(SCENE, objects, slots[:1])
