@@ -121,7 +121,7 @@ module nanopush
             nanopush_icor_constrained_force, nanopush_icor_impulsive, nanopush_icor_cubic_roots, &
             nanopush_icor_nanorod, nanopush_icor_rod_properties
   public :: nanopush_estimate_mu_from_force, nanopush_estimate_mu_from_icor
-  public :: nanopush_estimate_mu_batch, nanopush_fit, nanopush_plan
+  public :: nanopush_estimate_mu_batch, nanopush_fit, nanopush_plan, nanopush_assemble
 
   !> Set a scene key after loading, validated as in the file (docs/scenes.md):
   !> call nanopush_scene_set(scene, "surface.mu", 0.1_dp, stat=stat); a value may be real(dp),
@@ -480,6 +480,16 @@ module nanopush
       real(c_double), intent(inout) :: pushes(*), summary(8)
       integer(c_int), intent(inout) :: n_pushes
     end function c_plan
+    integer(c_int) function c_assemble(error, scene, n, objects, slots, tolerance, max_pushes, gap, capacity, &
+        pushes, n_pushes, slot_of, final_poses, assembled) bind(C, name="nanopush_assemble")
+      import :: c_int, c_ptr, c_double
+      type(c_ptr), value, intent(in) :: error, scene
+      integer(c_int), value, intent(in) :: n, max_pushes, capacity
+      real(c_double), intent(in) :: objects(*), slots(*), tolerance(2)
+      real(c_double), value, intent(in) :: gap
+      real(c_double), intent(inout) :: pushes(*), final_poses(*)
+      integer(c_int), intent(inout) :: n_pushes, slot_of(*), assembled
+    end function c_assemble
     integer(c_int) function c_strlen(s) bind(C, name="strlen")
       import :: c_int, c_ptr
       type(c_ptr), value, intent(in) :: s
@@ -1417,6 +1427,72 @@ contains
     if (present(summary)) summary = s
     if (present(errmsg)) errmsg = msg
   end subroutine nanopush_plan
+
+  !> Several bars of the scene's kind from objects(3, n) into slots(3, n) (columns x, y, theta),
+  !> as `nanopush assemble` (docs/planning.md): pushes(k, 1:10) the pushes in the order made
+  !> (bar, slot, then nanopush_plan's eight columns), slot_of(n) each bar's slot, final(3, n)
+  !> where each bar ends, assembled every bar in its slot.
+  subroutine nanopush_assemble(scene, objects, slots, pushes, slot_of, final, assembled, tolerance, max_pushes, &
+                               gap, stat, errmsg)
+    type(nanopush_scene), intent(in) :: scene
+    real(dp), intent(in) :: objects(:, :), slots(:, :)
+    real(dp), allocatable, intent(out) :: pushes(:, :)
+    integer, intent(out), optional :: slot_of(:)
+    real(dp), intent(out), optional :: final(:, :)
+    logical, intent(out), optional :: assembled
+    real(dp), intent(in), optional :: tolerance(2), gap
+    integer, intent(in), optional :: max_pushes
+    integer, intent(out), optional :: stat
+    character(len=:), allocatable, intent(out), optional :: errmsg
+    type(c_ptr) :: err
+    character(len=:), allocatable :: msg
+    real(c_double), allocatable :: rows(:, :), ends(:, :)
+    integer(c_int), allocatable :: slots_c(:)
+    real(c_double) :: tol(2), g
+    integer(c_int) :: n, maxp, k, done
+    integer :: st
+    n = int(size(objects, 2), c_int)
+    maxp = 10
+    if (present(max_pushes)) maxp = int(max_pushes, c_int)
+    tol = [1e-9_dp, 0.01_dp]
+    if (present(tolerance)) tol = tolerance
+    g = 2e-9_dp
+    if (present(gap)) g = gap
+    allocate (rows(10, max(n * maxp, 1)), ends(3, max(n, 1)), slots_c(max(n, 1)))
+    ends = nan()
+    slots_c = 0
+    k = 0
+    done = 0
+    if (size(objects, 1) /= 3 .or. size(slots, 1) /= 3 .or. size(slots, 2) /= n) then
+      ! Shapes are Fortran's to check (C reads 3 n values of each): a mismatch is bad input.
+      st = NANOPUSH_BAD_INPUT
+      msg = "objects, slots: must be (3, n) arrays of the same n (columns x, y, theta)"
+      if (present(stat)) then
+        stat = st
+      else
+        error stop "nanopush: nanopush_assemble: " // msg
+      end if
+    else
+      err = c_new_error()
+      if (c_assemble(err, scene%ptr, n, objects, slots, tol, maxp, g, max(n * maxp, 0_c_int), rows, k, slots_c, &
+                     ends, done) /= 0) continue
+      call finish(err, "nanopush_assemble", msg, st)
+      if (present(stat)) then
+        stat = st
+      else if (st /= NANOPUSH_OK) then
+        error stop "nanopush: nanopush_assemble: " // msg
+      end if
+    end if
+    if (st == NANOPUSH_OK) then
+      pushes = transpose(rows(:, 1:k))
+    else
+      allocate (pushes(0, 10))
+    end if
+    if (present(slot_of) .and. st == NANOPUSH_OK) slot_of = int(slots_c(1:size(slot_of)))
+    if (present(final) .and. st == NANOPUSH_OK) final = ends(:, 1:size(final, 2))
+    if (present(assembled)) assembled = st == NANOPUSH_OK .and. done == 1
+    if (present(errmsg)) errmsg = msg
+  end subroutine nanopush_assemble
 
   ! ---- helpers --------------------------------------------------------------------------
 

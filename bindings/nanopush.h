@@ -422,6 +422,31 @@ int nanopush_estimate_mu_batch(nanopush_error error, const double* rod, int n, c
 int nanopush_plan(nanopush_error error, nanopush_scene scene, const double* goal, const double* tolerance,
                   const char* objective, int max_pushes, int capacity, double* pushes, int* n_pushes, double* summary);
 
+/* ---- Assembly (docs/planning.md, `nanopush assemble`) ------------------------------------------ */
+#define NANOPUSH_ASSEMBLY_PUSH_SIZE 10
+/* Several bars of `scene`'s kind (its bar, surface and tip) from `objects` into `slots`: the
+ * assignment of least summed distance, then bar by bar, each bar's pushes planned as by
+ * nanopush_plan and kept `gap` [m] clear (bar and tip) of the others; `nanopush assemble`.
+ *   n             bars (and slots), 1 ... 20
+ *   objects[3n]   the bars' poses, row-major: x [m], y [m], theta [rad] per bar
+ *   slots[3n]     the slots' poses, likewise
+ *   tolerance[2]  distance [m], angle [rad] within which a bar is in its slot; NULL = (1e-9, 0.01)
+ *   max_pushes    the most pushes per bar, 1 ... 1000
+ *   gap           the least distance kept between bars, and between a tip and another bar [m]
+ *   capacity      rows `pushes` holds: at least n * max_pushes (else NANOPUSH_BUFFER_TOO_SMALL)
+ *   pushes        out: one row of NANOPUSH_ASSEMBLY_PUSH_SIZE per push, in the order made:
+ *                 bar, slot (from 1), then nanopush_plan's eight columns (assembly.csv's columns)
+ *   n_pushes      out: the rows
+ *   slot_of[n]    out: each bar's slot (from 1)
+ *   final_poses[3n] out: where each bar ends, row-major
+ *   assembled     out: 1 every bar in its slot, 0 not (the moves made so far are given)
+ * Any output pointer may be NULL. Bad input (counts, overlapping bars or slots, a non-finite
+ * pose): NANOPUSH_BAD_INPUT naming it; NULL scene, objects or slots: NANOPUSH_NULL_HANDLE.
+ * A failed call writes no output. */
+int nanopush_assemble(nanopush_error error, nanopush_scene scene, int n, const double* objects, const double* slots,
+                      const double* tolerance, int max_pushes, double gap, int capacity, double* pushes,
+                      int* n_pushes, int* slot_of, double* final_poses, int* assembled);
+
 /* ---- Trajectory fit (docs/fitting.md, `nanopush fit`) ---------------------------------------- */
 #define NANOPUSH_FIT_SUMMARY_SIZE 6
 /* Fit scene keys to observed motion: weighted least squares over the forward model, starting

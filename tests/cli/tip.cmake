@@ -101,3 +101,15 @@ grep -q 'one slot per bar (2)' err1; grep -q 'phi: unknown column' err2; test ! 
 echo \"assemble: ok $rc1 $rc2\"" ${_np} ${CMAKE_CURRENT_BINARY_DIR}/cli_assemble)
 set_tests_properties(cli.assemble.two_rods PROPERTIES ENVIRONMENT "NANOPUSH_SCENES=${NANOPUSH_SCENES}"
                      PASS_REGULAR_EXPRESSION "assemble: ok 2 2")
+# nanopush_assemble from C and Fortran: the module's wrapper over the C API gives the command's
+# assembly.csv row for row.
+add_test(NAME cli.assemble.for_capi
+         COMMAND bash -c "set -e; d=\"$1\"; rm -rf \"$d\"; mkdir -p \"$d\"; \
+printf 'x,y,theta\\n0,0,0\\n100e-9,0,0\\n' > \"$d/o.csv\"; printf 'x,y,theta\\n110e-9,20e-9,0.1\\n10e-9,20e-9,0.1\\n' > \"$d/p.csv\"; \
+\"$0\" assemble \"$d/o.csv\" \"$d/p.csv\" --scene \"$2\" --tolerance 2e-9,0.02 --quiet --out \"$d/a\"" ${_np}
+                 ${CMAKE_CURRENT_BINARY_DIR}/cli_assemble_capi ${_tip_scene})
+set_tests_properties(cli.assemble.for_capi PROPERTIES FIXTURES_SETUP assemble_capi)
+nanopush_capi_test(capi.assemble_fortran capi_test_assemble_fortran test_fortran_assemble.f90 "[0-9]+ checks, 0 failures"
+                   ${_tip_scene} ${CMAKE_CURRENT_BINARY_DIR}/cli_assemble_capi/a/assembly.csv)
+target_link_libraries(capi_test_assemble_fortran PRIVATE nanopush_test_support_f)
+set_tests_properties(capi.assemble_fortran PROPERTIES FIXTURES_REQUIRED assemble_capi)
