@@ -1,0 +1,247 @@
+// The dynamic tip-driven push (models/tip_dynamic.hpp, docs/tip.md): the spring contact, the
+// agreement with the quasi-static model where both apply (a bound derived from the spring's
+// compression, the oscillation and the coasting), the energy balance, contact loss, a push
+// through the centre against its closed form, the unilateral contact.
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "nanopush/models/tip_dynamic.hpp"
+#include "nanopush/models/tip_push.hpp"
+#include "nanopush/numerics/error.hpp"
+
+using namespace nanopush;
+using tip::ContactMode;
+
+namespace NANOPUSH_UNITY_ID {
+
+// The bar of the quasi-static tests: 10 nm x 100 nm, 10 nm high, graphite; mu N = 1 nN.
+constexpr double kA = 5e-9, kB = 50e-9, kMuN = 1e-9, kH = 10e-9, kRho = 2267.0;
+constexpr double kMass = kRho * 2 * kA * 2 * kB * kH;
+constexpr double kInertia = kMass * (4 * kA * kA + 4 * kB * kB) / 12;
+
+tip::TipPath path_at(double yn, double speed, double travel) {
+  tip::TipPath p;
+  p.radius = 5e-9;
+  p.start_x = -kA - p.radius - 5e-9;  // 5 nm of free travel before contact
+  p.start_y = yn;
+  p.speed = speed;
+  p.travel = travel;
+  return p;
+}
+
+double kinetic(const tip::TipRow& r) {
+  return 0.5 * kMass * (r.vx * r.vx + r.vy * r.vy) + 0.5 * kInertia * r.omega * r.omega;
+}
+
+TEST_CASE("Dynamic tip: the spring contact pushes along the normal with k delta, never pulls", "[tip][dynamic][unit]") {
+  const BarGeometry g{kA, kB};
+  const double r = 5e-9, k = 2.0;
+  // Base outside the offset surface: no force, the tip is the base.
+  auto s = tip::spring_contact(g, r, k, -kA - r - 1e-9, 10e-9);
+  CHECK_FALSE(s.touching);
+  CHECK(s.fx == 0.0);
+  CHECK(s.fy == 0.0);
+  CHECK(s.qx == -kA - r - 1e-9);
+  // Base 1 nm inside the offset surface of the face x' = -a: F = k delta along +x'.
+  s = tip::spring_contact(g, r, k, -kA - r + 1e-9, 10e-9);
+  REQUIRE(s.touching);
+  CHECK(s.delta == Approx(1e-9).epsilon(1e-9));
+  CHECK(s.fx == Approx(k * 1e-9).epsilon(1e-9));
+  CHECK(s.fy == 0.0);
+  CHECK(s.qx == Approx(-kA - r).epsilon(1e-15));  // the tip on the surface
+  CHECK(s.torque == Approx(-10e-9 * k * 1e-9).epsilon(1e-9));  // p x F = (p_x F_y - p_y F_x)
+  // Beyond a corner: along the corner's normal.
+  s = tip::spring_contact(g, r, k, kA + 3e-9, kB + 3e-9);
+  REQUIRE(s.touching);
+  CHECK(s.fx == Approx(s.fy).epsilon(1e-14));
+  CHECK(s.fx < 0);
+  // The base inside the bar (a soft spring pressed hard): the nearest face's normal.
+  s = tip::spring_contact(g, r, k, -kA + 1e-9, 0.0);
+  REQUIRE(s.touching);
+  CHECK(s.nx == -1.0);
+  CHECK(s.delta == Approx(r + 1e-9).epsilon(1e-12));
+}
+
+TEST_CASE("Dynamic tip: a slow tip on a stiff spring ends where the quasi-static one does, within the derived bound",
+          "[tip][dynamic][numeric]") {
+  // v = 1 m/s is slow for this bar: m v^2/(mu N L) = 4e-4. The dynamic tip touches the bar
+  // off the quasi-static contact point by at most ds: the spring's compression F_max/k, the
+  // oscillation's swing 2 v/omega0 (omega0 = sqrt(k/m)) and the coasting after the tip stops,
+  // m v^2/(2 mu N). The quasi-static end pose moves by at most ds times its sensitivity to the
+  // contact's progress along the path (max |v_cm|/v, max |omega|/v over the run) plus its
+  // sensitivity to the path's offset across it (central differences of two quasi-static runs
+  // 1 nm either side). A push through the centre, where the latter is a bifurcation, has its
+  // own closed form below.
+  const BarGeometry g{kA, kB};
+  const double k = 10.0, v = 1.0, rtol = 1e-9;
+  for (double yn : {15e-9, 40e-9}) {
+    INFO("yn = " << yn);
+    const tip::TipPath p = path_at(yn, v, 60e-9);
+    const auto qs = tip::run_quasi_static(g, kMuN, p, 0, 0, 0, 0, 201, 1e-10);
+    const auto dyn = tip::run_dynamic(g, kMuN, {kMass, kInertia, k}, p, 0, 0, 0, 0, 201, rtol);
+    double F_max = 0, rate_pos = 0, rate_th = 0;
+    for (const auto& r : qs.rows) {
+      F_max = std::max(F_max, std::hypot(r.tip_fx, r.tip_fy));
+      rate_pos = std::max(rate_pos, std::hypot(r.vx, r.vy) / v);
+      rate_th = std::max(rate_th, std::fabs(r.omega) / v);
+    }
+    tip::TipPath up = p, down = p;
+    up.start_y += 1e-9;
+    down.start_y -= 1e-9;
+    const auto eu = tip::run_quasi_static(g, kMuN, up, 0, 0, 0, 0, 11, 1e-10).rows.back();
+    const auto ed = tip::run_quasi_static(g, kMuN, down, 0, 0, 0, 0, 11, 1e-10).rows.back();
+    const double lat_pos = std::hypot(eu.x - ed.x, eu.y - ed.y) / 2e-9, lat_th = std::fabs(eu.theta - ed.theta) / 2e-9;
+    const double ds = F_max / k + 2 * v / std::sqrt(k / kMass) + kMass * v * v / (2 * kMuN);
+    const auto& a = dyn.run.rows.back();
+    const auto& b = qs.rows.back();
+    CHECK(std::hypot(a.x - b.x, a.y - b.y) <= ds * (rate_pos + lat_pos));
+    CHECK(std::fabs(a.theta - b.theta) <= ds * (rate_th + lat_th));
+    // The bound is a small part of the motion: the comparison means something.
+    CHECK(ds * (rate_pos + lat_pos) < 0.015 * std::hypot(b.x, b.y));
+    CHECK(ds * (rate_th + lat_th) < 0.01 * std::fabs(b.theta));
+    // At rest at the end (t_end: the travel time plus the settling allowance).
+    CHECK(a.vx == 0.0);
+    CHECK(a.vy == 0.0);
+    CHECK(a.omega == 0.0);
+  }
+}
+
+TEST_CASE("Dynamic tip: the spring's work is the kinetic energy gained plus the surface's dissipation",
+          "[tip][dynamic][numeric]") {
+  const BarGeometry g{kA, kB};
+  for (const auto& [yn, k, rtol] : {std::tuple{15e-9, 10.0, 1e-9}, std::tuple{15e-9, 10.0, 1e-11},
+                                    std::tuple{15e-9, 100.0, 1e-9}, std::tuple{40e-9, 10.0, 1e-10}}) {
+    INFO("yn = " << yn << ", k = " << k << ", rtol = " << rtol);
+    const tip::TipPath p = path_at(yn, 1.0, 60e-9);
+    // Sampled inside the push, so that some rows catch the bar moving.
+    const auto dyn = tip::run_dynamic(g, kMuN, {kMass, kInertia, k}, p, 0, 0, 0, 5.5e-8, 401, rtol);
+    const double W = dyn.run.rows.back().work_tip;
+    REQUIRE(W > 0);
+    bool saw_motion = false;
+    double prev_fric = 0;
+    for (const auto& r : dyn.run.rows) {
+      // The accumulators are integrated with the state at rtol: the balance holds to rtol of the work.
+      CHECK(std::fabs(r.work_tip + r.work_fric - kinetic(r)) <= rtol * W);
+      CHECK(r.work_fric <= prev_fric);  // friction only dissipates
+      prev_fric = r.work_fric;
+      saw_motion = saw_motion || kinetic(r) > 1e-6 * W;
+    }
+    CHECK(saw_motion);
+  }
+}
+
+TEST_CASE("Dynamic tip: a push near the end turns the bar until the tip slips off, and no force after",
+          "[tip][dynamic][numeric]") {
+  const BarGeometry g{kA, kB};
+  const tip::TipPath p = path_at(45e-9, 1.0, 150e-9);
+  const auto dyn = tip::run_dynamic(g, kMuN, {kMass, kInertia, 10.0}, p, 0, 0, 0, 0, 401, 1e-9);
+  double t_release = -1;
+  for (const auto& e : dyn.run.events)
+    if (e.what == "release") t_release = e.t;
+  REQUIRE(t_release > 0);
+  CHECK(t_release < p.t_stop());
+  bool after = false;
+  for (const auto& r : dyn.run.rows) {
+    if (r.t <= t_release) continue;
+    after = true;
+    CHECK(r.contact == ContactMode::none);
+    CHECK(r.tip_fx == 0.0);
+    CHECK(r.tip_fy == 0.0);
+    // The tip is off the bar: its centre farther than its radius from the rectangle.
+    const double dx = r.tip_x - r.x, dy = r.tip_y - r.y, c = std::cos(r.theta), s = std::sin(r.theta);
+    CHECK(tip::contact_geometry(g, c * dx + s * dy, -s * dx + c * dy).distance >= p.radius);
+  }
+  CHECK(after);
+  const auto& last = dyn.run.rows.back();
+  CHECK(last.theta < -0.3);  // it turned (clockwise: pushed at +y')
+  CHECK(std::fabs(last.work_tip + last.work_fric - kinetic(last)) <= 1e-9 * last.work_tip);
+}
+
+TEST_CASE("Dynamic tip: through the centre the bar translates, and ends where the closed form puts it",
+          "[tip][dynamic][numeric]") {
+  // Along the line of the push the motion is one-dimensional: stuck until k delta = mu N at
+  // t1 = t_contact + mu N/(k v), then x = x_tip - mu N/k - (v/omega0) sin(omega0 (t - t1)).
+  // When the base stops (phase phi = omega0 (t_stop - t1)) the bar swings on by the
+  // amplitude A = (v/omega0) sqrt(2 - 2 cos phi) from the spring's equilibrium and sticks
+  // there (A < mu N/k: the tip stays in contact): x_end = x_qs - mu N/k + A.
+  const BarGeometry g{kA, kB};
+  const double k = 10.0, v = 1.0, w0 = std::sqrt(k / kMass);
+  const tip::TipPath p = path_at(0.0, v, 60e-9);
+  const auto dyn = tip::run_dynamic(g, kMuN, {kMass, kInertia, k}, p, 0, 0, 0, 0, 201, 1e-10);
+  for (const auto& r : dyn.run.rows) {
+    CHECK(r.theta == 0.0);
+    CHECK(r.y == 0.0);
+    CHECK(r.vy == 0.0);
+    CHECK(r.omega == 0.0);
+  }
+  const double t_contact = 5e-9 / v, t1 = t_contact + kMuN / (k * v);
+  REQUIRE(dyn.run.events.size() >= 3);
+  CHECK(dyn.run.events[0].what == "contact");
+  CHECK(dyn.run.events[0].t == Approx(t_contact).epsilon(1e-12));
+  CHECK(dyn.run.events[1].what == "slide");
+  CHECK(dyn.run.events[1].t == Approx(t1).epsilon(1e-9));
+  const double phi = w0 * (p.t_stop() - t1), A = (v / w0) * std::sqrt(2 - 2 * std::cos(phi));
+  REQUIRE(A < kMuN / k);
+  const double x_end = p.travel - 5e-9 - kMuN / k + A;  // the quasi-static end: the travel after contact
+  // To the integration's accuracy: rtol 1e-10 of the swing's phase over ~190 periods, on v/omega0.
+  CHECK(dyn.run.rows.back().x == Approx(x_end).margin(1e-6 * kMuN / k));
+}
+
+TEST_CASE("Dynamic tip: the contact never pulls, and a stiff spring bounces the bar off the tip", "[tip][dynamic][numeric]") {
+  // k = 100 N/m: the swing v/omega0 exceeds the compression mu N/k, so the bar runs ahead
+  // of the tip and the contact breaks and is made again, each change a located event.
+  const BarGeometry g{kA, kB};
+  const double k = 100.0;
+  const tip::TipPath p = path_at(15e-9, 1.0, 60e-9);
+  const auto dyn = tip::run_dynamic(g, kMuN, {kMass, kInertia, k}, p, 0, 0, 0, 5e-8, 2001, 1e-9);
+  int releases = 0, contacts = 0;
+  for (const auto& e : dyn.run.events) {
+    releases += e.what == "release";
+    contacts += e.what == "contact";
+  }
+  CHECK(releases >= 3);
+  CHECK(contacts >= releases);
+  int touching = 0, free_rows = 0;
+  for (const auto& r : dyn.run.rows) {
+    const double c = std::cos(r.theta), s = std::sin(r.theta);
+    const double fbx = c * r.tip_fx + s * r.tip_fy, fby = -s * r.tip_fx + c * r.tip_fy;
+    const double dx = r.tip_x - r.x, dy = r.tip_y - r.y;
+    const auto geo = tip::contact_geometry(g, c * dx + s * dy, -s * dx + c * dy);
+    if (r.contact == ContactMode::none) {
+      ++free_rows;
+      CHECK(fbx == 0.0);
+      CHECK(fby == 0.0);
+    } else {
+      ++touching;
+      // Pushes into the bar along the inward normal: F.n < 0, no tangential part.
+      CHECK(fbx * geo.nx + fby * geo.ny < 0);
+      CHECK(std::fabs(fbx * geo.ny - fby * geo.nx) <= 1e-9 * std::hypot(fbx, fby));
+      CHECK(geo.distance == Approx(p.radius).epsilon(1e-9));  // the tip on the bar's surface
+    }
+  }
+  CHECK(touching > 0);
+  CHECK(free_rows > 0);
+  // The largest compression: the friction's force plus the impact of a bar met at the tip's
+  // speed (1/2 k delta^2 = 1/2 m v^2).
+  CHECK(dyn.max_delta <= (kMuN + 1.0 * std::sqrt(kMass * k)) / k);
+}
+
+TEST_CASE("Dynamic tip: bad input names the key", "[tip][dynamic][unit]") {
+  const BarGeometry g{kA, kB};
+  tip::TipPath p = path_at(15e-9, 1.0, 60e-9);
+  auto run = [&](const tip::TipPath& pp, double k) {
+    (void)tip::run_dynamic(g, kMuN, {kMass, kInertia, k}, pp, 0, 0, 0, 0, 11, 1e-9);
+  };
+  CHECK_THROWS_WITH(run(p, -1.0), Catch::Contains("tip.stiffness") && Catch::Contains("> 0"));
+  CHECK_THROWS_WITH(run(p, 0.0), Catch::Contains("tip.stiffness"));
+  p.mu = 0.2;
+  CHECK_THROWS_WITH(run(p, 10.0), Catch::Contains("tip.mu"));
+  p.mu = 0;
+  p.speed = 0;
+  CHECK_THROWS_WITH(run(p, 10.0), Catch::Contains("tip.speed"));
+  p.speed = 1;
+  p.start_x = 0;
+  CHECK_THROWS_WITH(run(p, 10.0), Catch::Contains("tip.start"));
+}
+
+}  // namespace NANOPUSH_UNITY_ID
