@@ -1,13 +1,18 @@
 // The dynamic tip-driven push (models/tip_dynamic.hpp, docs/tip.md): the spring contact, the
 // agreement with the quasi-static model where both apply (a bound derived from the spring's
 // compression, the oscillation and the coasting), the energy balance, contact loss, a push
-// through the centre against its closed form, the unilateral contact.
+// through the centre against its closed form, the unilateral contact, and the scene keys
+// (tip.model, tip.stiffness, tip.cantilever.*, auto's choice and its cost).
 #include <catch2/catch.hpp>
 #include <cmath>
 
+#include "nanopush/models/afm_probe.hpp"
 #include "nanopush/models/tip_dynamic.hpp"
 #include "nanopush/models/tip_push.hpp"
 #include "nanopush/numerics/error.hpp"
+#include "nanopush/scenes/scene.hpp"
+#include "nanopush/scenes/simulate.hpp"
+#include "support/support.hpp"
 
 using namespace nanopush;
 using tip::ContactMode;
@@ -242,6 +247,85 @@ TEST_CASE("Dynamic tip: bad input names the key", "[tip][dynamic][unit]") {
   p.speed = 1;
   p.start_x = 0;
   CHECK_THROWS_WITH(run(p, 10.0), Catch::Contains("tip.start"));
+}
+
+// ---- scenes: tip.model, tip.stiffness, tip.cantilever ---------------------------------
+
+std::string tip_scene(const std::string& tip_extra, double speed = 1e-6) {
+  std::string s = test::kTipSceneText;
+  s.replace(s.find("speed = 1e-6"), 12, "speed = " + std::to_string(speed) + "\n" + tip_extra);
+  return s;
+}
+
+TEST_CASE("Dynamic tip scenes: tip.model chooses the model, the default and auto at AFM speeds are the quasi-static run "
+          "bit for bit", "[tip][dynamic][unit]") {
+  const Trajectory base = run_scene(parse_scene(tip_scene("")));
+  CHECK(base.engine_label == "cxx-quasi-static");
+  for (const char* m : {"model = \"quasi_static\"", "model = \"auto\"\nstiffness = 1.0"}) {
+    INFO(m);
+    const Trajectory tr = run_scene(parse_scene(tip_scene(m)));
+    CHECK(tr.engine_label == "cxx-quasi-static");
+    REQUIRE(tr.rows.size() == base.rows.size());
+    for (std::size_t i = 0; i < tr.rows.size(); ++i) CHECK(tr.rows[i] == base.rows[i]);
+  }
+  // A dynamic scene: the run says so, and equals the model called directly.
+  const Scene sc = parse_scene(tip_scene("model = \"dynamic\"\nstiffness = 10.0", 1.0));
+  const Trajectory tr = run_scene(sc);
+  CHECK(tr.engine_label == "cxx-tip-dynamic");
+  const auto direct = tip::run_dynamic(sc.geometry, sc.friction_limit(), {sc.mass, sc.inertia, 10.0}, sc.tip, 0, 0, 0,
+                                       sc.solver.t_end, sc.solver.samples, sc.solver.rtol);
+  CHECK(sc.solver.t_end == tip::dynamic_t_end({sc.mass, sc.inertia, 10.0}, sc.friction_limit(), sc.tip));
+  CHECK(tr.rows.back()[col::x] == direct.run.rows.back().x);
+  CHECK(tr.rows.back()[col::theta] == direct.run.rows.back().theta);
+  CHECK(tr.work_push.back() == direct.run.rows.back().work_tip);
+}
+
+TEST_CASE("Dynamic tip scenes: auto runs the dynamic model only where inertia counts, a millisecond push stays cheap",
+          "[tip][dynamic][numeric]") {
+  // A 1 ms push (100 nm at 1e-4 m/s): m v^2/(mu N L) ~ 1e-14, far below 1e-3: quasi-static, at
+  // the cost of a quasi-static run (a dynamic run would follow ~1e7 spring periods).
+  Scene slow = parse_scene(tip_scene("model = \"auto\"\nstiffness = 10.0", 1e-4));
+  slow.set("tip.travel", 100e-9);
+  const double ratio = tip::inertia_ratio(slow.mass, 1e-4, slow.friction_limit(), 100e-9);
+  CHECK(ratio < 1e-10);
+  const Trajectory ts = run_scene(slow);
+  CHECK(ts.engine_label == "cxx-quasi-static");
+  CHECK(slow.solver.t_end == Approx(1e-3).epsilon(1e-12));
+  CHECK(ts.stats.nfcn < 20000);
+  const double periods = 1e-3 * std::sqrt(10.0 / slow.mass) / (2 * M_PI);
+  CHECK(periods > 1e6);
+  // A tip at 30 m/s on this bar: m v^2/(mu N L) > 1e-3: dynamic.
+  const Scene fast = parse_scene(tip_scene("model = \"auto\"\nstiffness = 10.0", 30.0));
+  CHECK(tip::inertia_ratio(fast.mass, 30.0, fast.friction_limit(), fast.tip.travel) > tip::kAutoInertiaRatio);
+  CHECK(run_scene(fast).engine_label == "cxx-tip-dynamic");
+}
+
+TEST_CASE("Dynamic tip scenes: the stiffness from the cantilever (eqs 2.6-2.7), and bad keys exit with key and range",
+          "[tip][dynamic][unit]") {
+  // A silicon contact-mode cantilever (E = 169 GPa, 450 x 50 x 2 um, 17 um tip).
+  const std::string cant =
+      "[tip.cantilever]\nyoungs_modulus = 169e9\nlength = 450e-6\nwidth = 50e-6\nthickness = 2e-6\n"
+      "tip_height = 17e-6\n";
+  const Scene sc = parse_scene(tip_scene("model = \"dynamic\"", 1.0) + cant);
+  CHECK(sc.tip_model == TipModel::dynamic);
+  afm::Cantilever c;
+  c.E = 169e9;
+  c.length = 450e-6;
+  c.width = 50e-6;
+  c.thickness = 2e-6;
+  c.tip_height = 17e-6;
+  const auto kk = afm::spring_constants(c);
+  CHECK(sc.tip_stiffness == Approx(1.0 / (1.0 / kk.ktheta + 1.0 / kk.kby)).epsilon(1e-15));
+  auto err = [](const std::string& text) { return test::input_error_of([&] { (void)run_scene(parse_scene(text)); }); };
+  CHECK_THAT(err(tip_scene("model = \"dynamic\"\nstiffness = -2.0")), Catch::Contains("tip.stiffness") && Catch::Contains("> 0"));
+  CHECK_THAT(err(tip_scene("model = \"fast\"")),
+             Catch::Contains("tip.model") && Catch::Contains("quasi_static, dynamic, auto"));
+  CHECK_THAT(err(tip_scene("model = \"dynamic\"")), Catch::Contains("tip.stiffness"));
+  CHECK_THAT(err(tip_scene("model = \"dynamic\"\nstiffness = 1.0\nmu = 0.3")), Catch::Contains("tip.mu"));
+  CHECK_THAT(err(tip_scene("stiffness = 1.0") + cant), Catch::Contains("tip.stiffness") && Catch::Contains("not both"));
+  CHECK_THAT(err(tip_scene("") + "[tip.cantilever]\nyoungs_modulus = -1.0\n"),
+             Catch::Contains("tip.cantilever.youngs_modulus") && Catch::Contains("> 0"));
+  CHECK_THAT(err(tip_scene("model = \"dynamic\"\nstiffness = 1.0", 0.0)), Catch::Contains("tip.speed"));
 }
 
 }  // namespace NANOPUSH_UNITY_ID

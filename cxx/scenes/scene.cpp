@@ -12,6 +12,8 @@
 #include <set>
 #include <sstream>
 
+#include "nanopush/models/afm_probe.hpp"
+#include "nanopush/models/tip_dynamic.hpp"
 #include "nanopush/scenes/environment_toml.hpp"
 #include "nanopush/numerics/error.hpp"
 
@@ -199,6 +201,13 @@ std::vector<double> Scene::output_times() const {
   return t;
 }
 
+TipModel Scene::tip_model_run() const {
+  if (tip_model != TipModel::automatic) return tip_model;
+  return tip::inertia_ratio(mass, tip.speed, friction_limit(), tip.travel) <= tip::kAutoInertiaRatio
+             ? TipModel::quasi_static
+             : TipModel::dynamic;
+}
+
 std::array<double, 8> Scene::state_scales() const {
   const double len = std::max(length, width);
   if (push_mode == PushMode::tip) {  // the tip sets the pace: its speed, and mu N its work
@@ -344,6 +353,34 @@ void read_tip(const toml::table& root, Scene& sc) {
   p.radius = opt_number(t, "tip", "radius").value_or(1e-8);
   p.mu = opt_number(t, "tip", "mu").value_or(0.0);
   p.validate();
+  sc.tip_model = scene_choice<TipModel>("tip.model", opt_string(t, "tip", "model").value_or("quasi_static"));
+  sc.tip_stiffness = 0;
+  if (auto k = opt_number(t, "tip", "stiffness")) {
+    require_positive("tip.stiffness", *k, "N/m");
+    sc.tip_stiffness = *k;
+  }
+  if (const toml::node* cn = t.get("cantilever")) {
+    if (!cn->is_table()) throw InputError("tip.cantilever", "(not a table)", "must be a [tip.cantilever] table");
+    if (sc.tip_stiffness > 0)
+      throw InputError("tip.stiffness", fmt(sc.tip_stiffness),
+                       "give either tip.stiffness or the tip.cantilever keys, not both");
+    const toml::table& c = *cn->as_table();
+    check_keys(c, "tip.cantilever", scene_table_keys("tip.cantilever"));
+    afm::Cantilever beam;
+    const char* const dims[] = {"youngs_modulus", "length", "width", "thickness", "tip_height"};
+    double* const vals[] = {&beam.E, &beam.length, &beam.width, &beam.thickness, &beam.tip_height};
+    for (int i = 0; i < 5; ++i) {
+      *vals[i] = number(c, "tip.cantilever", dims[i]);
+      require_positive(std::string("tip.cantilever.") + dims[i], *vals[i], i == 0 ? "Pa" : "m");
+    }
+    beam.nu = opt_number(c, "tip.cantilever", "poisson_ratio").value_or(beam.nu);
+    if (!(beam.nu > -1.0 && beam.nu <= 0.5))
+      throw InputError("tip.cantilever.poisson_ratio", fmt(beam.nu), "must be in (-1, 0.5]");
+    // The tip's lateral stiffness across the beam: the beam's twist by the lateral force at
+    // the tip's height (eq 2.6) and its lateral bending (eq 2.7), in series.
+    const afm::SpringConstants k = afm::spring_constants(beam);
+    sc.tip_stiffness = 1.0 / (1.0 / k.ktheta + 1.0 / k.kby);
+  }
 }
 
 /// What a tip push needs of the rest of the scene: friction (a rough surface) and the C++
@@ -370,7 +407,26 @@ void check_tip_scene(Scene& sc) {
     if (sc.initial[3 + i] != 0.0)
       throw InputError(std::string("initial.") + rate_keys[i], fmt(sc.initial[3 + i]),
                        "a tip push starts with the object at rest (the quasi-static model has no inertia): must be 0");
-  if (sc.solver.t_end == 0) sc.solver.t_end = sc.tip.t_stop();
+  if (sc.tip_model_run() == TipModel::dynamic) {
+    const std::string why =
+        sc.tip_model == TipModel::automatic
+            ? " (tip.model = \"auto\" chose the dynamic model: m v^2/(mu N travel) = " +
+                  fmt(tip::inertia_ratio(sc.mass, sc.tip.speed, sc.friction_limit(), sc.tip.travel)) + " > " +
+                  fmt(tip::kAutoInertiaRatio) + ")"
+            : "";
+    if (!(sc.tip_stiffness > 0))
+      throw InputError("tip.stiffness", "(missing)",
+                       "the dynamic tip model needs the tip's spring: give tip.stiffness (N/m, > 0) or the "
+                       "tip.cantilever keys" + why);
+    if (sc.tip.mu != 0.0)
+      throw InputError("tip.mu", fmt(sc.tip.mu),
+                       "the dynamic tip model has a frictionless tip: must be 0 (tip friction: tip.model = "
+                       "\"quasi_static\")" + why);
+  }
+  if (sc.solver.t_end == 0)
+    sc.solver.t_end = sc.tip_model_run() == TipModel::dynamic
+                          ? tip::dynamic_t_end({sc.mass, sc.inertia, sc.tip_stiffness}, sc.friction_limit(), sc.tip)
+                          : sc.tip.t_stop();
 }
 
 /// [initial]: the state at t = 0.

@@ -27,7 +27,8 @@ const std::vector<SceneKey>& scene_keys() {
   // The choice keys' allowed values come from the choices' name tables (choices.hpp).
   static const std::string kinds = choice_names<SurfaceKind>(", "), laws = choice_names<Law>(", "),
                            engines = choice_names<Engine>(", "), methods = choice_names<Method>(", "),
-                           precisions = choice_names<Precision>(", "), push_modes = choice_names<PushMode>(", ");
+                           precisions = choice_names<Precision>(", "), push_modes = choice_names<PushMode>(", "),
+                           tip_models = choice_names<TipModel>(", ");
   static const std::vector<SceneKey> keys = {
       {"scene.name", K::string, "", "file stem", "letters, digits, _ - . (not first: . -), <= 200", "all",
        "identifier used in output names"},
@@ -63,7 +64,22 @@ const std::vector<SceneKey>& scene_keys() {
       {"tip.speed", K::number, "m/s", "1e-6", "> 0", "rough", "tip speed (AFM tips: 1e-7 to 1e-4 m/s)"},
       {"tip.travel", K::number, "m", "required (mode tip)", "> 0", "rough", "length of the tip's path"},
       {"tip.radius", K::number, "m", "1e-8", "> 0", "rough", "radius of the tip (a disc seen from above)"},
-      {"tip.mu", K::number, "1", "0", "[0, 10]", "rough", "Coulomb friction between tip and object"},
+      {"tip.mu", K::number, "1", "0", "[0, 10]", "rough",
+       "Coulomb friction between tip and object (0 in the dynamic model)"},
+      {"tip.model", K::string, "", "quasi_static", tip_models, "rough",
+       "quasi_static: the object in force equilibrium with the tip; dynamic: its inertia and the tip's spring; "
+       "auto: dynamic where m v^2/(mu N travel) > 1e-3 (docs/tip.md)"},
+      {"tip.stiffness", K::number, "N/m", "from tip.cantilever; required by the dynamic model without it", "> 0",
+       "rough", "lateral spring between the tip and its base (dynamic model)"},
+      {"tip.cantilever.youngs_modulus", K::number, "Pa", "required with [tip.cantilever]", "> 0", "rough",
+       "the cantilever's Young's modulus: tip.stiffness = twist (eq 2.6) and lateral bending (eq 2.7) in series"},
+      {"tip.cantilever.poisson_ratio", K::number, "1", "0.33", "(-1, 0.5]", "rough", "the cantilever's Poisson's ratio"},
+      {"tip.cantilever.length", K::number, "m", "required with [tip.cantilever]", "> 0", "rough", "beam length l"},
+      {"tip.cantilever.width", K::number, "m", "required with [tip.cantilever]", "> 0", "rough", "beam width w"},
+      {"tip.cantilever.thickness", K::number, "m", "required with [tip.cantilever]", "> 0", "rough",
+       "beam thickness t"},
+      {"tip.cantilever.tip_height", K::number, "m", "required with [tip.cantilever]", "> 0", "rough",
+       "height H of the tip (the lateral force's lever on the beam)"},
       {"initial.x", K::number, "m", "0", "finite", "all", "initial x of the centre of mass"},
       {"initial.y", K::number, "m", "0", "finite", "all", "initial y of the centre of mass"},
       {"initial.theta", K::number, "rad", "0", "finite", "all", "initial angle"},
@@ -91,7 +107,8 @@ const std::vector<SceneKey>& scene_keys() {
       {"surface.printed.eq3_50", K::boolean, "", "the reading's (false)", "true, false", "rough",
        "printed law: eq 3.50's fy = fx' sin - fy' cos as printed; false: erratum 3's +"},
 
-      {"solver.t_end", K::number, "s", "required (mode tip: travel/speed)", "> 0", "all", "end time"},
+      {"solver.t_end", K::number, "s", "required (mode tip: travel/speed; dynamic: plus the settling time)", "> 0", "all",
+       "end time"},
       {"solver.samples", K::integer, "1", "401", "[2, 10000000]", "all",
        "output times, evenly spaced over [0, t_end], both ends included"},
       {"solver.rtol", K::number, "1", "1e-10", "[1e-30, 0.1]", "all", "relative tolerance"},

@@ -27,6 +27,9 @@ enum class SurfaceKind { smooth, rough };
 /// How the object is pushed: a constant force at a body point (the thesis' model) or an AFM
 /// tip moving along a line (docs/tip.md).
 enum class PushMode { force, tip };
+/// The model of a tip push (docs/tip.md): quasi-static (force equilibrium at every instant),
+/// dynamic (inertia and the cantilever's spring), or automatic by the inertia ratio (name "auto").
+enum class TipModel { quasi_static, dynamic, automatic };
 
 /// The name tables (numerics/names.hpp): every value and its name, in the order messages list them.
 template <>
@@ -62,5 +65,10 @@ template <>
 struct NameTable<PushMode> {
   static constexpr std::array<std::pair<PushMode, std::string_view>, 2> table{
       {{PushMode::force, "force"}, {PushMode::tip, "tip"}}};
+};
+template <>
+struct NameTable<TipModel> {
+  static constexpr std::array<std::pair<TipModel, std::string_view>, 3> table{
+      {{TipModel::quasi_static, "quasi_static"}, {TipModel::dynamic, "dynamic"}, {TipModel::automatic, "auto"}}};
 };
 }  // namespace nanopush

@@ -91,6 +91,10 @@ struct Scene {
   Push push;
   PushMode push_mode = PushMode::force;
   tip::TipPath tip;              ///< push.mode = tip: the tip and its path (docs/tip.md)
+  TipModel tip_model = TipModel::quasi_static;  ///< push.mode = tip: tip.model
+  double tip_stiffness = 0;      ///< the tip's lateral spring [N/m]: tip.stiffness or tip.cantilever; 0 neither
+  /// The tip model a run uses: tip.model, with auto resolved by the inertia ratio (docs/tip.md).
+  [[nodiscard]] TipModel tip_model_run() const;
   std::array<double, kStateSize> initial{};  ///< x, y, theta, vx, vy, omega
   SolverSettings solver;
   /// Term report of the normal load (rough scenes): from the [environment]/[body] models
