@@ -23,6 +23,7 @@
 #include "nanopush/scenes/lhs.hpp"
 #include "cli_checks.hpp"
 #include "bench_report.hpp"
+#include "columns.hpp"
 #include "registry.hpp"
 
 namespace nanopush::cli {
@@ -79,13 +80,7 @@ bool bench_accuracy(const BenchAccuracyOptions& o, const fs::path& dir, std::ost
   bool ok = true;
   // ---- 1. honesty ------------------------------------------------------------------------
   CsvWriter hon(dir / "accuracy_honesty.csv",
-                {text_column("law", "friction law"), count_column("scene", "index in the Latin hypercube"),
-                 {"rtol", "1", "the scene's rtol"}, text_column("outcome", "how the run ended (docs/errors.md)"),
-                 {"estimate", "1", "error estimate of the final pose (accuracy norm)"},
-                 {"true_error", "1", "against the reference run (empty: not judged)"},
-                 {"ratio", "1", "true_error / estimate"},
-                 count_column("nfcn", "RHS evaluations of the answer"),
-                 count_column("nfcn_total", "RHS evaluations with the estimate's")});
+                columns("bench_accuracy_honesty"));
   std::map<std::string, Summary> by_law;
   std::vector<double> cost_ratio;
   for (const Law law : {Law::coulomb, Law::thesis}) {
@@ -126,12 +121,7 @@ bool bench_accuracy(const BenchAccuracyOptions& o, const fs::path& dir, std::ost
      << quantile(cost_ratio, 0.5) << ", 90th percentile " << quantile(cost_ratio, 0.9) << ".\n\n";
   // ---- 2. cost of --accuracy ---------------------------------------------------------------
   CsvWriter cost(dir / "accuracy_cost.csv",
-                 {{"accuracy", "1", "the accuracy asked (E)"}, count_column("scene", "index in the Latin hypercube"),
-                  text_column("outcome", "how the run ended"), {"rtol_used", "1", "the rtol of the answer"},
-                  {"estimate", "1", "its error estimate"}, {"true_error", "1", "against the reference (empty: not judged)"},
-                  count_column("nfcn_total", "RHS evaluations of every run the answer took"),
-                  count_column("nfcn_plain", "RHS evaluations of a plain run at rtol = E"),
-                  {"cost_ratio", "1", "nfcn_total / nfcn_plain"}});
+                 columns("bench_accuracy_cost"));
   md << "**Cost of `--accuracy`** (coulomb law, the first " << scenes.size() / 2
      << " scenes): the fraction of judged scenes whose true error is <= E, and all RHS evaluations of the answer "
         "over those of a plain run at rtol = E. Target: >= 99 % met, cost <= 4x.\n\n"

@@ -18,6 +18,7 @@
 #include "nanopush/outputs/io.hpp"
 #include "nanopush/outputs/plot.hpp"
 #include "cli_checks.hpp"
+#include "columns.hpp"
 #include "registry.hpp"
 
 namespace nanopush::cli {
@@ -75,16 +76,7 @@ struct Cell {
 bool bench_atlas(const AtlasOptions& o, const fs::path& dir, std::ostream& md, ReproduceContext* ctx) {
   const Scene base = load_scene(resolve_scene("fig3_18"));
   CsvWriter w(dir / "atlas.csv",
-              {text_column("map", "mu_ratio or length_force"), text_column("law", "friction law"),
-               {"x", "1", "the map's first axis: mu, or the object length [m]"},
-               {"y", "1", "the second: F / (mu N), or the push force [N]"},
-               text_column("outcome", "how the run ended (docs/errors.md)"),
-               count_column("outcome_code", "0 ok, 1 at_rest, 2 no_static_friction, 3 law_blowup, 4 "
-                                            "accuracy_not_reached, 5 solver_failure"),
-               {"error_estimate", "1", "the achieved error estimate of the final pose"},
-               {"error_ratio", "1", "error_estimate / the accuracy asked (<= 1: reached)"},
-               {"rtol_used", "1", "the rtol of the answer"},
-               count_column("nfcn_total", "every RHS evaluation of the point")});
+              columns("bench_atlas"));
   std::map<std::string, Cell> cells;
   for (const MapSpec& m : maps())
     for (const Law law : {Law::coulomb, Law::thesis}) {

@@ -24,6 +24,7 @@
 #include "nanopush/outputs/plot.hpp"
 #include "cli_checks.hpp"
 #include "bench_report.hpp"
+#include "columns.hpp"
 #include "registry.hpp"
 
 namespace nanopush::cli {
@@ -141,11 +142,7 @@ int run_bench_fit(const BenchFitOptions& o) {
   std::vector<CostRow> rows = cost("thesis/fig3_20", Law::thesis, 0.08, 0.1, std::cerr);
   for (auto& r : cost("bench/stick_mu015", Law::coulomb, 0.15, 0.13, std::cerr)) rows.push_back(r);
   CsvWriter cw(dir / "fit_benchmark.csv",
-               {text_column("law", "friction law of the rough scene"), text_column("method", "optimiser (gradients)"),
-                {"estimate", "1", "fitted surface.mu"},
-                {"error", "1", "distance of the estimate from the converged optimum"},
-                count_column("forward_solves", "forward solves of the model (with or without sensitivities)"),
-                {"wall", "s", "wall time of the fit"}});
+               columns("bench_fit"));
   for (const auto& r : rows)
     cw.cells({csv_quote(r.law), csv_quote(r.method), csv_number(r.estimate), csv_number(r.error), std::to_string(r.solves),
               csv_number(r.wall)});
@@ -181,11 +178,7 @@ int run_bench_fit(const BenchFitOptions& o) {
       {"rough coulomb surface.mu", "bench/stick_mu015", "surface.mu", "coulomb", 0.6e-9, 31, 0.9},
   };
   CsvWriter cov(dir / "fit_coverage.csv",
-                {text_column("config", "scene, free key and law"), count_column("seed", "noise seed"),
-                 {"truth", "1", "true value of the key (SI)"}, {"estimate", "1", "fitted value (SI)"},
-                 {"stderr", "1", "its standard error (SI)"}, {"z", "1", "(estimate - truth) / stderr"},
-                 {"normal_quantile", "1", "standard normal quantile of z's rank within its config (QQ plot)"},
-                 count_column("covered", "1 when the 95 % interval estimate +- 1.96 stderr contains the truth")});
+                columns("bench_fit_coverage"));
   md << "\n## Coverage of the 95 % intervals\n\n" << n
      << " synthetic data sets per configuration (x, y: sigma 1 nm, theta: 0.01 rad; seeds 1.." << n
      << "), the fit started " << "20 % (coulomb: -10 %) away from the truth. Expected: 95 %, acceptable 90-99 %.\n\n"

@@ -26,6 +26,7 @@
 #include "nanopush/scenes/simulate.hpp"
 #include "cli_checks.hpp"
 #include "bench_report.hpp"
+#include "columns.hpp"
 #include "registry.hpp"
 #include "scene_args.hpp"
 
@@ -322,23 +323,7 @@ int bench_friction(const BenchFrictionOptions& o) {
   const auto load_end = load_average();
 
   // ---- CSV
-  const Columns cols = {
-      text_column("workload", "closed_form, far_gl12/8/6/4: rectangle_friction_wrench(R, alpha) at 4096 random iCORs "
-                              "within the band; run_<scene>: rectangle_friction_from_velocity at the body velocity of "
-                              "every RHS evaluation of one run of the scene; integrate_<scene>: the whole run"),
-      count_column("inputs", "wrenches per pass (workloads), RHS evaluations of the new run (integrate)"),
-      count_column("repeats", "timed pairs (old, new), alternating which goes first"),
-      {"time_old_ns", "ns", "median time of one wrench (or one run, integrate row) with the F77 routine's forms (the faithful method's)"},
-      {"time_new_ns", "ns", "median time of one wrench (or one run) with the production forms"},
-      {"ratio", "1", "median over the pairs of new / old, each pair timed back to back"},
-      {"ratio_min", "1", "smallest pair ratio"},
-      {"ratio_max", "1", "largest pair ratio"},
-      {"max_dforce", "N",
-       "largest |f_new - f_old| (muN = 1 N; integrate row: largest |theta_new - theta_old| in rad)"},
-      {"max_dmoment", "1",
-       "largest |mf_new - mf_old| / (muN max(a,b)) in the closed form, / |mf_old| elsewhere (integrate row: largest "
-       "state difference relative to its scale plus its size)"},
-  };
+  const Columns cols = columns("bench_friction");
   std::vector<std::vector<std::string>> rows;
   auto add_row = [&](const std::string& name, std::size_t inputs, const std::vector<double>& a,
                      const std::vector<double>& b, const std::vector<double>& ratio, double df, double dm, double unit) {

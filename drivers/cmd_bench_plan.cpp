@@ -14,6 +14,7 @@
 #include "nanopush/outputs/plot.hpp"
 #include "nanopush/planning/plan.hpp"
 #include "cli_checks.hpp"
+#include "columns.hpp"
 #include "registry.hpp"
 
 namespace nanopush::cli {
@@ -71,19 +72,7 @@ std::string closed_loop_bench(const BenchPlanOptions& o, const Scene (&bars)[2],
   const plan::Noise noise{o.noise_distance, o.noise_distance, o.noise_angle};
   std::mt19937_64 rng(o.seed + 1);
   CsvWriter w(fs::path(o.out) / "plan_closed_loop.csv",
-              {{"task", "1", "task number (the open-loop task of the same number)"},
-               text_column("bar", "nanobar (100 x 55 nm) or nanorod (590 x 27 nm)"),
-               {"mu_truth", "1", "the true surface mu (the model's is 0.1)"},
-               {"tip_mu_truth", "1", "the true tip friction (the model's is 0)"},
-               {"tip_mu_fit", "1", "the model's tip friction at the end, re-fitted along the loop"},
-               {"reached", "1", "1: the true pose within the tolerance"},
-               {"pushes", "1", "pushes made"},
-               {"reached_kept", "1", "the same task keeping the model's tip friction: 1 reached"},
-               {"pushes_kept", "1", "pushes made keeping the model's tip friction"},
-               {"tip_travel", "m", "summed tip travel"},
-               {"planning_time", "s", "wall time of the re-plans"},
-               {"final_distance", "m", "distance of the true final centre from the goal"},
-               {"final_angle", "rad", "angle of the true final pose from the goal"}},
+              columns("bench_plan_closed_loop"),
               "bench-plan");
   int reached = 0, reached_kept = 0, unsimulated = 0;
   std::vector<double> pushes, pushes_kept, planning, fit_error;
@@ -133,19 +122,7 @@ int run_bench_plan(const BenchPlanOptions& o) {
   po.tolerance_distance = o.tolerance_distance;
   po.tolerance_angle = o.tolerance_angle;
   po.max_pushes = o.max_pushes;
-  const Columns cols = {{"task", "1", "task number"},
-                        text_column("planner", "plan (the planner) or baseline (target-oriented pushing)"),
-                        text_column("bar", "nanobar (100 x 55 nm) or nanorod (590 x 27 nm)"),
-                        {"goal_x", "m", "goal x of the centre"},
-                        {"goal_y", "m", "goal y of the centre"},
-                        {"goal_theta", "rad", "goal orientation"},
-                        {"found", "1", "1: reached and verified within the tolerance"},
-                        {"pushes", "1", "pushes in the plan"},
-                        {"tip_travel", "m", "summed tip travel"},
-                        {"time", "s", "summed push durations"},
-                        {"planning_time", "s", "wall time of planning and verification"},
-                        {"final_distance", "m", "distance of the verified final centre from the goal"},
-                        {"final_angle", "rad", "angle of the verified final pose from the goal"}};
+  const Columns cols = columns("bench_plan");
   const fs::path csv = fs::path(o.out) / "plan_benchmark.csv";
   CsvWriter w(csv, cols, "bench-plan");
   struct Stats {

@@ -31,6 +31,7 @@
 #include "nanopush/outputs/plot.hpp"
 #include "nanopush/sweeps/sweep.hpp"
 #include "cli_checks.hpp"
+#include "columns.hpp"
 #include "registry.hpp"
 #include "scene_args.hpp"
 #include "sweep_mpi.hpp"
@@ -530,33 +531,7 @@ int bench_sweep(const BenchSweepOptions& o) {
   const double cpu_eff_m2 = cpu_eff(m2);
 
   // ---- the CSV (and its sidecar)
-  const Columns cols = {
-      text_column("mode", "threads: sweep::run_local in this process; mpi: mpirun -np RANKS nanopush-mpi sweep --jobs 1 "
-                          "(the sweep's own time from its sidecar); direct: the points alone, sweep::evaluate_row "
-                          "on one thread"),
-      count_column("threads", "threads per process"),
-      count_column("ranks", "MPI ranks (1 for one process)"),
-      count_column("workers", "threads x ranks"),
-      count_column("points", "points of the grid"),
-      count_column("repeats", "timed runs of the configuration"),
-      {"wall_s", "s",
-       "median wall time of a run: threads, run_local in this process; mpi, rank 0 from MPI_Init to the table "
-       "(sidecar run.wall_s); direct, the sum of the points' own evaluation times"},
-      {"wall_min_s", "s", "fastest run"},
-      {"wall_max_s", "s", "slowest run"},
-      {"points_per_s", "1/s", "points / wall_s"},
-      {"efficiency", "1", "points_per_s / (workers x points_per_s at 1 worker of the same mode); empty for direct"},
-      {"overhead", "1",
-       "direct row only: (1-thread sweep wall - sum of point times) / sum of point times, per repeat, median"},
-      {"overhead_cpu", "1", "direct row only: the same in CPU time (1-thread sweep CPU - direct CPU) / direct CPU"},
-      {"cpu_s", "s",
-       "median CPU time (user + system) of a run, every thread (mpi: every rank, from its sidecar run.cpu_s); "
-       "cpu_s / wall_s is the share of the cores the run got"},
-      {"cpu_efficiency", "1", "CPU time of the points alone (direct) / cpu_s: the share of the CPU spent on points"},
-      {"launch_s", "s", "mpi rows only: median wall time of mpirun -np RANKS nanopush-mpi --version (the launch alone)"},
-      {"mpirun_wall_s", "s", "mpi rows only: median wall time of mpirun from launch to exit (the job as a user waits for it)"},
-      {"load_1min", "1", "host 1-minute load average (/proc/loadavg) after the configuration's last run"},
-  };
+  const Columns cols = cli::columns("bench_sweep");  // (a local `columns` is in scope)
   std::vector<std::vector<std::string>> rows;
   // Order: threads, mpi, direct (the plot's series read contiguous rows).
   std::vector<const Config*> order;

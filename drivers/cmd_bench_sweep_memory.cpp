@@ -25,6 +25,7 @@
 #include "nanopush/outputs/io.hpp"
 #include "nanopush/outputs/plot.hpp"
 #include "cli_checks.hpp"
+#include "columns.hpp"
 #include "registry.hpp"
 
 extern char** environ;
@@ -143,15 +144,7 @@ int bench_memory(const MemOptions& o) {
   std::error_code ec;
   fs::remove_all(dir, ec);
 
-  const Columns cols = {count_column("points", "points of the grid (R x alpha, task friction)"),
-                        count_column("done", "points done when the run ended (all, or when the time limit stopped it)"),
-                        text_column("completed", "yes: the table was written; no: stopped by SIGINT at the time limit"),
-                        {"wall_s", "s", "wall time of the process"},
-                        {"cpu_s", "s", "CPU time of the process (user + system, every thread)"},
-                        {"points_per_s", "1/s", "done / wall_s"},
-                        {"peak_rss_mb", "MB", "peak resident set size of the process (wait4 ru_maxrss)"},
-                        {"rss_growth_bytes_per_point", "B",
-                         "(peak RSS - peak RSS of the smallest run) / (done - its points): memory held per point"}};
+  const Columns cols = columns("bench_sweep_memory");
   std::vector<std::vector<std::string>> rows;
   std::vector<double> growths;
   const Run& base = runs.front();

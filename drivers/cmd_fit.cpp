@@ -14,6 +14,7 @@
 #include "nanopush/outputs/io.hpp"
 #include "nanopush/outputs/plot.hpp"
 #include "cli_checks.hpp"
+#include "columns.hpp"
 #include "registry.hpp"
 #include "scene_args.hpp"
 
@@ -65,10 +66,7 @@ void put_estimate(std::ostream& s, const fit::ParameterEstimate& p, int digits, 
 void write_outputs(const fit::FitResult& r, const fit::Observations& obs, const fs::path& dir, const std::string& base,
                    bool plot_it, std::vector<fs::path>& produced) {
   fs::create_directories(dir);
-  Columns cols = {{"t", "s", "observation time"},
-                  {"x_fit", "m", "fitted model: x of the centre of mass"},
-                  {"y_fit", "m", "fitted model: y of the centre of mass"},
-                  {"theta_fit", "rad", "fitted model: orientation"}};
+  Columns cols = columns("fit");
   const char* units[3] = {"m", "m", "rad"};
   for (std::size_t c = 0; c < 3; ++c) {
     if (!obs.has[c]) continue;

@@ -27,6 +27,7 @@
 #include "nanopush/outputs/io.hpp"
 #include "nanopush/outputs/json.hpp"
 #include "nanopush/outputs/plot.hpp"
+#include "columns.hpp"
 #include "registry.hpp"
 
 namespace nanopush::cli {
@@ -202,14 +203,7 @@ void write_outputs(const Options& o, const Data& d, const std::vector<icor::Batc
   const fs::path dir(o.out);
   fs::create_directories(dir);
   const fs::path csv = dir / "fit_icor.csv";
-  Columns cols = {count_column("row", "observation number (data rows from 1)"),
-                  count_column("line", "line of the data file"),
-                  {"F", "N", "push force"},
-                  {"sigma_F", "N", "standard uncertainty of F"},
-                  {"yn", "m", "push offset from the centre of mass (empty: not observed)"},
-                  {"sigma_yn", "m", "standard uncertainty of yn"},
-                  {"R", "m", "observed distance from the centre of mass to the iCOR (empty: not observed)"},
-                  {"sigma_R", "m", "standard uncertainty of R"}};
+  Columns cols = columns("fit_icor");
   for (const auto& e : est) {
     const std::string p = icor::to_string(e.pressure);
     cols.push_back({"mu_" + p, "1", "friction coefficient of this row, " + p + " pressure distribution"});

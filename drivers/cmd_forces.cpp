@@ -14,6 +14,7 @@
 #include "nanopush/outputs/plot.hpp"
 #include "nanopush/models/rolling.hpp"
 #include "nanopush/models/surface_forces.hpp"
+#include "columns.hpp"
 #include "registry.hpp"
 
 namespace nanopush::cli {
@@ -199,21 +200,7 @@ std::string fixed(double v, int decimals) {
 
 void step_table31(ReproduceContext& ctx) {
   const auto path = ctx.out / "table3_1.csv";
-  CsvWriter f(path, {text_column("material", "material of Table 3.1"),
-                     {"epsilon", "1", "relative permittivity (as printed)"},
-                     {"A", "J", "Hamaker constant (as printed)"},
-                     {"gamma_old", "J/m^2", "surface energy A/(24 pi D0^2), D0 = 0.165 nm (eq 3.6), ours"},
-                     {"gamma_corrected", "J/m^2", "surface energy A/1.9302e-18 m^2 (eq 3.9), ours"},
-                     {"gamma_corrected_unrounded_factor", "J/m^2",
-                      "surface energy A/(24 pi (0.16 nm)^2), the factor of eq 3.9 before rounding"},
-                     {"A_printed", "J", "Hamaker constant printed in the thesis"},
-                     {"gamma_old_printed", "J/m^2", "old surface energy printed in the thesis"},
-                     {"gamma_corrected_printed", "J/m^2", "corrected surface energy printed in the thesis"},
-                     {"gamma_experimental", "J/m^2", "experimental surface energy printed (mid-point of a range)"},
-                     text_column("gamma_experimental_printed_mJ_per_m2",
-                                 "experimental surface energy as printed in the thesis, in mJ/m^2 (text: may be a range)"),
-                     text_column("old_status", "does gamma_old round to the printed value"),
-                     text_column("corrected_status", "does gamma_corrected round to the printed value")});
+  CsvWriter f(path, columns("table3_1"));
   std::ostringstream s;
   std::ostringstream md;
   md << "\n## Table 3.1: surface energies from Hamaker constants\n\n"
@@ -327,11 +314,7 @@ void step_fig33(ReproduceContext& ctx) {
   const double F = rolling::minimum_rolling_force(W, k, r);
   const int n = ctx.quick ? 41 : 401;
   const auto csv = ctx.out / "fig3_3.csv";
-  CsvWriter w(csv, {{"h", "m", "push height h of eq 3.16 (|h| <= r)"},
-                    {"h_over_r", "1", "push height over the tube radius"},
-                    {"fs_cxx", "N", "static friction for pure rolling, fs = (F/3)(1 - 2h/r) (eq 3.16), C++"},
-                    {"fs_f77", "N", "the same from the FORTRAN 77 routine"},
-                    {"fs_over_F", "1", "fs_cxx / F, F = minimum rolling force"}});
+  CsvWriter w(csv, columns("fig3_3"));
   double maxdiff = 0.0;
   for (int i = 0; i < n; ++i) {
     const double h = -r + 2.0 * r * i / (n - 1);
@@ -367,7 +350,7 @@ void step_fig34(ReproduceContext& ctx) {
   const auto t = thesis_mwcnt();
   const double r = t.body.radius, W = t.load.normal_load, kjkr = t.load.contact_half_width;
   std::vector<double> ks = {0.0, 0.5e-9, 1.0e-9, 1.5e-9, 2.0e-9, 2.5e-9, 3.0e-9, kjkr};
-  Columns header = {{"h", "m", "push height h of eq 3.16 (|h| <= r)"}, {"h_over_r", "1", "push height over the tube radius"}};
+  Columns header = columns("fig3_4");
   for (std::size_t j = 0; j + 1 < ks.size(); ++j) {
     std::string k = fixed(ks[j] * 1e9, 1);
     std::replace(k.begin(), k.end(), '.', 'p');
@@ -398,10 +381,7 @@ void step_fig34(ReproduceContext& ctx) {
   ctx.produced(csv);
   // Thresholds and the rolling-vs-sliding decision.
   const auto csv2 = ctx.out / "fig3_4_thresholds.csv";
-  CsvWriter w2(csv2, {{"k", "m", "rolling coefficient"},
-                      {"rolling_resistance_fs", "N", "rolling resistance fs = W k / r"},
-                      {"minimum_rolling_force", "N", "minimum rolling force F = 1.01 W k / r"},
-                      {"sliding_threshold_mu_0p1", "N", "sliding threshold mu N (eq 3.19) at mu = 0.1", "number", {{"mu", 0.1}}}});
+  CsvWriter w2(csv2, columns("fig3_4_thresholds"));
   for (double k : ks)
     w2.row({k, rolling::rolling_resistance(W, k, r), rolling::minimum_rolling_force(W, k, r),
             rolling::sliding_threshold(0.1, t.load.sliding_load)});

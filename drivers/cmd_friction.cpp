@@ -22,6 +22,7 @@
 #include "nanopush/sweeps/sweep.hpp"
 #include "nanopush/outputs/csv_reader.hpp"
 #include "cli_checks.hpp"
+#include "columns.hpp"
 #include "registry.hpp"
 
 namespace nanopush::cli {
@@ -230,10 +231,7 @@ int run_bench(const Options& o) {
     std::cout << "| " << r.what << " | " << std::setprecision(4) << r.evals_per_s << " | " << r.evals << " | "
               << std::setprecision(3) << r.seconds << " |\n";
   if (!o.bench_csv.empty()) {
-    CsvWriter f(o.bench_csv, {text_column("evaluation", "the evaluation form timed"),
-                              {"evaluation_rate", "1/s", "evaluations per second"},
-                              count_column("evaluations", "evaluations timed"),
-                              {"time", "s", "wall time of those evaluations"}});
+    CsvWriter f(o.bench_csv, columns("friction_bench"));
     for (const auto& r : rows)
       f.cells({csv_quote(r.what), csv_number(r.evals_per_s), std::to_string(r.evals), csv_number(r.seconds)});
     f.commit();
@@ -302,8 +300,7 @@ void fig3_9(ReproduceContext& ctx) {
   const std::vector<double> alphas = {0.0, kPi / 6, kPi / 4, kPi / 3, kPi / 2};
   const std::vector<std::string> names = {"0", "pi/6", "pi/4", "pi/3", "pi/2"};
   const int n = ctx.quick ? 61 : 601;
-  Columns header = {{"R", "m", "distance of the iCOR from the centre of the contact"},
-                    {"R_over_L", "1", "R / max(a, b)"}};
+  Columns header = columns("fig3_9");
   for (std::size_t k = 0; k < alphas.size(); ++k) {
     header.push_back({"Ffn_alpha" + std::to_string(k), "1",
                       "normalised friction force |f|/(mu N) at iCOR direction alpha = " + names[k], "number",
@@ -415,12 +412,7 @@ void fig3_10_11(ReproduceContext& ctx) {
   double fmin = 1e300, fmax = -1e300, mmax = -1e300, worst_engine = 0.0;
   double mmax_cx = 0, mmax_cy = 0;
   {
-    CsvWriter f(csv, {{"icor_x_nm", "nm", "iCOR x' in body axes (across the width), in nanometres"},
-                      {"icor_y_nm", "nm", "iCOR y' in body axes (along the length), in nanometres"},
-                      {"R", "m", "distance of the iCOR from the centre of the contact"},
-                      {"alpha", "rad", "direction of the iCOR: (x', y') = -R (cos alpha, sin alpha)"},
-                      {"Ffn", "1", "normalised friction force |f|/(mu N) (Fig 3.10)"},
-                      {"Mfn", "1", "normalised friction moment |m_f|/(mu N max(a, b)) (Fig 3.11)"}});
+    CsvWriter f(csv, columns("fig3_10_11"));
     // The iCOR grid as a list of points (R, alpha), evaluated by the sweep engine.
     sweep::Plan plan;
     plan.keys = {"R", "alpha"};

@@ -20,6 +20,7 @@
 #include "nanopush/outputs/io.hpp"
 #include "nanopush/outputs/plot.hpp"
 #include "cli_checks.hpp"
+#include "columns.hpp"
 #include "registry.hpp"
 #include "icor_common.hpp"
 
@@ -49,19 +50,7 @@ int run_formulas(FormulasOptions o) {
   require_positive("--mu", o.mu);
   require_positive("--force-ratio", o.force_ratio, "F / (mu W)");
   const double F = o.force_ratio * o.mu * W;
-  Table t(o.out, {{"yn", "m", "push point: distance from the CM along the rod"},
-                  {"R_experimental_fit", "m", "iCOR distance from the CM, experimental fit (eq 4.1)"},
-                  {"R_falvo", "m", "iCOR distance, Falvo et al. (eq 4.2)"},
-                  {"R_li", "m", "iCOR distance, Li et al. (eq 4.3)"},
-                  {"R_unknown_pressure", "m", "iCOR distance, unknown pressure (eq 4.13)"},
-                  {"R_known_pressure", "m",
-                   "iCOR distance, known uniform pressure (eq 4.7) at F = force_ratio mu W; empty below F_min"},
-                  {"F_min", "N", "minimum push force (eq 4.8)"},
-                  {"F_from_icor", "N", "push force from the eq 4.13 iCOR (eq 4.10)"},
-                  {"R_constrained_negative", "m", "negative root of the constrained cubic (eq 5.4); empty if none"},
-                  {"R_constrained_positive", "m", "positive root of the constrained cubic (eq 5.4); empty if none"},
-                  {"F_constrained_negative", "N", "push force for the negative branch (eq 5.2); empty if none"},
-                  {"R_impulsive", "m", "impulsive iCOR k^2/yn (eq 5.5)"}});
+  Table t(o.out, columns("icor_formulas"));
   for (double yn : sweep(o.yn_min, o.yn_max, o.n, false)) {
     const auto s = icor::solve_constrained_cubic(yn, L, k2, CubicMethod::Brent);
     const double Fmin = icor::minimum_force(o.mu, W, yn, L);
@@ -104,18 +93,7 @@ int run_roots(RootsOptions o) {
   if (yns.empty()) throw InputError("--yn", "(none)", "give --yn values or a sweep with --n");
   // The push point lies on the rod, as in every front end (Python cubic_roots, the C API).
   for (double y : yns) require_range("--yn", y, 0.0, 0.5 * L, "m; push point on the rod, at most b = L/2");
-  Table t(o.out, {{"yn", "m", "push point: distance from the CM along the rod"},
-                  text_column("solver", "brent (bracketing) or eigen/lapack (companion-matrix eigenvalues)"),
-                  text_column("language", "cxx or f77"),
-                  count_column("n_real", "real roots of the cubic (eq 5.4)"),
-                  count_column("n_complex", "complex roots"),
-                  count_column("n_infinite", "roots at infinity (leading coefficient 0, yn = 0)"),
-                  {"root_1", "m", "first real root; empty if none"},
-                  {"root_2", "m", "second real root; empty if none"},
-                  {"root_3", "m", "third real root; empty if none"},
-                  {"negative_branch", "m", "the negative branch's root (Table 5.1's, signed); empty if none"},
-                  {"positive_branch", "m", "the positive branch's root; empty if none"},
-                  {"max_relative_residual", "1", "largest relative residual of the roots in the cubic"}});
+  Table t(o.out, columns("icor_roots"));
   for (double yn : yns)
     for (const auto& s : all_solvers(L, k2)) {
       const auto sol = s.solve(yn);
@@ -168,11 +146,7 @@ int run_estimate_mu(const MuOptions& o) {
       << "\n";
   std::cout << s.str();
   if (!o.out.empty()) {
-    Table t(o.out, {text_column("input", "mu (the estimate), W (the load) or an input: F, yn, R, L, H"),
-                    {"value", "input unit", "value of the input in its SI unit (N, m, J; 1 for mu)"},
-                    {"sigma", "input unit", "standard uncertainty, in the input's SI unit"},
-                    {"dmu_dinput", "1/input unit", "sensitivity d mu / d input, in 1 / the input's unit"},
-                    {"contribution", "1", "|d mu / d input| sigma: the input's share of mu's uncertainty"}});
+    Table t(o.out, columns("icor_estimate_mu"));
     t.row({"mu", csv_number(e.mu), csv_number(e.sigma), "", ""});
     t.row({"W", csv_number(e.load), "", "", ""});
     for (const auto& c : e.contributions)
@@ -231,21 +205,7 @@ int run_dynamic(DynamicOptions o) {
   for (double r : o.force_ratio) require_positive("--force-ratio", r, "F / (mu W)");
   const auto times = dynamic_times(o.t_end, o.samples);
   const double a = o.half_width > 0.0 ? o.half_width : icor::rod_contact_half_width(o.rod);
-  Table t(o.out, {{"yn", "m", "push point: distance from the CM along the rod"},
-                  {"force_ratio", "1", "push magnitude F / (mu W)"},
-                  {"force", "N", "push force F"},
-                  {"t", "s", "time of the reading"},
-                  text_column("state", "stuck, rotation or translation"),
-                  {"R", "m", "distance of the iCOR from the CM; empty when stuck"},
-                  {"R_axial", "m", "iCOR position along the rod axis; empty when stuck"},
-                  {"offset", "m", "iCOR distance off the rod axis; empty when stuck or translating"},
-                  {"theta", "rad", "rotation of the rod since t = 0"},
-                  {"R_impulsive", "m", "impulsive iCOR k^2/yn (eq 5.5)"},
-                  {"R_quasi_static_rectangle", "m", "quasi-static iCOR of the 2a x L contact strip"},
-                  {"R_unknown_pressure", "m", "quasi-static iCOR, unknown pressure (eq 4.13)"},
-                  {"F_min_rectangle_ratio", "1", "minimum push force of the strip over mu W"},
-                  {"half_width", "m", "contact strip half-width a"},
-                  text_column("integrator", "integrator used: bulirsch-stoer or cvode")});
+  Table t(o.out, columns("icor_dynamic"));
   for (double yn : yns) {
     const auto qs = icor::rectangle_quasi_static(a, b, yn);
     for (double ratio : o.force_ratio) {
@@ -292,18 +252,7 @@ int run_rectangle(RectangleOptions o) {
   require_range("--yn-max", o.yn_max, o.yn_min, b, "m");
   if (o.aspect.empty()) throw InputError("--aspect", "(none)", "give at least one a/b");
   for (double ab : o.aspect) require_range("--aspect", ab, 1e-6, 1.0, "a/b");
-  Table t(o.out, {{"aspect", "1", "half-width over half-length a/b"},
-                  {"a", "m", "half-width of the rectangle"},
-                  {"b", "m", "half-length of the rectangle (L/2)"},
-                  {"yn", "m", "push point: distance from the CM along the rod"},
-                  {"R", "m", "quasi-static iCOR distance of the rectangle; empty if not finite"},
-                  {"alpha", "rad", "direction of the iCOR"},
-                  {"F_min_ratio", "1", "minimum push force of the rectangle over mu W"},
-                  {"R_unknown_pressure", "m", "quasi-static iCOR of the line contact (eq 4.13)"},
-                  {"F_min_line_ratio", "1", "minimum push force of the line contact over mu W (eq 4.8)"},
-                  {"relative_deviation_R", "1", "R / R_unknown_pressure - 1; empty if R is not finite"},
-                  count_column("converged", "1 if the solve converged, else 0"),
-                  {"residual", "1", "residual of the quasi-static solve"}});
+  Table t(o.out, columns("icor_rectangle"));
   for (double ab : o.aspect)
     for (double yn : sweep(o.yn_min, o.yn_max, o.n, false)) {
       const auto q = icor::rectangle_quasi_static(ab * b, b, yn);

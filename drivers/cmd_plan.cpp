@@ -13,6 +13,7 @@
 #include "nanopush/planning/check.hpp"
 #include "nanopush/planning/plan.hpp"
 #include "cli_checks.hpp"
+#include "columns.hpp"
 #include "registry.hpp"
 #include "scene_args.hpp"
 #include "sweep_mpi.hpp"
@@ -38,15 +39,7 @@ struct PlanCliOptions {
 };
 
 Columns plan_columns() {
-  return {{"push", "1", "push number, from 1"},
-          {"start_x", "m", "tip centre where the push starts, x (world axes): tip.start_x"},
-          {"start_y", "m", "tip centre where the push starts, y (world axes): tip.start_y"},
-          {"direction", "rad", "world direction the tip moves in: tip.direction"},
-          {"speed", "m/s", "tip speed: tip.speed"},
-          {"travel", "m", "tip travel: tip.travel"},
-          {"x_end", "m", "x of the bar's centre the push leaves (predicted)"},
-          {"y_end", "m", "y of the bar's centre the push leaves (predicted)"},
-          {"theta_end", "rad", "orientation the push leaves (predicted)"}};
+  return columns("plan");
 }
 
 void write_outputs(const Scene& sc, const plan::PlanResult& r, const std::filesystem::path& dir) {
@@ -69,8 +62,7 @@ void write_outputs(const Scene& sc, const plan::PlanResult& r, const std::filesy
   }
   {  // The tip's waypoints an AFM script follows: lower at start, move to end, lift.
     CsvWriter w(dir / "tip_path.csv",
-                {{"push", "1", "push number"}, {"x", "m", "tip centre x (world)"}, {"y", "m", "tip centre y (world)"},
-                 {"lowered", "1", "1: the tip touches the surface from this waypoint to the next"}},
+                columns("plan_tip_path"),
                 sc.name);
     int i = 1;
     for (const auto& p : r.pushes) {
@@ -83,7 +75,7 @@ void write_outputs(const Scene& sc, const plan::PlanResult& r, const std::filesy
   }
   {  // Outlines of the bar at the start, after each push, and the goal (gnuplot blocks).
     CsvWriter w(dir / "poses.csv",
-                {{"pose", "1", "0 start, k after push k, -1 the goal"}, {"x", "m", "corner x"}, {"y", "m", "corner y"}},
+                columns("plan_poses"),
                 sc.name);
     auto outline = [&](int k, const plan::Pose& p) {
       const double a = sc.geometry.a, b = sc.geometry.b, c = std::cos(p.theta), s = std::sin(p.theta);
@@ -179,12 +171,7 @@ int closed_loop_cmd(const PlanCliOptions& o, const Scene& sc, const plan::Pose& 
   const std::filesystem::path dir = o.out.empty() ? sc.name + ".plan" : o.out;
   std::filesystem::create_directories(dir);
   CsvWriter w(dir / "closed_loop.csv",
-              {{"step", "1", "push number"}, {"seen_x", "m", "imaged x (truth + noise)"}, {"seen_y", "m", "imaged y"},
-               {"seen_theta", "rad", "imaged orientation"}, {"true_x", "m", "true x when imaged"}, {"true_y", "m", "true y"},
-               {"true_theta", "rad", "true orientation"}, {"start_x", "m", "tip start x of the push made"},
-               {"start_y", "m", "tip start y"}, {"direction", "rad", "tip direction"}, {"travel", "m", "tip travel"},
-               {"plan_pushes", "1", "pushes the re-plan from this image needed"},
-               {"tip_mu", "1", "the model's tip friction the push was planned with (re-fitted after each push; empty: not a tip scene)"}},
+              columns("plan_closed_loop"),
               sc.name);
   w.run_info({{"status", r.status}, {"final_distance_m", r.final_distance},
               {"final_angle_rad", r.final_angle}, {"seed", o.seed}, {"pushes_not_made", r.unsimulated},

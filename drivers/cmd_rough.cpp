@@ -11,6 +11,7 @@
 #include "nanopush/outputs/plot.hpp"
 #include "nanopush/outputs/trajectory_csv.hpp"
 #include "nanopush/engines/engines.hpp"
+#include "columns.hpp"
 #include "registry.hpp"
 
 namespace nanopush::cli {
@@ -104,31 +105,7 @@ void reproduce_rough(ReproduceContext& ctx) {
     if (!ctx.quick || f == 12 || f == 17 || f == 18 || f == 25 || f == 29) figs.push_back(f);
 
   CsvWriter summary(dir / "summary.csv",
-                    {{"fig", "1", "thesis figure 3.<fig> (scene thesis/fig3_<fig>)", "integer"},
-                     {"mu", "1", "friction coefficient of the scene"},
-                     count_column("thesis_complete", "1 if the thesis law ran to t_end, 0 if it stopped (chatter)"),
-                     {"thesis_t_reached", "s", "last output time reached under the thesis law"},
-                     count_column("thesis_nfcn_cxx", "RHS evaluations, thesis law, C++ faithful engine"),
-                     count_column("thesis_nfcn_f77", "RHS evaluations, thesis law, F77 engine"),
-                     count_column("thesis_nrejct_cxx", "rejected steps, thesis law, C++ faithful engine"),
-                     {"thesis_dev_theta_cxx_f77", "rad", "max |theta_cxx - theta_f77|, thesis law"},
-                     {"thesis_energy_rel", "1", "energy balance error / max work, thesis law"},
-                     {"thesis_power_max", "W", "largest friction power (must be <= 0), thesis law"},
-                     count_column("coulomb_nfcn", "RHS evaluations, coulomb law, C++ faithful engine"),
-                     count_column("coulomb_events", "rest events (velocity zero located), coulomb law"),
-                     {"coulomb_stuck_at", "s", "time the body stuck for good, coulomb law; -1 if it never did"},
-                     {"coulomb_energy_rel", "1", "energy balance error / max work, coulomb law"},
-                     {"coulomb_power_max", "W", "largest friction power (must be <= 0), coulomb law"},
-                     count_column("cvode_nfcn", "RHS evaluations, coulomb law, CVODE (rtol / 100)"),
-                     {"cvode_dev_theta", "rad", "max |theta_cvode - theta_bs|, coulomb law"},
-                     {"coulomb_theta_min", "rad", "smallest orientation, coulomb law"},
-                     {"coulomb_theta_max", "rad", "largest orientation, coulomb law"},
-                     {"coulomb_mf_min", "N m", "smallest friction moment, coulomb law"},
-                     {"coulomb_mf_max", "N m", "largest friction moment, coulomb law"},
-                     {"coulomb_fx_min", "N", "smallest friction force x, coulomb law"},
-                     {"coulomb_fx_max", "N", "largest friction force x, coulomb law"},
-                     {"coulomb_f_min", "N", "smallest friction force magnitude, coulomb law"},
-                     {"coulomb_f_max", "N", "largest friction force magnitude, coulomb law"}});
+                    columns("rough_summary"));
   std::ostringstream table;
   table << "| Fig | mu | thesis law: RHS evals C++ / F77 | reached | C++-F77 theta | coulomb law: RHS evals | "
            "rest events | energy balance (thesis / coulomb) | CVODE theta dev |\n"

@@ -11,6 +11,7 @@
 #include "nanopush/outputs/io.hpp"
 #include "nanopush/outputs/plot.hpp"
 #include "nanopush/engines/engines.hpp"
+#include "columns.hpp"
 #include "registry.hpp"
 
 namespace nanopush::cli {
@@ -23,20 +24,7 @@ void reproduce_fig3_6(ReproduceContext& ctx) {
   fs::create_directories(dir);
   const std::vector<std::string> cases = {"a", "b", "c", "d", "e", "f", "g", "h"};
   CsvWriter summary(dir / "summary.csv",
-                    {text_column("case", "scene of Fig 3.6 (thesis/fig3_6<case>)"),
-                     {"theta0", "rad", "initial orientation"},
-                     {"theta_eq", "rad", "equilibrium orientation of the pendulum (push line through the CM)"},
-                     {"period_exact", "s", "period of the exact pendulum solution (0: no oscillation)"},
-                     {"max_err_theta_cxx", "rad", "max |theta - theta_exact| over the outputs, C++ faithful engine"},
-                     {"max_err_theta_f77", "rad", "max |theta - theta_exact| over the outputs, F77 engine"},
-                     {"max_dev_theta_cxx_f77", "rad", "max |theta_cxx - theta_f77| over the outputs"},
-                     {"energy_drift_rel_cxx", "1", "max |E(t) - E(0)| / (F lever), C++ engine"},
-                     count_column("nfcn_cxx", "RHS evaluations, C++ faithful engine"),
-                     count_column("nfcn_f77", "RHS evaluations, F77 engine"),
-                     count_column("naccpt_cxx", "accepted steps, C++ faithful engine"),
-                     count_column("naccpt_f77", "accepted steps, F77 engine"),
-                     count_column("nrejct_cxx", "rejected steps, C++ faithful engine"),
-                     count_column("nrejct_f77", "rejected steps, F77 engine")});
+                    columns("smooth_summary"));
   plot::Figure fig;
   fig.title = "Fig 3.6: nanobar pushed on a smooth surface (theta against t; C++ and F77 engines)";
   fig.rows = 4;
@@ -80,11 +68,7 @@ void reproduce_fig3_6(ReproduceContext& ctx) {
       return 0.5 * sc.inertia * r[col::omega] * r[col::omega] - Fd * std::cos(r[col::theta] - sc.push.theta_equilibrium());
     };
     CsvWriter err(dir / (sc.name + "_error.csv"),
-                  {{"t", "s", "time"},
-                   {"theta_exact", "rad", "orientation of the exact pendulum solution"},
-                   {"err_cxx", "rad", "|theta - theta_exact|, C++ faithful engine"},
-                   {"err_f77", "rad", "|theta - theta_exact|, F77 engine"},
-                   {"dev_cxx_f77", "rad", "|theta_cxx - theta_f77|: the two engines' curves, which coincide, apart"}},
+                  columns("smooth_error"),
                   scene_id);
     double ec = 0, ef = 0, dev = 0, drift = 0;
     for (std::size_t i = 0; i < tc.rows.size(); ++i) {

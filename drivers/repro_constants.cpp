@@ -14,6 +14,7 @@
 #include "nanopush/models/rolling.hpp"
 #include "nanopush/models/surface_forces.hpp"
 #include "nanopush/outputs/io.hpp"
+#include "columns.hpp"
 #include "registry.hpp"
 
 namespace nanopush::cli {
@@ -115,9 +116,7 @@ void reproduce_constants(ReproduceContext& ctx) {
                   falls ? "agrees" : "DIFFERS: not monotone"});
 
   CsvWriter csv(ctx.out / "constants.csv",
-                {text_column("quantity", "the printed constant or statement"), text_column("unit", "its unit"),
-                 text_column("printed", "as the thesis prints it"), text_column("ours", "from the thesis' own formulas"),
-                 text_column("verdict", "agrees, or how it differs")});
+                columns("constants"));
   std::ostringstream t;
   t << "| quantity | unit | printed | ours | verdict |\n|---|---|---|---|---|\n";
   for (const Row& row : rows) {

@@ -13,6 +13,7 @@
 #include "nanopush/models/icor_dynamic.hpp"
 #include "nanopush/outputs/io.hpp"
 #include "nanopush/outputs/plot.hpp"
+#include "columns.hpp"
 #include "registry.hpp"
 #include "icor_common.hpp"
 
@@ -48,11 +49,7 @@ void step_fig5_3(ReproduceContext& ctx) {
   };
   const int n = ctx.quick ? 8 : 59;
   const auto csv = ctx.out / "fig5_3.csv";
-  Columns h = {{"yn", "m", "push point: distance from the CM along the rod"},
-               {"R_impulsive", "m", "impulsive iCOR k^2/yn (eq 5.5)"},
-               {"R_unknown_pressure", "m", "quasi-static iCOR, unknown pressure (eq 4.13)"},
-               {"R_constrained_table_branch", "m", "|R| of the constrained cubic's Table 5.1 branch (eq 5.4)"},
-               {"R_quasi_static_rectangle", "m", "quasi-static iCOR of the 2a x L contact strip"}};
+  Columns h = columns("fig5_3");
   for (double r : kDynamicRatios)
     h.push_back({"R_dynamic_ratio_" + value_name(r), "m",
                  "dynamic iCOR along the axis at t = 1e-10 s, F = " + ratio_name(r) + " mu W; empty if not rotating",
@@ -96,14 +93,7 @@ void step_fig5_3(ReproduceContext& ctx) {
 
   // The two limits, read along the way.
   const auto lim = ctx.out / "fig5_3_limits.csv";
-  Table tl(lim, {text_column("limit", "which limit: impulsive (fixed impulse), quasi-static (F -> F_min), no motion"),
-                 {"yn", "m", "push point: distance from the CM along the rod"},
-                 {"parameter", "1", "F/(mu W) for the impulsive limit; F/F_min - 1 for the quasi-static one and the check"},
-                 {"t", "s", "time of the reading"},
-                 {"R", "m", "dynamic iCOR along the axis; empty when stuck"},
-                 {"reference", "m", "the limit's iCOR: impulsive (eq 5.5) or quasi-static rectangle"},
-                 {"relative_distance", "1", "|R / reference - 1|; empty when stuck"},
-                 text_column("integrator", "integrator used: bulirsch-stoer or cvode")});
+  Table tl(lim, columns("fig5_3_limits"));
   struct LimitRow {
     double yn, p, R, ref, d;
   };
@@ -217,9 +207,7 @@ void step_icor_rectangle(ReproduceContext& ctx) {
   const double L = rod.length, b = rod.half_length();
   const int n = ctx.quick ? 12 : 60;
   const auto csv = ctx.out / "icor_rectangle.csv";
-  Columns h = {{"yn", "m", "push point: distance from the CM along the rod"},
-               {"R_unknown_pressure", "m", "quasi-static iCOR of the line contact (eq 4.13)"},
-               {"F_min_line_ratio", "1", "minimum push force of the line contact over mu W (eq 4.8)"}};
+  Columns h = columns("icor_rectangle_figure");
   for (double ab : kAspects)
     h.push_back({"R_aspect_" + value_name(ab), "m", "quasi-static iCOR of the 2a x L rectangle, a/b = " + ratio_name(ab),
                  "number", {{"aspect", ab}}});

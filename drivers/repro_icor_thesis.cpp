@@ -14,6 +14,7 @@
 #include "nanopush/outputs/io.hpp"
 #include "nanopush/outputs/plot.hpp"
 #include "nanopush/sweeps/sweep.hpp"
+#include "columns.hpp"
 #include "registry.hpp"
 #include "icor_common.hpp"
 
@@ -27,8 +28,7 @@ void step_table5_1(ReproduceContext& ctx) {
   const auto rod = icor::nanorod();
   const double L = rod.length, k2 = rod.gyration_squared();
   const auto solvers = all_solvers(L, k2);
-  Columns header = {{"yn", "m", "push point: distance from the CM along the rod"},
-                    {"thesis", "m", "|R| printed in Table 5.1"}};
+  Columns header = columns("table5_1");
   for (const auto& s : solvers) {
     header.push_back({s.name + "_negative", "m", "negative root of the constrained cubic (eq 5.4), " + s.name});
     header.push_back({s.name + "_positive", "m", "positive root (the other branch), " + s.name + "; empty if none"});
@@ -130,19 +130,7 @@ void step_error_analysis(ReproduceContext& ctx) {
     }
     lines.push_back({"5.4", s.name, R, icor::kThesisStdConstrained});
   }
-  Table t(path, {text_column("equation", "4.13 (unknown pressure) or 5.4 (constrained cubic)"),
-                 text_column("solver", "closed form, or the solver of the cubic"),
-                 count_column("n", "samples"),
-                 {"yn_first", "m", "first push point"},
-                 {"yn_last", "m", "last push point"},
-                 {"yn_step", "m", "push point spacing"},
-                 {"mean_R_nm", "nm", "mean |R| over the samples, in nanometres (as the thesis)"},
-                 {"sample_std_nm", "nm", "sample standard deviation of |R| (n - 1), in nanometres"},
-                 {"population_std_nm", "nm", "population standard deviation of |R| (n), in nanometres"},
-                 {"thesis_std_nm", "nm", "standard deviation printed in section 5.6.1.1, in nanometres"},
-                 {"truncated_4dp", "nm", "sample_std_nm truncated to 4 decimals"},
-                 {"rounded_4dp", "nm", "sample_std_nm rounded to 4 decimals"},
-                 {"deviation_nm", "nm", "sample_std_nm - thesis_std_nm"}});
+  Table t(path, columns("icor_error_analysis"));
   for (const auto& l : lines) {
     const double n = static_cast<double>(l.R.size());
     double mean = 0.0;
@@ -204,11 +192,7 @@ void step_fig4_2(ReproduceContext& ctx) {
   const double b = rod.half_length();
   const int n = ctx.quick ? 30 : 296;
   const auto csv = ctx.out / "fig4_2.csv";
-  CsvWriter w(csv, {{"yn", "m", "push point: distance from the CM along the rod"},
-                    {"R_experimental_fit", "m", "iCOR distance from the CM, experimental fit (eq 4.1)"},
-                    {"R_falvo", "m", "iCOR distance, Falvo et al. (eq 4.2)"},
-                    {"R_li", "m", "iCOR distance, Li et al. (eq 4.3)"},
-                    {"R_unknown_pressure", "m", "iCOR distance, unknown pressure (eq 4.13)"}});
+  CsvWriter w(csv, columns("fig4_2"));
   double worst = 0.0;
   const auto yns = sweep(0.0, b, n, false);
   const auto v = icor_by_sweep(yns, {}, {"R_experimental_fit", "R_falvo", "R_li", "R_unknown_pressure"});
@@ -338,12 +322,7 @@ void step_fig5_2(ReproduceContext& ctx) {
   const double b = rod.half_length(), k2 = rod.gyration_squared();
   const int n = ctx.quick ? 30 : 296;
   const auto csv = ctx.out / "fig5_2.csv";
-  Table t(csv, {{"yn", "m", "push point: distance from the CM along the rod"},
-                {"R_unknown_pressure", "m", "iCOR distance, unknown pressure (eq 4.13)"},
-                {"R_constrained_negative", "m", "negative root of the constrained cubic (eq 5.4); empty if none"},
-                {"R_constrained_positive", "m", "positive root of the constrained cubic (eq 5.4); empty if none"},
-                {"R_constrained_far_side", "m", "-R_constrained_negative: Table 5.1's branch, > 0 on the far side"},
-                {"R_constrained_near_side", "m", "-R_constrained_positive: the other branch; empty if none"}});
+  Table t(csv, columns("fig5_2"));
   const auto yns = sweep(0.0, b, n, false);
   const auto v = icor_by_sweep(yns, {}, {"R_unknown_pressure", "R_constrained_negative", "R_constrained_positive"},
                                std::nullopt, "eigen");
@@ -358,8 +337,7 @@ void step_fig5_2(ReproduceContext& ctx) {
   const auto pts = ctx.out / "fig5_2_bifurcation.csv";
   {
     const double r0 = std::sqrt((b * b - 2.0 * k2) / 3.0);
-    CsvWriter w(pts, {{"yn", "m", "push point (0: the bifurcation)"},
-                      {"R", "m", "roots +-sqrt((b^2 - 2 k^2)/3) of eq 5.4 at yn = 0"}});
+    CsvWriter w(pts, columns("fig5_2_bifurcation"));
     w.row({0.0, r0});
     w.row({0.0, -r0});
     w.commit();

@@ -14,6 +14,7 @@
 #include "nanopush/outputs/io.hpp"
 #include "nanopush/outputs/plot.hpp"
 #include "nanopush/outputs/trajectory_csv.hpp"
+#include "columns.hpp"
 #include "registry.hpp"
 
 namespace nanopush::cli {
@@ -166,13 +167,7 @@ void reproduce_printed_readings(ReproduceContext& ctx) {
   };
   const Row best = *std::min_element(rows.begin(), rows.end(), better);
 
-  Columns cols = {count_column("reading", "reading index (bit 0 corrects F1, bit 1 F3, bit 2 cubes in C4, bit 3 prints 3.50)"),
-                  count_column("fy_sign_printed", "1: eq 3.46's sign of fy' as printed (F1)"),
-                  count_column("omega_sign_printed", "1: eq 3.47 without sign(theta-dot) as printed (F3)"),
-                  count_column("c4_squares_nm", "1: C4 with squares in nm as printed (F2); 0: cubes"),
-                  count_column("eq3_50_printed", "1: eq 3.50's minus sign as printed"),
-                  count_column("panels", "printed panels of Figs 3.18 and 3.29 the run lies inside (of 10)"),
-                  count_column("claims", "qualitative claims of the text that hold (of 9)")};
+  Columns cols = columns("printed_readings");
   for (int fig : {18, 29}) {
     const std::string f = "fig3_" + std::to_string(fig) + "_";
     cols.push_back({f + "t_reached", "s", "last output time reached (1.6e-9 = the figure's end)"});

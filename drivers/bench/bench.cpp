@@ -10,6 +10,7 @@
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/outputs/io.hpp"
 #include "nanopush/outputs/plot.hpp"
+#include "columns.hpp"
 
 namespace nanopush::bench {
 
@@ -265,23 +266,7 @@ std::vector<Row> run_sweep(const Problem& p, const std::vector<Engine>& engines,
 }
 
 const Columns& csv_column_specs() {
-  static const Columns c = {
-      text_column("engine", "engine label (docs/performance.md)"),
-      text_column("precision", "scalar of the integration: double, long or quad"),
-      {"rtol", "1", "relative tolerance (atol_i = rtol scale_i)"},
-      {"error", "1", "max over outputs and components of |y - y_ref| / (scale + |y_ref|); empty if the solve failed"},
-      count_column("nfcn", "RHS evaluations"),
-      count_column("naccpt", "accepted steps; -1 = not reported by the engine"),
-      count_column("nrejct", "rejected steps; -1 = not reported by the engine"),
-      {"wall_s", "s", "median wall time of `repeats` solves (timing: varies run to run)"},
-      {"rhs_s", "s", "median time of nfcn bare RHS calls (timing)"},
-      {"overhead_ns_per_rhs", "ns", "(wall_s - rhs_s) / nfcn, in nanoseconds (timing)"},
-      count_column("repeats", "timed solves per point"),
-      count_column("status", "0 = success; -2 = error below the reference's resolution; else the engine's failure code"),
-      {"wall_spread", "1", "(upper - lower quartile) / median of the repeats' wall times; empty with < 4 repeats"},
-      {"own_ns_per_rhs", "ns",
-       "the integrator alone (RHS values replayed) per RHS call, in nanoseconds; empty without --replay (timing)"},
-  };
+  static const Columns c = cli::columns("bench");
   return c;
 }
 
