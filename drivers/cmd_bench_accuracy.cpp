@@ -210,17 +210,15 @@ int run_bench_accuracy(const BenchAccuracyOptions& o) {
 RegisterCommand reg{{"bench-accuracy",
                      "Benchmark of the error estimate (honesty) and of --accuracy (met, cost) on a Latin hypercube of "
                      "rough scenes (docs/accuracy.md)",
-                     94, [](CLI::App& app) -> std::function<int()> {
-                       auto o = std::make_shared<BenchAccuracyOptions>();
-                       app.add_option("--out", o->out, "output directory")->capture_default_str();
-                       app.add_option("--scenes", o->scenes, "scenes of the Latin hypercube")
+                     94, options_then<BenchAccuracyOptions>(run_bench_accuracy, [](CLI::App& app, BenchAccuracyOptions& o) {
+                       app.add_option("--out", o.out, "output directory")->capture_default_str();
+                       app.add_option("--scenes", o.scenes, "scenes of the Latin hypercube")
                            ->check(count(2, 100000))
                            ->capture_default_str();
-                       app.add_option("--seed", o->seed, "its seed")
+                       app.add_option("--seed", o.seed, "its seed")
                            ->check(count(0, 1000000000000))
                            ->capture_default_str();
-                       return [o] { return run_bench_accuracy(*o); };
-                     }}};
+                     })}};
 
 RegisterReproduce step{{"accuracy",
                         "error estimate against the true error, and the cost of --accuracy, on a Latin hypercube of "

@@ -182,15 +182,13 @@ int run_bench_atlas(const AtlasOptions& o) {
 RegisterCommand reg{{"bench-atlas",
                      "Stability atlas: outcome, achieved error over the accuracy asked and cost over (mu, F/(mu N)) "
                      "and (length, force), both friction laws (docs/accuracy.md)",
-                     95, [](CLI::App& app) -> std::function<int()> {
-                       auto o = std::make_shared<AtlasOptions>();
-                       app.add_option("--out", o->out, "output directory")->capture_default_str();
-                       app.add_option("--points", o->points, "points per axis")->check(count(2, 200))->capture_default_str();
-                       app.add_option("--accuracy", o->accuracy, "the accuracy asked at every point")
+                     95, options_then<AtlasOptions>(run_bench_atlas, [](CLI::App& app, AtlasOptions& o) {
+                       app.add_option("--out", o.out, "output directory")->capture_default_str();
+                       app.add_option("--points", o.points, "points per axis")->check(count(2, 200))->capture_default_str();
+                       app.add_option("--accuracy", o.accuracy, "the accuracy asked at every point")
                            ->check(CLI::Range(kAccuracyMin, kAccuracyMax))
                            ->capture_default_str();
-                       return [o] { return run_bench_atlas(*o); };
-                     }}};
+                     })}};
 
 RegisterReproduce step{{"atlas",
                         "stability atlas: outcome, achieved error and cost over (mu, F/(mu N)) and (length, force)", 81,

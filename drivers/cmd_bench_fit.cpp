@@ -246,15 +246,13 @@ int run_bench_fit(const BenchFitOptions& o) {
 RegisterCommand reg{{"bench-fit",
                      "Benchmark of the trajectory fit: forward solves and wall time against Brent, coverage of the 95 % "
                      "intervals over synthetic data sets (docs/fitting.md)",
-                     93, [](CLI::App& app) -> std::function<int()> {
-                       auto o = std::make_shared<BenchFitOptions>();
-                       app.add_option("--out", o->out, "output directory")->capture_default_str();
-                       app.add_option("--coverage", o->coverage, "synthetic data sets per configuration")
+                     93, options_then<BenchFitOptions>(run_bench_fit, [](CLI::App& app, BenchFitOptions& o) {
+                       app.add_option("--out", o.out, "output directory")->capture_default_str();
+                       app.add_option("--coverage", o.coverage, "synthetic data sets per configuration")
                            ->check(count(10, 100000))
                            ->capture_default_str();
-                       app.add_flag("--quick", o->quick, "20 data sets, no coverage check (for tests)");
-                       return [o] { return run_bench_fit(*o); };
-                     }}};
+                       app.add_flag("--quick", o.quick, "20 data sets, no coverage check (for tests)");
+                     })}};
 
 }  // namespace NANOPUSH_UNITY_ID
 }  // namespace

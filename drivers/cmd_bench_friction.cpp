@@ -425,24 +425,22 @@ RegisterCommand reg{
      "Benchmark of the friction wrench: ns per call of the production forms against the F77 routine's forms (same "
      "binary, interleaved), by evaluation form and at a rough scene's own RHS evaluations, and the scene's run "
      "with each; CSV, PNG and report.md (docs/performance.md)",
-     92, [](CLI::App& app) -> std::function<int()> {
-       auto o = std::make_shared<BenchFrictionOptions>();
-       app.add_option("--out", o->out, "output directory: friction_bench.csv (+ .schema.json), friction_bench.png "
+     92, options_then<BenchFrictionOptions>(bench_friction, [](CLI::App& app, BenchFrictionOptions& o) {
+       app.add_option("--out", o.out, "output directory: friction_bench.csv (+ .schema.json), friction_bench.png "
                                        "(+ .gp), report.md")
            ->capture_default_str();
-       app.add_option("--scene", o->scene, "rough scene (file or preset) whose run is timed with each form")
+       app.add_option("--scene", o.scene, "rough scene (file or preset) whose run is timed with each form")
            ->capture_default_str();
-       add_set_option(app, o->sets);
-       app.add_option("--repeats", o->repeats, "timed pairs (old, new) per workload and of the run")
+       add_set_option(app, o.sets);
+       app.add_option("--repeats", o.repeats, "timed pairs (old, new) per workload and of the run")
            ->check(count(1, 1000))
            ->capture_default_str();
-       app.add_option("--seconds", o->seconds, "time per wrench workload, both forms together (s)")
+       app.add_option("--seconds", o.seconds, "time per wrench workload, both forms together (s)")
            ->check(CLI::Range(1e-4, 600.0))
            ->capture_default_str();
-       app.add_flag("--no-plot", o->no_plot, "no PNG (the CSV and report only)");
-       app.add_flag("--quiet", o->quiet, "no progress on standard error");
-       return [o] { return bench_friction(*o); };
-     }}};
+       app.add_flag("--no-plot", o.no_plot, "no PNG (the CSV and report only)");
+       app.add_flag("--quiet", o.quiet, "no progress on standard error");
+     })}};
 
 }  // namespace NANOPUSH_UNITY_ID
 }  // namespace

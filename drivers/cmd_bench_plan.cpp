@@ -194,20 +194,18 @@ int run_bench_plan(const BenchPlanOptions& o) {
 
 RegisterCommand reg{{"bench-plan",
                      "Benchmark of the push planner against target-oriented pushing on seeded tasks (docs/planning.md)",
-                     94, [](CLI::App& app) -> std::function<int()> {
-                       auto o = std::make_shared<BenchPlanOptions>();
-                       app.add_option("--out", o->out, "output directory")->capture_default_str();
-                       app.add_option("--tasks", o->tasks, "number of seeded tasks")->check(count(1, 100000))->capture_default_str();
-                       app.add_option("--max-pushes", o->max_pushes, "pushes allowed per task")
+                     94, options_then<BenchPlanOptions>(run_bench_plan, [](CLI::App& app, BenchPlanOptions& o) {
+                       app.add_option("--out", o.out, "output directory")->capture_default_str();
+                       app.add_option("--tasks", o.tasks, "number of seeded tasks")->check(count(1, 100000))->capture_default_str();
+                       app.add_option("--max-pushes", o.max_pushes, "pushes allowed per task")
                            ->check(count(1, 1000))
                            ->capture_default_str();
-                       app.add_option("--seed", o->seed, "seed of the tasks")->check(count(0, 1000000000000LL))->capture_default_str();
-                       app.add_option("--closed-loop", o->closed_loop,
+                       app.add_option("--seed", o.seed, "seed of the tasks")->check(count(0, 1000000000000LL))->capture_default_str();
+                       app.add_option("--closed-loop", o.closed_loop,
                                       "closed-loop tasks (the first N tasks again, mu unknown within +-30 %, imaging noise; 0: none)")
                            ->check(count(0, 100000))
                            ->capture_default_str();
-                       return [o] { return run_bench_plan(*o); };
-                     }}};
+                     })}};
 
 }  // namespace NANOPUSH_UNITY_ID
 }  // namespace

@@ -674,24 +674,22 @@ RegisterCommand reg{
      "Benchmark of the sweep machinery: points/s of a rough-surface grid (fig3_18, coulomb law; mu x push offset x "
      "push angle) on 1 and 2 threads and 1 and 2 MPI ranks, the overhead over the points alone and the parallel "
      "efficiency; CSV, PNG and report.md (docs/sweeps.md)",
-     91, [](CLI::App& app) -> std::function<int()> {
-       auto o = std::make_shared<BenchSweepOptions>();
-       app.add_option("--out", o->out,
+     91, options_then<BenchSweepOptions>(bench_sweep, [](CLI::App& app, BenchSweepOptions& o) {
+       app.add_option("--out", o.out,
                       "output directory: sweep_bench.csv (+ .schema.json), sweep_bench.png (+ .gp), report.md")
            ->capture_default_str();
-       app.add_option("--repeats", o->repeats, "timed runs per configuration; the median wall time (s) is reported")
+       app.add_option("--repeats", o.repeats, "timed runs per configuration; the median wall time (s) is reported")
            ->check(count(1, 100))
            ->capture_default_str();
-       app.add_option("--points-per-axis", o->per_axis,
+       app.add_option("--points-per-axis", o.per_axis,
                       "values per axis K (K^3 points): surface.mu 0.02-0.2 (1), push.yn 0-45e-9 m, push.direction "
                       "0-0.5 rad")
            ->check(count(2, 40))
            ->capture_default_str();
-       app.add_flag("--no-mpi", o->no_mpi, "skip the MPI configurations (mpirun -np 1 and 2)");
-       app.add_flag("--no-plot", o->no_plot, "no PNG (the CSV and report only)");
-       app.add_flag("--quiet", o->quiet, "no progress on standard error");
-       return [o] { return bench_sweep(*o); };
-     }}};
+       app.add_flag("--no-mpi", o.no_mpi, "skip the MPI configurations (mpirun -np 1 and 2)");
+       app.add_flag("--no-plot", o.no_plot, "no PNG (the CSV and report only)");
+       app.add_flag("--quiet", o.quiet, "no progress on standard error");
+     })}};
 
 }  // namespace NANOPUSH_UNITY_ID
 }  // namespace

@@ -202,19 +202,17 @@ RegisterCommand reg{
     {"bench-sweep-memory",
      "Benchmark of a sweep's memory: peak RSS of `nanopush sweep --task friction` against the number of points "
      "(10^3 to 10^7), each run a process; CSV, PNG and sweep_memory.md (docs/performance.md)",
-     92, [](CLI::App& app) -> std::function<int()> {
-       auto o = std::make_shared<MemOptions>();
-       app.add_option("--out", o->out, "output directory: sweep_memory.csv (+ .schema.json), sweep_memory.png, sweep_memory.md")
+     92, options_then<MemOptions>(bench_memory, [](CLI::App& app, MemOptions& o) {
+       app.add_option("--out", o.out, "output directory: sweep_memory.csv (+ .schema.json), sweep_memory.png, sweep_memory.md")
            ->capture_default_str();
-       app.add_option("--max-points", o->max_points, "the largest grid (10^3, 10^4, ... up to this)")->capture_default_str();
-       app.add_option("--time-limit", o->time_limit, "seconds a run may take before SIGINT stops it")
+       app.add_option("--max-points", o.max_points, "the largest grid (10^3, 10^4, ... up to this)")->capture_default_str();
+       app.add_option("--time-limit", o.time_limit, "seconds a run may take before SIGINT stops it")
            ->check(CLI::Range(1.0, 86400.0))
            ->capture_default_str();
-       app.add_option("--jobs", o->jobs, "threads of each sweep")->check(count(1, 1024))->capture_default_str();
-       app.add_flag("--no-plot", o->no_plot, "no PNG (the CSV and report only)");
-       app.add_flag("--quiet", o->quiet, "no progress on standard error");
-       return [o] { return bench_memory(*o); };
-     }}};
+       app.add_option("--jobs", o.jobs, "threads of each sweep")->check(count(1, 1024))->capture_default_str();
+       app.add_flag("--no-plot", o.no_plot, "no PNG (the CSV and report only)");
+       app.add_flag("--quiet", o.quiet, "no progress on standard error");
+     })}};
 
 }  // namespace NANOPUSH_UNITY_ID
 }  // namespace

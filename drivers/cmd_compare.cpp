@@ -106,36 +106,34 @@ int compare_cmd(const CompareOptions& o) {
 
 RegisterCommand reg_compare{{"compare",
                              "Run a scene with both engines (C++ and FORTRAN 77) and report the deviation per column",
-                             20, [](CLI::App& app) -> std::function<int()> {
-                               auto o = std::make_shared<CompareOptions>();
-                               app.add_option("SCENE", o->scene, "scene file, or a preset name such as fig3_6a (`nanopush presets`)")->required();
-                               add_set_option(app, o->sets);
-                               app.add_option("--rtol", o->rtol, "relative tolerance (default: the scene's solver.rtol)")
+                             20, options_then<CompareOptions>(compare_cmd, [](CLI::App& app, CompareOptions& o) {
+                               app.add_option("SCENE", o.scene, "scene file, or a preset name such as fig3_6a (`nanopush presets`)")->required();
+                               add_set_option(app, o.sets);
+                               app.add_option("--rtol", o.rtol, "relative tolerance (default: the scene's solver.rtol)")
                                    ->check(positive());
-                               app.add_option("--atol", o->atol,
+                               app.add_option("--atol", o.atol,
                                               "absolute tolerance, one value for every state component (default: the "
                                               "scene's; 0 = rtol times each component's natural scale)")
                                    ->check(non_negative());
-                               app.add_option("--method", o->method,
+                               app.add_option("--method", o.method,
                                               "C++ configuration compared with F77: faithful (default; the same "
                                               "steps), modern or dop853 (judged by convergence: docs/rough.md)")
                                    ->check(is_choice<Method>({Method::faithful, Method::modern, Method::dop853}));
-                               app.add_option("--law", o->law,
+                               app.add_option("--law", o.law,
                                               "rough scenes: thesis or printed (both engines implement them); "
                                               "default: the scene's (thesis for a coulomb scene)")
                                    ->check(is_choice<Law>());
-                               app.add_option("--tolerance", o->tolerance,
+                               app.add_option("--tolerance", o.tolerance,
                                               "largest allowed max|diff|/max|value| per column; default 100 rtol for "
                                               "faithful (same steps); other methods get a convergence test instead: each "
                                               "engine re-run at rtol 1e-14 (docs/rough.md)")
                                    ->check(positive());
-                               app.add_option("--accuracy", o->accuracy,
+                               app.add_option("--accuracy", o.accuracy,
                                               "run both engines at the rtol at which the C++ configuration reaches "
                                               "this error of the final pose, in [1e-14, 0.1] (docs/accuracy.md); "
                                               "instead of --rtol")
                                    ->check(CLI::Range(kAccuracyMin, kAccuracyMax));
-                               return [o] { return compare_cmd(*o); };
-                             }}};
+                             })}};
 
 }  // namespace NANOPUSH_UNITY_ID
 }  // namespace

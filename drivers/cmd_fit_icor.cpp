@@ -314,38 +314,36 @@ int run(const Options& o) {
 RegisterCommand reg{{"fit-icor",
                      "Friction coefficient from N quasi-static push observations (force with push offset and/or "
                      "iCOR distance), known and unknown pressure distributions, combined with a chi^2 check",
-                     42, [](CLI::App& app) -> std::function<int()> {
-                       auto o = std::make_shared<Options>();
-                       app.add_option("data", o->data,
+                     42, options_then<Options>(run, [](CLI::App& app, Options& o) {
+                       app.add_option("data", o.data,
                                       "CSV: columns F [N] and yn and/or R [m], optional sigma_F, sigma_yn, sigma_R; "
                                       "an empty yn or R cell means not observed (docs/fitting.md)")
                            ->required();
-                       app.add_option("--pressure", o->pressure,
+                       app.add_option("--pressure", o.pressure,
                                       "known (eqs 4.8, 4.10) | unknown (eqs 4.11, 4.13) | both")
                            ->check(CLI::IsMember({"known", "unknown", "both"}))
                            ->capture_default_str();
-                       app.add_option("--sigma", o->sigma,
+                       app.add_option("--sigma", o.sigma,
                                       "standard uncertainty for a quantity without a sigma column: F=VALUE, yn=VALUE, "
                                       "R=VALUE (SI, > 0; one or more)");
-                       icor_cli::add_rod_options(app, o->rod);
-                       app.add_option("--length-sigma", o->length_sigma,
+                       icor_cli::add_rod_options(app, o.rod);
+                       app.add_option("--length-sigma", o.length_sigma,
                                       "standard uncertainty of L [m]: systematic, added after the combination")
                            ->check(non_negative())
                            ->capture_default_str();
-                       app.add_option("--hamaker-sigma", o->hamaker_sigma,
+                       app.add_option("--hamaker-sigma", o.hamaker_sigma,
                                       "standard uncertainty of H [J]: systematic, added after the combination")
                            ->check(non_negative())
                            ->capture_default_str();
-                       app.add_option("--alpha", o->alpha,
+                       app.add_option("--alpha", o.alpha,
                                       "significance level of the chi^2 consistency check (0, 1)")
                            ->check(real_in(0.0, 1.0, true, true))
                            ->capture_default_str();
-                       app.add_option("--json", o->json, "write the JSON summary to this file");
-                       app.add_option("--out", o->out,
+                       app.add_option("--json", o.json, "write the JSON summary to this file");
+                       app.add_option("--out", o.out,
                                       "directory for fit_icor.csv (+ .schema.json), fit_icor.json and fit_icor.png");
-                       app.add_option("--format", o->format, "figure format of fit_icor: png, svg or pdf (default png)");
-                       return [o] { return run(*o); };
-                     }}};
+                       app.add_option("--format", o.format, "figure format of fit_icor: png, svg or pdf (default png)");
+                     })}};
 
 }  // namespace NANOPUSH_UNITY_ID
 }  // namespace

@@ -153,36 +153,34 @@ int run_forces(const Options& o) {
 RegisterCommand reg_forces{
     {"forces",
      "Normal load of a scene: each force term (N), its share, which models ran; rolling vs sliding",
-     40, [](CLI::App& app) -> std::function<int()> {
-       auto o = std::make_shared<Options>();
-       app.add_option("SCENE", o->scene,
+     40, options_then<Options>(run_forces, [](CLI::App& app, Options& o) {
+       app.add_option("SCENE", o.scene,
                       "scene TOML file or preset name with [environment] and [body]/[[bodies]] tables "
                       "(see docs/forces.md); without it the options below describe the scene");
-       app.add_option("--medium", o->medium, "vacuum | humid_air | liquid")->capture_default_str();
-       app.add_option("--humidity", o->humidity, "relative humidity p/p_sat in [0, 1] (humid_air)");
-       app.add_option("--liquid", o->liquid, "liquid medium or condensate by name (water, ethanol, n-hexadecane)");
-       app.add_flag("--no-adhesion", o->no_adhesion, "ideal non-adhesive contact: no adhesion model is evaluated");
-       app.add_option("--gap", o->gap, "body-substrate separation at contact z0 (m)")->capture_default_str();
-       app.add_option("--substrate", o->substrate, "substrate material (default: the body's material)");
-       app.add_option("--shape", o->shape, "bar | rod | tube | sphere")->capture_default_str();
-       app.add_option("--material", o->material, "body material: graphite, silicon, silica, mica, gold")
+       app.add_option("--medium", o.medium, "vacuum | humid_air | liquid")->capture_default_str();
+       app.add_option("--humidity", o.humidity, "relative humidity p/p_sat in [0, 1] (humid_air)");
+       app.add_option("--liquid", o.liquid, "liquid medium or condensate by name (water, ethanol, n-hexadecane)");
+       app.add_flag("--no-adhesion", o.no_adhesion, "ideal non-adhesive contact: no adhesion model is evaluated");
+       app.add_option("--gap", o.gap, "body-substrate separation at contact z0 (m)")->capture_default_str();
+       app.add_option("--substrate", o.substrate, "substrate material (default: the body's material)");
+       app.add_option("--shape", o.shape, "bar | rod | tube | sphere")->capture_default_str();
+       app.add_option("--material", o.material, "body material: graphite, silicon, silica, mica, gold")
            ->capture_default_str();
-       app.add_option("--length", o->length, "length (m): bar, rod, tube")->capture_default_str();
-       app.add_option("--width", o->width, "bar width (m)");
-       app.add_option("--height", o->height, "bar height (m)");
-       app.add_option("--radius", o->radius, "radius (m): rod, tube (outer), sphere")->capture_default_str();
-       app.add_option("--inner-radius", o->inner_radius, "tube inner radius (m)");
-       app.add_option("--rtol", o->rtol, "relative tolerance of the integration the load feeds")->capture_default_str();
-       app.add_option("--drop-fraction", o->drop_fraction,
+       app.add_option("--length", o.length, "length (m): bar, rod, tube")->capture_default_str();
+       app.add_option("--width", o.width, "bar width (m)");
+       app.add_option("--height", o.height, "bar height (m)");
+       app.add_option("--radius", o.radius, "radius (m): rod, tube (outer), sphere")->capture_default_str();
+       app.add_option("--inner-radius", o.inner_radius, "tube inner radius (m)");
+       app.add_option("--rtol", o.rtol, "relative tolerance of the integration the load feeds")->capture_default_str();
+       app.add_option("--drop-fraction", o.drop_fraction,
                       "drop a term when |term| < drop-fraction x rtol x N")
            ->capture_default_str();
-       app.add_flag("--no-drop", o->no_drop, "keep every evaluated term");
-       app.add_option("--push", o->push, "push force (N) on a rod/tube: print the rolling-vs-sliding decision");
-       app.add_option("--push-height", o->push_height, "push height above the tube axis (m), |h| <= r")
+       app.add_flag("--no-drop", o.no_drop, "keep every evaluated term");
+       app.add_option("--push", o.push, "push force (N) on a rod/tube: print the rolling-vs-sliding decision");
+       app.add_option("--push-height", o.push_height, "push height above the tube axis (m), |h| <= r")
            ->capture_default_str();
-       app.add_option("--mu", o->mu, "friction coefficient for the sliding threshold mu N")->capture_default_str();
-       return [o] { return run_forces(*o); };
-     }}};
+       app.add_option("--mu", o.mu, "friction coefficient for the sliding threshold mu N")->capture_default_str();
+     })}};
 
 
 // ------------------------------------------------------------------ Table 3.1

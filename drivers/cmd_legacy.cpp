@@ -126,28 +126,24 @@ int legacy_cmd(const LegacyOptions& o) {
 }
 
 RegisterCommand reg_deck{{"deck", "Write a scene as the classic input deck of the FORTRAN 77 program 'nanobar'", 60,
-                          [](CLI::App& app) -> std::function<int()> {
-                            auto o = std::make_shared<DeckOptions>();
-                            app.add_option("SCENE", o->scene, "scene file or preset name")->required();
-                            add_set_option(app, o->sets);
-                            app.add_option("--out", o->out, "deck file (default: standard output)");
-                            app.add_option("--rtol", o->rtol, "relative tolerance (default: the scene's)")
+                          options_then<DeckOptions>(deck_cmd, [](CLI::App& app, DeckOptions& o) {
+                            app.add_option("SCENE", o.scene, "scene file or preset name")->required();
+                            add_set_option(app, o.sets);
+                            app.add_option("--out", o.out, "deck file (default: standard output)");
+                            app.add_option("--rtol", o.rtol, "relative tolerance (default: the scene's)")
                                 ->check(positive());
-                            return [o] { return deck_cmd(*o); };
-                          }}};
+                          })}};
 
 RegisterCommand reg_legacy{{"legacy",
                             "Run the FORTRAN 77 main program 'nanobar' on a scene's deck and compare it with the F77 "
                             "engine as nanopush drives it",
-                            61, [](CLI::App& app) -> std::function<int()> {
-                              auto o = std::make_shared<LegacyOptions>();
-                              app.add_option("SCENE", o->scene, "scene file or preset name")->required();
-                            add_set_option(app, o->sets);
-                              app.add_option("--program", o->program, "the legacy program (default: nanobar beside nanopush)");
-                              app.add_option("--tolerance", o->tolerance, "largest relative difference (default 1e-15)")
+                            61, options_then<LegacyOptions>(legacy_cmd, [](CLI::App& app, LegacyOptions& o) {
+                              app.add_option("SCENE", o.scene, "scene file or preset name")->required();
+                            add_set_option(app, o.sets);
+                              app.add_option("--program", o.program, "the legacy program (default: nanobar beside nanopush)");
+                              app.add_option("--tolerance", o.tolerance, "largest relative difference (default 1e-15)")
                                   ->check(positive());
-                              return [o] { return legacy_cmd(*o); };
-                            }}};
+                            })}};
 
 }  // namespace NANOPUSH_UNITY_ID
 }  // namespace

@@ -153,25 +153,23 @@ int run_reproduce(const Options& o) {
 
 RegisterCommand reg{{"reproduce",
                      "Regenerate every thesis table and figure (both engines) into a directory, with report.md",
-                     90, [](CLI::App& app) -> std::function<int()> {
-                       auto o = std::make_shared<Options>();
-                       app.add_option("--out", o->out, "output directory")->capture_default_str();
-                       app.add_option("--only", o->only, "run only these steps (see --list)");
-                       app.add_flag("--quick", o->quick, "fewer samples per figure (for tests)");
-                       app.add_flag("--list", o->list, "list the steps and exit");
-                       app.add_option("--jobs,-j", o->jobs,
+                     90, options_then<Options>(run_reproduce, [](CLI::App& app, Options& o) {
+                       app.add_option("--out", o.out, "output directory")->capture_default_str();
+                       app.add_option("--only", o.only, "run only these steps (see --list)");
+                       app.add_flag("--quick", o.quick, "fewer samples per figure (for tests)");
+                       app.add_flag("--list", o.list, "list the steps and exit");
+                       app.add_option("--jobs,-j", o.jobs,
                                       "steps run at once (default 0: the machine's cores; 1 times the benchmarks "
                                       "on an otherwise idle process)")
                            ->check(count(0, 1024))
                            ->capture_default_str();
-                       app.add_option("--format", o->format, "figure format: png, svg or pdf (a .gp script beside "
+                       app.add_option("--format", o.format, "figure format: png, svg or pdf (a .gp script beside "
                                                              "each figure re-runs it)")
                            ->capture_default_str();
-                       app.add_flag("--no-bench", o->no_bench,
+                       app.add_flag("--no-bench", o.no_bench,
                                     "thesis content only: skip the work-precision benchmarks (the bench_* steps, most "
                                     "of the run time)");
-                       return [o] { return run_reproduce(*o); };
-                     }}};
+                     })}};
 
 }  // namespace NANOPUSH_UNITY_ID
 }  // namespace

@@ -143,23 +143,22 @@ int run_cmd(const RunOptions& o) {
 }
 
 RegisterCommand reg_run{{"run", "Integrate a scene and write its trajectory as CSV (t,x,y,theta,vx,vy,omega,fx,fy,mf; SI)",
-                         10, [](CLI::App& app) -> std::function<int()> {
-                           auto o = std::make_shared<RunOptions>();
-                           add_common(app, *o);
-                           app.add_option("--engine", o->engine, "cxx (modern C++) or f77 (FORTRAN 77); default: the scene's")
+                         10, options_then<RunOptions>(run_cmd, [](CLI::App& app, RunOptions& o) {
+                           add_common(app, o);
+                           app.add_option("--engine", o.engine, "cxx (modern C++) or f77 (FORTRAN 77); default: the scene's")
                                ->check(is_choice<Engine>());
-                           app.add_option("--method", o->method,
+                           app.add_option("--method", o.method,
                                           "C++ integrator: faithful (steps identical to F77), modern (Bulirsch-Stoer with dense "
                                           "output), dop853 (Dormand-Prince 8(5,3), double; smooth scenes and the thesis law: "
                                           "docs/dop853.md), cvode (SUNDIALS cross-check of the coulomb law), or auto (dop853 for "
                                           "rtol >= 1e-11 where it runs, else modern); default: the scene's")
                                ->check(is_choice<Method>());
-                           app.add_option("--law", o->law,
+                           app.add_option("--law", o.law,
                                           "rough scenes: friction law, thesis (sign law of eq 3.40), printed (the same with "
                                           "eqs 3.45-3.48 exactly as printed, docs/rough.md) or coulomb (event-located "
                                           "stick-slip); default: the scene's")
                                ->check(is_choice<Law>());
-                           app.add_option("--precision", o->precision,
+                           app.add_option("--precision", o.precision,
                                           "scalar of the integration: double, long (x87 80-bit) or quad (__float128); "
                                           "long and quad need --engine cxx, --method faithful or modern, a smooth scene. "
                                           "Cost (fig3_6a, release build): at the same rtol long takes ~6x the wall time of "
@@ -167,13 +166,12 @@ RegisterCommand reg_run{{"run", "Integrate a scene and write its trajectory as C
                                           "1e-17, ~7x), quad ~3e-24 (--method modern --rtol 1e-24, ~80-100x). The CSV holds "
                                           "the values rounded to double. Default: the scene's solver.precision (double)")
                                ->check(is_choice<Precision>());
-                           app.add_option("--out", o->out, "output CSV ('-' for standard output; FILE.nc: netCDF-4, docs/data.md; default <scene>.<engine>.csv)");
-                           app.add_flag("--quiet", o->quiet, "no summary on standard error");
-                           app.add_flag("--keep-partial", o->keep_partial,
+                           app.add_option("--out", o.out, "output CSV ('-' for standard output; FILE.nc: netCDF-4, docs/data.md; default <scene>.<engine>.csv)");
+                           app.add_flag("--quiet", o.quiet, "no summary on standard error");
+                           app.add_flag("--keep-partial", o.keep_partial,
                                         "when the integrator gives up, keep the samples computed so far in "
                                         "OUT.partial.csv (exit status stays non-zero)");
-                           return [o] { return run_cmd(*o); };
-                         }}};
+                         })}};
 
 }  // namespace NANOPUSH_UNITY_ID
 }  // namespace

@@ -49,6 +49,17 @@ struct ReproduceStep {
 std::vector<Command>& commands();
 std::vector<ReproduceStep>& reproduce_steps();
 
+/// The setup of the usual subcommand: its options fill a fresh `Options` (`declare(app, o)`
+/// adds them to the app), which `run(o)` receives after parsing.
+template <class Options, class Run, class Declare>
+std::function<std::function<int()>(CLI::App&)> options_then(Run run, Declare declare) {
+  return [run, declare](CLI::App& app) -> std::function<int()> {
+    auto o = std::make_shared<Options>();
+    declare(app, *o);
+    return [o, run] { return run(*o); };
+  };
+}
+
 struct RegisterCommand {
   RegisterCommand(Command c) { commands().push_back(std::move(c)); }
 };
