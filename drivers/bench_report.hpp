@@ -1,12 +1,34 @@
-// What the bench-* commands share at their end: the note that stands in for a figure not
-// drawn, and the exit status when a benchmark's own check does not hold.
+// What the bench-* commands share: the median of timed repeats, the host's load, the note that
+// stands in for a figure not drawn, and the exit status when a benchmark's own check does not hold.
 #pragma once
+#include <algorithm>
+#include <array>
+#include <fstream>
 #include <iostream>
+#include <limits>
 #include <string>
+#include <vector>
 
 #include "nanopush/outputs/plot.hpp"
 
 namespace nanopush::cli {
+
+/// The median of `v` (NaN when empty).
+inline double median(std::vector<double> v) {
+  if (v.empty()) return std::numeric_limits<double>::quiet_NaN();
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+/// The host's load averages (1, 5, 15 min) from /proc/loadavg; NaN where unreadable.
+inline std::array<double, 3> load_average() {
+  std::array<double, 3> a{};
+  a.fill(std::numeric_limits<double>::quiet_NaN());
+  std::ifstream f("/proc/loadavg");
+  f >> a[0] >> a[1] >> a[2];
+  return a;
+}
 
 /// Why a benchmark's figure is not drawn: --no-plot, or no gnuplot on PATH; "" when it is.
 inline std::string plot_skipped(bool no_plot) {

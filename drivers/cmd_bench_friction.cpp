@@ -50,13 +50,6 @@ struct BenchFrictionOptions {
   bool no_plot = false, quiet = false;
 };
 
-double median(std::vector<double> v) {
-  if (v.empty()) return std::numeric_limits<double>::quiet_NaN();
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 std::string fixed(double v, int digits) {
   if (!std::isfinite(v)) return "n/a";
   std::ostringstream s;
@@ -68,14 +61,6 @@ std::string sci(double v) {
   std::ostringstream s;
   s << std::setprecision(2) << v;
   return s.str();
-}
-
-std::array<double, 3> load_average() {
-  std::array<double, 3> a{};
-  a.fill(std::numeric_limits<double>::quiet_NaN());
-  std::ifstream f("/proc/loadavg");
-  f >> a[0] >> a[1] >> a[2];
-  return a;
 }
 
 /// One input of a wrench workload: (R, alpha, sense) for the (R, alpha) entry point, or the

@@ -13,6 +13,7 @@
 #include "nanopush/outputs/io.hpp"
 #include "nanopush/outputs/plot.hpp"
 #include "nanopush/planning/plan.hpp"
+#include "bench_report.hpp"
 #include "cli_checks.hpp"
 #include "columns.hpp"
 #include "registry.hpp"
@@ -48,13 +49,6 @@ Scene bar_scene(bool rod) {
 /// A uniform double in [0, 1) from the generator's raw bits (the same on every platform,
 /// unlike std::uniform_real_distribution).
 double uniform(std::mt19937_64& r) { return static_cast<double>(r() >> 11) * 0x1.0p-53; }
-
-double median(std::vector<double> v) {
-  if (v.empty()) return std::nan("");
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 /// The closed loop a lab runs (plan::closed_loop) on the first o.closed_loop tasks: the truth's
 /// surface mu uniform within +-30 % of the model's and its tip friction uniform in 0-0.3 (the

@@ -30,6 +30,7 @@
 #include "nanopush/outputs/io.hpp"
 #include "nanopush/outputs/plot.hpp"
 #include "nanopush/sweeps/sweep.hpp"
+#include "bench_report.hpp"
 #include "cli_checks.hpp"
 #include "columns.hpp"
 #include "registry.hpp"
@@ -77,22 +78,6 @@ double cpu_seconds() {
          1e-6 * static_cast<double>(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
   }
   return t;
-}
-
-double median(std::vector<double> v) {
-  if (v.empty()) return std::numeric_limits<double>::quiet_NaN();
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
-/// The host's load averages (1, 5, 15 min) from /proc/loadavg; NaN where unreadable.
-std::array<double, 3> load_average() {
-  std::array<double, 3> a{};
-  a.fill(std::numeric_limits<double>::quiet_NaN());
-  std::ifstream f("/proc/loadavg");
-  f >> a[0] >> a[1] >> a[2];
-  return a;
 }
 
 std::string load_text(const std::array<double, 3>& a) {
