@@ -21,6 +21,7 @@
 #include "nanopush/outputs/io.hpp"
 #include "nanopush/outputs/plot.hpp"
 #include "nanopush/scenes/lhs.hpp"
+#include "bench_options.hpp"
 #include "cli_checks.hpp"
 #include "bench_report.hpp"
 #include "columns.hpp"
@@ -32,8 +33,7 @@ namespace NANOPUSH_UNITY_ID {
 
 namespace fs = std::filesystem;
 
-struct BenchAccuracyOptions {
-  std::string out = "docs/figures";
+struct BenchAccuracyOptions : BenchDirectoryOptions {
   int scenes = 200;
   std::uint64_t seed = 2026;
   double tightest = 1e-12;  ///< the smallest E of the cost table (reproduce: 1e-6, for its time)
@@ -211,7 +211,7 @@ RegisterCommand reg{{"bench-accuracy",
                      "Benchmark of the error estimate (honesty) and of --accuracy (met, cost) on a Latin hypercube of "
                      "rough scenes (docs/accuracy.md)",
                      94, options_then<BenchAccuracyOptions>(run_bench_accuracy, [](CLI::App& app, BenchAccuracyOptions& o) {
-                       app.add_option("--out", o.out, "output directory")->capture_default_str();
+                       add_bench_directory_option(app, o);
                        app.add_option("--scenes", o.scenes, "scenes of the Latin hypercube")
                            ->check(count(2, 100000))
                            ->capture_default_str();

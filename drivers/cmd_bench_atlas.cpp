@@ -17,6 +17,7 @@
 #include "nanopush/engines/engines.hpp"
 #include "nanopush/outputs/io.hpp"
 #include "nanopush/outputs/plot.hpp"
+#include "bench_options.hpp"
 #include "cli_checks.hpp"
 #include "columns.hpp"
 #include "registry.hpp"
@@ -27,8 +28,7 @@ namespace NANOPUSH_UNITY_ID {
 
 namespace fs = std::filesystem;
 
-struct AtlasOptions {
-  std::string out = "docs/figures";
+struct AtlasOptions : BenchDirectoryOptions {
   int points = 16;  ///< per axis
   double accuracy = 1e-8;
 };
@@ -183,7 +183,7 @@ RegisterCommand reg{{"bench-atlas",
                      "Stability atlas: outcome, achieved error over the accuracy asked and cost over (mu, F/(mu N)) "
                      "and (length, force), both friction laws (docs/accuracy.md)",
                      95, options_then<AtlasOptions>(run_bench_atlas, [](CLI::App& app, AtlasOptions& o) {
-                       app.add_option("--out", o.out, "output directory")->capture_default_str();
+                       add_bench_directory_option(app, o);
                        app.add_option("--points", o.points, "points per axis")->check(count(2, 200))->capture_default_str();
                        app.add_option("--accuracy", o.accuracy, "the accuracy asked at every point")
                            ->check(CLI::Range(kAccuracyMin, kAccuracyMax))

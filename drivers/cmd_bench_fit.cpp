@@ -22,6 +22,7 @@
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/outputs/io.hpp"
 #include "nanopush/outputs/plot.hpp"
+#include "bench_options.hpp"
 #include "cli_checks.hpp"
 #include "bench_report.hpp"
 #include "columns.hpp"
@@ -33,8 +34,7 @@ namespace NANOPUSH_UNITY_ID {
 
 namespace fs = std::filesystem;
 
-struct BenchFitOptions {
-  std::string out = "docs/figures";
+struct BenchFitOptions : BenchDirectoryOptions {
   int coverage = 200;
   bool quick = false;
 };
@@ -247,7 +247,7 @@ RegisterCommand reg{{"bench-fit",
                      "Benchmark of the trajectory fit: forward solves and wall time against Brent, coverage of the 95 % "
                      "intervals over synthetic data sets (docs/fitting.md)",
                      93, options_then<BenchFitOptions>(run_bench_fit, [](CLI::App& app, BenchFitOptions& o) {
-                       app.add_option("--out", o.out, "output directory")->capture_default_str();
+                       add_bench_directory_option(app, o);
                        app.add_option("--coverage", o.coverage, "synthetic data sets per configuration")
                            ->check(count(10, 100000))
                            ->capture_default_str();

@@ -14,6 +14,7 @@
 #include "nanopush/outputs/plot.hpp"
 #include "nanopush/planning/plan.hpp"
 #include "bench_report.hpp"
+#include "bench_options.hpp"
 #include "cli_checks.hpp"
 #include "columns.hpp"
 #include "registry.hpp"
@@ -24,8 +25,7 @@ namespace NANOPUSH_UNITY_ID {
 
 namespace fs = std::filesystem;
 
-struct BenchPlanOptions {
-  std::string out = "docs/figures";
+struct BenchPlanOptions : BenchDirectoryOptions {
   int tasks = 200;
   int max_pushes = 20;
   std::uint64_t seed = 20121;
@@ -189,7 +189,7 @@ int run_bench_plan(const BenchPlanOptions& o) {
 RegisterCommand reg{{"bench-plan",
                      "Benchmark of the push planner against target-oriented pushing on seeded tasks (docs/planning.md)",
                      94, options_then<BenchPlanOptions>(run_bench_plan, [](CLI::App& app, BenchPlanOptions& o) {
-                       app.add_option("--out", o.out, "output directory")->capture_default_str();
+                       add_bench_directory_option(app, o);
                        app.add_option("--tasks", o.tasks, "number of seeded tasks")->check(count(1, 100000))->capture_default_str();
                        app.add_option("--max-pushes", o.max_pushes, "pushes allowed per task")
                            ->check(count(1, 1000))
