@@ -13,6 +13,7 @@
 #include "nanopush/outputs/plot.hpp"
 #include "nanopush/planning/assemble.hpp"
 #include "cli_checks.hpp"
+#include "columns.hpp"
 #include "registry.hpp"
 #include "scene_args.hpp"
 
@@ -67,17 +68,7 @@ void write_outputs(const Scene& sc, const std::vector<plan::Pose>& objects, cons
   fs::create_directories(dir);
   {
     CsvWriter w(dir / "assembly.csv",
-                {{"bar", "1", "bar number (row of OBJECTS.csv, from 1)"},
-                 {"slot", "1", "slot number (row of PATTERN.csv, from 1)"},
-                 {"push", "1", "push number of this bar, from 1"},
-                 {"start_x", "m", "tip centre where the push starts, x (world): tip.start_x"},
-                 {"start_y", "m", "tip centre where the push starts, y: tip.start_y"},
-                 {"direction", "rad", "world direction the tip moves in: tip.direction"},
-                 {"speed", "m/s", "tip speed: tip.speed"},
-                 {"travel", "m", "tip travel: tip.travel"},
-                 {"x_end", "m", "x of the bar's centre after the push"},
-                 {"y_end", "m", "y of the bar's centre after the push"},
-                 {"theta_end", "rad", "orientation of the bar after the push"}},
+                columns("assemble"),
                 sc.name);
     w.run_info({{"status", r.status}, {"assignment_cost_m", r.assignment_cost}, {"planning_seconds", r.planning_seconds}});
     for (const auto& m : r.moves) {
@@ -109,8 +100,7 @@ void write_outputs(const Scene& sc, const std::vector<plan::Pose>& objects, cons
   write_file_atomic(dir / "assembly.json", json_text(doc));
   {  // Outlines: each bar at its start (0) and its end (1), each slot (2); the tip paths.
     CsvWriter w(dir / "outlines.csv",
-                {{"kind", "1", "0 a bar at its start, 1 a bar at its end, 2 a slot"},
-                 {"x", "m", "corner x"}, {"y", "m", "corner y"}},
+                columns("assemble_outlines"),
                 sc.name);
     auto outline = [&](int kind, const plan::Pose& p) {
       const double a = sc.geometry.a, b = sc.geometry.b, c = std::cos(p.theta), s = std::sin(p.theta);
@@ -123,8 +113,7 @@ void write_outputs(const Scene& sc, const std::vector<plan::Pose>& objects, cons
     for (const auto& p : slots) outline(2, p);
     w.commit();
     CsvWriter t(dir / "tip_path.csv",
-                {{"bar", "1", "bar number"}, {"x", "m", "tip centre x (world)"}, {"y", "m", "tip centre y (world)"},
-                 {"lowered", "1", "1: the tip touches the surface from this waypoint to the next"}},
+                columns("assemble_tip_path"),
                 sc.name);
     for (const auto& m : r.moves)
       for (const auto& p : m.plan.pushes) {
