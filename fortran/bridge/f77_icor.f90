@@ -18,6 +18,29 @@ module nanopush_f77_icor
 
 contains
 
+  !> Status 7 of icr505 and icr502 (an infinite result, returned as 0 or +-1 carrying its sign)
+  !> as an IEEE infinity of that sign with status 0.
+  subroutine infinite_at_pole(v, ierr)
+    double precision, intent(inout) :: v
+    integer, intent(inout) :: ierr
+    if (ierr /= 7) return
+    v = sign(ieee_value(v, ieee_positive_inf), v)
+    ierr = 0
+  end subroutine infinite_at_pole
+
+  !> The results of the cubic solvers icrlap and icrbrt in C kinds.
+  subroutine cubic_out(r77, res77, nr, nc, ni, roots, resmax, nreal, ncplx, ninf)
+    double precision, intent(in) :: r77(3), res77
+    integer, intent(in) :: nr, nc, ni
+    real(c_double), intent(out) :: roots(3), resmax
+    integer(c_int), intent(out) :: nreal, ncplx, ninf
+    roots = real(r77, c_double)
+    resmax = real(res77, c_double)
+    nreal = int(nr, c_int)
+    ncplx = int(nc, c_int)
+    ninf = int(ni, c_int)
+  end subroutine cubic_out
+
   !> iCOR distance R [m] from one of the geometric formulas (4.1, 4.2, 4.3, 4.13, 5.5).
   !> which: 1, 2, 3, 13 or 55. yn [m], L [m]; k2 = I/m [m^2] (only for 5.5).
   integer(c_int) function np_f77_icor_formula(which, yn, L, k2, R) bind(C, name=prefix//"formula")
@@ -38,10 +61,7 @@ contains
       call icr413(yn, L, r77, ierr)
     case (eq_5_5)
       call icr505(yn, k2, r77, ierr)
-      if (ierr == 7) then
-        r77 = ieee_value(r77, ieee_positive_inf)
-        ierr = 0
-      end if
+      call infinite_at_pole(r77, ierr)
     case default
       ierr = 1
     end select
@@ -72,10 +92,7 @@ contains
       call icr411(mu, W, x, yn, L, v, ierr)
     case (502)
       call icr502(mu, W, x, yn, L, k2, v, ierr)
-      if (ierr == 7) then
-        v = sign(ieee_value(v, ieee_positive_inf), v)
-        ierr = 0
-      end if
+      call infinite_at_pole(v, ierr)
     case default
       ierr = 1
     end select
@@ -94,11 +111,7 @@ contains
     integer :: nr, nc, ni, ierr
     double precision :: r77(3), res77
     call icrlap(yn, L, k2, r77, nr, nc, ni, res77, ierr)
-    roots = real(r77, c_double)
-    resmax = real(res77, c_double)
-    nreal = int(nr, c_int)
-    ncplx = int(nc, c_int)
-    ninf = int(ni, c_int)
+    call cubic_out(r77, res77, nr, nc, ni, roots, resmax, nreal, ncplx, ninf)
     np_f77_icor_cubic_lapack = int(ierr, c_int)
   end function np_f77_icor_cubic_lapack
 
@@ -112,11 +125,7 @@ contains
     integer :: nr, nc, ni, it, ierr
     double precision :: r77(3), res77
     call icrbrt(yn, L, k2, r77, nr, nc, ni, res77, it, ierr)
-    roots = real(r77, c_double)
-    resmax = real(res77, c_double)
-    nreal = int(nr, c_int)
-    ncplx = int(nc, c_int)
-    ninf = int(ni, c_int)
+    call cubic_out(r77, res77, nr, nc, ni, roots, resmax, nreal, ncplx, ninf)
     niter = int(it, c_int)
     np_f77_icor_cubic_brent = int(ierr, c_int)
   end function np_f77_icor_cubic_brent

@@ -5,34 +5,10 @@ module nanopush_f77_rough
   use, intrinsic :: iso_c_binding, only: c_int, c_double
   implicit none
   private
-  public :: np_f77_rough_bar_rhs, np_f77_bsint_rough_bar, np_f77_rough_bar_rhs_law, np_f77_bsint_rough_bar_law
+  public :: np_f77_rough_bar_rhs_law, np_f77_bsint_rough_bar_law
 
 
 contains
-
-  !> One evaluation of the F77 rough-bar RHS (8 states, 12 parameters); returns its IERR.
-  integer(c_int) function np_f77_rough_bar_rhs(t, y, dydt, params) bind(C, name="np_f77_rough_bar_rhs")
-    real(c_double), value, intent(in) :: t
-    real(c_double), intent(in) :: y(8)
-    real(c_double), intent(out) :: dydt(8)
-    real(c_double), intent(in) :: params(12)
-    np_f77_rough_bar_rhs = np_f77_rough_bar_rhs_law(t, y, dydt, params, 0_c_int)
-  end function np_f77_rough_bar_rhs
-
-  !> Integrate the F77 rough-bar RHS with BSINT; arguments as np_f77_bsint_smooth_bar.
-  integer(c_int) function np_f77_bsint_rough_bar(n, t0, y, nout, tout, yout, rtol, atol, h0, &
-                                                 hmax, kmax, iextr, maxstp, params, nstat) &
-      bind(C, name="np_f77_bsint_rough_bar")
-    integer(c_int), value, intent(in) :: n, nout, kmax, iextr, maxstp
-    real(c_double), value, intent(in) :: t0, rtol, h0, hmax
-    real(c_double), intent(inout) :: y(*)
-    real(c_double), intent(in) :: tout(*), atol(*)
-    real(c_double), intent(inout) :: yout(*)
-    real(c_double), intent(in) :: params(12)
-    integer(c_int), intent(out) :: nstat(3)
-    np_f77_bsint_rough_bar = np_f77_bsint_rough_bar_law(n, t0, y, nout, tout, yout, rtol, atol, h0, hmax, &
-                                                        kmax, iextr, maxstp, params, 0_c_int, nstat)
-  end function np_f77_bsint_rough_bar
 
   !> RGBAR's IPAR from a law code: 0 thesis; 1 + i the printed law under reading i (0..15: bit 0
   !> corrects F1, bit 1 F3, bit 2 takes cubes in C4, bit 3 prints eq 3.50; nanopush::printed_reading).
@@ -49,7 +25,8 @@ contains
     ipar(5) = ibits(i, 3, 1)
   end function law_ipar
 
-  !> np_f77_rough_bar_rhs under a friction law code (law_ipar).
+  !> One evaluation of the F77 rough-bar RHS (8 states, 12 parameters) under a friction law code
+  !> (law_ipar); returns its IERR.
   integer(c_int) function np_f77_rough_bar_rhs_law(t, y, dydt, params, law) bind(C, name="np_f77_rough_bar_rhs_law")
     real(c_double), value, intent(in) :: t
     real(c_double), intent(in) :: y(8)
@@ -63,7 +40,8 @@ contains
     np_f77_rough_bar_rhs_law = int(ierr, c_int)
   end function np_f77_rough_bar_rhs_law
 
-  !> np_f77_bsint_rough_bar under a friction law code (law_ipar); returns 1 for a bad n or code.
+  !> Integrate the F77 rough-bar RHS with BSINT under a friction law code (law_ipar); arguments
+  !> as np_f77_bsint_smooth_bar; returns 1 for a bad n or code.
   integer(c_int) function np_f77_bsint_rough_bar_law(n, t0, y, nout, tout, yout, rtol, atol, h0, &
                                                      hmax, kmax, iextr, maxstp, params, law, nstat) &
       bind(C, name="np_f77_bsint_rough_bar_law")
