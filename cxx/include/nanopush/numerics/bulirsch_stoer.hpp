@@ -41,7 +41,7 @@ namespace nanopush {
 inline constexpr double kDenseRtolEps = 4.0;
 template <typename S>
 double dense_rtol_min() {
-  return kDenseRtolEps * static_cast<double>(num::epsilon<S>());
+  return rtol_in_eps<S>(kDenseRtolEps);
 }
 
 enum class Extrapolation { rational = 1, polynomial = 2 };
@@ -80,7 +80,7 @@ struct BsOptions {
 };
 
 template <typename Scalar, int N = Dynamic>
-class BulirschStoer {
+class BulirschStoer : public IntegrateOverloads<BulirschStoer<Scalar, N>, Scalar, BsResult> {
  public:
   static constexpr int kKmaxLimit = bs::kKmaxLimit;
   using Vec = StateVec<Scalar, N>;
@@ -99,14 +99,11 @@ class BulirschStoer {
   [[nodiscard]] int size() const { return n_; }
   [[nodiscard]] const BsOptions<Scalar>& options() const { return opt_; }
 
-  /// Integrate; y holds the initial state on entry and the state at the last output
-  /// time reached on return.
-  template <class Rhs, class Observer>
-  BsResult integrate(Rhs&& rhs, Scalar t0, Scalar* y, std::span<const Scalar> tout, Observer&& observer) {
-    return integrate(std::forward<Rhs>(rhs), t0, y, tout, std::forward<Observer>(observer), NoStepHook{});
-  }
+  /// Integrate without a step hook, or to one output time (integration.hpp).
+  using IntegrateOverloads<BulirschStoer, Scalar, BsResult>::integrate;
 
-  /// As above, with a hook called after every accepted step, before it is committed:
+  /// Integrate; y holds the initial state on entry and the state at the last output time
+  /// reached on return. A hook is called after every accepted step, before it is committed:
   /// hook(t_old, y_old, t_new, y_new) returns a StepHookAction. kHookStopBefore: the
   /// integration returns with `stopped_by_hook` set, y = y_old and t_reached = t_old, so the
   /// caller can locate an event in [t_old, t_new] and restart there. kHookStopAfter: the
@@ -170,14 +167,6 @@ class BulirschStoer {
     }
     for (int i = 0; i < n; ++i) y[i] = y_[i];
     return res;
-  }
-
-  /// Convenience: no observer.
-  template <class Rhs>
-  BsResult integrate(Rhs&& rhs, Scalar t0, Scalar* y, Scalar t1) {
-    const Scalar tt[1] = {t1};
-    return integrate(std::forward<Rhs>(rhs), t0, y, std::span<const Scalar>(tt, 1),
-                     [](std::size_t, Scalar, const Scalar*) {});
   }
 
  private:

@@ -39,7 +39,7 @@ namespace nanopush {
 inline constexpr double kDop853RtolEps = 10.0;
 template <typename S>
 double dop853_rtol_min() {
-  return kDop853RtolEps * static_cast<double>(num::epsilon<S>());
+  return rtol_in_eps<S>(kDop853RtolEps);
 }
 
 template <typename Scalar>
@@ -257,9 +257,9 @@ struct T {
 }  // namespace dop853_tableau
 
 template <typename Scalar, int N = Dynamic>
-class Dop853 {
+class Dop853 : public IntegrateOverloads<Dop853<Scalar, N>, Scalar, Dop853Result> {
  public:
-  using Vec = std::conditional_t<N == Dynamic, std::vector<Scalar>, std::array<Scalar, (N > 0 ? N : 1)>>;
+  using Vec = StateVec<Scalar, N>;
 
   explicit Dop853(Dop853Options<Scalar> opt, int n = N) : opt_(std::move(opt)), n_(n) {
     if constexpr (N == Dynamic) {
@@ -273,18 +273,16 @@ class Dop853 {
   [[nodiscard]] int size() const { return n_; }
   [[nodiscard]] const Dop853Options<Scalar>& options() const { return opt_; }
 
+  /// Integrate without a step hook, or to one output time (integration.hpp).
+  using IntegrateOverloads<Dop853, Scalar, Dop853Result>::integrate;
+
   /// Integrate; y holds the initial state on entry and, on return, the state at t_reached
   /// (the last output time on success; the end of the last accepted step on a failure).
   /// One loop (~190 lines) on purpose: the 12 stages, the two error estimators and the
   /// dense-output stages share the stage vectors k1..k10 and the step state, and the loop is
   /// written as dop853.f's so a reader can follow the book; Bulirsch-Stoer's integrate (cut into
   /// steps) shows the shape a split would take.
-  template <class Rhs, class Observer>
-  Dop853Result integrate(Rhs&& rhs, Scalar t0, Scalar* y, std::span<const Scalar> tout, Observer&& observer) {
-    return integrate(std::forward<Rhs>(rhs), t0, y, tout, std::forward<Observer>(observer), NoStepHook{});
-  }
-
-  /// The same with a step hook, hook(t_old, y_old, t_new, y_new), called after each accepted
+  /// A step hook, hook(t_old, y_old, t_new, y_new), is called after each accepted
   /// step before its outputs are given (integration.hpp): kHookStopBefore returns at the
   /// step's start (y = y_old, t_reached = t_old, t_event_end = t_new, `stopped_by_hook`) with
   /// no output of the step given, so the caller can locate an event inside it and restart
@@ -490,14 +488,6 @@ class Dop853 {
       h = hnew;
     }
     return finish();
-  }
-
-  /// Convenience: one output time, no observer.
-  template <class Rhs>
-  Dop853Result integrate(Rhs&& rhs, Scalar t0, Scalar* y, Scalar t1) {
-    const Scalar tt[1] = {t1};
-    return integrate(std::forward<Rhs>(rhs), t0, y, std::span<const Scalar>(tt, 1),
-                     [](std::size_t, Scalar, const Scalar*) {});
   }
 
  private:

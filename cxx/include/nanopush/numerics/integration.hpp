@@ -6,7 +6,8 @@
 // size chosen at run time), constructed from its options (and n when N is Dynamic), with
 //   - size() -> int, options() -> its options;
 //   - integrate(rhs, t0, y, tout, observer [, hook]) -> a result that is, or derives from,
-//     IntegrationResult:
+//     IntegrationResult (an integrator writes the hooked one and takes the others from
+//     IntegrateOverloads below):
 //       rhs(t, y, dydt) -> int writes dydt[0..n) and returns 0, or non-zero to abort (that
 //         value is reported in rhs_status, status rhs_failed; never retried);
 //       y holds the state at t0 on entry and the state at the last output time reached on
@@ -28,7 +29,10 @@
 #include <span>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
+
+#include "nanopush/numerics/scalar.hpp"
 
 namespace nanopush {
 
@@ -38,6 +42,13 @@ inline constexpr int Dynamic = -1;
 /// (sized once, at construction).
 template <typename Scalar, int N>
 using StateVec = std::conditional_t<N == Dynamic, std::vector<Scalar>, std::array<Scalar, (N > 0 ? N : 1)>>;
+
+/// An rtol of `eps_units` epsilons of the scalar S: how an integrator states the smallest rtol
+/// it accepts (below it its error estimate is mostly rounding).
+template <typename S>
+double rtol_in_eps(double eps_units) {
+  return eps_units * static_cast<double>(num::epsilon<S>());
+}
 
 /// What a step hook asks for after an accepted step.
 enum StepHookAction : int {
@@ -121,6 +132,31 @@ struct ContractObserver {
   void operator()(std::size_t, S, const S*) const noexcept {}
 };
 }  // namespace integration_detail
+
+/// The integrate() overloads every integrator offers on top of the one it writes,
+/// integrate(rhs, t0, y, tout, observer, hook): without a step hook, and to one output time
+/// without an observer. Integrator derives from IntegrateOverloads<Integrator, Scalar, Result>
+/// and says `using IntegrateOverloads<...>::integrate;`.
+template <class Integrator, typename Scalar, class Result>
+class IntegrateOverloads {
+ public:
+  /// Integrate; y holds the initial state on entry and the state at t_reached on return.
+  template <class Rhs, class Observer>
+  Result integrate(Rhs&& rhs, Scalar t0, Scalar* y, std::span<const Scalar> tout, Observer&& observer) {
+    return self().integrate(std::forward<Rhs>(rhs), t0, y, tout, std::forward<Observer>(observer), NoStepHook{});
+  }
+
+  /// Convenience: one output time, no observer.
+  template <class Rhs>
+  Result integrate(Rhs&& rhs, Scalar t0, Scalar* y, Scalar t1) {
+    const Scalar tt[1] = {t1};
+    return integrate(std::forward<Rhs>(rhs), t0, y, std::span<const Scalar>(tt, 1),
+                     [](std::size_t, Scalar, const Scalar*) {});
+  }
+
+ private:
+  Integrator& self() { return static_cast<Integrator&>(*this); }
+};
 
 /// An integrator follows the contract above (signatures; the behaviour is tested).
 template <class I, class Scalar>

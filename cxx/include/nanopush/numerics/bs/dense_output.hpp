@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <type_traits>
 #include <vector>
 
 #include "nanopush/numerics/bs/tables.hpp"
@@ -216,23 +217,23 @@ class DenseOutput {
       const DenseTerm<Scalar>* tb = &dt.terms[static_cast<std::size_t>(dt.start[kc][kap])];
       const DenseTerm<Scalar>* te = &dt.terms[static_cast<std::size_t>(dt.start[kc][kap + 1])];
       Scalar* __restrict__ r = dcoef_row(4 + kap);
+      // r = h sum of the terms' c f_slot, summed in acc: m components, f_slot at slot * stride
+      // (compile-time constants for a fixed N, so the loops unroll; acc a local array there and
+      // the row itself for a run-time size; the same operations in the same order either way).
+      auto combine = [&](Scalar* acc, auto m, auto stride) {
+        for (int i = 0; i < m; ++i) acc[i] = 0;
+        for (const DenseTerm<Scalar>* tm = tb; tm != te; ++tm) {
+          const Scalar cq = tm->c;
+          const Scalar* __restrict__ v = fsb + static_cast<std::size_t>(tm->slot) * stride;
+          for (int i = 0; i < m; ++i) acc[i] = acc[i] + cq * v[i];
+        }
+        for (int i = 0; i < m; ++i) r[i] = h * acc[i];
+      };
       if constexpr (N != Dynamic) {
         Scalar acc[N];
-        for (int i = 0; i < N; ++i) acc[i] = 0;
-        for (const DenseTerm<Scalar>* tm = tb; tm != te; ++tm) {
-          const Scalar cq = tm->c;
-          const Scalar* __restrict__ v = fsb + static_cast<std::size_t>(tm->slot) * N;
-          for (int i = 0; i < N; ++i) acc[i] = acc[i] + cq * v[i];
-        }
-        for (int i = 0; i < N; ++i) r[i] = h * acc[i];
+        combine(acc, std::integral_constant<int, N>{}, std::integral_constant<std::size_t, N>{});
       } else {
-        for (int i = 0; i < n; ++i) r[i] = 0;
-        for (const DenseTerm<Scalar>* tm = tb; tm != te; ++tm) {
-          const Scalar cq = tm->c;
-          const Scalar* __restrict__ v = fsb + static_cast<std::size_t>(tm->slot) * nn;
-          for (int i = 0; i < n; ++i) r[i] = r[i] + cq * v[i];
-        }
-        for (int i = 0; i < n; ++i) r[i] = h * r[i];
+        combine(r, n, nn);
       }
     }
   }
