@@ -49,11 +49,6 @@ void nanopush_clear_error(nanopush_error error) {
   }
 }
 
-void nanopush_delete_error(nanopush_error* error) {
-  if (error) {
-    delete *error;
-    *error = nullptr;
-  }
-}
+void nanopush_delete_error(nanopush_error* error) { delete_handle(error); }
 
 }  // extern "C"

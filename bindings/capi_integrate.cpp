@@ -103,12 +103,7 @@ nanopush_integrator nanopush_new_integrator(nanopush_error error, int n, const c
   return out;
 }
 
-void nanopush_delete_integrator(nanopush_integrator* integrator) {
-  if (integrator) {
-    delete *integrator;
-    *integrator = nullptr;
-  }
-}
+void nanopush_delete_integrator(nanopush_integrator* integrator) { delete_handle(integrator); }
 
 int nanopush_integrator_set_steps(nanopush_error error, nanopush_integrator integrator, double h0, double hmax,
                                   int64_t maxstp) {

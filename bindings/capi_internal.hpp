@@ -93,6 +93,16 @@ int guarded(nanopush_error err, F&& f) noexcept {
   }
 }
 
+/// What every nanopush_delete_* does: free *handle (NULL allowed) and set it to NULL; a NULL
+/// handle pointer is a no-op.
+template <class H>
+void delete_handle(H* handle) noexcept {
+  if (handle) {
+    delete *handle;
+    *handle = nullptr;
+  }
+}
+
 /// Throw NANOPUSH_NULL_HANDLE naming the argument if p is null.
 template <class T>
 void require_handle(const T* p, const char* name) {

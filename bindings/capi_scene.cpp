@@ -55,12 +55,7 @@ nanopush_scene nanopush_parse_scene(nanopush_error error, const char* toml_text,
   return out;
 }
 
-void nanopush_delete_scene(nanopush_scene* scene) {
-  if (scene) {
-    delete *scene;
-    *scene = nullptr;
-  }
-}
+void nanopush_delete_scene(nanopush_scene* scene) { delete_handle(scene); }
 
 int nanopush_scene_get_name(nanopush_error error, nanopush_scene scene, char* buffer, int size) {
   int n = -1;
@@ -194,12 +189,7 @@ int nanopush_compare(nanopush_error error, nanopush_scene scene, const char* met
   });
 }
 
-void nanopush_delete_trajectory(nanopush_trajectory* trajectory) {
-  if (trajectory) {
-    delete *trajectory;
-    *trajectory = nullptr;
-  }
-}
+void nanopush_delete_trajectory(nanopush_trajectory* trajectory) { delete_handle(trajectory); }
 
 int nanopush_trajectory_get_size(nanopush_error error, nanopush_trajectory trajectory, int* rows) {
   return guarded(error, [&] {
