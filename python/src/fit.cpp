@@ -53,6 +53,14 @@ py::array_t<double> obs_matrix(const fit::Observations& o, bool sigma) {
   return a;
 }
 
+/// One number of every fitted parameter (its value, stderr_, start, ...), in the order of names.
+py::array_t<double> per_parameter(const fit::FitResult& r, double fit::ParameterEstimate::*field) {
+  py::array_t<double> a(static_cast<py::ssize_t>(r.parameters.size()));
+  for (std::size_t i = 0; i < r.parameters.size(); ++i)
+    a.mutable_at(static_cast<py::ssize_t>(i)) = r.parameters[i].*field;
+  return a;
+}
+
 /// The estimates' covariance: correlation[i][j] stderr[i] stderr[j] (NaN where undetermined).
 py::array_t<double> covariance(const fit::FitResult& r) {
   const auto n = static_cast<py::ssize_t>(r.parameters.size());
@@ -186,20 +194,10 @@ SciPy/lmfit names: names, x, stderr, covariance, success (= converged), nfev
                              },
                              "The free keys, in the order of x, stderr, covariance and correlation.")
       .def_property_readonly("x",
-                             [](const PyFit& f) {
-                               py::array_t<double> a(static_cast<py::ssize_t>(f.r.parameters.size()));
-                               for (std::size_t i = 0; i < f.r.parameters.size(); ++i)
-                                 a.mutable_at(static_cast<py::ssize_t>(i)) = f.r.parameters[i].value;
-                               return a;
-                             },
+                             [](const PyFit& f) { return per_parameter(f.r, &fit::ParameterEstimate::value); },
                              "The estimates, in the order of names (SciPy's x).")
       .def_property_readonly("stderr",
-                             [](const PyFit& f) {
-                               py::array_t<double> a(static_cast<py::ssize_t>(f.r.parameters.size()));
-                               for (std::size_t i = 0; i < f.r.parameters.size(); ++i)
-                                 a.mutable_at(static_cast<py::ssize_t>(i)) = f.r.parameters[i].stderr_;
-                               return a;
-                             },
+                             [](const PyFit& f) { return per_parameter(f.r, &fit::ParameterEstimate::stderr_); },
                              "Standard errors of x (NaN where the data do not determine a key).")
       .def_property_readonly("covariance", [](const PyFit& f) { return covariance(f.r); },
                              "Covariance of x: correlation[i, j] stderr[i] stderr[j] (k x k).")
@@ -216,12 +214,7 @@ SciPy/lmfit names: names, x, stderr, covariance, success (= converged), nfev
       .def_property_readonly("sigma", [](const PyFit& f) { return obs_matrix(f.obs, true); },
                              "Standard deviations of the observations, (n, 3); NaN where not observed.")
       .def_property_readonly("initial",
-                             [](const PyFit& f) {
-                               py::array_t<double> a(static_cast<py::ssize_t>(f.r.parameters.size()));
-                               for (std::size_t i = 0; i < f.r.parameters.size(); ++i)
-                                 a.mutable_at(static_cast<py::ssize_t>(i)) = f.r.parameters[i].start;
-                               return a;
-                             },
+                             [](const PyFit& f) { return per_parameter(f.r, &fit::ParameterEstimate::start); },
                              "The starting values, in the order of names.")
       .def("__repr__", [](const PyFit& f) {
         std::string s = "<FitResult";
