@@ -1,14 +1,17 @@
 // What the bench-* commands share: the median of timed repeats, the host's load, the note that
-// stands in for a figure not drawn, and the exit status when a benchmark's own check does not hold.
+// stands in for a figure not drawn, the report written and printed, and the exit status when a
+// benchmark's own check does not hold.
 #pragma once
 #include <algorithm>
 #include <array>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <limits>
 #include <string>
 #include <vector>
 
+#include "nanopush/outputs/io.hpp"
 #include "nanopush/outputs/plot.hpp"
 
 namespace nanopush::cli {
@@ -35,6 +38,12 @@ inline std::string plot_skipped(bool no_plot) {
   if (no_plot) return "no plot (--no-plot)";
   if (!plot::available()) return "no plot: gnuplot is not on PATH";
   return "";
+}
+
+/// Write a benchmark's Markdown report `md` to `file` (atomically), then print it on standard output.
+inline void write_and_print_report(const std::filesystem::path& file, const std::string& md) {
+  write_file_atomic(file, md);
+  std::cout << md;
 }
 
 /// A benchmark's exit status: 0 when its check holds, else 4 with `why` on standard error.

@@ -33,12 +33,10 @@ struct BenchOptions {
   std::string plot;  // PNG; default beside the CSV
   std::vector<std::string> engines;
   std::vector<std::string> precisions;
-  int kmin = 6, kmax = 28, kmax_extended = 56, kstep = 1, kstep_extended = 0;
-  int repeats = 9, repeats_extended = 0;
+  bench::SweepSettings sweep;  ///< --kmin .. --repeats-extended, --replay (its progress set by run_bench)
   int samples = 0;
   std::int64_t rhs_budget = 0;  // stick-slip: RHS evaluations per solve for engines without event location
   bool quick = false, no_plot = false, quiet = false;
-  bool replay = false;  // also time the integrators alone (RHS values replayed)
   /// Options the user gave (the others take the scene's budgets: stick_slip_budgets).
   bool given_kmax = false, given_kstep = false, given_repeats = false, given_rhs_budget = false;
 };
@@ -54,9 +52,9 @@ bool stick_slip(const Scene& scene) { return scene.rough() && scene.surface.law 
 /// smallest error by the acceptance rule; every third tolerance, one timed solve per point
 /// (the criterion is on RHS counts).
 void stick_slip_budgets(BenchOptions& o) {
-  if (!o.given_kmax) o.kmax = 18;
-  if (!o.given_kstep) o.kstep = 3;
-  if (!o.given_repeats) o.repeats = 1;
+  if (!o.given_kmax) o.sweep.kmax = 18;
+  if (!o.given_kstep) o.sweep.kstep = 3;
+  if (!o.given_repeats) o.sweep.repeats = 1;
   if (!o.given_rhs_budget) o.rhs_budget = 200000;
 }
 
@@ -356,15 +354,7 @@ BenchOutcome run_bench(const Scene& scene, const BenchOptions& o, std::ostream* 
     }
   bench::Bench b = bench::make_bench(scene, cfg);
   if (b.engines.empty()) throw InputError("--engines", "(selection)", "selects no engine");
-  bench::SweepSettings s;
-  s.kmin = o.kmin;
-  s.kmax = o.kmax;
-  s.kmax_extended = o.kmax_extended;
-  s.kstep = o.kstep;
-  s.kstep_extended = o.kstep_extended;
-  s.repeats = o.repeats;
-  s.repeats_extended = o.repeats_extended;
-  s.replay = o.replay;
+  bench::SweepSettings s = o.sweep;
   if (log)
     s.progress = [log](const Row& r) {
       *log << "  " << std::left << std::setw(16) << r.engine << std::setw(7) << r.precision << " rtol "
@@ -444,14 +434,15 @@ std::string report_section(const Scene& scene, const BenchOptions& o, const Benc
                            const std::string& png_rel, const std::string& csv_rel) {
   std::ostringstream md;
   md << "Scene `" << scene.name << "` (" << scene.description << "): " << scene.solver.samples
-     << " output times over [0, " << scene.solver.t_end << "] s; rtol = 10^(-k/2), k = " << o.kmin << ".." << o.kmax
-     << " step " << o.kstep << " (long/quad: to k = " << o.kmax_extended << " step "
-     << (o.kstep_extended > 0 ? o.kstep_extended : o.kstep) << "), atol_i = rtol * scale_i; "
-     << o.repeats << " timed solve(s) per point (median)"
-     << (o.repeats_extended > 0 && o.repeats_extended != o.repeats
-             ? ", " + std::to_string(o.repeats_extended) + " in long/quad precision"
+     << " output times over [0, " << scene.solver.t_end << "] s; rtol = 10^(-k/2), k = " << o.sweep.kmin << ".."
+     << o.sweep.kmax
+     << " step " << o.sweep.kstep << " (long/quad: to k = " << o.sweep.kmax_extended << " step "
+     << (o.sweep.kstep_extended > 0 ? o.sweep.kstep_extended : o.sweep.kstep) << "), atol_i = rtol * scale_i; "
+     << o.sweep.repeats << " timed solve(s) per point (median)"
+     << (o.sweep.repeats_extended > 0 && o.sweep.repeats_extended != o.sweep.repeats
+             ? ", " + std::to_string(o.sweep.repeats_extended) + " in long/quad precision"
              : std::string())
-     << (o.repeats > 1 ? ", after an untimed warm-up solve per engine and per point"
+     << (o.sweep.repeats > 1 ? ", after an untimed warm-up solve per engine and per point"
                        : ", after one untimed warm-up solve per engine")
      << ". Machine: " << machine() << ". Whole sweep: "
      << num3(r.seconds) << " s.\n\n"
@@ -491,16 +482,16 @@ int bench_cmd(BenchOptions o) {
   }
   if (stick_slip(scene)) stick_slip_budgets(o);
   if (o.quick) {
-    o.kstep = 6;
-    o.repeats = 1;
+    o.sweep.kstep = 6;
+    o.sweep.repeats = 1;
   }
-  require_range("--repeats", o.repeats, 1, 1000);
-  require_range("--repeats-extended", o.repeats_extended, 0, 1000);
-  require_range("--kstep", o.kstep, 1, 100);
-  require_range("--kstep-extended", o.kstep_extended, 0, 100);
-  require_range("--kmin", o.kmin, 0, 60);
-  require_range("--kmax", o.kmax, o.kmin, 60);
-  require_range("--kmax-extended", o.kmax_extended, o.kmin, 60);
+  require_range("--repeats", o.sweep.repeats, 1, 1000);
+  require_range("--repeats-extended", o.sweep.repeats_extended, 0, 1000);
+  require_range("--kstep", o.sweep.kstep, 1, 100);
+  require_range("--kstep-extended", o.sweep.kstep_extended, 0, 100);
+  require_range("--kmin", o.sweep.kmin, 0, 60);
+  require_range("--kmax", o.sweep.kmax, o.sweep.kmin, 60);
+  require_range("--kmax-extended", o.sweep.kmax_extended, o.sweep.kmin, 60);
   namespace fs = std::filesystem;
   const fs::path csv = o.out.empty() ? fs::path("bench_" + scene.name + ".csv") : fs::path(o.out);
   fs::path png = o.plot.empty() ? fs::path(csv).replace_extension(".png") : fs::path(o.plot);
@@ -533,16 +524,16 @@ void reproduce_bench_scene(ReproduceContext& ctx, const std::string& step, const
   o.scene = preset;
   o.precisions = {"double", "long", "quad"};
   if (ctx.quick) {
-    o.kstep = 6;
-    o.repeats = 1;
+    o.sweep.kstep = 6;
+    o.sweep.repeats = 1;
     o.precisions = {"double", "quad"};
   } else {
     // Medians of 5: up to two load spikes on a shared machine do not move them. A long/quad
     // solve takes 10-400 ms, long against any spike: one timing, every other tolerance (a
     // median of 3 cost 13 s of reproduce's 33, issue 24's 20 s budget).
-    o.repeats = 5;
-    o.repeats_extended = 1;
-    o.kstep_extended = 2;
+    o.sweep.repeats = 5;
+    o.sweep.repeats_extended = 1;
+    o.sweep.kstep_extended = 2;
   }
   if (adjust) adjust(o);
   const Scene scene = load_scene(resolve_scene(preset));
@@ -567,7 +558,7 @@ void reproduce_bench_smooth(ReproduceContext& ctx) {
   // RHS values replayed (the integrator alone).
   reproduce_bench_scene(ctx, "bench_smooth", "thesis/fig3_6a", "smooth_fig3_6a",
                         "Work-precision: the smooth nanobar against the exact solution (issue 7)",
-                        "fig3_6a (smooth nanobar)", [](BenchOptions& o) { o.replay = true; });
+                        "fig3_6a (smooth nanobar)", [](BenchOptions& o) { o.sweep.replay = true; });
 }
 
 RegisterCommand reg{
@@ -587,26 +578,28 @@ RegisterCommand reg{
                       "scalar of the C++ BS, repeatable: double (53-bit), long (x87 64-bit), quad (__float128, "
                       "113-bit); default double")
            ->check(is_choice<Precision>());
-       app.add_option("--kmin", o->kmin, "first k of rtol = 10^(-k/2)")->check(count(0, 64))->capture_default_str();
-       auto* kmax = app.add_option("--kmax", o->kmax,
+       app.add_option("--kmin", o->sweep.kmin, "first k of rtol = 10^(-k/2)")
+           ->check(count(0, 64))
+           ->capture_default_str();
+       auto* kmax = app.add_option("--kmax", o->sweep.kmax,
                                    "last k in double precision (28: rtol 1e-14, stick-slip scenes 18: rtol 1e-9; each "
                                    "engine stops at its tightest meaningful rtol: C++ BS 1e-14, others 1e-13)")
                         ->check(count(0, 64))
                         ->capture_default_str();
-       app.add_option("--kmax-extended", o->kmax_extended, "last k in long/quad precision (56: rtol 1e-28)")
+       app.add_option("--kmax-extended", o->sweep.kmax_extended, "last k in long/quad precision (56: rtol 1e-28)")
            ->check(count(0, 64))
            ->capture_default_str();
-       auto* kstep = app.add_option("--kstep", o->kstep, "step in k (stick-slip scenes: 3)")
+       auto* kstep = app.add_option("--kstep", o->sweep.kstep, "step in k (stick-slip scenes: 3)")
                          ->check(count(1, 64))
                          ->capture_default_str();
-       app.add_option("--kstep-extended", o->kstep_extended, "step in k for long/quad engines (0 = --kstep)")
+       app.add_option("--kstep-extended", o->sweep.kstep_extended, "step in k for long/quad engines (0 = --kstep)")
            ->check(count(0, 64))
            ->capture_default_str();
-       auto* repeats = app.add_option("--repeats", o->repeats,
+       auto* repeats = app.add_option("--repeats", o->sweep.repeats,
                                       "timed solves per point; the median is reported (stick-slip scenes: 1)")
                            ->check(count(1, 1000))
                            ->capture_default_str();
-       app.add_option("--repeats-extended", o->repeats_extended,
+       app.add_option("--repeats-extended", o->sweep.repeats_extended,
                       "timed solves per point for long/quad engines (0 = --repeats)")
            ->check(count(0, 1000))
            ->capture_default_str();
@@ -614,7 +607,7 @@ RegisterCommand reg{
            ->check(count(0, 10000000));
        app.add_flag("--quick", o->quick, "k step 6 and one repeat (seconds)");
        app.add_flag("--quiet", o->quiet, "no per-row progress on standard error");
-       app.add_flag("--replay", o->replay,
+       app.add_flag("--replay", o->sweep.replay,
                     "also time every double engine with the RHS values of the same solve replayed instead of "
                     "evaluated: the integrator alone, without the RHS (CSV column own_ns_per_rhs; --repeats more "
                     "solves per point)");
@@ -657,7 +650,7 @@ RegisterReproduce step_stick{
                              [&c](BenchOptions& o) {
                                o.precisions = {"double"};
                                stick_slip_budgets(o);
-                               if (c.quick) o.kstep = 6;
+                               if (c.quick) o.sweep.kstep = 6;
                              });
      },
      7.0}};

@@ -34,7 +34,6 @@ namespace nanopush::cli {
 namespace {
 namespace NANOPUSH_UNITY_ID {
 
-namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
 constexpr double kTarget = 0.5;  // issue 24: new ns per wrench <= 0.5 x the former
@@ -400,8 +399,7 @@ int bench_friction(const BenchFrictionOptions& o) {
        << ")\n";
   else
     md << "; " << plot_note << ".\n";
-  write_file_atomic(out_dir / "report.md", md.str());
-  std::cout << md.str();
+  write_and_print_report(out_dir / "report.md", md.str());
   return bench_status(all_agree, "bench-friction: the new and the old forms disagree beyond the tests' bounds (report.md)");
 }
 

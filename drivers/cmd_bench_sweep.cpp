@@ -30,6 +30,7 @@
 #include "nanopush/outputs/io.hpp"
 #include "nanopush/outputs/plot.hpp"
 #include "nanopush/sweeps/sweep.hpp"
+#include "bench_process.hpp"
 #include "bench_report.hpp"
 #include "cli_checks.hpp"
 #include "columns.hpp"
@@ -37,13 +38,10 @@
 #include "scene_args.hpp"
 #include "sweep_mpi.hpp"
 
-extern char** environ;
-
 namespace nanopush::cli {
 namespace {
 namespace NANOPUSH_UNITY_ID {
 
-namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
 constexpr double kOverheadTarget = 0.02;   // (wall - sum of point times) / sum of point times
@@ -113,44 +111,9 @@ fs::path find_on_path(const std::string& name) {
   return {};
 }
 
-/// Start argv[0] (a full path) with `extra_env` added, stdin from /dev/null, stdout and stderr
-/// into `log`. Returns its process id.
-pid_t spawn(const std::vector<std::string>& argv, const std::vector<std::string>& extra_env, const fs::path& log) {
-  std::vector<std::string> env;
-  for (char** e = environ; e && *e; ++e) {
-    const std::string kv(*e);
-    const std::string name = kv.substr(0, kv.find('='));
-    const bool replaced = std::any_of(extra_env.begin(), extra_env.end(),
-                                      [&](const std::string& x) { return x.substr(0, x.find('=')) == name; });
-    if (!replaced) env.push_back(kv);
-  }
-  env.insert(env.end(), extra_env.begin(), extra_env.end());
-  std::vector<char*> av, ev;
-  for (const auto& a : argv) av.push_back(const_cast<char*>(a.c_str()));
-  av.push_back(nullptr);
-  for (const auto& e : env) ev.push_back(const_cast<char*>(e.c_str()));
-  ev.push_back(nullptr);
-  posix_spawn_file_actions_t fa;
-  posix_spawn_file_actions_init(&fa);
-  posix_spawn_file_actions_addopen(&fa, 0, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_addopen(&fa, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_adddup2(&fa, 1, 2);
-  pid_t pid = 0;
-  const int rc = ::posix_spawn(&pid, av[0], &fa, nullptr, av.data(), ev.data());
-  posix_spawn_file_actions_destroy(&fa);
-  if (rc != 0) throw std::runtime_error("bench-sweep: cannot start " + argv[0] + ": " + std::strerror(rc));
-  return pid;
-}
-
-/// The exit status of a status from waitpid (128 + signal when killed).
-int exit_status(int status) {
-  if (WIFEXITED(status)) return WEXITSTATUS(status);
-  return 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
-}
-
-/// Run argv (see spawn) and wait for it. Returns the exit status (128 + signal when killed).
+/// Run argv (spawn_logged) and wait for it. Returns the exit status (128 + signal when killed).
 int spawn_and_wait(const std::vector<std::string>& argv, const std::vector<std::string>& extra_env, const fs::path& log) {
-  const pid_t pid = spawn(argv, extra_env, log);
+  const pid_t pid = spawn_logged(argv, extra_env, log, "bench-sweep");
   int status = 0;
   while (::waitpid(pid, &status, 0) < 0) {
     if (errno != EINTR) throw std::runtime_error("bench-sweep: waitpid failed for " + argv[0]);
@@ -202,7 +165,7 @@ std::pair<double, double> idle_rank_cpu(const fs::path& mpirun, const fs::path& 
       "--set", "solver.t_end=3e-5", "--set", "solver.max_steps=100000000", "--set", "solver.samples=3",
       "--vary", "surface.mu=0.02", "--no-error-estimate", "--task", "run", "--jobs", "1", "--quiet", "--out",
       table.string()};
-  const pid_t pid = spawn(argv, env, log);
+  const pid_t pid = spawn_logged(argv, env, log, "bench-sweep");
   const long hz = ::sysconf(_SC_CLK_TCK);
   bool watching = false;
   long long t0 = 0, t1 = 0;
@@ -543,12 +506,8 @@ int bench_sweep(const BenchSweepOptions& o) {
 
   // ---- the plot: points/s against workers, threads and ranks, the ideal line dashed
   const fs::path png = out_dir / "sweep_bench.png";
-  std::string plot_note;
-  if (o.no_plot) {
-    plot_note = "no plot (--no-plot)";
-  } else if (!plot::available()) {
-    plot_note = "no plot: gnuplot is not on PATH";
-  } else {
+  const std::string plot_note = plot_skipped(o.no_plot);
+  if (plot_note.empty()) {
     auto q = [](const std::string& s) {
       std::string r = "'";
       for (char ch : s) r += ch == '\'' ? std::string("''") : std::string(1, ch);
@@ -648,9 +607,7 @@ int bench_sweep(const BenchSweepOptions& o) {
     md << ", `" << png.filename().string() << "`:\n\n![points/s against workers](" << png.filename().string() << ")\n";
   else
     md << "; " << plot_note << ".\n";
-  write_file_atomic(out_dir / "report.md", md.str());
-
-  std::cout << md.str();
+  write_and_print_report(out_dir / "report.md", md.str());
   return 0;
 }
 

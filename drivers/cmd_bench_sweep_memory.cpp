@@ -24,17 +24,16 @@
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/outputs/io.hpp"
 #include "nanopush/outputs/plot.hpp"
+#include "bench_process.hpp"
+#include "bench_report.hpp"
 #include "cli_checks.hpp"
 #include "columns.hpp"
 #include "registry.hpp"
-
-extern char** environ;
 
 namespace nanopush::cli {
 namespace {
 namespace NANOPUSH_UNITY_ID {
 
-namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
 constexpr double kRssTargetMb = 200;  // a 1e7-point grid under 200 MB (issue 34)
@@ -69,19 +68,8 @@ Run run_size(const fs::path& self, const fs::path& dir, std::size_t points, cons
                                    "--vary", "R=1e-8:1e-6:" + std::to_string(nr),
                                    "--vary", "alpha=0:3:" + std::to_string(na),
                                    "--jobs", std::to_string(o.jobs), "--quiet", "--out", table.string()};
-  std::vector<char*> av;
-  for (auto& a : argv) av.push_back(a.data());
-  av.push_back(nullptr);
-  posix_spawn_file_actions_t fa;
-  posix_spawn_file_actions_init(&fa);
-  posix_spawn_file_actions_addopen(&fa, 0, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_addopen(&fa, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_adddup2(&fa, 1, 2);
-  pid_t pid = 0;
   const auto t0 = Clock::now();
-  const int rc = ::posix_spawn(&pid, av[0], &fa, nullptr, av.data(), environ);
-  posix_spawn_file_actions_destroy(&fa);
-  if (rc != 0) throw std::runtime_error("bench-sweep-memory: cannot start " + argv[0] + ": " + std::strerror(rc));
+  const pid_t pid = spawn_logged(argv, {}, log, "bench-sweep-memory");
   int status = 0;
   rusage ru{};
   bool stopped = false;
@@ -99,7 +87,7 @@ Run run_size(const fs::path& self, const fs::path& dir, std::size_t points, cons
   r.cpu = static_cast<double>(ru.ru_utime.tv_sec + ru.ru_stime.tv_sec) +
           1e-6 * static_cast<double>(ru.ru_utime.tv_usec + ru.ru_stime.tv_usec);
   r.peak_mb = static_cast<double>(ru.ru_maxrss) / 1024.0;  // Linux: kB
-  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  r.status = exit_status(status);
   const std::string text = read_text(log);
   if (r.status == 0) {
     r.completed = true;
@@ -159,12 +147,8 @@ int bench_memory(const MemOptions& o) {
   write_csv_atomic(csv, cols, rows);
 
   const fs::path png = out / "sweep_memory.png";
-  std::string plot_note;
-  if (o.no_plot) {
-    plot_note = "no plot (--no-plot)";
-  } else if (!plot::available()) {
-    plot_note = "no plot: gnuplot is not on PATH";
-  } else {
+  const std::string plot_note = plot_skipped(o.no_plot);
+  if (plot_note.empty()) {
     std::ostringstream b;
     b << "set title 'nanopush sweep --task friction: peak resident memory against points' noenhanced\n"
       << "set xlabel 'points of the grid' noenhanced\nset ylabel 'peak RSS (MB)' noenhanced\nset logscale x\n"
@@ -193,8 +177,7 @@ int bench_memory(const MemOptions& o) {
      << " MB after " << last.done << " points" << (last.completed ? "" : " (stopped at the time limit)") << " | "
      << (last.peak_mb < kRssTargetMb ? "met" : "**NOT met**") << " |\n\nFiles: `sweep_memory.csv` (sidecar "
      << "`sweep_memory.schema.json`)" << (plot_note.empty() ? ", `sweep_memory.png`:\n\n![peak RSS against points](sweep_memory.png)\n" : "; " + plot_note + ".\n");
-  write_file_atomic(out / "sweep_memory.md", md.str());
-  std::cout << md.str();
+  write_and_print_report(out / "sweep_memory.md", md.str());
   return 0;
 }
 

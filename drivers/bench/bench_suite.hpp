@@ -32,6 +32,16 @@ std::function<double(std::int64_t)> rhs_timer(std::shared_ptr<const Rhs> rhs, in
   return [rhs, n, smp](std::int64_t count) { return detail::time_rhs_calls<S>(*rhs, n, smp.t, smp.y, count); };
 }
 
+/// A solve with its own timed region in Solve::seconds: solve(seconds) is one of
+/// bench_engines.hpp's solve_* on its problem, RHS and tolerance, writing that time to *seconds.
+template <class SolveFn>
+Solve timed(SolveFn&& solve) {
+  double sec = 0;
+  Solve s = solve(&sec);
+  s.seconds = sec;
+  return s;
+}
+
 namespace detail {
 template <class S, int N, class Rhs>
 void add_cxx_bs(std::vector<Engine>& v, const Problem& p, const std::shared_ptr<const Rhs>& rhs,
@@ -49,10 +59,7 @@ void add_cxx_bs(std::vector<Engine>& v, const Problem& p, const std::shared_ptr<
              : modern     ? "C++ BS, polynomial extrapolation, kmax 10, step numbers 4j-2, dense output (outputs interpolated)"
                           : "C++ BS, rational extrapolation, kmax 8 (steps of the F77 engine); steps clipped at output times";
     e.solve = [p, rhs, modern, dense_accept](double rtol) {
-      double sec = 0;
-      Solve s = solve_cxx_bs<S, N>(p, *rhs, rtol, modern, &sec, dense_accept);
-      s.seconds = sec;
-      return s;
+      return timed([&](double* sec) { return solve_cxx_bs<S, N>(p, *rhs, rtol, modern, sec, dense_accept); });
     };
     e.time_rhs = rhs_timer<S>(rhs, p.n, smp);
     if constexpr (std::is_same_v<S, double>)
@@ -90,10 +97,7 @@ std::vector<Engine> generic_engines(const Problem& p, std::shared_ptr<const Rhs>
   if (cfg.wants_precision("double")) {
     add("cxx-dop853", "C++ Dormand-Prince 8(5,3) (the method of Hairer's DOP853), dense output of order 7",
         [p](const auto& r, double rtol) {
-          double sec = 0;
-          Solve s = solve_cxx_dop853<N>(p, r, rtol, &sec);
-          s.seconds = sec;
-          return s;
+          return timed([&](double* sec) { return solve_cxx_dop853<N>(p, r, rtol, sec); });
         });
     // As the C++ BS, one half-decade past the other engines: its global error is 5-60 x rtol
     // on the nanobar (docs/dop853.md), and its rtol floor is 10 eps (2.2e-15).
@@ -103,10 +107,7 @@ std::vector<Engine> generic_engines(const Problem& p, std::shared_ptr<const Rhs>
   detail::add_cxx_bs<quad, N>(v, p, rhs, smp, cfg);
   add("f77-callback", "fortran/bsint.f (rational, kmax 8) via np_f77_bsint_fcn, the C++ RHS as its FCN",
       [p](const auto& r, double rtol) {
-        double sec = 0;
-        Solve s = solve_f77_callback(p, r, rtol, &sec);
-        s.seconds = sec;
-        return s;
+        return timed([&](double* sec) { return solve_f77_callback(p, r, rtol, sec); });
       });
 #ifdef NANOPUSH_HAVE_SUNDIALS
   for (const bool bdf : {false, true}) {
@@ -114,18 +115,12 @@ std::vector<Engine> generic_engines(const Problem& p, std::shared_ptr<const Rhs>
         bdf ? "CVODE BDF 1-5, Newton + dense LU, DQ Jacobian; outputs interpolated"
             : "CVODE Adams 1-12, fixed-point iteration; outputs interpolated",
         [p, bdf](const auto& r, double rtol) {
-          double sec = 0;
-          Solve s = solve_cvode(p, r, rtol, bdf, &sec);
-          s.seconds = sec;
-          return s;
+          return timed([&](double* sec) { return solve_cvode(p, r, rtol, bdf, sec); });
         });
   }
   add("arkode-erk8", "ARKODE ERKStep, ARKODE_FEHLBERG_13_7_8 (order 8); outputs interpolated",
       [p](const auto& r, double rtol) {
-        double sec = 0;
-        Solve s = solve_arkode_erk8(p, r, rtol, &sec);
-        s.seconds = sec;
-        return s;
+        return timed([&](double* sec) { return solve_arkode_erk8(p, r, rtol, sec); });
       });
 #endif
 #if NANOPUSH_HAVE_ODEINT
@@ -134,10 +129,7 @@ std::vector<Engine> generic_engines(const Problem& p, std::shared_ptr<const Rhs>
         dense ? "Boost.Odeint bulirsch_stoer_dense_out + integrate_times; outputs interpolated"
               : "Boost.Odeint bulirsch_stoer, stepped as integrate_times (steps clipped at output times)",
         [p, dense](const auto& r, double rtol) {
-          double sec = 0;
-          Solve s = solve_odeint_bs<N>(p, r, rtol, dense, &sec);
-          s.seconds = sec;
-          return s;
+          return timed([&](double* sec) { return solve_odeint_bs<N>(p, r, rtol, dense, sec); });
         });
   }
 #endif
