@@ -31,8 +31,6 @@ namespace nanopush::cli {
 namespace {
 namespace NANOPUSH_UNITY_ID {
 
-namespace fs = std::filesystem;
-
 struct BenchAccuracyOptions : BenchDirectoryOptions {
   int scenes = 200;
   std::uint64_t seed = 2026;

@@ -26,8 +26,6 @@ namespace nanopush::cli {
 namespace {
 namespace NANOPUSH_UNITY_ID {
 
-namespace fs = std::filesystem;
-
 struct AtlasOptions : BenchDirectoryOptions {
   int points = 16;  ///< per axis
   double accuracy = 1e-8;

@@ -32,8 +32,6 @@ namespace nanopush::cli {
 namespace {
 namespace NANOPUSH_UNITY_ID {
 
-namespace fs = std::filesystem;
-
 struct BenchFitOptions : BenchDirectoryOptions {
   int coverage = 200;
   bool quick = false;

@@ -22,8 +22,6 @@ namespace nanopush::cli {
 namespace {
 namespace NANOPUSH_UNITY_ID {
 
-namespace fs = std::filesystem;
-
 struct FitCliOptions {
   std::string scene, data, law, json, out = ".", synthesize, gradients = "auto", format = "png";
   std::vector<std::string> sets, free, sigma;

@@ -34,8 +34,6 @@ namespace nanopush::cli {
 namespace {
 namespace NANOPUSH_UNITY_ID {
 
-namespace fs = std::filesystem;
-
 struct Options {
   std::string data;
   std::string pressure = "both";

@@ -40,7 +40,6 @@ std::filesystem::path build_tree_source_dir(const std::filesystem::path& exe_dir
 }  // namespace
 
 std::filesystem::path scenes_dir() {
-  namespace fs = std::filesystem;
   if (const char* e = std::getenv("NANOPUSH_SCENES"); e && *e) return e;
   // Installed: <prefix>/bin/nanopush and <prefix>/share/nanopush/scenes (wherever the prefix is).
   const fs::path exe_dir = executable_dir();
@@ -52,7 +51,6 @@ std::filesystem::path scenes_dir() {
 }
 
 std::filesystem::path resolve_scene(const std::string& arg) {
-  namespace fs = std::filesystem;
   if (fs::exists(arg)) return arg;
   const fs::path dir = scenes_dir();
   if (const auto found = find_preset(dir, arg)) return *found;  // the preset rule (scenes/presets.hpp)

@@ -19,6 +19,8 @@
 
 namespace nanopush::cli {
 
+namespace fs = std::filesystem;  ///< the commands' short name for std::filesystem
+
 /// A subcommand: `setup` declares its options on `app` and returns the action to run
 /// after parsing (returning the process exit code).
 struct Command {
