@@ -30,6 +30,38 @@ namespace NANOPUSH_UNITY_ID {
 
 using namespace icor_cli;
 
+// ---- push points, shared by the subcommands --------------------------------------------
+
+/// A sweep of n push points from yn_min to yn_max (yn_max < 0: b), on the rod
+/// (0 <= yn_min <= yn_max <= b = L/2); logarithmic with `log`.
+std::vector<double> yn_sweep(double yn_min, double yn_max, int n, double b, bool log) {
+  if (yn_max < 0.0) yn_max = b;
+  require_range("--yn-min", yn_min, 0.0, b, "m");
+  require_range("--yn-max", yn_max, yn_min, b, "m");
+  return sweep(yn_min, yn_max, n, log);
+}
+
+/// The push points of roots and dynamic: the --yn values, then a sweep of --n points (yn_sweep);
+/// at least one, each on the rod, as in every front end (Python cubic_roots, the C API).
+template <class Options>
+std::vector<double> push_points(const Options& o, double b, bool log) {
+  std::vector<double> yns = o.yn;
+  if (o.n > 0)
+    for (double y : yn_sweep(o.yn_min, o.yn_max, o.n, b, log)) yns.push_back(y);
+  if (yns.empty()) throw InputError("--yn", "(none)", "give --yn values or a sweep with --n");
+  for (double y : yns) require_range("--yn", y, 0.0, b, "m; push point on the rod, at most b = L/2");
+  return yns;
+}
+
+/// The options of push_points: --yn, --n, --yn-min, --yn-max.
+template <class Options>
+void add_push_point_options(CLI::App& app, Options& o) {
+  app.add_option("--yn", o.yn, "push distances from the CM [m] (one or more)");
+  app.add_option("--n", o.n, "also sweep this many push points from --yn-min to --yn-max")->check(count(0, kMaxCount));
+  app.add_option("--yn-min", o.yn_min, "sweep start [m]")->capture_default_str();
+  app.add_option("--yn-max", o.yn_max, "sweep end [m] (default b = L/2)");
+}
+
 // ---- nanopush icor formulas ------------------------------------------------------------
 
 struct FormulasOptions {
@@ -44,14 +76,12 @@ struct FormulasOptions {
 int run_formulas(FormulasOptions o) {
   o.rod.validate();
   const double L = o.rod.length, b = o.rod.half_length(), k2 = o.rod.gyration_squared(), W = o.rod.load();
-  if (o.yn_max < 0.0) o.yn_max = b;
-  require_range("--yn-min", o.yn_min, 0.0, b, "m");
-  require_range("--yn-max", o.yn_max, o.yn_min, b, "m");
+  const std::vector<double> yns = yn_sweep(o.yn_min, o.yn_max, o.n, b, false);
   require_positive("--mu", o.mu);
   require_positive("--force-ratio", o.force_ratio, "F / (mu W)");
   const double F = o.force_ratio * o.mu * W;
   Table t(o.out, columns("icor_formulas"));
-  for (double yn : sweep(o.yn_min, o.yn_max, o.n, false)) {
+  for (double yn : yns) {
     const auto s = icor::solve_constrained_cubic(yn, L, k2, CubicMethod::Brent);
     const double Fmin = icor::minimum_force(o.mu, W, yn, L);
     std::optional<double> r47;
@@ -83,16 +113,7 @@ struct RootsOptions {
 int run_roots(RootsOptions o) {
   o.rod.validate();
   const double L = o.rod.length, k2 = o.rod.gyration_squared();
-  std::vector<double> yns = o.yn;
-  if (o.n > 0) {
-    if (o.yn_max < 0.0) o.yn_max = o.rod.half_length();
-    require_range("--yn-min", o.yn_min, 0.0, 0.5 * L, "m");
-    require_range("--yn-max", o.yn_max, o.yn_min, 0.5 * L, "m");
-    for (double y : sweep(o.yn_min, o.yn_max, o.n, o.log)) yns.push_back(y);
-  }
-  if (yns.empty()) throw InputError("--yn", "(none)", "give --yn values or a sweep with --n");
-  // The push point lies on the rod, as in every front end (Python cubic_roots, the C API).
-  for (double y : yns) require_range("--yn", y, 0.0, 0.5 * L, "m; push point on the rod, at most b = L/2");
+  const std::vector<double> yns = push_points(o, o.rod.half_length(), o.log);
   Table t(o.out, columns("icor_roots"));
   for (double yn : yns)
     for (const auto& s : all_solvers(L, k2)) {
@@ -192,15 +213,7 @@ int run_dynamic(DynamicOptions o) {
   require_positive("--mu", o.mu);
   require_nonnegative("--half-width", o.half_width, "m");
   const auto integ = parse_integrator(o.integrator);
-  std::vector<double> yns = o.yn;
-  if (o.n > 0) {
-    if (o.yn_max < 0.0) o.yn_max = b;
-    require_range("--yn-min", o.yn_min, 0.0, b, "m");
-    require_range("--yn-max", o.yn_max, o.yn_min, b, "m");
-    for (double y : sweep(o.yn_min, o.yn_max, o.n, false)) yns.push_back(y);
-  }
-  if (yns.empty()) throw InputError("--yn", "(none)", "give --yn values or a sweep with --n");
-  for (double y : yns) require_range("--yn", y, 0.0, b, "m; push point on the rod, at most b = L/2");
+  const std::vector<double> yns = push_points(o, b, false);
   if (o.force_ratio.empty()) throw InputError("--force-ratio", "(none)", "give at least one F/(mu W)");
   for (double r : o.force_ratio) require_positive("--force-ratio", r, "F / (mu W)");
   const auto times = dynamic_times(o.t_end, o.samples);
@@ -247,14 +260,12 @@ struct RectangleOptions {
 int run_rectangle(RectangleOptions o) {
   o.rod.validate();
   const double b = o.rod.half_length(), L = o.rod.length;
-  if (o.yn_max < 0.0) o.yn_max = b;
-  require_range("--yn-min", o.yn_min, 0.0, b, "m");
-  require_range("--yn-max", o.yn_max, o.yn_min, b, "m");
+  const std::vector<double> yns = yn_sweep(o.yn_min, o.yn_max, o.n, b, false);
   if (o.aspect.empty()) throw InputError("--aspect", "(none)", "give at least one a/b");
   for (double ab : o.aspect) require_range("--aspect", ab, 1e-6, 1.0, "a/b");
   Table t(o.out, columns("icor_rectangle"));
   for (double ab : o.aspect)
-    for (double yn : sweep(o.yn_min, o.yn_max, o.n, false)) {
+    for (double yn : yns) {
       const auto q = icor::rectangle_quasi_static(ab * b, b, yn);
       const double r413 = icor::unknown_pressure(yn, L);
       t.row({csv_number(ab), csv_number(ab * b), csv_number(b), csv_number(yn), finite_cell(q.R), csv_number(q.alpha),
@@ -267,6 +278,18 @@ int run_rectangle(RectangleOptions o) {
   return 0;
 }
 
+/// An icor subcommand: its options object (the rod's options first, then `declare`'s), and
+/// `run` called with it when the subcommand is the one given (stored in `action`).
+template <class Options, class Run, class Declare>
+void icor_subcommand(CLI::App& app, const std::shared_ptr<std::function<int()>>& action, const std::string& name,
+                     const std::string& description, Run run, Declare declare) {
+  CLI::App* sub = app.add_subcommand(name, description);
+  auto o = std::make_shared<Options>();
+  add_rod_options(*sub, o->rod);
+  declare(*sub, *o);
+  sub->callback([action, o, run] { *action = [o, run] { return run(*o); }; });
+}
+
 RegisterCommand reg{{"icor",
                      "Instantaneous centre of rotation of a pushed nanorod: formulas of ch. 4-5, the constrained "
                      "cubic (5.4) from four solvers, friction coefficient from measurements, the dynamic iCOR "
@@ -275,89 +298,83 @@ RegisterCommand reg{{"icor",
                        auto action = std::make_shared<std::function<int()>>();
                        app.require_subcommand(1);
 
-                       auto* f = app.add_subcommand("formulas", "every iCOR principle over a sweep of yn (CSV, SI)");
-                       auto fo = std::make_shared<FormulasOptions>();
-                       add_rod_options(*f, fo->rod);
-                       f->add_option("--yn-min", fo->yn_min, "first push distance from the CM [m]")->capture_default_str();
-                       f->add_option("--yn-max", fo->yn_max, "last push distance [m] (default b = L/2)");
-                       f->add_option("--n", fo->n, "number of push points")->check(count(1, kMaxCount))->capture_default_str();
-                       f->add_option("--mu", fo->mu, "friction coefficient for 4.7, 4.8, 4.10, 5.2 [-]")->capture_default_str();
-                       f->add_option("--force-ratio", fo->force_ratio, "push force for eq 4.7 as F/(mu W) [-]")
-                           ->capture_default_str();
-                       f->add_option("--out", fo->out, "CSV file, or FILE.nc: netCDF-4 (default: standard output)");
-                       f->callback([action, fo] { *action = [fo] { return run_formulas(*fo); }; });
+                       icor_subcommand<FormulasOptions>(
+                           app, action, "formulas",
+                           "every iCOR principle over a sweep of yn (CSV, SI)",
+                           run_formulas, [](CLI::App& f, FormulasOptions& fo) {
+                             f.add_option("--yn-min", fo.yn_min, "first push distance from the CM [m]")->capture_default_str();
+                             f.add_option("--yn-max", fo.yn_max, "last push distance [m] (default b = L/2)");
+                             f.add_option("--n", fo.n, "number of push points")->check(count(1, kMaxCount))->capture_default_str();
+                             f.add_option("--mu", fo.mu, "friction coefficient for 4.7, 4.8, 4.10, 5.2 [-]")->capture_default_str();
+                             f.add_option("--force-ratio", fo.force_ratio, "push force for eq 4.7 as F/(mu W) [-]")
+                                 ->capture_default_str();
+                             f.add_option("--out", fo.out, "CSV file, or FILE.nc: netCDF-4 (default: standard output)");
+                           });
 
-                       auto* r = app.add_subcommand("roots", "roots of the constrained cubic (5.4): Brent and "
-                                                             "companion eigenvalues, C++ (Eigen) and FORTRAN 77 (LAPACK)");
-                       auto ro = std::make_shared<RootsOptions>();
-                       add_rod_options(*r, ro->rod);
-                       r->add_option("--yn", ro->yn, "push distances from the CM [m] (one or more)");
-                       r->add_option("--n", ro->n, "also sweep this many push points from --yn-min to --yn-max")->check(count(0, kMaxCount));
-                       r->add_option("--yn-min", ro->yn_min, "sweep start [m]")->capture_default_str();
-                       r->add_option("--yn-max", ro->yn_max, "sweep end [m] (default b = L/2)");
-                       r->add_flag("--log", ro->log, "logarithmic sweep");
-                       r->add_option("--out", ro->out, "CSV file, or FILE.nc: netCDF-4 (default: standard output)");
-                       r->callback([action, ro] { *action = [ro] { return run_roots(*ro); }; });
+                       icor_subcommand<RootsOptions>(
+                           app, action, "roots",
+                           "roots of the constrained cubic (5.4): Brent and "
+                           "companion eigenvalues, C++ (Eigen) and FORTRAN 77 (LAPACK)",
+                           run_roots, [](CLI::App& r, RootsOptions& ro) {
+                             add_push_point_options(r, ro);
+                             r.add_flag("--log", ro.log, "logarithmic sweep");
+                             r.add_option("--out", ro.out, "CSV file, or FILE.nc: netCDF-4 (default: standard output)");
+                           });
 
-                       auto* m = app.add_subcommand(
-                           "estimate-mu",
+                       icor_subcommand<MuOptions>(
+                           app, action, "estimate-mu",
                            "friction coefficient from a measured push force and its point yn (Fig 4.4) or from a push "
-                           "force and an observed iCOR distance (Fig 4.5), with propagated uncertainty");
-                       auto mo = std::make_shared<MuOptions>();
-                       add_rod_options(*m, mo->rod);
-                       m->add_option("--force", mo->force, "measured push force F [N]")->check(positive())->required();
-                       m->add_option("--force-sigma", mo->force_sigma, "standard uncertainty of F [N]")->check(non_negative())->capture_default_str();
-                       m->add_option("--yn", mo->yn, "push point: distance from the CM along the rod [m] (Fig 4.4 map)");
-                       m->add_option("--yn-sigma", mo->yn_sigma, "standard uncertainty of yn [m]")->check(non_negative())->capture_default_str();
-                       m->add_option("--icor", mo->icor_R, "observed iCOR distance from the CM [m] (Fig 4.5 map)");
-                       m->add_option("--icor-sigma", mo->icor_sigma, "standard uncertainty of the iCOR distance [m]")
-                           ->check(non_negative())->capture_default_str();
-                       m->add_option("--length-sigma", mo->length_sigma, "standard uncertainty of L [m]")->check(non_negative())->capture_default_str();
-                       m->add_option("--hamaker-sigma", mo->hamaker_sigma, "standard uncertainty of H [J]")
-                           ->check(non_negative())->capture_default_str();
-                       m->add_option("--out", mo->out, "also write the estimate and its budget as CSV");
-                       m->callback([action, mo] { *action = [mo] { return run_estimate_mu(*mo); }; });
+                           "force and an observed iCOR distance (Fig 4.5), with propagated uncertainty",
+                           run_estimate_mu, [](CLI::App& m, MuOptions& mo) {
+                             m.add_option("--force", mo.force, "measured push force F [N]")->check(positive())->required();
+                             m.add_option("--force-sigma", mo.force_sigma, "standard uncertainty of F [N]")->check(non_negative())->capture_default_str();
+                             m.add_option("--yn", mo.yn, "push point: distance from the CM along the rod [m] (Fig 4.4 map)");
+                             m.add_option("--yn-sigma", mo.yn_sigma, "standard uncertainty of yn [m]")->check(non_negative())->capture_default_str();
+                             m.add_option("--icor", mo.icor_R, "observed iCOR distance from the CM [m] (Fig 4.5 map)");
+                             m.add_option("--icor-sigma", mo.icor_sigma, "standard uncertainty of the iCOR distance [m]")
+                                 ->check(non_negative())->capture_default_str();
+                             m.add_option("--length-sigma", mo.length_sigma, "standard uncertainty of L [m]")->check(non_negative())->capture_default_str();
+                             m.add_option("--hamaker-sigma", mo.hamaker_sigma, "standard uncertainty of H [J]")
+                                 ->check(non_negative())->capture_default_str();
+                             m.add_option("--out", mo.out, "also write the estimate and its budget as CSV");
+                           });
 
-                       auto* d = app.add_subcommand(
-                           "dynamic",
+                       icor_subcommand<DynamicOptions>(
+                           app, action, "dynamic",
                            "dynamic iCOR: the rough-surface nanorod (coulomb law) pushed from rest perpendicular to "
-                           "its axis at yn, iCOR read off the velocities (thesis section 5.5, Fig 5.3)");
-                       auto dopt = std::make_shared<DynamicOptions>();
-                       add_rod_options(*d, dopt->rod);
-                       d->add_option("--yn", dopt->yn, "push distances from the CM [m] (one or more)");
-                       d->add_option("--n", dopt->n, "also sweep this many push points from --yn-min to --yn-max")->check(count(0, kMaxCount));
-                       d->add_option("--yn-min", dopt->yn_min, "sweep start [m]")->capture_default_str();
-                       d->add_option("--yn-max", dopt->yn_max, "sweep end [m] (default b = L/2)");
-                       d->add_option("--force-ratio", dopt->force_ratio, "push magnitudes F/(mu W) [-] (one or more)")
-                           ->capture_default_str();
-                       d->add_option("--t-end", dopt->t_end, "time of the reading [s] (thesis: 1e-10)")->capture_default_str();
-                       d->add_option("--samples", dopt->samples,
-                                     "readings per run, log-spaced from t-end/1000 to t-end (1: t-end only)")
-                           ->capture_default_str()
-                           ->check(count(1, 1000));
-                       d->add_option("--mu", dopt->mu, "friction coefficient [-] (thesis: 0.1)")->capture_default_str();
-                       d->add_option("--half-width", dopt->half_width,
-                                     "contact strip half-width a [m]; 0 = Hertz line contact under W/L (2.78 nm)")
-                           ->capture_default_str();
-                       d->add_option("--integrator", dopt->integrator,
-                                     "automatic | bulirsch-stoer | cvode (automatic: CVODE below 1.09 F_min, else BS)")
-                           ->capture_default_str();
-                       d->add_option("--rtol", dopt->rtol, "relative tolerance [-]")->capture_default_str();
-                       d->add_option("--out", dopt->out, "CSV file, or FILE.nc: netCDF-4 (default: standard output)");
-                       d->callback([action, dopt] { *action = [dopt] { return run_dynamic(*dopt); }; });
+                           "its axis at yn, iCOR read off the velocities (thesis section 5.5, Fig 5.3)",
+                           run_dynamic, [](CLI::App& d, DynamicOptions& dopt) {
+                             add_push_point_options(d, dopt);
+                             d.add_option("--force-ratio", dopt.force_ratio, "push magnitudes F/(mu W) [-] (one or more)")
+                                 ->capture_default_str();
+                             d.add_option("--t-end", dopt.t_end, "time of the reading [s] (thesis: 1e-10)")->capture_default_str();
+                             d.add_option("--samples", dopt.samples,
+                                           "readings per run, log-spaced from t-end/1000 to t-end (1: t-end only)")
+                                 ->capture_default_str()
+                                 ->check(count(1, 1000));
+                             d.add_option("--mu", dopt.mu, "friction coefficient [-] (thesis: 0.1)")->capture_default_str();
+                             d.add_option("--half-width", dopt.half_width,
+                                           "contact strip half-width a [m]; 0 = Hertz line contact under W/L (2.78 nm)")
+                                 ->capture_default_str();
+                             d.add_option("--integrator", dopt.integrator,
+                                           "automatic | bulirsch-stoer | cvode (automatic: CVODE below 1.09 F_min, else BS)")
+                                 ->capture_default_str();
+                             d.add_option("--rtol", dopt.rtol, "relative tolerance [-]")->capture_default_str();
+                             d.add_option("--out", dopt.out, "CSV file, or FILE.nc: netCDF-4 (default: standard output)");
+                           });
 
-                       auto* q = app.add_subcommand("rectangle",
-                                                    "quasi-static iCOR and minimum force of a finite 2a x L rectangle "
-                                                    "(closed-form Coulomb friction), beside eq 4.13");
-                       auto qo = std::make_shared<RectangleOptions>();
-                       add_rod_options(*q, qo->rod);
-                       q->add_option("--aspect", qo->aspect, "half-width over half-length a/b [-] (one or more, 1e-6..1)")
-                           ->capture_default_str();
-                       q->add_option("--n", qo->n, "number of push points")->check(count(1, kMaxCount))->capture_default_str();
-                       q->add_option("--yn-min", qo->yn_min, "first push distance from the CM [m]")->capture_default_str();
-                       q->add_option("--yn-max", qo->yn_max, "last push distance [m] (default b = L/2)");
-                       q->add_option("--out", qo->out, "CSV file, or FILE.nc: netCDF-4 (default: standard output)");
-                       q->callback([action, qo] { *action = [qo] { return run_rectangle(*qo); }; });
+                       icor_subcommand<RectangleOptions>(
+                           app, action, "rectangle",
+                           "quasi-static iCOR and minimum force of a finite 2a x L rectangle "
+                           "(closed-form Coulomb friction), beside eq 4.13",
+                           run_rectangle, [](CLI::App& q, RectangleOptions& qo) {
+                             q.add_option("--aspect", qo.aspect, "half-width over half-length a/b [-] (one or more, 1e-6..1)")
+                                 ->capture_default_str();
+                             q.add_option("--n", qo.n, "number of push points")->check(count(1, kMaxCount))->capture_default_str();
+                             q.add_option("--yn-min", qo.yn_min, "first push distance from the CM [m]")->capture_default_str();
+                             q.add_option("--yn-max", qo.yn_max, "last push distance [m] (default b = L/2)");
+                             q.add_option("--out", qo.out, "CSV file, or FILE.nc: netCDF-4 (default: standard output)");
+                           });
 
                        return [action] { return (*action) ? (*action)() : 0; };
                      }}};

@@ -127,7 +127,11 @@ inline std::string gp_quote(const std::string& s) {
   return r + "\"";
 }
 
-inline void render_if_possible(ReproduceContext& ctx, const plot::Figure& fig, const std::filesystem::path& png) {
+inline void render_if_possible(ReproduceContext& ctx, const std::string& title, const plot::Panel& panel,
+                               const std::filesystem::path& png) {
+  plot::Figure fig;
+  fig.title = title;
+  fig.panels.push_back(panel);
   if (!plot::available()) {
     ctx.report << "\n(gnuplot not found: " << png.filename().string() << " not drawn)\n";
     return;

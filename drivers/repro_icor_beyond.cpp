@@ -134,8 +134,6 @@ void step_fig5_3(ReproduceContext& ctx) {
   check(ctx, qs_ok, "fig5_3: the dynamic iCOR does not approach the quasi-static one monotonically (<= 0.5 (F/F_min - 1))");
   check(ctx, stuck_ok, "fig5_3: a push at 0.999 F_min moved the rod");
 
-  plot::Figure fig;
-  fig.title = "Fig 5.3: quasi-static, dynamic (t = 1e-10 s, mu = 0.1) and impulsive iCOR, nanorod L = 590 nm";
   plot::Panel p{"", "push point yn [nm]", "iCOR distance from the CM, far side [nm]", false, true,
                 "set yrange [50:5000]", {}};
   p.series = {{csv, "($1*1e9)", "($2*1e9)", "impulsive (5.5) k^2/yn", "lines lw 3 dt 2"},
@@ -144,8 +142,8 @@ void step_fig5_3(ReproduceContext& ctx) {
   for (std::size_t i = 0; i < kDynamicRatios.size(); ++i)
     p.series.push_back({csv, "($1*1e9)", "($" + std::to_string(i + 6) + "*1e9)",
                         "dynamic, F = " + ratio_name(kDynamicRatios[i]) + " mu W", "linespoints lw 2 pt 7 ps 0.6"});
-  fig.panels.push_back(p);
-  render_if_possible(ctx, fig, ctx.out / "fig5_3.png");
+  render_if_possible(ctx, "Fig 5.3: quasi-static, dynamic (t = 1e-10 s, mu = 0.1) and impulsive iCOR, nanorod L = 590 nm",
+                     p, ctx.out / "fig5_3.png");
 
   std::ostringstream r;
   r << "\n## Fig 5.3: quasi-static, dynamic and impulsive iCOR\n\n"
@@ -235,15 +233,13 @@ void step_icor_rectangle(ReproduceContext& ctx) {
   ctx.produced(csv);
   check(ctx, all_converged, "icor_rectangle: the quasi-static solve did not converge everywhere");
   check(ctx, worst[0] <= 1e-6, "icor_rectangle: a/b = 1e-4 deviates from eq 4.13 by " + fmt(worst[0]) + " > 1e-6");
-  plot::Figure fig;
-  fig.title = "Quasi-static iCOR of a finite rectangle 2a x L (uniform pressure) beside eq 4.13";
   plot::Panel p{"", "push point yn [nm]", "iCOR distance from the CM, far side [nm]", false, true, "", {}};
   p.series = {{csv, "($1*1e9)", "($2*1e9)", "eq 4.13 (line contact)", "lines lw 4 dt 2"}};
   for (std::size_t i = 0; i < kAspects.size(); ++i)
     p.series.push_back({csv, "($1*1e9)", "($" + std::to_string(i + 4) + "*1e9)", "a/b = " + ratio_name(kAspects[i]),
                         "linespoints lw 2 pt 7 ps 0.5"});
-  fig.panels.push_back(p);
-  render_if_possible(ctx, fig, ctx.out / "icor_rectangle.png");
+  render_if_possible(ctx, "Quasi-static iCOR of a finite rectangle 2a x L (uniform pressure) beside eq 4.13",
+                     p, ctx.out / "icor_rectangle.png");
   std::ostringstream r;
   r << "\n## Beyond the thesis: the quasi-static iCOR of a finite rectangle\n\n"
     << "Closed-form Coulomb friction over a 2a x 2b rectangle with uniform pressure (docs/models.md B), push along body x'\n"

@@ -204,15 +204,12 @@ void step_fig4_2(ReproduceContext& ctx) {
   w.commit();
   ctx.produced(csv);
   check(ctx, worst <= 1e-14, "fig4_2: eqs 4.2/4.3 differ from 4.13 by " + fmt(worst));
-  plot::Figure fig;
-  fig.title = "Fig 4.2: quasi-static iCOR, nanorod L = 590 nm";
   plot::Panel p{"", "push point yn [nm]", "iCOR distance from the CM, R [nm]", false, false, "", {}};
   p.series = {{csv, "($1*1e9)", "($2*1e9)", "eq 4.1 experimental fit", "lines lw 2"},
               {csv, "($1*1e9)", "($3*1e9)", "eq 4.2 Falvo et al.", "lines lw 4"},
               {csv, "($1*1e9)", "($4*1e9)", "eq 4.3 Li et al.", "lines lw 2 dt 2"},
               {csv, "($1*1e9)", "($5*1e9)", "eq 4.13 unknown pressure", "points pt 6 ps 0.6"}};
-  fig.panels.push_back(p);
-  render_if_possible(ctx, fig, ctx.out / "fig4_2.png");
+  render_if_possible(ctx, "Fig 4.2: quasi-static iCOR, nanorod L = 590 nm", p, ctx.out / "fig4_2.png");
   ctx.report << "\n## Fig 4.2: the unconstrained quasi-static iCOR\n\n"
              << "Eqs 4.2 (Falvo) and 4.3 (Li) mapped to R (x1 = b + yn, R = b - L x0; l = b - yn, R = S - b) equal\n"
              << "eq 4.13 to " << std::setprecision(2) << worst << " relative over " << n << " points. Eq 4.1 "
@@ -261,14 +258,11 @@ void mu_family_figure(ReproduceContext& ctx, const MuFamily& f) {
   }
   w.commit();
   ctx.produced(csv);
-  plot::Figure fig;
-  fig.title = f.title;
   plot::Panel p{"", f.xlabel, f.ylabel, false, true, "", {}};
   const std::size_t first = 2 + f.shared.size();  // the family's first column, from 1
   for (std::size_t i = 0; i < m; ++i)
     p.series.push_back({csv, f.x, "($" + std::to_string(i + first) + f.yscale + ")", mu_name(f.mus[i]), "lines lw 2"});
-  fig.panels.push_back(p);
-  render_if_possible(ctx, fig, ctx.out / (f.stem + ".png"));
+  render_if_possible(ctx, f.title, p, ctx.out / (f.stem + ".png"));
 }
 
 void step_fig4_3(ReproduceContext& ctx) {
@@ -343,16 +337,14 @@ void step_fig5_2(ReproduceContext& ctx) {
     w.commit();
     ctx.produced(pts);
   }
-  plot::Figure fig;
-  fig.title = "Fig 5.2: quasi-static iCOR with (5.4) and without (4.13) the tangential constraint";
   plot::Panel p{"", "push point yn [nm]", "iCOR distance from the CM [nm] (> 0: far side from the push)", false, false,
                 "set yrange [-300:320]", {}};
   p.series = {{csv, "($1*1e9)", "($5*1e9)", "eq 5.4, Table 5.1 branch", "lines lw 2"},
               {csv, "($1*1e9)", "($6*1e9)", "eq 5.4, other branch (yn < b/sqrt 3)", "lines lw 2 dt 3"},
               {csv, "($1*1e9)", "($2*1e9)", "eq 4.13", "lines lw 2 dt 2"},
               {pts, "($1*1e9)", "($2*1e9)", "bifurcation (yn = 0)", "points pt 4 ps 2"}};
-  fig.panels.push_back(p);
-  render_if_possible(ctx, fig, ctx.out / "fig5_2.png");
+  render_if_possible(ctx, "Fig 5.2: quasi-static iCOR with (5.4) and without (4.13) the tangential constraint",
+                     p, ctx.out / "fig5_2.png");
   ctx.report << "\n## Fig 5.2: constrained (5.4) against unconstrained (4.13) quasi-static iCOR\n\n"
              << "Plotted with R > 0 on the far side of the CM from the push (the sign of chapter 4): the Table 5.1\n"
              << "branch of (5.4) is |R_negative|, its other branch -R_positive. At yn = 0 the two branches meet the\n"
