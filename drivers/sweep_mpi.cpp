@@ -97,21 +97,28 @@ class Backoff {
   microseconds first_, most_, next_;
 };
 
+/// A message from rank 0 with `tag` (MPI_ANY_TAG: any), not yet received: its status. With
+/// `wait`, looks and sleeps (backoff) until one comes; without, nothing when none is there.
+std::optional<MPI_Status> from_rank0(int tag, Backoff& backoff, bool wait) {
+  for (;;) {
+    int flag = 0;
+    MPI_Status st;
+    MPI_Iprobe(0, tag, MPI_COMM_WORLD, &flag, &st);
+    if (flag) return st;
+    if (!wait) return std::nullopt;
+    backoff.sleep();
+  }
+}
+
 /// A worker rank after its kDone: wait for rank 0's kFinal (the exit status), which comes when
 /// rank 0's last points are done (seconds, for a slow point), a late kStop received and dropped.
 int final_status() {
   Backoff wait(microseconds(500), microseconds(20000));
   for (;;) {
-    int flag = 0;
-    MPI_Status st;
-    MPI_Iprobe(0, MPI_ANY_TAG, MPI_COMM_WORLD, &flag, &st);
-    if (flag) {
-      int v = 0;
-      MPI_Recv(&v, 1, MPI_INT, 0, st.MPI_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-      if (st.MPI_TAG == kFinal) return v;
-      continue;
-    }
-    wait.sleep();
+    const MPI_Status st = *from_rank0(MPI_ANY_TAG, wait, true);
+    int v = 0;
+    MPI_Recv(&v, 1, MPI_INT, 0, st.MPI_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    if (st.MPI_TAG == kFinal) return v;
   }
 }
 
@@ -227,20 +234,13 @@ void open_only_what_the_sweep_uses() {
 /// spin on a core another rank may need.
 std::optional<std::vector<long long>> work_reply(bool wait) {
   Backoff backoff(microseconds(50), kPollMost);
-  for (;;) {
-    int flag = 0;
-    MPI_Status st;
-    MPI_Iprobe(0, kWork, MPI_COMM_WORLD, &flag, &st);
-    if (flag) {
-      int n = 0;
-      MPI_Get_count(&st, MPI_LONG_LONG, &n);
-      std::vector<long long> got(static_cast<std::size_t>(n));
-      MPI_Recv(got.data(), n, MPI_LONG_LONG, 0, kWork, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-      return got;
-    }
-    if (!wait) return std::nullopt;
-    backoff.sleep();
-  }
+  const std::optional<MPI_Status> st = from_rank0(kWork, backoff, wait);
+  if (!st) return std::nullopt;
+  int n = 0;
+  MPI_Get_count(&*st, MPI_LONG_LONG, &n);
+  std::vector<long long> got(static_cast<std::size_t>(n));
+  MPI_Recv(got.data(), n, MPI_LONG_LONG, 0, kWork, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+  return got;
 }
 
 /// A worker rank of one thread: the main thread evaluates the points itself and talks to rank 0
