@@ -159,40 +159,40 @@ void estimate_mu_matches_library() {
   other.hamaker = 3e-19;
   other.z0 = 0.3e-9;
   other.gravity = 0.0;
+  // The two estimators: the library's and the C API's, by the measured quantity beside F (yn or
+  // R) and the values it takes.
+  struct Estimator {
+    const char* name;
+    const char* second;
+    icor::MuEstimate (*library)(const icor::Rod&, icor::Measured, icor::Measured, double, double);
+    decltype(&nanopush_estimate_mu_from_force) c;
+    std::vector<double> values;
+  };
   int n = 0;
   for (const icor::Rod& rod : {icor::nanorod(), other}) {
     const double r6[6] = {rod.length, rod.radius, rod.density, rod.hamaker, rod.z0, rod.gravity};
     const double b = rod.half_length();
     const double sigmas[][4] = {{0, 0, 0, 0}, {3e-8, 5e-9, 5e-9, 1e-19}, {1e-7, 0, 2e-8, 0}};
+    const Estimator estimators[] = {
+        {"estimate_mu_from_force", "yn", icor::estimate_mu_from_force, nanopush_estimate_mu_from_force,
+         {0.0, 1e-15, 1e-9, 98.3e-9, 0.5 * b, b}},
+        {"estimate_mu_from_icor", "R", icor::estimate_mu_from_icor, nanopush_estimate_mu_from_icor,
+         {1e-12, 30e-9, 120e-9, b, 1e-6, 1.0}}};
     for (const double F : {1e-9, 1e-6, 2.5e-6, 0.3})
-      for (const auto& s : sigmas) {
-        for (const double yn : {0.0, 1e-15, 1e-9, 98.3e-9, 0.5 * b, b}) {
-          const auto ref = icor::estimate_mu_from_force(rod, {F, s[0]}, {yn, s[1]}, s[2], s[3]);
-          std::ostringstream what;
-          what << "estimate_mu_from_force L = " << rod.length << ", F = " << F << ", yn = " << yn << ", sigmas "
-               << s[0] << " " << s[1] << " " << s[2] << " " << s[3];
-          check_estimate(ref, "yn",
-                         [&](double* mu, double* sigma, double* load, double* d) {
-                           return nanopush_estimate_mu_from_force(nullptr, r6, F, s[0], yn, s[1], s[2], s[3], mu,
-                                                                  sigma, load, d);
-                         },
-                         what.str());
-          ++n;
-        }
-        for (const double R : {1e-12, 30e-9, 120e-9, b, 1e-6, 1.0}) {
-          const auto ref = icor::estimate_mu_from_icor(rod, {F, s[0]}, {R, s[1]}, s[2], s[3]);
-          std::ostringstream what;
-          what << "estimate_mu_from_icor L = " << rod.length << ", F = " << F << ", R = " << R << ", sigmas " << s[0]
-               << " " << s[1] << " " << s[2] << " " << s[3];
-          check_estimate(ref, "R",
-                         [&](double* mu, double* sigma, double* load, double* d) {
-                           return nanopush_estimate_mu_from_icor(nullptr, r6, F, s[0], R, s[1], s[2], s[3], mu,
-                                                                 sigma, load, d);
-                         },
-                         what.str());
-          ++n;
-        }
-      }
+      for (const auto& s : sigmas)
+        for (const Estimator& e : estimators)
+          for (const double x : e.values) {
+            const auto ref = e.library(rod, {F, s[0]}, {x, s[1]}, s[2], s[3]);
+            std::ostringstream what;
+            what << e.name << " L = " << rod.length << ", F = " << F << ", " << e.second << " = " << x << ", sigmas "
+                 << s[0] << " " << s[1] << " " << s[2] << " " << s[3];
+            check_estimate(ref, e.second,
+                           [&](double* mu, double* sigma, double* load, double* d) {
+                             return e.c(nullptr, r6, F, s[0], x, s[1], s[2], s[3], mu, sigma, load, d);
+                           },
+                           what.str());
+            ++n;
+          }
   }
   std::printf("estimate_mu: %d estimates compared with the library\n", n);
 }
