@@ -66,6 +66,24 @@ program test_bsint
 
 contains
 
+  !> One BSINT run of problem `kind` from t = 0 through the output times tout at rtol 1e-10, rational
+  !> extrapolation, kmax 8: rpar(1) = r1, every atol = atol1, and h0, hmax, maxstp as BSINT takes
+  !> them. yout starts at -1 (an output not reached stays so); ipar = (RHS calls, kind).
+  subroutine solve(kind, r1, atol1, h0, hmax, maxstp, y, tout, yout, ipar, nstat, ierr)
+    integer, intent(in) :: kind, maxstp
+    double precision, intent(in) :: r1, atol1, h0, hmax, tout(:)
+    double precision, intent(inout) :: y(:)
+    double precision, intent(out) :: yout(size(y), size(tout))
+    integer, intent(out) :: ipar(2), nstat(3), ierr
+    double precision :: atol(size(y)), rpar(1)
+    rpar(1) = r1
+    atol = atol1
+    yout = -1d0
+    ipar = [0, kind]
+    call bsint(rhs, size(y), 0d0, y, size(tout), tout, yout, 1d-10, atol, h0, hmax, 8, 1, maxstp, &
+               rpar, ipar, nstat, ierr)
+  end subroutine solve
+
   !> Counts are consistent: NFCN equals the calls counted by the RHS, at least one accepted
   !> step, and every attempted step costs at least 1 + 2 + 4 evaluations (f0 and two columns).
   subroutine check_counts(nstat, ncalls, what)
@@ -262,16 +280,10 @@ contains
 
   !> An FCN returning IERR = 7 gives status 4 at once; outputs before the failure are kept.
   subroutine test_rhs_failure()
-    double precision :: y(1), yout(1, 3), tout(3), atol(1), rpar(1)
+    double precision :: y(1), yout(1, 3)
     integer :: ipar(2), nstat(3), ierr
-    tout = [0.25d0, 0.5d0, 1d0]
-    rpar(1) = 0.6d0                    ! fails for t > 0.6
-    atol = 1d-12
     y = 1d0
-    yout = -1d0
-    ipar = [0, p_fail]
-    call bsint(rhs, 1, 0d0, y, 3, tout, yout, 1d-10, atol, 0d0, 0d0, 8, 1, 0, &
-               rpar, ipar, nstat, ierr)
+    call solve(p_fail, 0.6d0, 1d-12, 0d0, 0d0, 0, y, [0.25d0, 0.5d0, 1d0], yout, ipar, nstat, ierr)  ! fails for t > 0.6
     call check(ierr == 4, 'RHS failure: status 4')
     call check(nstat(1) == ipar(1), 'RHS failure: NFCN counts the failing call')
     call check(abs(yout(1, 2) - exp(0.5d0)) < 1d-8, 'RHS failure: output before it kept')
@@ -281,15 +293,10 @@ contains
 
   !> MAXSTP exceeded gives status 2 with exactly MAXSTP attempted steps.
   subroutine test_maxstp()
-    double precision :: y(2), yout(2, 1), tout(1), atol(2), rpar(1)
+    double precision :: y(2), yout(2, 1)
     integer :: ipar(2), nstat(3), ierr
-    tout = 100d0
-    rpar = 0d0
-    atol = 1d-10
     y = [0d0, 1d0]
-    ipar = [0, p_osc]
-    call bsint(rhs, 2, 0d0, y, 1, tout, yout, 1d-10, atol, 0d0, 0d0, 8, 1, 5, &
-               rpar, ipar, nstat, ierr)
+    call solve(p_osc, 0d0, 1d-10, 0d0, 0d0, 5, y, [100d0], yout, ipar, nstat, ierr)
     call check(ierr == 2, 'MAXSTP: status 2')
     call check(nstat(2) + nstat(3) == 5, 'MAXSTP: exactly MAXSTP attempts made')
   end subroutine test_maxstp
@@ -301,15 +308,10 @@ contains
   !> status 5: nfcn = 1 + 42 + 9 * 6 = 97 (the C++ faithful engine: the same, in
   !> tests/test_bulirsch_stoer.cpp).
   subroutine test_nonfinite()
-    double precision :: y(1), yout(1, 1), tout(1), atol(1), rpar(1)
+    double precision :: y(1), yout(1, 1)
     integer :: ipar(2), nstat(3), ierr
-    tout = 1d0
-    rpar = 0d0
-    atol = 1d-10
     y = 1d0
-    ipar = [0, p_nan]
-    call bsint(rhs, 1, 0d0, y, 1, tout, yout, 1d-10, atol, 0d0, 0d0, 8, 1, 0, &
-               rpar, ipar, nstat, ierr)
+    call solve(p_nan, 0d0, 1d-10, 0d0, 0d0, 0, y, [1d0], yout, ipar, nstat, ierr)
     call check(ierr == 5, 'non-finite: status 5')
     call check(nstat(2) == 0 .and. nstat(3) == 10, 'non-finite: 10 rejections, no acceptance')
     call check(nstat(1) == 97 .and. ipar(1) == 97, 'non-finite: nfcn = 1 + 42 + 9 * (2 + 4)')
@@ -320,16 +322,10 @@ contains
   !> with a failure status (step size underflow or non-finite values) before t = 1, having
   !> recorded the outputs before the pole accurately.
   subroutine test_blowup()
-    double precision :: y(1), yout(1, 2), tout(2), atol(1), rpar(1)
+    double precision :: y(1), yout(1, 2)
     integer :: ipar(2), nstat(3), ierr
-    tout = [0.5d0, 2d0]
-    rpar = 0d0
-    atol = 1d-12
     y = 1d0
-    yout = -1d0
-    ipar = [0, p_blowup]
-    call bsint(rhs, 1, 0d0, y, 2, tout, yout, 1d-10, atol, 0d0, 0d0, 8, 1, 0, &
-               rpar, ipar, nstat, ierr)
+    call solve(p_blowup, 0d0, 1d-12, 0d0, 0d0, 0, y, [0.5d0, 2d0], yout, ipar, nstat, ierr)
     write (*, '(a, i0, a, 3i7)') 'blow-up: status ', ierr, '  nstat', nstat
     call check(ierr == 3 .or. ierr == 5, 'blow-up: status 3 or 5')
     call check(abs(yout(1, 1) - 2d0) < 1d-8, 'blow-up: y(0.5) = 2')
@@ -340,20 +336,14 @@ contains
   !> and the answer is as accurate; a tiny H0 costs at least the steps to grow out of it
   !> (the step grows by at most 1/facmin = 50**(1/(2k-1)) <= 50 per step).
   subroutine test_step_limits()
-    double precision :: y(1), yout(1, 1), tout(1), atol(1), rpar(1)
+    double precision :: y(1), yout(1, 1)
     integer :: ipar(2), nstat(3), ierr
-    tout = 1d0
-    rpar(1) = 1d0
-    atol = 1d-12
     y = 1d0
-    ipar = [0, p_exp]
-    call bsint(rhs, 1, 0d0, y, 1, tout, yout, 1d-10, atol, 0d0, 1d-2, 8, 1, 0, &
-               rpar, ipar, nstat, ierr)
+    call solve(p_exp, 1d0, 1d-12, 0d0, 1d-2, 0, y, [1d0], yout, ipar, nstat, ierr)
     call check(ierr == 0 .and. nstat(2) >= 100, 'HMAX = 0.01: at least 100 steps on [0, 1]')
     call check(abs(y(1) - exp(1d0)) <= 1d-9 * exp(1d0), 'HMAX = 0.01: accurate')
     y = 1d0
-    call bsint(rhs, 1, 0d0, y, 1, tout, yout, 1d-10, atol, 1d-12, 0d0, 8, 1, 0, &
-               rpar, ipar, nstat, ierr)
+    call solve(p_exp, 1d0, 1d-12, 1d-12, 0d0, 0, y, [1d0], yout, ipar, nstat, ierr)
     call check(ierr == 0 .and. nstat(2) >= 7, 'H0 = 1e-12: at least log50(1e12) = 7 steps')
     call check(abs(y(1) - exp(1d0)) <= 1d-9 * exp(1d0), 'H0 = 1e-12: accurate')
   end subroutine test_step_limits
