@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -25,7 +26,6 @@ Scene thesis_preset(const std::string& name) {
   return load_scene(std::string(NANOPUSH_SOURCE_DIR) + "/drivers/scenes/thesis/" + name + ".toml");
 }
 
-/// The reference of a rough scene: the modern Bulirsch-Stoer at rtol 1e-13, no estimate.
 /// fig3_18 at a push just outside the limit surface, one of the points of its mu x yn grid
 /// where an explicit method spent its 20,000 steps in the first picoseconds.
 Scene stiff_start_scene() {
@@ -34,12 +34,20 @@ Scene stiff_start_scene() {
   return sc;
 }
 
+/// Settings of a run whose error is measured here, not estimated: `method` at `rtol` under `law`
+/// (unset: the scene's), without the error estimate.
+RunSettings measured(Method method, double rtol, std::optional<Law> law = std::nullopt) {
+  RunSettings s;
+  s.method = method;
+  s.law = law;
+  s.rtol = rtol;
+  s.error_estimate = false;
+  return s;
+}
+
+/// The reference of a rough scene: the modern Bulirsch-Stoer at rtol 1e-13, no estimate.
 Trajectory reference_of(const Scene& sc, Law law) {
-  RunSettings r;
-  r.method = Method::modern;
-  r.law = law;
-  r.rtol = 1e-13;
-  r.error_estimate = false;
+  RunSettings r = measured(Method::modern, 1e-13, law);
   r.allow_partial = true;
   return run_engine(sc, r);
 }
@@ -104,11 +112,8 @@ TEST_CASE("The error estimate bounds the true error of the smooth bar (quad-prec
     // The reference: modern Bulirsch-Stoer in quad precision at rtol 1e-24, itself checked
     // against the exact solution (to the exact formula's own accuracy: near the separatrix,
     // fig3_6e, the elliptic functions lose digits to ~5e-12).
-    RunSettings q;
-    q.method = Method::modern;
+    RunSettings q = measured(Method::modern, 1e-24);
     q.precision = Precision::quad;
-    q.rtol = 1e-24;
-    q.error_estimate = false;
     const Trajectory ref = run_engine(sc, q);
     const Pendulum<double> exact(sc.push.theta_equilibrium(), sc.initial[kTheta], sc.push.force * sc.push.lever(),
                                  sc.inertia);
@@ -171,21 +176,11 @@ TEST_CASE("The printed law's failures are classified: energy injected, or a jump
 TEST_CASE("Thesis law: with its kinks located the achieved error falls with rtol (fig3_17, modern and dop853)",
           "[accuracy][rough][kinks][numeric]") {
   const Scene sc = thesis_preset("fig3_17");
-  RunSettings r;
-  r.method = Method::modern;
-  r.law = Law::thesis;
-  r.rtol = 1e-14;
-  r.error_estimate = false;
-  const Trajectory ref = run_engine(sc, r);
+  const Trajectory ref = run_engine(sc, measured(Method::modern, 1e-14, Law::thesis));
   for (const Method m : {Method::dop853, Method::modern}) {
     double previous = 1.0;
     for (const double rtol : {1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12}) {
-      RunSettings s;
-      s.method = m;
-      s.law = Law::thesis;
-      s.rtol = rtol;
-      s.error_estimate = false;
-      const Trajectory tr = run_engine(sc, s);
+      const Trajectory tr = run_engine(sc, measured(m, rtol, Law::thesis));
       REQUIRE(tr.rows.size() == ref.rows.size());
       double err = 0;  // theta, the largest over the output times
       for (std::size_t i = 0; i < tr.rows.size(); ++i)

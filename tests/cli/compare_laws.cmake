@@ -3,6 +3,7 @@
 # 3 and the diagnosis; the coulomb law has no F77 peer and is refused (exit 2) with the command
 # that checks it instead (docs/rough.md, "Comparing the engines").
 # This file is both the test definition (included by tests/CMakeLists.txt) and, with -P, the check.
+include(${CMAKE_CURRENT_LIST_DIR}/scripts/every_rough_preset.cmake)
 if(CMAKE_SCRIPT_MODE_FILE)
   foreach(_fig RANGE 12 32)
     execute_process(COMMAND ${NP} compare fig3_${_fig} --law ${LAW}
@@ -19,17 +20,12 @@ if(CMAKE_SCRIPT_MODE_FILE)
       endif()
       continue()
     endif()
-    if(NOT _rc EQUAL 3 OR NOT LAW STREQUAL "thesis"
-       OR NOT _err MATCHES "no_static_friction: .*came to rest at t = [0-9.e+-]+ s \\(x = .* theta = "
-       OR NOT _err MATCHES "--law coulomb")
+    thesis_law_rests_as_documented("${LAW}" "${_rc}" "${_err}" _documented)
+    if(NOT _documented)
       message(FATAL_ERROR "fig3_${_fig} --law ${LAW}: exit ${_rc} (expected 0, or 3 with the diagnosis):\n${_out}\n${_err}")
     endif()
   endforeach()
   return()
 endif()
 
-foreach(_law IN ITEMS thesis printed coulomb)
-  add_test(NAME cli.compare.every_preset_${_law}
-           COMMAND ${CMAKE_COMMAND} -DNP=$<TARGET_FILE:nanopush> -DLAW=${_law} -P ${CMAKE_CURRENT_LIST_FILE})
-  set_tests_properties(cli.compare.every_preset_${_law} PROPERTIES ENVIRONMENT "NANOPUSH_SCENES=${NANOPUSH_SCENES}")
-endforeach()
+add_test_per_law(cli.compare.every_preset)

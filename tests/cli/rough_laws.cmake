@@ -2,6 +2,7 @@
 # fails with the documented exit code 3 and a message that says why and what to do
 # (docs/errors.md, docs/rough.md). One test per law, so ctest can run them in parallel.
 # This file is both the test definition (included by tests/CMakeLists.txt) and, with -P, the check.
+include(${CMAKE_CURRENT_LIST_DIR}/scripts/every_rough_preset.cmake)
 if(CMAKE_SCRIPT_MODE_FILE)
   foreach(_fig RANGE 12 32)
     execute_process(COMMAND ${NP} run fig3_${_fig} --law ${LAW} --out ${OUTDIR}/fig3_${_fig}.${LAW}.csv --quiet
@@ -17,18 +18,12 @@ if(CMAKE_SCRIPT_MODE_FILE)
     endif()
     # Only the thesis law may fail, where it chatters at rest (mu N > F), and it must say where
     # the bar came to rest and that the coulomb law continues.
-    if(NOT LAW STREQUAL "thesis" OR NOT _err MATCHES "^nanopush: no_static_friction: "
-       OR NOT _err MATCHES "no_static_friction: .*came to rest at t = [0-9.e+-]+ s \\(x = .* theta = "
-       OR NOT _err MATCHES "--law coulomb")
+    thesis_law_rests_as_documented("${LAW}" "${_rc}" "${_err}" _documented)
+    if(NOT _documented OR NOT _err MATCHES "^nanopush: no_static_friction: ")
       message(FATAL_ERROR "fig3_${_fig} --law ${LAW}: exit 3 without the documented diagnosis:\n${_err}")
     endif()
   endforeach()
   return()
 endif()
 
-foreach(_law IN ITEMS thesis printed coulomb)
-  add_test(NAME cli.rough.every_preset_${_law}
-           COMMAND ${CMAKE_COMMAND} -DNP=$<TARGET_FILE:nanopush> -DLAW=${_law}
-                   -DOUTDIR=${CMAKE_CURRENT_BINARY_DIR} -P ${CMAKE_CURRENT_LIST_FILE})
-  set_tests_properties(cli.rough.every_preset_${_law} PROPERTIES ENVIRONMENT "NANOPUSH_SCENES=${NANOPUSH_SCENES}")
-endforeach()
+add_test_per_law(cli.rough.every_preset -DOUTDIR=${CMAKE_CURRENT_BINARY_DIR})
