@@ -89,6 +89,17 @@ TEST_CASE("inputs: integers are parsed with range checks, never by exceptions", 
   for (const char* bad : {"", "-1", "+1", " 1", "1 ", "1e3", "0x10", "１"}) CHECK_FALSE(parse_count(bad));
 }
 
+// Fuzz finding (fuzz_tables): a number past double's range in a sidecar makes nlohmann-json
+// throw out_of_range (406), not parse_error; it escaped merge as an unknown exception.
+TEST_CASE("inputs: a merge sidecar with a number past double's range is bad input", "[inputs][sweep][unit]") {
+  const fs::path dir = input_scratch("merge_overflow");
+  std::ofstream(dir / "s.csv") << "point,R,status,message\n0,1e-08,ok,\n";
+  std::ofstream(dir / "s.schema.json") << "{\"nanopush\": {\"run\": {\"task\": \"friction\", \"plan\": 7258e3456789}}}\n";
+  CHECK_THROWS_AS(sweep::merge_tables({dir / "s.csv"}, dir / "m.csv"), InputError);
+  CHECK_FALSE(fs::exists(dir / "m.csv"));
+  fs::remove_all(dir);
+}
+
 TEST_CASE("inputs: a merge table's out-of-range point index is bad input naming file, line and value", "[inputs][sweep][unit]") {
   const fs::path dir = input_scratch("merge");
   // Shards of a 3-point plan with their sidecars (merge needs them: plan, size, shard).

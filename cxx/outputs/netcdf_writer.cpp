@@ -73,18 +73,17 @@ std::pair<std::vector<Field>, json> read_schema(const fs::path& csv) {
   const fs::path sp = schema_path(csv);
   std::ifstream in(sp, std::ios::binary);
   if (!in) throw InputError("table", csv.string(), "has no sidecar " + sp.string() + " (its Table Schema)");
-  json j;
   try {
-    j = json::parse(in);
-  } catch (const json::exception& e) {
-    throw InputError("sidecar", sp.string(), std::string("is not JSON: ") + e.what());
+    const json j = json::parse(in);
+    std::vector<Field> fields;
+    if (!j.is_object() || !j.contains("fields") || !j["fields"].is_array())
+      throw InputError("sidecar", sp.string(), "has no \"fields\" array (a Table Schema)");
+    for (const auto& f : j["fields"])
+      fields.push_back({f.value("name", ""), f.value("type", "number"), f.value("unit", ""), f.value("description", "")});
+    return {fields, j.value("nanopush", json::object())};
+  } catch (const json::exception& e) {  // not JSON, or a field of another type than a Table Schema's
+    throw InputError("sidecar", sp.string(), std::string("is not a Table Schema: ") + e.what());
   }
-  std::vector<Field> fields;
-  if (!j.contains("fields") || !j["fields"].is_array())
-    throw InputError("sidecar", sp.string(), "has no \"fields\" array (a Table Schema)");
-  for (const auto& f : j["fields"])
-    fields.push_back({f.value("name", ""), f.value("type", "number"), f.value("unit", ""), f.value("description", "")});
-  return {fields, j.value("nanopush", json::object())};
 }
 
 double parse_number(const std::string& cell, const fs::path& csv, std::size_t line) {

@@ -36,7 +36,7 @@ ShardRecord read_shard_sidecar(const std::filesystem::path& table) {
   ShardRecord r;
   try {
     r.sidecar = json::parse(read_input_file(side, "--merge sidecar", kMaxSidecarBytes));
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {  // parse_error, and out_of_range for a number past double's range
     throw InputError("--merge", side.string(), std::string("not JSON (") + e.what() + "): not the sidecar of a sweep shard");
   }
   const json* run = nullptr;

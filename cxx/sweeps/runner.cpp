@@ -214,10 +214,10 @@ Result run_local(const Plan& plan, const Task& task, const Options& o) {
     // finished point: a point's notification only ends the wait when the last worker is done).
     threads.emplace_back(worker);
     std::unique_lock<std::mutex> lock(mutex);
-    auto next = std::chrono::steady_clock::now();
+    auto report_at = std::chrono::steady_clock::now();
     while (running > 0) {
-      if (cv.wait_until(lock, next, [&] { return running == 0; })) break;
-      next += std::chrono::milliseconds(500);
+      if (cv.wait_until(lock, report_at, [&] { return running == 0; })) break;
+      report_at += std::chrono::milliseconds(500);
       const std::size_t done = table.done();
       lock.unlock();
       o.progress(done, res.points);
