@@ -12,6 +12,7 @@
 
 #include "nanopush/outputs/io.hpp"
 #include "nanopush/outputs/plot.hpp"
+#include "nanopush/planning/check.hpp"
 #include "nanopush/planning/plan.hpp"
 #include "bench_report.hpp"
 #include "bench_options.hpp"
@@ -34,6 +35,9 @@ struct BenchPlanOptions : BenchDirectoryOptions {
   /// noise sigma 1 nm (x, y) and 0.01 rad, tolerance three of those sigmas.
   int closed_loop = 40;
   double noise_distance = 1e-9, noise_angle = 0.01;
+  /// Robust plans: the first N tasks planned for the model alone and for a tip friction in
+  /// 0-0.3 and start noise, each checked open loop in `robust_trials` worlds.
+  int robust = 10, robust_trials = 50;
 };
 
 /// The two bars of the thesis: the nanobar of chapter 3 and the nanorod of chapters 4-5.
@@ -108,6 +112,70 @@ std::string closed_loop_bench(const BenchPlanOptions& o, const Scene (&bars)[2],
   return md.str();
 }
 
+/// Robust plans (plan --robust) on the first o.robust tasks: each planned for the model alone
+/// (tip mu 0) and robustly (tip mu at 0 and 0.3, the start shifted by 2 sigma of a 0.3 nm /
+/// 0.002 rad noise), tolerance 2 nm and 0.02 rad; both checked open loop in o.robust_trials
+/// worlds with the tip mu uniform in 0-0.3 and that start noise. Writes plan_robust.csv;
+/// returns the Markdown paragraph.
+std::string robust_bench(const BenchPlanOptions& o, const Scene (&bars)[2], const std::vector<plan::Pose>& goals) {
+  const int n = std::min<int>(o.robust, static_cast<int>(goals.size()));
+  if (n <= 0) return {};
+  plan::PlanOptions po;
+  po.tolerance_distance = 2e-9;
+  po.tolerance_angle = 0.02;
+  po.max_pushes = o.max_pushes;
+  const plan::Noise noise{0.3e-9, 0.3e-9, 0.002};
+  plan::PlanOptions ro = po;
+  ro.robust_tip_mu_lo = 0;
+  ro.robust_tip_mu_hi = 0.3;
+  ro.robust_start_x = 2 * noise.x;
+  ro.robust_start_y = 2 * noise.y;
+  ro.robust_start_theta = 2 * noise.theta;
+  plan::CheckWorlds worlds{noise, 0, 0, o.seed + 2, 0.0, 0.3};
+  CsvWriter w(fs::path(o.out) / "plan_robust.csv", columns("bench_plan_robust"), "bench-plan");
+  int found[2] = {0, 0};
+  std::vector<double> success[2], pushes[2], planning[2];
+  for (int k = 0; k < n; ++k) {
+    const bool rod = k % 2 == 1;
+    const auto& goal = goals[static_cast<std::size_t>(k)];
+    std::vector<std::string> cells{csv_number(k + 1), rod ? "nanorod" : "nanobar"};
+    double seconds[2] = {0, 0};
+    for (int which = 0; which < 2; ++which) {
+      const plan::PlanResult r = plan::plan_pushes(bars[rod], goal, which == 0 ? po : ro);
+      const bool ok = r.found() && r.verified;
+      const double p = ok ? plan::check_plan(bars[rod], r, po, worlds, o.robust_trials).probability : 0.0;
+      found[which] += ok ? 1 : 0;
+      success[which].push_back(p);
+      pushes[which].push_back(static_cast<double>(r.pushes.size()));
+      planning[which].push_back(r.planning_seconds);
+      seconds[which] = r.planning_seconds;
+      for (const std::string& c : {std::string(ok ? "1" : "0"), csv_number(static_cast<double>(r.pushes.size())), csv_number(p)})
+        cells.push_back(c);
+    }
+    cells.push_back(csv_number(seconds[0]));
+    cells.push_back(csv_number(seconds[1]));
+    w.cells(cells);
+    std::cerr << "\rbench-plan: robust " << k + 1 << "/" << n << std::flush;
+  }
+  std::cerr << "\n";
+  w.commit();
+  auto mean = [](const std::vector<double>& v) {
+    double s = 0;
+    for (double x : v) s += x;
+    return v.empty() ? 0.0 : s / static_cast<double>(v.size());
+  };
+  std::ostringstream md;
+  md << std::setprecision(3) << "\n**Robust plans** (the first " << n << " tasks; tolerance 2 nm and 0.02 rad; each "
+     << "plan checked open loop in " << o.robust_trials << " worlds with the tip friction uniform in 0-0.3 and start "
+     << "noise 0.3 nm and 0.002 rad): the model's plan (tip mu 0) found " << found[0] << "/" << n
+     << ", success in the worlds " << 100 * mean(success[0]) << " % on average (median pushes " << median(pushes[0])
+     << ", median planning " << median(planning[0]) << " s); the robust plan (`--robust`: tip mu 0 and 0.3, the start "
+     << "shifted by 2 sigma) found " << found[1] << "/" << n << ", success " << 100 * mean(success[1])
+     << " % on average (median pushes " << median(pushes[1]) << ", median planning " << median(planning[1])
+     << " s). A plan not found counts as 0 %. plan_robust.csv has each task.\n";
+  return md.str();
+}
+
 int run_bench_plan(const BenchPlanOptions& o) {
   fs::create_directories(o.out);
   const Scene bars[2] = {bar_scene(false), bar_scene(true)};
@@ -156,7 +224,7 @@ int run_bench_plan(const BenchPlanOptions& o) {
   }
   std::cerr << "\n";
   w.commit();
-  const std::string loop_md = closed_loop_bench(o, bars, goals);
+  const std::string loop_md = closed_loop_bench(o, bars, goals) + robust_bench(o, bars, goals);
   std::ostringstream md;
   md << std::setprecision(3) << "| planner | success | median pushes | median tip travel (nm) | median time (s) | median planning (s) |\n"
      << "|---|---|---|---|---|---|\n";
@@ -198,6 +266,14 @@ RegisterCommand reg{{"bench-plan",
                        app.add_option("--closed-loop", o.closed_loop,
                                       "closed-loop tasks (the first N tasks again, mu unknown within +-30 %, imaging noise; 0: none)")
                            ->check(count(0, 100000))
+                           ->capture_default_str();
+                       app.add_option("--robust", o.robust,
+                                      "robust-plan tasks (the first N tasks planned for the model and for a tip mu in "
+                                      "0-0.3 and start noise, each checked open loop; 0: none)")
+                           ->check(count(0, 100000))
+                           ->capture_default_str();
+                       app.add_option("--robust-trials", o.robust_trials, "worlds each robust-plan task is checked in")
+                           ->check(count(1, 1000000))
                            ->capture_default_str();
                      })}};
 

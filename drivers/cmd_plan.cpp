@@ -5,6 +5,7 @@
 #include <iomanip>
 #include <iostream>
 #include <sstream>
+#include <tuple>
 
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/outputs/io.hpp"
@@ -33,7 +34,8 @@ struct PlanCliOptions {
   std::string truth, noise = "x=0,theta=0";
   std::uint64_t seed = 1;
   int check = 0;
-  std::string mu_range;
+  std::string mu_range, tip_mu_range;
+  bool robust = false;
   unsigned jobs = 0;
   bool quiet = false;
 };
@@ -101,7 +103,15 @@ void write_outputs(const Scene& sc, const plan::PlanResult& r, const std::filesy
                       {"offset", json_number(p.offset)},
                       {"max_force_N", json_number(p.max_force)},
                       {"verified_deviation", json_number(p.verified_deviation)}});
-  const json doc = {{"scene", sc.name},
+  json worlds = json::array();
+  for (const auto& w : r.worlds)
+    worlds.push_back({{"tip_mu", json_number(w.tip_mu)},
+                      {"start", pose(w.start)},
+                      {"final", pose(w.final_pose)},
+                      {"final_distance_m", json_number(w.final_distance)},
+                      {"final_angle_rad", json_number(w.final_angle)},
+                      {"reached", w.reached}});
+  json doc = {{"scene", sc.name},
                     {"status", r.status},
                     {"verified", r.verified},
                     {"message", r.message},
@@ -115,6 +125,7 @@ void write_outputs(const Scene& sc, const plan::PlanResult& r, const std::filesy
                     {"forward_runs", r.forward_runs},
                     {"planning_seconds", json_number(r.planning_seconds)},
                     {"pushes", std::move(pushes)}};
+  if (!r.worlds.empty()) doc["robust_worlds"] = std::move(worlds);  // robust planning (plan --tip-mu-range, --robust)
   write_file_atomic(dir / "plan.json", json_text(doc));
   const std::string body =
       "set size ratio -1\nset xlabel 'x (nm)'\nset ylabel 'y (nm)'\nset key outside right noenhanced\n"
@@ -199,6 +210,32 @@ int closed_loop_cmd(const PlanCliOptions& o, const Scene& sc, const plan::Pose& 
   return r.reached() ? 0 : 3;
 }
 
+/// The plan's summary on standard error: status, pushes, and each robust world's end.
+void print_plan_summary(const Scene& sc, const plan::PlanResult& r) {
+  std::cerr << std::setprecision(6) << sc.name << ": " << r.status << (r.verified ? " (verified)" : "") << ", "
+            << r.pushes.size() << " push(es), tip travel " << r.tip_travel << " m, time " << r.time << " s\n"
+            << "  final pose " << r.final_pose.x << " m, " << r.final_pose.y << " m, " << r.final_pose.theta
+            << " rad: " << r.final_distance << " m and " << r.final_angle << " rad from the goal\n"
+            << "  planning " << r.planning_seconds << " s, " << r.forward_runs << " model runs\n";
+  int i = 1;
+  for (const auto& p : r.pushes)
+    std::cerr << "  push " << i++ << ": face " << p.face << " at " << p.offset << ", tip from (" << p.start_x << ", "
+              << p.start_y << ") m, direction " << p.direction << " rad, travel " << p.travel << " m\n";
+  for (const auto& w : r.worlds)
+    std::cerr << "  world tip.mu " << w.tip_mu << ", start (" << w.start.x << ", " << w.start.y << ", " << w.start.theta
+              << "): ends " << w.final_distance << " m and " << w.final_angle << " rad from the goal"
+              << (w.reached ? "" : " (NOT within tolerance)") << "\n";
+}
+
+/// LO:HI of `flag` (empty: not given, {-1, -1}).
+std::pair<double, double> parse_range(const char* flag, const std::string& text) {
+  if (text.empty()) return {-1, -1};
+  const auto colon = text.find(':');
+  if (colon == std::string::npos) throw InputError(flag, text, "must be LO:HI");
+  return {number_list(flag, text.substr(0, colon), 1, "LO:HI, two numbers")[0],
+          number_list(flag, text.substr(colon + 1), 1, "LO:HI, two numbers")[0]};
+}
+
 /// --check N: the plan made open loop in N worlds, as a sweep of trials (planning/check.hpp) on
 /// --jobs threads, or across the ranks when mpirun started nanopush-mpi: DIR/check.csv (a sweep
 /// table with its sidecar; interrupted, it resumes from its journal) and DIR/check.json (the
@@ -208,12 +245,8 @@ int check_cmd(const PlanCliOptions& o, const Scene& sc, const plan::PlanResult& 
   plan::CheckWorlds w;
   w.noise = parse_noise(o.noise);
   w.seed = o.seed;
-  if (!o.mu_range.empty()) {
-    const auto colon = o.mu_range.find(':');
-    if (colon == std::string::npos) throw InputError("--mu-range", o.mu_range, "must be LO:HI");
-    w.mu_lo = number_list("--mu-range", o.mu_range.substr(0, colon), 1, "LO:HI, two numbers")[0];
-    w.mu_hi = number_list("--mu-range", o.mu_range.substr(colon + 1), 1, "LO:HI, two numbers")[0];
-  }
+  if (!o.mu_range.empty()) std::tie(w.mu_lo, w.mu_hi) = parse_range("--mu-range", o.mu_range);
+  std::tie(w.tip_mu_lo, w.tip_mu_hi) = parse_range("--tip-mu-range", o.tip_mu_range);
   const sweep::Plan trials = plan::check_points(o.check);
   const auto task = plan::make_check_task(sc, r, po, w);
   sweep::Options opt;
@@ -221,7 +254,8 @@ int check_cmd(const PlanCliOptions& o, const Scene& sc, const plan::PlanResult& 
   opt.out = dir / "check.csv";
   opt.progress = progress_line(o.quiet || !table_rank(), "check");
   opt.stop = install_sweep_stop();
-  opt.fixed = {"--noise " + o.noise, "--mu-range " + o.mu_range, "--seed " + std::to_string(o.seed)};
+  opt.fixed = {"--noise " + o.noise, "--mu-range " + o.mu_range, "--tip-mu-range " + o.tip_mu_range,
+               "--seed " + std::to_string(o.seed)};
   if (mpi_launched()) {
     const int rc = run_mpi_sweep(trials, *task, opt, o.quiet, sweep_signal());
     if (rc != 0 || !table_rank()) return rc;
@@ -242,13 +276,16 @@ int check_cmd(const PlanCliOptions& o, const Scene& sc, const plan::PlanResult& 
   j["wilson95_high"] = json_number(c.high);
   j["noise"] = o.noise;
   j["mu_range"] = o.mu_range;
+  j["tip_mu_range"] = o.tip_mu_range;
   j["seed"] = o.seed;
   j["table"] = "check.csv";
   write_file_atomic(dir / "check.json", json_text(j));
   if (!o.quiet)
     std::cerr << "  check: success " << c.successes << "/" << c.trials << " = " << c.probability << " (95 % interval "
               << c.low << " to " << c.high << ") over start noise " << o.noise
-              << (o.mu_range.empty() ? std::string() : " and mu in " + o.mu_range) << ": " << opt.out.string() << "\n";
+              << (o.mu_range.empty() ? std::string() : " and mu in " + o.mu_range)
+              << (o.tip_mu_range.empty() ? std::string() : " and tip mu in " + o.tip_mu_range) << ": " << opt.out.string()
+              << "\n";
   return 0;
 }
 
@@ -264,6 +301,18 @@ int plan_cmd(const PlanCliOptions& o) {
   po.objective = plan::parse_objective(o.objective);
   po.max_pushes = o.max_pushes;
   po.half_turn_symmetric = !o.distinguish_ends;
+  // --robust: plan for the ends of --tip-mu-range and the start shifted by 2 sigma of --noise
+  // in each component as well as for the model (docs/planning.md, "Robust plans").
+  if (o.robust) {
+    if (o.closed_loop) throw InputError("--robust", "with --closed-loop", "the closed loop re-plans from each image: drop --robust");
+    std::tie(po.robust_tip_mu_lo, po.robust_tip_mu_hi) = parse_range("--tip-mu-range", o.tip_mu_range);
+    const plan::Noise n = parse_noise(o.noise);
+    po.robust_start_x = 2 * n.x;
+    po.robust_start_y = 2 * n.y;
+    po.robust_start_theta = 2 * n.theta;
+    if (!po.robust())
+      throw InputError("--robust", "--noise " + o.noise, "plans for the worlds of --noise or --tip-mu-range: give either");
+  }
   if (o.closed_loop) return closed_loop_cmd(o, sc, {g[0], g[1], g[2]}, po);
   if (!o.truth.empty()) throw InputError("--truth", o.truth, "is the closed loop's: add --closed-loop");
   const plan::PlanResult r = plan::plan_pushes(sc, {g[0], g[1], g[2]}, po);
@@ -273,15 +322,7 @@ int plan_cmd(const PlanCliOptions& o) {
   const bool speaker = table_rank();
   if (speaker) write_outputs(sc, r, dir);
   if (!o.quiet && speaker) {
-    std::cerr << std::setprecision(6) << sc.name << ": " << r.status << (r.verified ? " (verified)" : "") << ", "
-              << r.pushes.size() << " push(es), tip travel " << r.tip_travel << " m, time " << r.time << " s\n"
-              << "  final pose " << r.final_pose.x << " m, " << r.final_pose.y << " m, " << r.final_pose.theta
-              << " rad: " << r.final_distance << " m and " << r.final_angle << " rad from the goal\n"
-              << "  planning " << r.planning_seconds << " s, " << r.forward_runs << " model runs\n";
-    int i = 1;
-    for (const auto& p : r.pushes)
-      std::cerr << "  push " << i++ << ": face " << p.face << " at " << p.offset << ", tip from (" << p.start_x << ", "
-                << p.start_y << ") m, direction " << p.direction << " rad, travel " << p.travel << " m\n";
+    print_plan_summary(sc, r);
     std::cerr << "  plan: " << (dir / "plan.csv").string() << " (and plan.json, tip_path.csv, "
               << plot::figure_path(dir / "plan.png").filename().string() << ")\n";
     if (!r.found()) std::cerr << "nanopush: not_found: " << r.message << "\n";
@@ -347,6 +388,10 @@ RegisterCommand reg_plan{
                       "mu uniform in --mu-range), made open loop, as a sweep of trials; check.csv, check.json")
            ->check(count(0, 1000000));
        app.add_option("--mu-range", o->mu_range, "--check: surface mu uniform in LO:HI (default: the scene's mu)");
+       app.add_option("--tip-mu-range", o->tip_mu_range, "--check: tip mu uniform in LO:HI (default: the scene's tip.mu)");
+       app.add_flag("--robust", o->robust,
+                    "a plan that reaches the goal in every world of --tip-mu-range (its ends) and --noise (the start "
+                    "shifted by 2 sigma, one component at a time) as well as in the model's");
        app.add_option("--jobs", o->jobs,
                       "--check: threads (default: every core; under mpirun -np R nanopush-mpi, the cores per rank)")
            ->check(count(1, 1024));

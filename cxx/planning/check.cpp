@@ -43,6 +43,11 @@ class CheckTask final : public sweep::Task {
     vary_mu_ = !(w.mu_lo == 0 && w.mu_hi == 0);
     if (vary_mu_ && !(w.mu_lo > 0 && w.mu_hi >= w.mu_lo && w.mu_hi <= 10))
       throw InputError("--mu-range", text(w.mu_lo) + ":" + text(w.mu_hi), "must be LO:HI with 0 < LO <= HI <= 10");
+    vary_tip_mu_ = w.tip_mu_lo >= 0;
+    if (vary_tip_mu_ && !(w.tip_mu_hi >= w.tip_mu_lo && w.tip_mu_hi <= 10))
+      throw InputError("--tip-mu-range", text(w.tip_mu_lo) + ":" + text(w.tip_mu_hi), "must be LO:HI with 0 <= LO <= HI <= 10");
+    if (vary_tip_mu_ && scene.push_mode != PushMode::tip)
+      throw InputError("--tip-mu-range", scene.name, "varies the tip's friction: the scene must be a tip scene (push.mode = \"tip\")");
   }
   [[nodiscard]] std::string name() const override { return "plan-check"; }
   [[nodiscard]] std::string scene_name() const override { return scene_.name; }
@@ -51,6 +56,7 @@ class CheckTask final : public sweep::Task {
             {"start_y", "m", "the trial's true start y"},
             {"start_theta", "rad", "the trial's true start orientation"},
             {"mu", "1", "the trial's surface friction coefficient"},
+            {"tip_mu", "1", "the trial's tip-bar friction coefficient (0: a force push's frictionless tip)"},
             count_column("pushes_made", "pushes of the plan made (fewer: a push could not be made, see message)"),
             {"final_x", "m", "true end x of the centre"},
             {"final_y", "m", "true end y"},
@@ -75,6 +81,9 @@ class CheckTask final : public sweep::Task {
                      plan_.start.theta + w_.noise.theta * detail::standard_normal(rng)};
     Scene world = scene_;
     if (vary_mu_) world.set("surface.mu", w_.mu_lo + (w_.mu_hi - w_.mu_lo) * static_cast<double>(rng() >> 11) * 0x1.0p-53);
+    if (vary_tip_mu_)
+      world.set("tip.mu", w_.tip_mu_lo + (w_.tip_mu_hi - w_.tip_mu_lo) * static_cast<double>(rng() >> 11) * 0x1.0p-53);
+    const double tip_mu = world.push_mode == PushMode::tip ? world.tip.mu : 0.0;
     PointResult r;
     Pose at = start;
     std::size_t made = 0;
@@ -96,7 +105,7 @@ class CheckTask final : public sweep::Task {
     const double a = std::fabs(angle_error(at.theta, plan_.goal.theta, o_.half_turn_symmetric));
     const bool ok = made == plan_.pushes.size() && d <= o_.tolerance_distance && a <= o_.tolerance_angle;
     r.cells = {csv_number(start.x), csv_number(start.y), csv_number(start.theta), csv_number(world.surface.mu),
-               std::to_string(made), csv_number(at.x), csv_number(at.y), csv_number(at.theta),
+               csv_number(tip_mu), std::to_string(made), csv_number(at.x), csv_number(at.y), csv_number(at.theta),
                csv_number(d), csv_number(a), ok ? "1" : "0"};
     return r;
   }
@@ -118,13 +127,14 @@ class CheckTask final : public sweep::Task {
   [[nodiscard]] std::string worlds() const {
     return "noise=" + text(w_.noise.x) + "," + text(w_.noise.y) + "," + text(w_.noise.theta) +
            " mu=" + (vary_mu_ ? text(w_.mu_lo) + ":" + text(w_.mu_hi) : std::string("scene")) +
+           (vary_tip_mu_ ? " tip_mu=" + text(w_.tip_mu_lo) + ":" + text(w_.tip_mu_hi) : std::string()) +
            " seed=" + std::to_string(w_.seed);
   }
   Scene scene_;
   PlanResult plan_;
   PlanOptions o_;
   CheckWorlds w_;
-  bool vary_mu_ = false;
+  bool vary_mu_ = false, vary_tip_mu_ = false;
 };
 
 }  // namespace
@@ -181,8 +191,13 @@ PlanCheck read_check_table(const std::filesystem::path& table) {
 
 PlanCheck check_plan(const Scene& scene, const PlanResult& plan, const PlanOptions& o, const Noise& noise, int trials,
                      double mu_lo, double mu_hi, std::uint64_t seed, unsigned jobs) {
+  return check_plan(scene, plan, o, CheckWorlds{noise, mu_lo, mu_hi, seed}, trials, jobs);
+}
+
+PlanCheck check_plan(const Scene& scene, const PlanResult& plan, const PlanOptions& o, const CheckWorlds& w, int trials,
+                     unsigned jobs) {
   const sweep::Plan points = check_points(trials);
-  const auto task = make_check_task(scene, plan, o, {noise, mu_lo, mu_hi, seed});
+  const auto task = make_check_task(scene, plan, o, w);
   const std::size_t cs = sweep::column_index(points, *task, "success"),
                     cd = sweep::column_index(points, *task, "final_distance"),
                     ca = sweep::column_index(points, *task, "final_angle");

@@ -48,6 +48,86 @@ bool within(const Pose& p, const Pose& goal, const PlanOptions& o) {
          std::fabs(angle_error(p.theta, goal.theta, o.half_turn_symmetric)) <= o.tolerance_angle;
 }
 
+/// A world a robust plan must reach the goal in: the scene with its tip friction, and the
+/// bar's pose in it as the plan's pushes so far leave it.
+struct World {
+  double tip_mu = 0;
+  Scene scene;
+  Pose start, pose;
+};
+
+/// The model's world, then (PlanOptions::robust) the tip friction at both ends of the range and
+/// the start shifted by each component's +-shift, one at a time.
+std::vector<World> make_worlds(const Scene& scene, const Pose& start, const PlanOptions& o) {
+  const double mu0 = scene.push_mode == PushMode::tip ? scene.tip.mu : 0.0;
+  std::vector<World> ws{{mu0, scene, start, start}};
+  if (!o.robust()) return ws;
+  if (o.robust_tip_mu_lo >= 0) {
+    if (!(o.robust_tip_mu_hi >= o.robust_tip_mu_lo && o.robust_tip_mu_hi <= 10))
+      throw InputError("--tip-mu-range", fmt(o.robust_tip_mu_lo) + ":" + fmt(o.robust_tip_mu_hi),
+                       "must be LO:HI with 0 <= LO <= HI <= 10");
+    if (scene.push_mode != PushMode::tip)
+      throw InputError("--tip-mu-range", scene.name, "plans over tip friction need a tip scene (push.mode = \"tip\")");
+    for (double mu : {o.robust_tip_mu_lo, o.robust_tip_mu_hi}) {
+      if (std::any_of(ws.begin(), ws.end(), [&](const World& w) { return w.tip_mu == mu && w.start.x == start.x &&
+                                                                          w.start.y == start.y && w.start.theta == start.theta; }))
+        continue;
+      World w{mu, scene, start, start};
+      w.scene.set("tip.mu", mu);
+      ws.push_back(std::move(w));
+    }
+  }
+  const double shifts[3] = {o.robust_start_x, o.robust_start_y, o.robust_start_theta};
+  for (int k = 0; k < 3; ++k) {
+    if (!(shifts[k] >= 0 && std::isfinite(shifts[k])))
+      throw InputError("--noise", fmt(shifts[k]), "a robust plan's start shifts must be finite and >= 0");
+    if (shifts[k] == 0) continue;
+    for (double sign : {-1.0, 1.0}) {
+      Pose p = start;
+      (k == 0 ? p.x : k == 1 ? p.y : p.theta) += sign * shifts[k];
+      World w{mu0, scene, p, p};
+      w.scene.set({{"initial.x", p.x}, {"initial.y", p.y}, {"initial.theta", p.theta}});
+      ws.push_back(std::move(w));
+    }
+  }
+  return ws;
+}
+
+/// Each robust world's replay of the whole plan from its start; the plan is found only when it
+/// reaches the goal in every world, verified only when every replay ends within tolerance.
+void verify_worlds(const std::vector<World>& worlds, PlanResult& res, const PlanOptions& o) {
+  bool all = true;
+  std::size_t k = 0, first_miss = 0;
+  for (const World& w : worlds) {
+    PlanResult::World out{w.tip_mu, w.start, w.start, 0, 0, false};
+    bool ran = true;
+    for (const PlannedPush& p : res.pushes) {
+      try {
+        const Trajectory tr = run_scene(push_scene(w.scene, out.final_pose, p));
+        const auto& r = tr.rows.back();
+        out.final_pose = {r[col::x], r[col::y], r[col::theta]};
+      } catch (const std::exception&) {
+        ran = false;
+        break;
+      }
+    }
+    out.final_distance = std::hypot(out.final_pose.x - res.goal.x, out.final_pose.y - res.goal.y);
+    out.final_angle = std::fabs(angle_error(out.final_pose.theta, res.goal.theta, o.half_turn_symmetric));
+    out.reached = ran && within(out.final_pose, res.goal, o);
+    if (!out.reached && all) first_miss = k;
+    all = all && out.reached;
+    res.worlds.push_back(out);
+    ++k;
+  }
+  res.verified = res.verified && all;
+  if (all || !res.found()) return;
+  const PlanResult::World& m = res.worlds[first_miss];
+  res.status = "not_found";
+  res.message = "no plan within " + std::to_string(o.max_pushes) + " pushes reaches the goal in every world: with tip.mu = " +
+                fmt(m.tip_mu) + " from (" + fmt(m.start.x) + ", " + fmt(m.start.y) + ", " + fmt(m.start.theta) +
+                ") the best leaves the bar " + fmt(m.final_distance) + " m and " + fmt(m.final_angle) + " rad from the goal";
+}
+
 }  // namespace
 
 namespace detail {
@@ -247,28 +327,71 @@ PlanResult plan_pushes(const Scene& scene, const Pose& goal, const PlanOptions& 
     for (double s : offs) cands.push_back({f, s});
   }
 
-  Pose pose = res.start;
-  double cost = goal_cost(pose, goal, half, sym);
+  // The worlds the plan must reach the goal in: the model's first, then (robust planning) the
+  // others. Every candidate push is the model world's (its tip path in world axes), run in each.
+  std::vector<World> worlds = make_worlds(scene, res.start, o);
+  auto worst_cost = [&](const std::vector<World>& ws) {
+    double c = 0;
+    for (const World& w : ws) c = std::max(c, goal_cost(w.pose, goal, half, sym));
+    return c;
+  };
+  auto all_within = [&](const std::vector<World>& ws) {
+    return std::all_of(ws.begin(), ws.end(), [&](const World& w) { return within(w.pose, goal, o); });
+  };
+  double cost = worst_cost(worlds);
   const int samples = 241;
-  while (static_cast<int>(res.pushes.size()) < o.max_pushes && !within(pose, goal, o)) {
+  std::vector<std::vector<tip::TipRow>> other(worlds.size());  // the other worlds' runs of a candidate
+  while (static_cast<int>(res.pushes.size()) < o.max_pushes && !all_within(worlds)) {
+    const Pose& pose = worlds.front().pose;
     const double dist = std::hypot(pose.x - goal.x, pose.y - goal.y);
-    const double travel_max = o.clearance + dist + half * std::fabs(angle_error(pose.theta, goal.theta, sym)) + 0.5 * L;
+    // The tip starts clear of the bar in every world: back by how far the worlds' bars stand
+    // from the model's (0 with one world).
+    double spread = 0;
+    for (const World& w : worlds)
+      spread = std::max(spread, std::hypot(w.pose.x - pose.x, w.pose.y - pose.y) +
+                                    half * std::fabs(angle_error(w.pose.theta, pose.theta, false)));
+    const double clearance = o.clearance + spread;
+    const double travel_max = clearance + dist + half * std::fabs(angle_error(pose.theta, goal.theta, sym)) + 0.5 * L;
     struct Best {
       double score = std::numeric_limits<double>::infinity();
       double cost = 0;
       PlannedPush push;
     } best;
     for (const Candidate& c : cands) {
-      const detail::Trial tr = detail::trial_push(g, muN, base, pose, c.face, c.offset, o.clearance, travel_max, samples, rtol);
+      tip::TipPath path = base;
+      path.mu = worlds.front().tip_mu;
+      const detail::Trial tr = detail::trial_push(g, muN, path, pose, c.face, c.offset, clearance, travel_max, samples, rtol);
       if (!tr.ok) continue;
       ++res.forward_runs;
+      bool all_ran = true;
+      for (std::size_t w = 1; w < worlds.size() && all_ran; ++w) {
+        tip::TipPath pw = tr.path;
+        pw.mu = worlds[w].tip_mu;
+        const Pose& q = worlds[w].pose;
+        try {
+          other[w] = tip::run_quasi_static(g, muN, pw, q.x, q.y, q.theta, 0.0, samples, rtol).rows;
+          all_ran = other[w].size() == tr.rows.size();
+        } catch (const std::runtime_error&) {  // InputError: the tip would start inside the bar there; SolverError: no answer
+          all_ran = false;
+        }
+        ++res.forward_runs;
+      }
+      if (!all_ran) continue;  // a push that cannot be made in every world is not robust
       double max_force = 0;
       for (std::size_t i = 0; i < tr.rows.size(); ++i) {
         const tip::TipRow& r = tr.rows[i];
         max_force = std::max(max_force, std::hypot(r.tip_fx, r.tip_fy));
         if (!detail::pushed(r)) continue;
         const Pose q{r.x, r.y, r.theta};
-        const double cq = goal_cost(q, goal, half, sym);
+        double cq = goal_cost(q, goal, half, sym);
+        bool reached = within(q, goal, o);
+        for (std::size_t w = 1; w < worlds.size(); ++w) {
+          const tip::TipRow& rw = other[w][i];
+          const Pose qw{rw.x, rw.y, rw.theta};
+          cq = std::max(cq, goal_cost(qw, goal, half, sym));
+          reached = reached && within(qw, goal, o);
+          max_force = std::max(max_force, std::hypot(rw.tip_fx, rw.tip_fy));
+        }
         const double travel = tr.path.speed * r.t;
         double score = cq;
         const double gain = cost - cq;
@@ -276,7 +399,7 @@ PlanResult plan_pushes(const Scene& scene, const Pose& goal, const PlanOptions& 
           score = gain > 0 ? -gain / travel : std::numeric_limits<double>::infinity();
         else if (o.objective == Objective::force)
           score = gain > 0 ? -gain / std::max(max_force, 1e-300) : std::numeric_limits<double>::infinity();
-        if (within(q, goal, o)) score = -std::numeric_limits<double>::infinity();  // reaches the goal: take it (shortest)
+        if (reached) score = -std::numeric_limits<double>::infinity();  // reaches the goal: take it (shortest)
         const bool better = score < best.score || (score == best.score && travel < best.push.travel);
         if (better && cq < cost) {
           best.score = score;
@@ -290,20 +413,26 @@ PlanResult plan_pushes(const Scene& scene, const Pose& goal, const PlanOptions& 
     // user replaying plan.csv compute), not the trial's sample: the next push is planned from
     // there, so the plan and its replay are one computation. (The two agree to ~rtol, but a
     // push near the centre of a face with a frictionless tip amplifies such differences.)
-    try {
-      const Trajectory tr = run_scene(push_scene(scene, pose, best.push));
-      const auto& r = tr.rows.back();
-      best.push.end = {r[col::x], r[col::y], r[col::theta]};
-    } catch (const std::exception&) {
-      break;  // cannot happen for a push the trial ran; stop with the plan so far
+    bool made = true;
+    for (World& w : worlds) {
+      try {
+        const Trajectory tr = run_scene(push_scene(w.scene, w.pose, best.push));
+        const auto& r = tr.rows.back();
+        w.pose = {r[col::x], r[col::y], r[col::theta]};
+      } catch (const std::exception&) {
+        made = false;  // cannot happen for a push the trials ran; stop with the plan so far
+        break;
+      }
+      ++res.forward_runs;
     }
-    ++res.forward_runs;
+    if (!made) break;
+    best.push.end = worlds.front().pose;
     res.pushes.push_back(best.push);
-    pose = best.push.end;
-    cost = goal_cost(pose, goal, half, sym);
+    cost = worst_cost(worlds);
   }
 
   detail::verify(scene, res, o);
+  if (o.robust()) verify_worlds(worlds, res, o);
   res.planning_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return res;
 }

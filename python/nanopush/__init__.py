@@ -261,29 +261,34 @@ class Comparison:
 
 
 def plan(scene, goal, *, tolerance=(1e-9, 0.01), objective="pushes", max_pushes=10, half_turn_symmetric=True,
-         baseline=False):
+         baseline=False, robust_tip_mu=None, robust_start=None):
     """Tip pushes that bring the scene's bar from its initial pose to `goal` = (x [m], y [m],
     theta [rad]) within `tolerance` = (distance [m], angle [rad]) (docs/planning.md), planned
     through the quasi-static tip model and verified by forward runs; the numbers of
     `nanopush plan SCENE --goal X,Y,THETA`. `objective`: "pushes", "travel", "time" or "force";
     `baseline=True` plans as the target-oriented baseline does. The scene needs a rough surface;
     its tip.* keys (push.mode = "tip") give the tip's radius, speed and friction. Returns a
-    PlanResult (status "found" or "not_found" with the best plan); bad input is InputError."""
-    return _nanopush._plan(_as_scene(scene), goal, tolerance, str(objective), max_pushes, half_turn_symmetric, baseline)
+    PlanResult (status "found" or "not_found" with the best plan); bad input is InputError.
+    A robust plan reaches the goal in other worlds as well as the model's: `robust_tip_mu` =
+    (lo, hi), the tip friction at both ends; `robust_start` = (dx [m], dy [m], dtheta [rad]),
+    the start shifted by each, plus and minus, one at a time (``nanopush plan --robust``, whose
+    shifts are 2 sigma of --noise); ``PlanResult.worlds`` says where the plan leaves each."""
+    return _nanopush._plan(_as_scene(scene), goal, tolerance, str(objective), max_pushes, half_turn_symmetric, baseline,
+                           robust_tip_mu, robust_start)
 
 
-def check_plan(plan_result, scene, trials, *, noise=(0.0, 0.0, 0.0), mu_range=None, seed=1, jobs=None,
-               progress=None):
+def check_plan(plan_result, scene, trials, *, noise=(0.0, 0.0, 0.0), mu_range=None, tip_mu_range=None, seed=1,
+               jobs=None, progress=None):
     """How often `plan_result` (from nanopush.plan on `scene`) reaches its goal when made open
     loop in `trials` worlds that are not the model's: the start pose plus Gaussian noise
     `noise` = (sx [m], sy [m], stheta [rad]), the surface mu uniform in `mu_range` = (lo, hi)
-    (None: the scene's), trial k drawn from its own stream (seed, k); the numbers of
+    (None: the scene's), the tip's in `tip_mu_range` (None: the scene's), trial k drawn from its own stream (seed, k); the numbers of
     ``nanopush plan ... --check N`` (docs/planning.md). The trials run through the sweep
     engine on `jobs` threads (None: every core), with `progress` and Ctrl-C as in
     nanopush.sweep. Returns a PlanCheck: the per-trial table (a SweepResult: start_x, ...,
     final_distance, final_angle, success) with ``probability``, ``successes``, ``trials`` and
     ``interval`` (the 95 % Wilson interval)."""
-    names, units, data, summary = plan_result._check(_as_scene(scene), trials, noise, mu_range, seed,
+    names, units, data, summary = plan_result._check(_as_scene(scene), trials, noise, mu_range, tip_mu_range, seed,
                                                      _count("jobs", 0 if jobs is None else jobs), progress)
     return PlanCheck(names, units, data, summary)
 

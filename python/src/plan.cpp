@@ -3,6 +3,7 @@
 #include "common.hpp"
 
 #include <cmath>
+#include <tuple>
 
 #include "nanopush/planning/assemble.hpp"
 #include "nanopush/planning/check.hpp"
@@ -51,9 +52,18 @@ py::dict push_dict(const plan::PlannedPush& p) {
   return d;
 }
 
+/// (lo, hi) of `name`, or {-1, -1} for None.
+std::pair<double, double> range_arg(const py::object& v, const std::string& name, const std::string& none_means) {
+  const py::object m = plain_value(v, name);
+  if (m.is_none()) return {-1, -1};
+  if (py::isinstance<py::str>(m) || !py::isinstance<py::sequence>(m) || py::len(m) != 2)
+    throw InputError(name, py::repr(m).cast<std::string>(), "must be (lo, hi) or None (" + none_means + ")");
+  return {arg_double(m.cast<py::sequence>()[0], name + "[0]"), arg_double(m.cast<py::sequence>()[1], name + "[1]")};
+}
+
 plan::PlanResult plan_scene(const Scene& scene, const py::object& goal, const py::object& tolerance,
                             const std::string& objective, const py::object& max_pushes, const py::object& half_turn,
-                            const py::object& baseline) {
+                            const py::object& baseline, const py::object& robust_tip_mu, const py::object& robust_start) {
   const plan::Pose g = pose_arg(goal, "goal");
   plan::PlanOptions o;
   const py::object tol = plain_value(tolerance, "tolerance");
@@ -68,6 +78,15 @@ plan::PlanResult plan_scene(const Scene& scene, const py::object& goal, const py
   o.max_pushes = static_cast<int>(n);
   o.half_turn_symmetric = arg_bool(half_turn, "half_turn_symmetric");
   const bool base = arg_bool(baseline, "baseline");
+  std::tie(o.robust_tip_mu_lo, o.robust_tip_mu_hi) = range_arg(robust_tip_mu, "robust_tip_mu", "the model's tip.mu only");
+  if (!plain_value(robust_start, "robust_start").is_none()) {
+    const plan::Pose d = pose_arg(robust_start, "robust_start");
+    o.robust_start_x = d.x;
+    o.robust_start_y = d.y;
+    o.robust_start_theta = d.theta;
+  }
+  if (base && o.robust())
+    throw InputError("baseline", "True", "the baseline plans for the model only: drop robust_tip_mu and robust_start");
   py::gil_scoped_release release;
   return base ? plan::plan_baseline(scene, g, o) : plan::plan_pushes(scene, g, o);
 }
@@ -75,8 +94,8 @@ plan::PlanResult plan_scene(const Scene& scene, const py::object& goal, const py
 /// PlanResult._check: plan --check in memory (planning/check.hpp): (names, units, columns,
 /// summary) with the summary's trials, successes, probability and Wilson interval.
 py::tuple check_plan(const plan::PlanResult& r, const Scene& scene, const py::object& trials, const py::object& noise,
-                     const py::object& mu_range, const py::object& seed, const py::object& jobs,
-                     const py::object& progress) {
+                     const py::object& mu_range, const py::object& tip_mu_range, const py::object& seed,
+                     const py::object& jobs, const py::object& progress) {
   const double n = arg_double(trials, "trials");
   if (!(n >= 1 && n <= 1000000 && n == std::floor(n)))
     throw InputError("trials", py::repr(trials).cast<std::string>(), "must be a whole number in [1, 1000000]");
@@ -90,6 +109,7 @@ py::tuple check_plan(const plan::PlanResult& r, const Scene& scene, const py::ob
     w.mu_lo = arg_double(m.cast<py::sequence>()[0], "mu_range[0]");
     w.mu_hi = arg_double(m.cast<py::sequence>()[1], "mu_range[1]");
   }
+  std::tie(w.tip_mu_lo, w.tip_mu_hi) = range_arg(tip_mu_range, "tip_mu_range", "the scene's tip.mu");
   const double s = arg_double(seed, "seed");
   if (!(s >= 0 && s <= 1e12 && s == std::floor(s)))
     throw InputError("seed", py::repr(seed).cast<std::string>(), "must be a whole number in [0, 1e12]");
@@ -178,7 +198,9 @@ pushes          one dict per push: start_x, start_y, direction, speed, travel (t
                 end (pose), face, offset, max_force [N], verified_deviation
 table           the pushes as an (n, 8) array: start_x, start_y, direction, speed, travel, x_end,
                 y_end, theta_end (plan.csv's columns after `push`)
-tip_travel [m], time [s], forward_runs, planning_seconds)doc")
+tip_travel [m], time [s], forward_runs, planning_seconds
+worlds          robust plans: one dict per world planned for (tip_mu, start, final_pose,
+                final_distance, final_angle, reached), the model's first; [] otherwise)doc")
       .def_property_readonly("status", [](const plan::PlanResult& r) { return r.status; })
       .def_property_readonly("found", &plan::PlanResult::found)
       .def_property_readonly("message", [](const plan::PlanResult& r) { return r.message; })
@@ -199,6 +221,21 @@ tip_travel [m], time [s], forward_runs, planning_seconds)doc")
                                return l;
                              })
       .def_property_readonly("table", &push_table)
+      .def_property_readonly("worlds",
+                             [](const plan::PlanResult& r) {
+                               py::list l;
+                               for (const auto& w : r.worlds) {
+                                 py::dict d;
+                                 d["tip_mu"] = w.tip_mu;
+                                 d["start"] = pose_tuple(w.start);
+                                 d["final_pose"] = pose_tuple(w.final_pose);
+                                 d["final_distance"] = w.final_distance;
+                                 d["final_angle"] = w.final_angle;
+                                 d["reached"] = w.reached;
+                                 l.append(d);
+                               }
+                               return l;
+                             })
       .def(
           "push_scene",
           [](const plan::PlanResult& r, const Scene& scene, const py::object& k) {
@@ -213,7 +250,7 @@ tip_travel [m], time [s], forward_runs, planning_seconds)doc")
           "The scene that replays push k (from the pose push k-1 left): push.mode = tip and the push's tip keys; "
           "nanopush.run(it) is the forward run that verified it.")
       .def("_check", &check_plan, py::arg("scene"), py::arg("trials"), py::arg("noise"), py::arg("mu_range"),
-           py::arg("seed"), py::arg("jobs"), py::arg("progress"))
+           py::arg("tip_mu_range"), py::arg("seed"), py::arg("jobs"), py::arg("progress"))
       .def("__repr__", [](const plan::PlanResult& r) {
         return "<nanopush.PlanResult " + r.status + (r.verified ? " (verified)" : "") + ", " +
                std::to_string(r.pushes.size()) + " pushes, final distance " + py::repr(py::float_(r.final_distance)).cast<std::string>() +
@@ -222,7 +259,8 @@ tip_travel [m], time [s], forward_runs, planning_seconds)doc")
   m.def("_assemble", &assemble_bars, py::arg("scene"), py::arg("objects"), py::arg("slots"), py::arg("tolerance"),
         py::arg("objective"), py::arg("max_pushes"), py::arg("gap"));
   m.def("_plan", &plan_scene, py::arg("scene"), py::arg("goal"), py::arg("tolerance"), py::arg("objective"),
-        py::arg("max_pushes"), py::arg("half_turn_symmetric"), py::arg("baseline"));
+        py::arg("max_pushes"), py::arg("half_turn_symmetric"), py::arg("baseline"), py::arg("robust_tip_mu"),
+        py::arg("robust_start"));
 }
 
 }  // namespace nanopush::python

@@ -38,7 +38,7 @@ add_test(NAME cli.plan.found
          COMMAND bash -c "set -e; d=\"$1\"; rm -rf \"$d\"; \"$0\" plan tip_push_nanorod --goal 60e-9,40e-9,0.3 --tolerance 2e-9,0.02 \
 --check 5 --noise x=0.2e-9,theta=0.001 --mu-range 0.05:0.2 --out \"$d\" 2> \"$d.err\"; grep -q 'found (verified)' \"$d.err\"; \
 grep -q 'check: success ' \"$d.err\"; \
-head -1 \"$d/check.csv\" | grep -qx 'point,trial,start_x,start_y,start_theta,mu,pushes_made,final_x,final_y,final_theta,final_distance,final_angle,success,status,message'; \
+head -1 \"$d/check.csv\" | grep -qx 'point,trial,start_x,start_y,start_theta,mu,tip_mu,pushes_made,final_x,final_y,final_theta,final_distance,final_angle,success,status,message'; \
 test -s \"$d/check.schema.json\"; grep -q '\"trials\": 5' \"$d/check.json\"; test ! -e \"$d/check.csv.journal\"; \
 head -1 \"$d/plan.csv\" | grep -qx 'push,start_x,start_y,direction,speed,travel,x_end,y_end,theta_end'; \
 test -s \"$d/plan.json\"; test -s \"$d/tip_path.csv\"; test -s \"$d/plan.png\"; test -s \"$d/plan.schema.json\"; \
@@ -74,12 +74,13 @@ set_tests_properties(capi.plan_c PROPERTIES FIXTURES_REQUIRED plan_capi)
 nanopush_capi_test(capi.plan_fortran capi_test_plan_fortran test_fortran_plan.f90 "[0-9]+ checks, 0 failures"
                    ${_tip_scene})
 target_link_libraries(capi_test_plan_fortran PRIVATE nanopush_test_support_f)
-# bench-plan on two tasks, open and closed loop: its tables, report and figure are written.
+# bench-plan on two tasks, open and closed loop and robust: its tables, report and figure are written.
 add_test(NAME cli.bench.plan_quick
-         COMMAND bash -c "set -e; d=\"$1\"; rm -rf \"$d\"; \"$0\" bench-plan --tasks 2 --closed-loop 2 --max-pushes 10 \
+         COMMAND bash -c "set -e; d=\"$1\"; rm -rf \"$d\"; \"$0\" bench-plan --tasks 2 --closed-loop 2 --robust 2 --robust-trials 4 --max-pushes 10 \
 --out \"$d\" > /dev/null 2> \"$d.err\"; grep -q '^| plan | ' \"$d/plan_benchmark.md\"; \
 grep -q 'Closed loop.*after each push, reached [0-2]/2.*keeping the model.s tip friction, reached [0-2]/2' \"$d/plan_benchmark.md\"; test \"$(wc -l < \"$d/plan_closed_loop.csv\")\" -eq 3; \
 head -1 \"$d/plan_closed_loop.csv\" | grep -qx 'task,bar,mu_truth,tip_mu_truth,tip_mu_fit,reached,pushes,reached_kept,pushes_kept,tip_travel,planning_time,final_distance,final_angle'; \
+grep -q 'Robust plans.*the robust plan .*found [0-2]/2' \"$d/plan_benchmark.md\"; test \"$(wc -l < \"$d/plan_robust.csv\")\" -eq 3; \
 test -s \"$d/plan_benchmark.csv\"; echo bench-plan: ok" ${_np} ${CMAKE_CURRENT_BINARY_DIR}/cli_bench_plan)
 set_tests_properties(cli.bench.plan_quick PROPERTIES PASS_REGULAR_EXPRESSION "bench-plan: ok")
 

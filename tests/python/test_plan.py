@@ -86,6 +86,30 @@ def test_check_plan_equals_the_command_line(cli, tmp_path):
         nanopush.check_plan(r, SCENE, 2, mu_range=(0.5, 0.1))
 
 
+def test_robust_plan_equals_the_command_line_and_reaches_every_world(cli, tmp_path):
+    noise = (0.3e-9, 0.3e-9, 0.002)
+    r = nanopush.plan(SCENE, GOAL, tolerance=TOL, robust_tip_mu=(0.0, 0.3),
+                      robust_start=tuple(2 * s for s in noise))
+    assert r.found and r.verified, r.message
+    assert len(r.worlds) == 8  # the model's (tip.mu 0), tip.mu 0.3, the start shifted +-2 sigma in x, y, theta
+    assert r.worlds[1]["tip_mu"] == 0.3 and all(w["reached"] for w in r.worlds)
+    assert all(w["final_distance"] <= TOL[0] and w["final_angle"] <= TOL[1] for w in r.worlds)
+    cli("plan", SCENE, "--goal", ",".join(map(repr, GOAL)), "--tolerance", ",".join(map(repr, TOL)), "--robust",
+        "--tip-mu-range", "0:0.3", "--noise", "x=0.3e-9,theta=0.002", "--check", "8",
+        "--seed", "2", "--out", tmp_path / "p", "--quiet")
+    _, rows = read_csv(tmp_path / "p" / "plan.csv")
+    assert np.array_equal(r.table, np.array([[float(c) for c in row[1:]] for row in rows]))  # bit for bit
+    c = nanopush.check_plan(r, SCENE, 8, noise=noise, tip_mu_range=(0.0, 0.3), seed=2, jobs=1)
+    header, rows = read_csv(tmp_path / "p" / "check.csv")
+    col = header.index("tip_mu")
+    assert np.array_equal(c["tip_mu"], np.array([float(row[col]) for row in rows]))
+    assert np.all((c["tip_mu"] >= 0) & (c["tip_mu"] <= 0.3))
+    with pytest.raises(nanopush.InputError, match="robust_tip_mu"):
+        nanopush.plan(SCENE, GOAL, robust_tip_mu=0.3)
+    with pytest.raises(nanopush.InputError, match="tip-mu-range"):
+        nanopush.plan(SCENE, GOAL, robust_tip_mu=(0.3, 0.1))
+
+
 def test_assemble_equals_the_command_line(cli, tmp_path):
     objects = np.array([[0, 0, 0], [100e-9, 0, 0]])
     slots = np.array([[110e-9, 20e-9, 0.1], [10e-9, 20e-9, 0.1]])

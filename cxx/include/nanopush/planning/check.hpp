@@ -12,13 +12,15 @@
 namespace nanopush::plan {
 
 /// What the worlds of a check draw from: trial k's start pose is the plan's start plus
-/// Gaussian noise, its surface mu uniform in [mu_lo, mu_hi] (both 0: the scene's), from the
+/// Gaussian noise, its surface mu uniform in [mu_lo, mu_hi] (both 0: the scene's) and its tip
+/// friction uniform in [tip_mu_lo, tip_mu_hi] (lo < 0: the scene's), in that order, from the
 /// trial's own random stream (seed, k), so a trial is the same on whichever thread or rank
 /// computes it.
 struct CheckWorlds {
   Noise noise;
   double mu_lo = 0, mu_hi = 0;
   std::uint64_t seed = 0;
+  double tip_mu_lo = -1, tip_mu_hi = -1;  ///< the tip's friction uniform in [lo, hi] (lo < 0: the scene's)
 };
 
 /// The points of a check: one axis `trial` = 1 .. trials (a grid: nothing stored per trial).
@@ -38,6 +40,10 @@ std::unique_ptr<sweep::Task> make_check_task(const Scene& scene, const PlanResul
 /// columns `success`, `final_distance`, `final_angle`); InputError naming the file if it is not
 /// one.
 PlanCheck read_check_table(const std::filesystem::path& table);
+
+/// check_plan over the worlds `w` (surface and tip friction ranges, start noise, seed).
+PlanCheck check_plan(const Scene& scene, const PlanResult& plan, const PlanOptions& options, const CheckWorlds& w,
+                     int trials, unsigned jobs = 0);
 
 /// Fill probability, low and high of `c` from its trials and successes (95 % Wilson interval).
 void wilson_interval(PlanCheck& c);

@@ -31,6 +31,15 @@ struct PlanOptions {
   /// (false: the ends are told apart).
   bool half_turn_symmetric = true;
   double clearance = 2e-9;  ///< gap between tip and bar where each push starts [m]
+  /// Robust planning (docs/planning.md, "Robust plans"): the plan is chosen so that it reaches
+  /// the goal in every world of a set, not only in the model's: the tip friction at both ends
+  /// of [robust_tip_mu_lo, robust_tip_mu_hi] (lo < 0: the model's only) and the start pose
+  /// shifted by +-robust_start.x, +-y, +-theta, one component at a time (0: not shifted).
+  double robust_tip_mu_lo = -1, robust_tip_mu_hi = -1;
+  double robust_start_x = 0, robust_start_y = 0, robust_start_theta = 0;
+  [[nodiscard]] bool robust() const {
+    return robust_tip_mu_lo >= 0 || robust_start_x > 0 || robust_start_y > 0 || robust_start_theta > 0;
+  }
 };
 
 /// One planned push: the tip keys of the scene (tip.start_x, tip.start_y, tip.direction,
@@ -56,6 +65,15 @@ struct PlanResult {
   double tip_travel = 0;      ///< summed over pushes [m]
   double time = 0;            ///< summed push durations [s]
   long forward_runs = 0;      ///< model runs the search took
+  /// Robust planning: each world the plan was chosen for (the model's first) and where the
+  /// plan, replayed end to end in it, leaves the bar. Empty unless options.robust().
+  struct World {
+    double tip_mu = 0;
+    Pose start, final_pose;
+    double final_distance = 0, final_angle = 0;
+    bool reached = false;
+  };
+  std::vector<World> worlds;
   PlanOptions options;        ///< what the plan was asked for (tolerance, symmetry, ...)
   double planning_seconds = 0;
   [[nodiscard]] bool found() const { return status == "found"; }
