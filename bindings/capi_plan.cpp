@@ -17,6 +17,13 @@ extern "C" {
 
 int nanopush_plan(nanopush_error error, nanopush_scene scene, const double* goal, const double* tolerance,
                   const char* objective, int max_pushes, int capacity, double* pushes, int* n_pushes, double* summary) {
+  return nanopush_plan_robust(error, scene, goal, tolerance, objective, max_pushes, nullptr, nullptr, capacity, pushes,
+                              n_pushes, summary);
+}
+
+int nanopush_plan_robust(nanopush_error error, nanopush_scene scene, const double* goal, const double* tolerance,
+                         const char* objective, int max_pushes, const double* tip_mu_range, const double* start_shift,
+                         int capacity, double* pushes, int* n_pushes, double* summary) {
   return guarded(error, [&] {
     require_handle(scene, "scene");
     require_handle(goal, "goal");
@@ -34,6 +41,17 @@ int nanopush_plan(nanopush_error error, nanopush_scene scene, const double* goal
     const std::string obj = opt_string(objective);
     if (!obj.empty()) o.objective = plan::parse_objective(obj);
     o.max_pushes = max_pushes;
+    if (tip_mu_range) {
+      o.robust_tip_mu_lo = tip_mu_range[0];
+      o.robust_tip_mu_hi = tip_mu_range[1];
+      if (!(o.robust_tip_mu_lo >= 0))  // (a negative lo would read as "no range")
+        throw nanopush::InputError("tip_mu_range[0]", std::to_string(o.robust_tip_mu_lo), "must be >= 0");
+    }
+    if (start_shift) {
+      o.robust_start_x = start_shift[0];
+      o.robust_start_y = start_shift[1];
+      o.robust_start_theta = start_shift[2];
+    }
     const plan::PlanResult r = plan::plan_pushes(scene->scene, {goal[0], goal[1], goal[2]}, o);
     // everything computed: store
     if (pushes)

@@ -480,6 +480,16 @@ module nanopush
       real(c_double), intent(inout) :: pushes(*), summary(8)
       integer(c_int), intent(inout) :: n_pushes
     end function c_plan
+    integer(c_int) function c_plan_robust(error, scene, goal, tolerance, objective, max_pushes, tip_mu_range, &
+        start_shift, capacity, pushes, n_pushes, summary) bind(C, name="nanopush_plan_robust")
+      import :: c_int, c_ptr, c_double, c_char
+      type(c_ptr), value, intent(in) :: error, scene, tip_mu_range, start_shift
+      real(c_double), intent(in) :: goal(3), tolerance(2)
+      character(kind=c_char), intent(in) :: objective(*)
+      integer(c_int), value, intent(in) :: max_pushes, capacity
+      real(c_double), intent(inout) :: pushes(*), summary(8)
+      integer(c_int), intent(inout) :: n_pushes
+    end function c_plan_robust
     integer(c_int) function c_assemble(error, scene, n, objects, slots, tolerance, max_pushes, gap, capacity, &
         pushes, n_pushes, slot_of, final_poses, assembled) bind(C, name="nanopush_assemble")
       import :: c_int, c_ptr, c_double
@@ -1383,13 +1393,17 @@ contains
   !> "travel", "time", "force"), max_pushes (default 10), found and verified, summary(8) = (found
   !> 1/0, verified 1/0, final x, y, theta, distance and angle from the goal, forward runs). A goal
   !> no plan reaches is not an error: found = .false. and the best plan is returned. On failure
-  !> pushes is allocated to (0, 8) and the real outputs are NaN.
+  !> pushes is allocated to (0, 8) and the real outputs are NaN. A robust plan (`plan --robust`,
+  !> C: nanopush_plan_robust): tip_mu_range(2) = (lo, hi), the tip friction at both ends, and
+  !> start_shift(3) = (dx [m], dy [m], dtheta [rad]), the start shifted by each, plus and minus,
+  !> one at a time; found then means within tolerance in every world.
   subroutine nanopush_plan(scene, goal, pushes, tolerance, objective, max_pushes, found, verified, summary, &
-                           stat, errmsg)
+                           stat, errmsg, tip_mu_range, start_shift)
     type(nanopush_scene), intent(in) :: scene
     real(dp), intent(in) :: goal(3)
     real(dp), allocatable, intent(out) :: pushes(:, :)
     real(dp), intent(in), optional :: tolerance(2)
+    real(dp), intent(in), optional :: tip_mu_range(2), start_shift(3)
     character(len=*), intent(in), optional :: objective
     integer, intent(in), optional :: max_pushes
     logical, intent(out), optional :: found, verified
@@ -1400,8 +1414,20 @@ contains
     character(len=:), allocatable :: msg
     real(c_double), allocatable :: rows(:, :)
     real(c_double) :: s(8), tol(2)
+    real(c_double), target :: range(2), shift(3)
+    type(c_ptr) :: range_ptr, shift_ptr
     integer(c_int) :: n, maxp
     integer :: st
+    range_ptr = c_null_ptr
+    shift_ptr = c_null_ptr
+    if (present(tip_mu_range)) then
+      range = tip_mu_range
+      range_ptr = c_loc(range)
+    end if
+    if (present(start_shift)) then
+      shift = start_shift
+      shift_ptr = c_loc(shift)
+    end if
     maxp = 10
     if (present(max_pushes)) maxp = int(max_pushes, c_int)
     tol = [1e-9_dp, 0.01_dp]
@@ -1410,7 +1436,8 @@ contains
     s = nan()
     n = 0
     err = c_new_error()
-    if (c_plan(err, scene%ptr, goal, tol, to_c(opt(objective)), maxp, max(maxp, 0_c_int), rows, n, s) /= 0) continue
+    if (c_plan_robust(err, scene%ptr, goal, tol, to_c(opt(objective)), maxp, range_ptr, shift_ptr, max(maxp, 0_c_int), &
+                      rows, n, s) /= 0) continue
     call finish(err, "nanopush_plan", msg, st)
     if (present(stat)) then
       stat = st

@@ -422,6 +422,17 @@ int nanopush_estimate_mu_batch(nanopush_error error, const double* rod, int n, c
 int nanopush_plan(nanopush_error error, nanopush_scene scene, const double* goal, const double* tolerance,
                   const char* objective, int max_pushes, int capacity, double* pushes, int* n_pushes, double* summary);
 
+/* A robust plan (`nanopush plan --robust`, docs/planning.md "Robust plans"): as nanopush_plan, for
+ * a set of worlds at once: the model's, the tip friction at both ends of tip_mu_range, and the
+ * start shifted by -start_shift[k] and +start_shift[k] in x, y and theta, one at a time.
+ *   tip_mu_range[2]  lo, hi with 0 <= lo <= hi <= 10 (a tip scene); NULL: the model's tip friction only
+ *   start_shift[3]   dx, dy [m], dtheta [rad], each >= 0 (0: no shift); NULL: none
+ * found (summary[0]) = 1 when the plan leaves every world within tolerance; verified when each
+ * world's end-to-end replay does too. With both NULL it is nanopush_plan. */
+int nanopush_plan_robust(nanopush_error error, nanopush_scene scene, const double* goal, const double* tolerance,
+                         const char* objective, int max_pushes, const double* tip_mu_range, const double* start_shift,
+                         int capacity, double* pushes, int* n_pushes, double* summary);
+
 /* ---- Assembly (docs/planning.md, `nanopush assemble`) ------------------------------------------ */
 #define NANOPUSH_ASSEMBLY_PUSH_SIZE 10
 /* Several bars of `scene`'s kind (its bar, surface and tip) from `objects` into `slots`: the

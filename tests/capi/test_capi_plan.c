@@ -1,6 +1,6 @@
 /* nanopush_plan through the C API: the plan of `nanopush plan` bit for bit (its plan.csv, given),
- * found and verified, the chain ending at the last push's pose; bad input refused with its status
- * and nothing written. Usage: capi_test_plan SCENE.toml PLAN.csv */
+ * found and verified, the chain ending at the last push's pose; a robust plan (nanopush_plan_robust)
+ * found in every world; bad input refused with its status and nothing written. Usage: capi_test_plan SCENE.toml PLAN.csv */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -48,6 +48,26 @@ int main(int argc, char** argv) {
   const int m = read_plan_csv(argv[2], cli, kMax);
   CHECK(m == n);
   if (m == n && n > 0) CHECK(memcmp(cli, pushes, (size_t)n * NANOPUSH_PLAN_PUSH_SIZE * sizeof(double)) == 0);
+
+  /* A robust plan (plan --robust): found and verified in every world; with no worlds given it is
+   * nanopush_plan's plan bit for bit. */
+  {
+    const double range[2] = {0.0, 0.3}, shift[3] = {0.6e-9, 0.6e-9, 0.004};
+    double rp[kMax * NANOPUSH_PLAN_PUSH_SIZE], rs[NANOPUSH_PLAN_SUMMARY_SIZE];
+    int rn = -1;
+    CHECK(nanopush_plan_robust(err, scene, goal, tol, NULL, kMax, range, shift, kMax, rp, &rn, rs) == NANOPUSH_OK);
+    CHECK(rn >= 1 && rs[0] == 1.0 && rs[1] == 1.0);
+    CHECK(nanopush_plan_robust(err, scene, goal, tol, "pushes", kMax, NULL, NULL, kMax, rp, &rn, rs) == NANOPUSH_OK);
+    CHECK(rn == n && memcmp(rp, pushes, (size_t)n * NANOPUSH_PLAN_PUSH_SIZE * sizeof(double)) == 0);
+    const double reversed[2] = {0.3, 0.1};
+    int untouched_rn = -7;
+    char rmsg[512];
+    CHECK(nanopush_plan_robust(err, scene, goal, tol, NULL, kMax, reversed, NULL, kMax, rp, &untouched_rn, NULL) ==
+          NANOPUSH_BAD_INPUT);
+    nanopush_get_error(err, rmsg, sizeof rmsg);
+    CHECK(strstr(rmsg, "tip-mu-range") != NULL && untouched_rn == -7);
+    nanopush_clear_error(err);
+  }
 
   /* Bad input: the status, the argument named, nothing written. */
   int untouched = -7;

@@ -1,6 +1,7 @@
 !> nanopush_plan through `use nanopush`: the plan of the C API row for row (found and verified,
 !> within tolerance, the chain ending where its last push leaves the bar); a goal out of reach
-!> in one push is not found, with the best plan; bad input as stat + errmsg naming the argument.
+!> in one push is not found, with the best plan; a robust plan found in every world; bad input as
+!> stat + errmsg naming the argument.
 !> Usage: capi_test_plan_fortran SCENE.toml
 program test_fortran_plan
   use nanopush
@@ -28,6 +29,13 @@ program test_fortran_plan
   call check(summary(6) <= tol(1) .and. summary(7) <= tol(2), "plan: within tolerance")
   if (n >= 1) call check(all(pushes(n, 6:8) == summary(3:5)), "plan: the chain ends at the last push's pose")
   call check(all(pushes(:, 4) > 0) .and. all(pushes(:, 5) > 0), "plan: speeds and travels > 0")
+
+  ! A robust plan: found and verified in every world (the tip friction 0 and 0.3, start shifts).
+  call nanopush_plan(scene, goal, pushes, tolerance=tol, found=found, verified=verified, stat=stat, errmsg=msg, &
+                     tip_mu_range=[0.0_dp, 0.3_dp], start_shift=[0.6e-9_dp, 0.6e-9_dp, 0.004_dp])
+  call check(stat == NANOPUSH_OK .and. found .and. verified .and. size(pushes, 1) >= 1, "robust plan: " // msg)
+  call nanopush_plan(scene, goal, pushes, tip_mu_range=[0.3_dp, 0.1_dp], stat=stat, errmsg=msg)
+  call check(stat == NANOPUSH_BAD_INPUT .and. index(msg, "tip-mu-range") > 0, "reversed tip_mu_range: " // msg)
 
   call nanopush_plan(scene, [400e-9_dp, -300e-9_dp, 1.2_dp], pushes, tolerance=tol, max_pushes=1, found=found, &
                      summary=summary, stat=stat)
