@@ -470,16 +470,6 @@ module nanopush
       integer(c_int), intent(inout) :: converged, json_length
       character(kind=c_char), intent(inout) :: json(*)
     end function c_fit_trajectory
-    integer(c_int) function c_plan(error, scene, goal, tolerance, objective, max_pushes, capacity, pushes, &
-        n_pushes, summary) bind(C, name="nanopush_plan")
-      import :: c_int, c_ptr, c_double, c_char
-      type(c_ptr), value, intent(in) :: error, scene
-      real(c_double), intent(in) :: goal(3), tolerance(2)
-      character(kind=c_char), intent(in) :: objective(*)
-      integer(c_int), value, intent(in) :: max_pushes, capacity
-      real(c_double), intent(inout) :: pushes(*), summary(8)
-      integer(c_int), intent(inout) :: n_pushes
-    end function c_plan
     integer(c_int) function c_plan_robust(error, scene, goal, tolerance, objective, max_pushes, tip_mu_range, &
         start_shift, capacity, pushes, n_pushes, summary) bind(C, name="nanopush_plan_robust")
       import :: c_int, c_ptr, c_double, c_char

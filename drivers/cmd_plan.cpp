@@ -103,13 +103,10 @@ void write_outputs(const Scene& sc, const plan::PlanResult& r, const std::filesy
                       {"offset", json_number(p.offset)},
                       {"max_force_N", json_number(p.max_force)},
                       {"verified_deviation", json_number(p.verified_deviation)}});
-  json worlds = json::array();
+  json worlds = json::array();  // robust planning: each world's start and where the plan leaves it
   for (const auto& w : r.worlds)
-    worlds.push_back({{"tip_mu", json_number(w.tip_mu)},
-                      {"start", pose(w.start)},
-                      {"final", pose(w.final_pose)},
-                      {"final_distance_m", json_number(w.final_distance)},
-                      {"final_angle_rad", json_number(w.final_angle)},
+    worlds.push_back({{"tip_mu", json_number(w.tip_mu)}, {"start", pose(w.start)}, {"final", pose(w.final_pose)},
+                      {"error", json::array({json_number(w.final_distance), json_number(w.final_angle)})},
                       {"reached", w.reached}});
   json doc = {{"scene", sc.name},
                     {"status", r.status},
@@ -125,7 +122,7 @@ void write_outputs(const Scene& sc, const plan::PlanResult& r, const std::filesy
                     {"forward_runs", r.forward_runs},
                     {"planning_seconds", json_number(r.planning_seconds)},
                     {"pushes", std::move(pushes)}};
-  if (!r.worlds.empty()) doc["robust_worlds"] = std::move(worlds);  // robust planning (plan --tip-mu-range, --robust)
+  if (!r.worlds.empty()) doc["robust_worlds"] = std::move(worlds);
   write_file_atomic(dir / "plan.json", json_text(doc));
   const std::string body =
       "set size ratio -1\nset xlabel 'x (nm)'\nset ylabel 'y (nm)'\nset key outside right noenhanced\n"
