@@ -77,10 +77,6 @@ void check_poses(const std::vector<Pose>& poses, const std::string& what, double
 
 }  // namespace
 
-double pose_cost(const Pose& p, const Pose& goal, double half_length, bool sym) {
-  return std::hypot(p.x - goal.x, p.y - goal.y) + half_length * std::fabs(angle_error(p.theta, goal.theta, sym));
-}
-
 std::vector<int> assign_slots(const std::vector<Pose>& objects, const std::vector<Pose>& slots, double half_length,
                               bool sym) {
   const std::size_t n = objects.size();

@@ -37,12 +37,6 @@ struct Candidate {
   double offset = 0;
 };
 
-/// The distance to the goal the search minimises: |dr| + (L/2) |dtheta| (how far the bar's
-/// ends are from where they should be).
-double goal_cost(const Pose& p, const Pose& goal, double half_length, bool sym) {
-  return std::hypot(p.x - goal.x, p.y - goal.y) + half_length * std::fabs(angle_error(p.theta, goal.theta, sym));
-}
-
 bool within(const Pose& p, const Pose& goal, const PlanOptions& o) {
   return std::hypot(p.x - goal.x, p.y - goal.y) <= o.tolerance_distance &&
          std::fabs(angle_error(p.theta, goal.theta, o.half_turn_symmetric)) <= o.tolerance_angle;
@@ -273,6 +267,10 @@ double angle_error(double theta, double goal, bool sym) {
   return d;
 }
 
+double pose_cost(const Pose& p, const Pose& goal, double half_length, bool sym) {
+  return std::hypot(p.x - goal.x, p.y - goal.y) + half_length * std::fabs(angle_error(p.theta, goal.theta, sym));
+}
+
 Scene push_scene(const Scene& scene, const Pose& from, const PlannedPush& p) {
   if (!scene.document) throw InputError("scene", scene.name, "has no document to replay pushes from");
   toml::table doc = *scene.document;
@@ -332,7 +330,7 @@ PlanResult plan_pushes(const Scene& scene, const Pose& goal, const PlanOptions& 
   std::vector<World> worlds = make_worlds(scene, res.start, o);
   auto worst_cost = [&](const std::vector<World>& ws) {
     double c = 0;
-    for (const World& w : ws) c = std::max(c, goal_cost(w.pose, goal, half, sym));
+    for (const World& w : ws) c = std::max(c, pose_cost(w.pose, goal, half, sym));
     return c;
   };
   auto all_within = [&](const std::vector<World>& ws) {
@@ -383,12 +381,12 @@ PlanResult plan_pushes(const Scene& scene, const Pose& goal, const PlanOptions& 
         max_force = std::max(max_force, std::hypot(r.tip_fx, r.tip_fy));
         if (!detail::pushed(r)) continue;
         const Pose q{r.x, r.y, r.theta};
-        double cq = goal_cost(q, goal, half, sym);
+        double cq = pose_cost(q, goal, half, sym);
         bool reached = within(q, goal, o);
         for (std::size_t w = 1; w < worlds.size(); ++w) {
           const tip::TipRow& rw = other[w][i];
           const Pose qw{rw.x, rw.y, rw.theta};
-          cq = std::max(cq, goal_cost(qw, goal, half, sym));
+          cq = std::max(cq, pose_cost(qw, goal, half, sym));
           reached = reached && within(qw, goal, o);
           max_force = std::max(max_force, std::hypot(rw.tip_fx, rw.tip_fy));
         }

@@ -34,9 +34,6 @@ struct AssemblyResult {
   [[nodiscard]] bool assembled() const { return status == "assembled"; }
 };
 
-/// The distance a bar is from a pose, as the planner measures it: |dr| + (L/2) |dtheta| [m].
-double pose_cost(const Pose& p, const Pose& goal, double half_length, bool half_turn_symmetric);
-
 /// The slot of each object minimising the summed pose_cost: exact (every permutation) up to 8
 /// bars, else greedy completed by pairwise exchanges while one lowers the sum.
 std::vector<int> assign_slots(const std::vector<Pose>& objects, const std::vector<Pose>& slots, double half_length,

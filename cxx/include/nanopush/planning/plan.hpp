@@ -82,6 +82,10 @@ struct PlanResult {
 /// The angle error theta - goal wrapped to (-pi, pi], or to (-pi/2, pi/2] when half-turn symmetric.
 double angle_error(double theta, double goal, bool half_turn_symmetric);
 
+/// The distance a bar is from a pose, as the planner measures it: |dr| + (L/2) |dtheta| [m]
+/// (how far the bar's ends are from where they should be).
+double pose_cost(const Pose& p, const Pose& goal, double half_length, bool half_turn_symmetric);
+
 /// Plan pushes for the bar of `scene` (a rough surface; its tip keys, when push.mode = tip,
 /// give the tip's radius, speed and friction, else 10 nm, 1 um/s, 0) from the scene's initial
 /// pose to `goal`. Throws InputError for bad input (a smooth surface, a tolerance below what
