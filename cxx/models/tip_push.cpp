@@ -10,16 +10,13 @@
 #include "nanopush/numerics/dop853.hpp"
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/numerics/regula_falsi.hpp"
+#include "tip_format.hpp"
 
 namespace nanopush::tip {
 
 namespace {
 
-std::string fmt(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.6g", v);
-  return b;
-}
+using detail::fmt;
 
 /// Surface friction wrench and dissipation rate D = -f.V at a body twist.
 struct Dissipation {
@@ -199,19 +196,13 @@ std::array<double, 2> TipPath::velocity(double t) const {
 }
 
 void TipPath::validate() const {
-  auto finite = [](const char* k, double v, const char* unit) {
-    if (!std::isfinite(v)) throw InputError(k, fmt(v), std::string("must be finite (") + unit + ")");
-  };
-  auto positive = [](const char* k, double v, const char* unit) {
-    if (!(std::isfinite(v) && v > 0)) throw InputError(k, fmt(v), std::string("must be > 0 and finite (") + unit + ")");
-  };
-  positive("tip.radius", radius, "m");
-  finite("tip.start[0]", start_x, "m");
-  finite("tip.start[1]", start_y, "m");
-  finite("tip.direction", direction, "rad");
-  positive("tip.speed", speed, "m/s");
-  positive("tip.travel", travel, "m");
-  if (!(std::isfinite(mu) && mu >= 0 && mu <= 10)) throw InputError("tip.mu", fmt(mu), "must be in [0, 10]");
+  require_positive("tip.radius", radius, "m");
+  require_finite("tip.start[0]", start_x, "m");
+  require_finite("tip.start[1]", start_y, "m");
+  require_finite("tip.direction", direction, "rad");
+  require_positive("tip.speed", speed, "m/s");
+  require_positive("tip.travel", travel, "m");
+  require_range("tip.mu", mu, 0.0, 10.0);
   if (!std::isfinite(t_stop()) || t_stop() <= 0)
     throw InputError("tip.travel / tip.speed", fmt(t_stop()), "the push's duration must be finite and > 0 (s)");
 }
