@@ -9,11 +9,19 @@
 // before a step that holds an event: the bar comes to rest (V . mode <= 0), or the contact is
 // made or broken (delta changes sign: a kink of the force), each located by regula falsi on
 // sub-integrations from the step's start, as the quasi-static run locates its release.
+//
+// With tip friction (tip.mu > 0) the tip has a state of its own, free, stuck or sliding,
+// changed at located events only (each a zero of a function that is positive while the state
+// holds, located by the same regula falsi; the force is continuous across each change), and
+// the state carries a ninth component, the tip friction's work; the rows and the work
+// accumulators say what the state was. With tip.mu = 0 none of this runs: the eight
+// components and the arithmetic are the frictionless model's, bit for bit.
 #include "nanopush/models/tip_dynamic.hpp"
 
 #include <algorithm>
+#include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <cmath>
-#include <cstdio>
+#include <limits>
 #include <span>
 
 #include "nanopush/models/friction.hpp"
@@ -22,18 +30,27 @@
 #include "nanopush/numerics/dop853.hpp"
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/numerics/regula_falsi.hpp"
+#include "tip_format.hpp"
 
 namespace nanopush::tip {
 
 namespace {
 
-std::string fmt(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.6g", v);
-  return b;
-}
+using detail::fmt;
 
 constexpr int kMaxEvents = 100000;
+
+/// The four faces counter-clockwise from x' = +a: outward normal, the corner the face starts
+/// at (going counter-clockwise) and its length. The corner arc after face i is centred on the
+/// face's end and turns the normal from i pi/2 to (i + 1) pi/2.
+struct Face {
+  double nx, ny, x0, y0, len;
+};
+std::array<Face, 4> faces(const BarGeometry& g) {
+  return {Face{1, 0, g.a, -g.b, 2 * g.b}, Face{0, 1, g.a, g.b, 2 * g.a}, Face{-1, 0, -g.a, g.b, 2 * g.b},
+          Face{0, -1, -g.a, -g.b, 2 * g.a}};
+}
+double cross(double ax, double ay, double bx, double by) { return ax * by - ay * bx; }
 
 }  // namespace
 
@@ -74,6 +91,123 @@ SpringContact spring_contact(const BarGeometry& g, double radius, double stiffne
   return s;
 }
 
+double offset_perimeter(const BarGeometry& g, double radius) { return 4 * (g.a + g.b) + 2 * M_PI * radius; }
+
+OffsetPoint offset_point(const BarGeometry& g, double radius, double s) {
+  const double P = offset_perimeter(g, radius), arc = 0.5 * M_PI * radius;
+  s = std::fmod(s, P);
+  if (s < 0) s += P;
+  OffsetPoint o;
+  o.s = s;
+  const auto F = faces(g);
+  double u = s;
+  for (int i = 0; i < 4; ++i) {
+    const Face& f = F[static_cast<std::size_t>(i)];
+    const double tx = -f.ny, ty = f.nx;
+    if (u <= f.len) {
+      o.nx = f.nx;
+      o.ny = f.ny;
+      o.px = f.x0 + u * tx;
+      o.py = f.y0 + u * ty;
+      break;
+    }
+    u -= f.len;
+    if (u <= arc || i == 3) {
+      const double phi = i * 0.5 * M_PI + std::min(u, arc) / radius;
+      o.corner = true;
+      o.nx = std::cos(phi);
+      o.ny = std::sin(phi);
+      o.px = f.x0 + f.len * tx;
+      o.py = f.y0 + f.len * ty;
+      break;
+    }
+    u -= arc;
+  }
+  o.qx = o.px + radius * o.nx;
+  o.qy = o.py + radius * o.ny;
+  return o;
+}
+
+double offset_coordinate(const BarGeometry& g, double radius, double x, double y) {
+  const ContactGeometry c = contact_geometry(g, x, y);
+  double nx = c.nx, ny = c.ny, px = c.px, py = c.py;
+  if (c.inside) {  // the nearest face, as spring_contact
+    const double ex = g.a - std::fabs(x), ey = g.b - std::fabs(y);
+    nx = ny = 0;
+    if (ex <= ey) {
+      nx = x >= 0 ? 1.0 : -1.0;
+      px = nx * g.a;
+    } else {
+      ny = y >= 0 ? 1.0 : -1.0;
+      py = ny * g.b;
+    }
+  }
+  const auto F = faces(g);
+  const double arc = 0.5 * M_PI * radius;
+  double s0 = 0;
+  for (int i = 0; i < 4; ++i) {
+    const Face& f = F[static_cast<std::size_t>(i)];
+    if (nx == f.nx && ny == f.ny) return s0 + std::clamp((px - f.x0) * -f.ny + (py - f.y0) * f.nx, 0.0, f.len);
+    s0 += f.len;
+    const Face& h = F[static_cast<std::size_t>((i + 1) % 4)];
+    if (cross(f.nx, f.ny, nx, ny) > 0 && cross(nx, ny, h.nx, h.ny) > 0) {
+      double phi = std::atan2(ny, nx) - i * 0.5 * M_PI;
+      if (phi < -M_PI) phi += 2 * M_PI;
+      return s0 + radius * std::clamp(phi, 0.0, 0.5 * M_PI);
+    }
+    s0 += arc;
+  }
+  return 0;  // not reached: every normal is a face's or a corner's
+}
+
+SlipPoint slip_point(const BarGeometry& g, double radius, double mu, double sigma, double bx, double by) {
+  const auto F = faces(g);
+  const double arc = 0.5 * M_PI * radius, tol = 1e-12 * (g.a + g.b + radius);
+  const double beta = std::atan(mu * sigma), sb = std::sin(beta);
+  SlipPoint best;
+  double best_abs = std::numeric_limits<double>::infinity();
+  double s0 = 0;
+  for (int i = 0; i < 4; ++i) {
+    const Face& f = F[static_cast<std::size_t>(i)];
+    const double tx = -f.ny, ty = f.nx;
+    {  // the face: q = c0 + u t, lambda = (c0 - b).n, u = (b - c0).t - lambda mu sigma
+      const double cx = f.x0 + radius * f.nx, cy = f.y0 + radius * f.ny;
+      const double lambda = (cx - bx) * f.nx + (cy - by) * f.ny;
+      const double u = (bx - cx) * tx + (by - cy) * ty - lambda * mu * sigma;
+      if (u >= -tol && u <= f.len + tol && std::fabs(lambda) < best_abs) {
+        best_abs = std::fabs(lambda);
+        const double uc = std::clamp(u, 0.0, f.len);
+        best.lambda = lambda;
+        best.at = OffsetPoint{s0 + uc, cx + uc * tx, cy + uc * ty, f.x0 + uc * tx, f.y0 + uc * ty, f.nx, f.ny, false};
+      }
+    }
+    s0 += f.len;
+    {  // the corner arc about c: with w = b - c = rho (cos psi, sin psi) and alpha = psi - phi,
+       // rho (sin alpha + mu sigma cos alpha) = mu sigma r, lambda = r - rho cos alpha
+      const double cx = f.x0 + f.len * tx, cy = f.y0 + f.len * ty;
+      const double wx = bx - cx, wy = by - cy, rho = std::hypot(wx, wy);
+      if (rho > std::fabs(sb) * radius) {
+        const double alpha = std::asin(sb * radius / rho) - beta;
+        double d = std::atan2(wy, wx) - alpha - i * 0.5 * M_PI;
+        d = std::remainder(d, 2 * M_PI);  // in [-pi, pi]
+        const double lambda = radius - rho * std::cos(alpha);
+        if (d * radius >= -tol && d * radius <= arc + tol && std::fabs(lambda) < best_abs) {
+          best_abs = std::fabs(lambda);
+          const double dc = std::clamp(d, 0.0, 0.5 * M_PI), phi = i * 0.5 * M_PI + dc;
+          const double nx = std::cos(phi), ny = std::sin(phi);
+          best.lambda = lambda;
+          best.at = OffsetPoint{s0 + radius * dc, cx + radius * nx, cy + radius * ny, cx, cy, nx, ny, true};
+        }
+      }
+    }
+    s0 += arc;
+  }
+  if (!(best_abs < std::numeric_limits<double>::infinity()))
+    throw SolverError("dynamic tip push: no sliding contact for the tip's base at (" + fmt(bx) + ", " + fmt(by) +
+                      ") m (body axes): the spring is pressed into the bar by more than the friction cone allows");
+  return best;
+}
+
 double inertia_ratio(double mass, double speed, double muN, double travel) {
   return mass * speed * speed / (muN * travel);
 }
@@ -83,33 +217,21 @@ double dynamic_t_end(const DynamicBar& bar, double muN, const TipPath& tip) {
   return tip.t_stop() + 10 * (stop + period);
 }
 
-DynamicRunResult run_dynamic(const BarGeometry& g, double muN, const DynamicBar& bar, const TipPath& tip, double x0,
-                             double y0, double theta0, double t_end, int samples, double rtol) {
-  tip.validate();
-  if (!(std::isfinite(bar.stiffness) && bar.stiffness > 0))
-    throw InputError("tip.stiffness", fmt(bar.stiffness), "must be > 0 and finite (N/m)");
-  if (!(std::isfinite(bar.mass) && bar.mass > 0)) throw InputError("object.mass", fmt(bar.mass), "must be > 0 (kg)");
-  if (!(std::isfinite(bar.inertia) && bar.inertia > 0))
-    throw InputError("object.inertia", fmt(bar.inertia), "must be > 0 (kg m^2)");
-  if (tip.mu != 0.0)
-    throw InputError("tip.mu", fmt(tip.mu),
-                     "the dynamic tip model has a frictionless tip: must be 0 (tip friction: tip.model = "
-                     "\"quasi_static\")");
-  if (!(g.a > 0 && g.b > 0)) throw InputError("object.width, object.length", fmt(2 * g.a) + ", " + fmt(2 * g.b), "must be > 0");
-  if (!(muN > 0 && std::isfinite(muN))) throw InputError("surface.mu x normal load", fmt(muN), "must be > 0 for a tip push (N)");
-  if (samples < 2) throw InputError("solver.samples", std::to_string(samples), "must be >= 2");
-  if (!(t_end > 0)) t_end = dynamic_t_end(bar, muN, tip);
-  if (!std::isfinite(t_end)) throw InputError("solver.t_end", fmt(t_end), "must be finite (s)");
-  if (!(rtol >= dop853_rtol_min<double>() && rtol <= 1e-2))
-    throw InputError("solver.rtol", fmt(rtol),
-                     "must be in [" + fmt(dop853_rtol_min<double>()) + ", 1e-2] for the dynamic tip push");
+namespace {
 
+/// The run once the input is valid: N = kRoughStateSize (a frictionless tip) or
+/// kFricStateSize (tip friction: the tip friction's work as a ninth component).
+constexpr int kFricStateSize = kRoughStateSize + 1, kWorkTipFric = kRoughStateSize;
+template <int N>
+DynamicRunResult run_impl(const BarGeometry& g, double muN, const DynamicBar& bar, const TipPath& tip, double x0,
+                          double y0, double theta0, double t_end, int samples, double rtol) {
   DynamicRunResult out;
   TipRunResult& res = out.run;
   std::vector<double> tout(static_cast<std::size_t>(samples));
   for (int i = 0; i < samples; ++i) tout[static_cast<std::size_t>(i)] = t_end * i / (samples - 1);
   tout.back() = t_end;
   res.rows.resize(tout.size());
+  out.work_tip_fric.assign(tout.size(), 0.0);
 
   const double L = std::max(g.a, g.b), v = tip.speed, k = bar.stiffness, r = tip.radius;
   const double t_stop = tip.t_stop(), t_base_end = std::min(t_stop, t_end);
@@ -118,12 +240,30 @@ DynamicRunResult run_dynamic(const BarGeometry& g, double muN, const DynamicBar&
   model.inertia = bar.inertia;
   model.geometry = g;
   model.muN = muN;
-  using State = std::array<double, kRoughStateSize>;
-  State y{x0, y0, theta0, 0, 0, 0, 0, 0};
+  using State = std::array<double, N>;
+  State y{};  // at rest, no work done
+  y[kX] = x0;
+  y[kY] = y0;
+  y[kTheta] = theta0;
+
+  // With tip friction: the tip's state (free, stuck, sliding in the sense sigma along the
+  // tangent), changed at located events only; stuck, the tip's centre is at arc length
+  // s_stick - r (theta - theta_stick) of the offset surface (no sliding at the contact: the
+  // tip does not turn, the bar turns under it); sliding, where slip_point puts it.
+  constexpr bool kFric = N > kRoughStateSize;
+  enum TipState { kFree, kStuck, kSliding };
+  TipState tstate = kFree;
+  double sigma = 1, s_stick = 0, theta_stick = 0;
+  const double mu = tip.mu;
+  double ux = 0, uy = 0;  // the base's velocity on the phase being integrated (0 once it stops)
 
   struct Eval {
     SpringContact sc;
     double c = 1, s = 0;
+    // with tip friction: the base (body axes), the tangent, the force's normal (pushing > 0)
+    // and tangential parts, lambda ((q - b).n stuck; slip_point's sliding), the arc length
+    double bx = 0, by = 0, tx = 0, ty = 0, Fn = 0, Ft = 0, lambda = 0, arc = 0;
+    bool corner = false;
   };
   auto spring_at = [&](double t, const double* s) {
     Eval e;
@@ -131,9 +271,67 @@ DynamicRunResult run_dynamic(const BarGeometry& g, double muN, const DynamicBar&
     e.s = std::sin(s[kTheta]);
     const auto b = tip.centre(t);
     const double dx = b[0] - s[kX], dy = b[1] - s[kY];
-    e.sc = spring_contact(g, r, k, e.c * dx + e.s * dy, -e.s * dx + e.c * dy);
+    if constexpr (!kFric) {
+      e.sc = spring_contact(g, r, k, e.c * dx + e.s * dy, -e.s * dx + e.c * dy);
+    } else {
+      e.bx = e.c * dx + e.s * dy;
+      e.by = -e.s * dx + e.c * dy;
+      if (tstate == kFree) {  // no force until the located contact (delta tells where it is)
+        e.sc = spring_contact(g, r, k, e.bx, e.by);
+        e.sc.touching = false;
+        e.sc.fx = e.sc.fy = e.sc.torque = 0;
+        e.sc.qx = e.bx;
+        e.sc.qy = e.by;
+        return e;
+      }
+      OffsetPoint op;
+      if (tstate == kStuck) {
+        op = offset_point(g, r, s_stick - r * (s[kTheta] - theta_stick));
+      } else {
+        const SlipPoint sp = slip_point(g, r, mu, sigma, e.bx, e.by);
+        op = sp.at;
+        e.lambda = sp.lambda;
+      }
+      SpringContact& c = e.sc;
+      c.touching = true;
+      c.px = op.px;
+      c.py = op.py;
+      c.nx = op.nx;
+      c.ny = op.ny;
+      c.qx = op.qx;
+      c.qy = op.qy;
+      if (tstate == kStuck || e.lambda > 0) {  // the tip never pulls
+        c.fx = k * (e.bx - op.qx);
+        c.fy = k * (e.by - op.qy);
+      }
+      c.torque = c.px * c.fy - c.py * c.fx;
+      e.tx = -op.ny;
+      e.ty = op.nx;
+      e.Fn = -(c.fx * op.nx + c.fy * op.ny);
+      e.Ft = c.fx * e.tx + c.fy * e.ty;
+      if (tstate == kStuck) e.lambda = (op.qx - e.bx) * op.nx + (op.qy - e.by) * op.ny;
+      c.delta = e.lambda;
+      e.arc = op.s;
+      e.corner = op.corner;
+    }
     return e;
   };
+  // The base's velocity relative to the bar, body axes: R(-theta)(u - v) + omega (by, -bx).
+  auto bdot = [&](const Eval& e, const double* s) {
+    const double rx = ux - s[kVx], ry = uy - s[kVy];
+    return std::array<double, 2>{e.c * rx + e.s * ry + s[kOmega] * e.by, -e.s * rx + e.c * ry - s[kOmega] * e.bx};
+  };
+  // Sliding: the tip's velocity relative to the bar's point under it along the tangent,
+  // ds/dt + omega r, ds/dt by implicit differentiation of slip_point's condition
+  // (b - q(s)) x d(s) = 0, d = -n + mu sigma t: (bdot x d) / (1 - lambda (1 + mu^2)/r) on a
+  // corner's arc (the curvature 1/r), bdot x d on a face.
+  auto slip_velocity = [&](const Eval& e, const double* s) {
+    const auto bd = bdot(e, s);
+    const double dx = -e.sc.nx + mu * sigma * e.tx, dy = -e.sc.ny + mu * sigma * e.ty;
+    const double den = e.corner ? 1 - e.lambda * (1 + mu * mu) / r : 1.0;
+    return cross(bd[0], bd[1], dx, dy) / den + s[kOmega] * r;
+  };
+  auto spring_energy = [&](const Eval& e) { return (e.sc.fx * e.sc.fx + e.sc.fy * e.sc.fy) / (2 * k); };
   {
     const Eval e0 = spring_at(0.0, y.data());
     if (e0.sc.delta > 1e-9 * L)
@@ -156,9 +354,16 @@ DynamicRunResult run_dynamic(const BarGeometry& g, double muN, const DynamicBar&
     d[kVx] = (Fx + fr.fx) / bar.mass;
     d[kVy] = (Fy + fr.fy) / bar.mass;
     d[kOmega] = (e.sc.torque + fr.mf) / bar.inertia;
-    // The spring's power at the contact point (body axes), and the friction's.
-    const double vbx = e.c * s[kVx] + e.s * s[kVy], vby = -e.s * s[kVx] + e.c * s[kVy];
-    d[kWorkPush] = e.sc.fx * (vbx - s[kOmega] * e.sc.py) + e.sc.fy * (vby + s[kOmega] * e.sc.px);
+    if constexpr (!kFric) {
+      // The spring's power at the contact point (body axes), and the friction's.
+      const double vbx = e.c * s[kVx] + e.s * s[kVy], vby = -e.s * s[kVx] + e.c * s[kVy];
+      d[kWorkPush] = e.sc.fx * (vbx - s[kOmega] * e.sc.py) + e.sc.fy * (vby + s[kOmega] * e.sc.px);
+    } else {
+      // The base's power (the spring's energy and what the tip passes on), and the tip
+      // friction's: minus the tangential force times the sliding velocity.
+      d[kWorkPush] = Fx * ux + Fy * uy;
+      d[kWorkTipFric] = tstate == kSliding ? -e.Ft * slip_velocity(e, s) : 0.0;
+    }
     d[kWorkFric] = fr.fx * s[kVx] + fr.fy * s[kVy] + fr.mf * s[kOmega];
     return 0;
   };
@@ -181,7 +386,15 @@ DynamicRunResult run_dynamic(const BarGeometry& g, double muN, const DynamicBar&
       row.tip_fx = Fx;
       row.tip_fy = Fy;
       row.contact = ContactMode::slide;  // a frictionless tip slides on the bar
-      out.max_delta = std::max(out.max_delta, e.sc.delta);
+      if constexpr (!kFric) {
+        out.max_delta = std::max(out.max_delta, e.sc.delta);
+      } else {
+        if (tstate == kStuck) row.contact = ContactMode::stick;
+        out.max_delta = std::max(out.max_delta, std::hypot(e.sc.fx, e.sc.fy) / k);
+      }
+    }
+    if constexpr (kFric) {  // the work on the bar: the base's less the spring's energy, plus the tip friction's
+      row.work_tip = s[kWorkPush] - spring_energy(e) + s[kWorkTipFric];
     }
     if (moving) {
       const WorldWrench fr = coulomb_friction(model, s, mode);
@@ -195,18 +408,116 @@ DynamicRunResult run_dynamic(const BarGeometry& g, double muN, const DynamicBar&
     }
     return row;
   };
-  std::size_t next = 0;
-  auto rest_rows_until = [&](double t_limit, bool inclusive) {
-    while (next < tout.size() && (tout[next] < t_limit || (inclusive && tout[next] <= t_limit))) {
-      res.rows[next] = make_row(tout[next], y.data());
-      ++next;
-    }
-  };
   auto event = [&](double t, const char* what) {
     res.events.push_back({t, what});
     if (res.events.size() > static_cast<std::size_t>(kMaxEvents))
       throw SolverError("dynamic tip push: more than " + std::to_string(kMaxEvents) + " events by t = " + fmt(t) +
                         " s (contact or stick-slip chatter)");
+  };
+
+  // ---- the tip's state (tip friction) ----------------------------------------------------
+  // Each state holds while its functions are positive: free, -delta (the base outside the
+  // offset surface); stuck, mu F_n - |F_t| (inside the friction cone); sliding, lambda (the
+  // base inside) and sigma times the sliding velocity (it slides on). Each carries a margin
+  // of rounding (1e-12 of its scale) so that a state just entered, whose function starts at
+  // zero and grows, is not left again at once.
+  enum Change { kNone = -1, kByFirst = 0, kBySecond = 1 };
+  auto tip_fn = [&](int which, const Eval& e, const double* s) {
+    switch (tstate) {
+      case kFree: return -e.sc.delta;
+      case kStuck:
+        return mu * e.Fn - std::fabs(e.Ft) + 1e-12 * std::hypot(e.sc.fx, e.sc.fy) + std::numeric_limits<double>::min();
+      case kSliding:
+        if (which == kByFirst) return e.lambda + 1e-15 * r;
+        {
+          const auto bd = bdot(e, s);
+          return sigma * slip_velocity(e, s) + 1e-12 * (std::hypot(bd[0], bd[1]) + std::fabs(s[kOmega]) * r) +
+                 std::numeric_limits<double>::min();
+        }
+    }
+    return 1.0;
+  };
+  auto tip_fns = [&]() { return tstate == kSliding ? 2 : 1; };
+  // The change when function `which` of the state has reached zero at time t (state s).
+  auto change_tip = [&](double t, const double* s, int which) {
+    const Eval e = spring_at(t, s);
+    if (tstate == kFree) {  // contact: stuck if the force it starts to build lies in the cone
+      const OffsetPoint op = offset_point(g, r, offset_coordinate(g, r, e.bx, e.by));
+      const auto bd = bdot(e, s);
+      const double ct = bd[0] * -op.ny + bd[1] * op.nx + s[kOmega] * r, cn = -(bd[0] * op.nx + bd[1] * op.ny);
+      if (std::fabs(ct) <= mu * cn) {
+        tstate = kStuck;
+        s_stick = op.s;
+        theta_stick = s[kTheta];
+      } else {
+        tstate = kSliding;
+        sigma = ct >= 0 ? 1.0 : -1.0;
+      }
+      event(t, "contact");
+    } else if (tstate == kStuck) {  // the force reached the cone's edge: it slides, or lets go
+      if (e.Fn > 0) {
+        tstate = kSliding;
+        sigma = e.Ft >= 0 ? 1.0 : -1.0;
+        event(t, "tip slips");
+      } else {
+        tstate = kFree;
+        event(t, "release");
+      }
+    } else if (which == kByFirst) {
+      tstate = kFree;
+      event(t, "release");
+    } else {
+      tstate = kStuck;
+      s_stick = e.arc;
+      theta_stick = s[kTheta];
+      event(t, "tip sticks");
+    }
+  };
+  // Changes that are due at time t itself (the base or the bar stopped, a velocity jumped).
+  auto settle_tip = [&](double t, const double* s) {
+    for (int i = 0; i < 4; ++i) {
+      const Eval e = spring_at(t, s);
+      int due = kNone;
+      for (int w = 0; w < tip_fns() && due == kNone; ++w)
+        if (!(tip_fn(w, e, s) > 0)) due = w;
+      if (due == kNone) return;
+      change_tip(t, s, due);
+    }
+  };
+  // At rest the bar does no work: the base's work is the spring's energy plus what the tip's
+  // friction takes, integrated (Gauss-Kronrod) from the last time booked.
+  double w_bar_rest = 0, t_booked = 0;
+  auto book_rest = [&](double t1) {
+    if constexpr (kFric) {
+      if (moving || !(t1 > t_booked)) return;
+      if (tstate == kSliding) {
+        const double X = boost::math::quadrature::gauss_kronrod<double, 15>::integrate(
+            [&](double tc) {
+              const Eval e = spring_at(tc, y.data());
+              return e.Ft * slip_velocity(e, y.data());
+            },
+            t_booked, t1, 10, 1e-12);
+        y[kWorkTipFric] -= X;
+      }
+      y[kWorkPush] = w_bar_rest + spring_energy(spring_at(t1, y.data())) - y[kWorkTipFric];
+      t_booked = t1;
+    }
+  };
+  auto start_rest_books = [&](double t) {
+    if constexpr (kFric) {
+      w_bar_rest = y[kWorkPush] - spring_energy(spring_at(t, y.data())) + y[kWorkTipFric];
+      t_booked = t;
+    }
+  };
+
+  std::size_t next = 0;
+  auto rest_rows_until = [&](double t_limit, bool inclusive) {
+    while (next < tout.size() && (tout[next] < t_limit || (inclusive && tout[next] <= t_limit))) {
+      book_rest(tout[next]);
+      res.rows[next] = make_row(tout[next], y.data());
+      if constexpr (kFric) out.work_tip_fric[next] = y[kWorkTipFric];
+      ++next;
+    }
   };
 
   // ---- at rest -------------------------------------------------------------------------
@@ -261,32 +572,94 @@ DynamicRunResult run_dynamic(const BarGeometry& g, double muN, const DynamicBar&
     const WorldWrench f = coulomb_friction(model, y.data(), mode);  // y at rest: the mode's friction
     const double ke = 0.5 * bar.mass * (V[0] * V[0] + V[1] * V[1]) + 0.5 * bar.inertia * V[2] * V[2];
     const double wf = f.fx * D[0] + f.fy * D[1] + f.mf * D[2];
+    Eval e0;
+    if constexpr (kFric) e0 = spring_at(t, y.data());
     for (int i = 0; i < 3; ++i) {
       y[kX + i] += D[i];
       y[kVx + i] = V[i];
     }
     y[kWorkFric] += wf;
-    y[kWorkPush] += ke - wf;
+    if constexpr (!kFric) {
+      y[kWorkPush] += ke - wf;
+    } else {  // the base's work: the bar's, the spring's energy gained, the tip friction's share
+      const Eval e1 = spring_at(t + tau0, y.data());
+      double X = 0;  // the tangential force times the distance slid, ds + r dtheta
+      if (tstate == kSliding) {
+        const double P = offset_perimeter(g, r);
+        X = 0.5 * (e0.Ft + e1.Ft) * (std::remainder(e1.arc - e0.arc, P) + r * D[2]);
+      }
+      y[kWorkTipFric] -= X;
+      y[kWorkPush] += ke - wf + spring_energy(e1) - spring_energy(e0) + X;
+    }
     return t + tau0;
   };
   // From time t with the bar at rest: the time the slide starts (located), or t_end.
   auto rest_phase = [&](double t) {
     double tp = t;  // the last time the bar was known stuck
     double tt = t;
+    if constexpr (kFric) {
+      ux = t < t_stop ? v * std::cos(tip.direction) : 0.0;
+      uy = t < t_stop ? v * std::sin(tip.direction) : 0.0;
+      settle_tip(t, y.data());
+      start_rest_books(t);
+    }
     for (long it = 0;; ++it) {
       if (it > 10000000) throw SolverError("dynamic tip push: the rest phase from t = " + fmt(t) + " s does not end");
+      if constexpr (kFric) {
+        // The tip's state changed in (tp, tt]? The first change, located (the bar held), ends
+        // the step there: the force is continuous across it, the rest analysis goes on from it.
+        if (tt > tp) {
+          double t_change = tt + 1;
+          int which = kNone;
+          for (int w = 0; w < tip_fns(); ++w) {
+            auto fn = [&](double tc) { return tip_fn(w, spring_at(tc, y.data()), y.data()); };
+            const double gb = fn(tt);
+            if (gb > 0) continue;
+            double a = tp, b = tt;
+            const double ga = fn(a);
+            if (ga > 0)
+              roots::illinois(a, b, ga, gb, 200, [&](double l, double h) { return h - l > 1e-15 * t_stop; }, fn,
+                              [](int) {});
+            else
+              b = a;
+            if (b < t_change) {
+              t_change = b;
+              which = w;
+            }
+          }
+          if (which != kNone) {
+            rest_rows_until(t_change, false);
+            book_rest(t_change);
+            tt = t_change;
+            change_tip(tt, y.data(), which);
+            start_rest_books(tt);
+          }
+        }
+      }
       const Eval e = spring_at(tt, y.data());
-      if (e.sc.touching != touching && tt > tp) {  // the contact changed between tp and tt: locate it
-        double a = tp, b = tt;
-        const double ga = spring_at(a, y.data()).sc.delta, gb = e.sc.delta;
-        roots::illinois(a, b, ga, gb, 200, [&](double l, double h) { return h - l > 1e-15 * t_stop; },
-                        [&](double tc) { return spring_at(tc, y.data()).sc.delta; }, [](int) {});
-        event(e.sc.touching ? b : a, e.sc.touching ? "contact" : "release");
+      if constexpr (!kFric) {
+        if (e.sc.touching != touching && tt > tp) {  // the contact changed between tp and tt: locate it
+          double a = tp, b = tt;
+          const double ga = spring_at(a, y.data()).sc.delta, gb = e.sc.delta;
+          roots::illinois(a, b, ga, gb, 200, [&](double l, double h) { return h - l > 1e-15 * t_stop; },
+                          [&](double tc) { return spring_at(tc, y.data()).sc.delta; }, [](int) {});
+          event(e.sc.touching ? b : a, e.sc.touching ? "contact" : "release");
+        }
       }
       touching = e.sc.touching;
       double jump = 0;
       if (e.sc.touching) {
-        const double F = k * e.sc.delta, dF = k * v, dtau = k * v * (lever + e.sc.delta);
+        double F = k * e.sc.delta, dF = k * v, dtau = k * v * (lever + e.sc.delta);
+        if constexpr (kFric) {
+          // |F| = k |b - q|; stuck, q rests (|dF/dt| <= k v); sliding, q moves at |ds/dt| <=
+          // v (1 + mu)/den (den the corner's 1 - lambda (1 + mu^2)/r), so |dF/dt| <= k v (2 + mu)/den,
+          // and the lever's end moves with it: |dtau/dt| <= |dF/dt| lever + |dq/dt| F.
+          F = std::hypot(e.sc.fx, e.sc.fy);
+          const double den = e.corner ? std::max(1 - e.lambda * (1 + mu * mu) / r, 0.5) : 1.0;
+          const double cq = tstate == kSliding ? (1 + mu) / den : 0.0;
+          dF = k * v * (tstate == kSliding ? (2 + mu) / den : 1.0);
+          dtau = dF * lever + v * cq * F;
+        }
         const double cheap = F / muN + std::fabs(e.sc.torque) / M0;
         if (cheap < 1) {
           jump = (1 - cheap) / (dF / muN + dtau / M0);
@@ -310,6 +683,7 @@ DynamicRunResult run_dynamic(const BarGeometry& g, double muN, const DynamicBar&
             }
             if (ra.stuck) throw SolverError("dynamic tip push: the start of a slide at t = " + fmt(tt) + " s is not resolved");
             rest_rows_until(tt, true);
+            book_rest(tt);
             event(tt, "slide");
             const double t1 = start_slide(tt, ra);
             rest_rows_until(t1, false);  // outputs inside the closed-form start (rare): at its end state
@@ -324,6 +698,15 @@ DynamicRunResult run_dynamic(const BarGeometry& g, double muN, const DynamicBar&
       tp = tt;
       tt = std::min(tt + std::max(jump, muN / (16 * k * v)), t_base_end);
     }
+    if constexpr (kFric) {  // a sliding tip stops sliding with the base
+      rest_rows_until(t_base_end, true);
+      book_rest(t_base_end);
+      if (t_base_end >= t_stop) {
+        ux = uy = 0;
+        settle_tip(t_base_end, y.data());
+        start_rest_books(t_base_end);
+      }
+    }
     rest_rows_until(t_end, true);
     return t_end;
   };
@@ -332,13 +715,14 @@ DynamicRunResult run_dynamic(const BarGeometry& g, double muN, const DynamicBar&
   Dop853Options<double> opt;
   opt.rtol = rtol;
   opt.atol = {rtol * L, rtol * L, rtol, rtol * v, rtol * v, rtol * v / L, rtol * muN * L, rtol * muN * L};
+  if constexpr (kFric) opt.atol.push_back(rtol * muN * L);
   opt.maxstp = 10000000;
   auto along = [&](const double* s) { return s[kVx] * mode[0] + s[kVy] * mode[1] + s[kOmega] * L * mode[2]; };
   // The slide has run down to the requested accuracy: every velocity component within its
   // absolute tolerance while the kinetic energy falls (near rest the friction across the
   // sliding direction relaxes at the rate mu N/(m |V|), and the problem turns stiff).
   auto run_down = [&](double t, const double* s) {
-    double d[kRoughStateSize];
+    double d[N];
     rhs(t, s, d);
     const double dke = bar.mass * (s[kVx] * d[kVx] + s[kVy] * d[kVy]) + bar.inertia * s[kOmega] * d[kOmega];
     if (!(dke < 0)) return false;
@@ -356,23 +740,36 @@ DynamicRunResult run_dynamic(const BarGeometry& g, double muN, const DynamicBar&
   };
   // From time t, sliding: integrate to the next event (or seg_end); returns the time reached.
   auto slide_phase = [&](double t, double seg_end) {
+    if constexpr (kFric) {  // the base moves on the whole segment or not at all
+      ux = t < t_stop ? v * std::cos(tip.direction) : 0.0;
+      uy = t < t_stop ? v * std::sin(tip.direction) : 0.0;
+    }
     std::vector<double> pending;
     for (std::size_t i = next; i < tout.size() && tout[i] <= seg_end; ++i) pending.push_back(tout[i]);
     if (pending.empty() || pending.back() < seg_end) pending.push_back(seg_end);
     auto observer = [&](std::size_t, double tt, const double* s) {
-      if (next < tout.size() && tout[next] == tt) res.rows[next++] = make_row(tt, s);
+      if (next < tout.size() && tout[next] == tt) {
+        if constexpr (kFric) out.work_tip_fric[next] = s[kWorkTipFric];
+        res.rows[next++] = make_row(tt, s);
+      }
     };
     bool ran_down = false;
     auto hook = [&](double, const double*, double tn, const double* sn) {
       if (along(sn) <= 0) return kHookStopBefore;
-      if ((spring_at(tn, sn).sc.delta > 0) != touching) return kHookStopBefore;
+      if constexpr (!kFric) {
+        if ((spring_at(tn, sn).sc.delta > 0) != touching) return kHookStopBefore;
+      } else {
+        const Eval e = spring_at(tn, sn);
+        for (int w = 0; w < tip_fns(); ++w)
+          if (!(tip_fn(w, e, sn) > 0)) return kHookStopBefore;
+      }
       if (run_down(tn, sn)) {
         ran_down = true;
         return kHookStopAfter;
       }
       return kHookContinue;
     };
-    Dop853<double, kRoughStateSize> integ(opt);
+    Dop853<double, N> integ(opt);
     const auto rr = integ.integrate(rhs, t, y.data(), std::span<const double>(pending), observer, hook);
     res.steps += rr.naccpt;
     if (!rr.ok()) throw SolverError("dynamic tip push: " + rr.message);
@@ -387,10 +784,21 @@ DynamicRunResult run_dynamic(const BarGeometry& g, double muN, const DynamicBar&
     // An event inside (t, t_event_end]: the earliest of rest and contact change, by regula
     // falsi on sub-integrations from t.
     const State ys = y;
+    // With tip friction a state may change again within a few hundred ulps of t (a contact
+    // grazed and re-made while the bar coasts): over such a span one Euler step is exact to
+    // rounding, where an integrator's step would underflow.
+    const double tiny = 1e4 * std::numeric_limits<double>::epsilon() * std::max(t_stop, std::fabs(t));
+    auto euler = [&](State& yc, double tc) {
+      double d[N];
+      rhs(t, yc.data(), d);
+      for (int i = 0; i < N; ++i) yc[static_cast<std::size_t>(i)] += (tc - t) * d[i];
+    };
     auto state_at = [&](double tc) {
       State yc = ys;
-      if (tc > t) {
-        Dop853<double, kRoughStateSize> sub(opt);
+      if (kFric && tc > t && tc - t <= tiny) {
+        euler(yc, tc);
+      } else if (tc > t) {
+        Dop853<double, N> sub(opt);
         const double one[1] = {tc};
         const auto sr = sub.integrate(rhs, t, yc.data(), std::span<const double>(one, 1),
                                       [](std::size_t, double, const double*) {});
@@ -410,23 +818,54 @@ DynamicRunResult run_dynamic(const BarGeometry& g, double muN, const DynamicBar&
       return b;
     };
     const double t_rest = locate([&](double, const double* s) { return along(s); }, true);
-    const double t_touch = locate([&](double tc, const double* s) { return spring_at(tc, s).sc.delta; }, touching);
+    double t_touch = tb + 1;
+    int which = kNone;  // with tip friction: the function of the tip's state that reached zero first
+    if constexpr (!kFric) {
+      t_touch = locate([&](double tc, const double* s) { return spring_at(tc, s).sc.delta; }, touching);
+    } else {
+      for (int w = 0; w < tip_fns(); ++w) {
+        auto fn = [&](double tc, const double* s) { return tip_fn(w, spring_at(tc, s), s); };
+        double a = t, b = tb;
+        const double ga = fn(a, ys.data()), gb = fn(b, yb.data());
+        if (gb > 0) continue;  // not this event
+        if (ga > 0)
+          roots::illinois(a, b, ga, gb, 100, [&](double l, double h) { return h - l > 1e-14 * std::max(t_stop, h); },
+                          [&](double tc) { return fn(tc, state_at(tc).data()); }, [](int) {});
+        else
+          b = t;  // due at the step's start
+        if (b < t_touch) {
+          t_touch = b;
+          which = w;
+        }
+      }
+    }
     const double t_ev = std::min({t_rest, t_touch, tb});
     std::vector<double> last;
     for (std::size_t i = next; i < tout.size() && tout[i] <= t_ev; ++i) last.push_back(tout[i]);
     if (last.empty() || last.back() < t_ev) last.push_back(t_ev);
-    Dop853<double, kRoughStateSize> fin(opt);
-    const auto fr = fin.integrate(rhs, t, y.data(), std::span<const double>(last), observer);
-    res.steps += fr.naccpt;
-    if (!fr.ok()) throw SolverError("dynamic tip push: " + fr.message);
+    if (kFric && t_ev - t <= tiny) {  // (with tip friction a change may be due at the step's start)
+      if (t_ev > t) euler(y, t_ev);
+      for (double tl : last)
+        if (next < tout.size() && tout[next] == tl) observer(0, tl, y.data());
+    } else {
+      Dop853<double, N> fin(opt);
+      const auto fr = fin.integrate(rhs, t, y.data(), std::span<const double>(last), observer);
+      res.steps += fr.naccpt;
+      if (!fr.ok()) throw SolverError("dynamic tip push: " + fr.message);
+    }
     if (t_ev == t_rest) {
       y[kVx] = y[kVy] = y[kOmega] = 0;
       moving = false;
       event(t_ev, "rest");
     }
     if (t_ev == t_touch) {  // the located side: after the crossing
-      touching = !touching;
-      event(t_ev, touching ? "contact" : "release");
+      if constexpr (!kFric) {
+        touching = !touching;
+        event(t_ev, touching ? "contact" : "release");
+      } else {
+        change_tip(t_ev, y.data(), which);
+        touching = tstate != kFree;
+      }
     }
     return t_ev;
   };
@@ -437,6 +876,12 @@ DynamicRunResult run_dynamic(const BarGeometry& g, double muN, const DynamicBar&
     if (!stopped && t >= t_stop) {
       event(t_stop, "tip stops");
       stopped = true;
+      if constexpr (kFric) {  // the base's velocity drops to zero: a sliding tip may stick
+        if (moving) {
+          ux = uy = 0;
+          settle_tip(t, y.data());
+        }
+      }
     }
     if (!moving) {
       t = rest_phase(t);
@@ -450,9 +895,33 @@ DynamicRunResult run_dynamic(const BarGeometry& g, double muN, const DynamicBar&
                    [](const TipEvent& a, const TipEvent& b) { return a.t < b.t; });
   while (next < tout.size()) {  // the outputs at t_end (the integration reached it)
     res.rows[next] = make_row(tout[next], y.data());
+    if constexpr (kFric) out.work_tip_fric[next] = y[kWorkTipFric];
     ++next;
   }
   return out;
+}
+
+}  // namespace
+
+DynamicRunResult run_dynamic(const BarGeometry& g, double muN, const DynamicBar& bar, const TipPath& tip, double x0,
+                             double y0, double theta0, double t_end, int samples, double rtol) {
+  tip.validate();
+  if (!(std::isfinite(bar.stiffness) && bar.stiffness > 0))
+    throw InputError("tip.stiffness", fmt(bar.stiffness), "must be > 0 and finite (N/m)");
+  if (!(std::isfinite(bar.mass) && bar.mass > 0)) throw InputError("object.mass", fmt(bar.mass), "must be > 0 (kg)");
+  if (!(std::isfinite(bar.inertia) && bar.inertia > 0))
+    throw InputError("object.inertia", fmt(bar.inertia), "must be > 0 (kg m^2)");
+  if (!(g.a > 0 && g.b > 0)) throw InputError("object.width, object.length", fmt(2 * g.a) + ", " + fmt(2 * g.b), "must be > 0");
+  if (!(muN > 0 && std::isfinite(muN))) throw InputError("surface.mu x normal load", fmt(muN), "must be > 0 for a tip push (N)");
+  if (samples < 2) throw InputError("solver.samples", std::to_string(samples), "must be >= 2");
+  if (!(t_end > 0)) t_end = dynamic_t_end(bar, muN, tip);
+  if (!std::isfinite(t_end)) throw InputError("solver.t_end", fmt(t_end), "must be finite (s)");
+  if (!(rtol >= dop853_rtol_min<double>() && rtol <= 1e-2))
+    throw InputError("solver.rtol", fmt(rtol),
+                     "must be in [" + fmt(dop853_rtol_min<double>()) + ", 1e-2] for the dynamic tip push");
+
+  return tip.mu > 0 ? run_impl<kFricStateSize>(g, muN, bar, tip, x0, y0, theta0, t_end, samples, rtol)
+                    : run_impl<kRoughStateSize>(g, muN, bar, tip, x0, y0, theta0, t_end, samples, rtol);
 }
 
 }  // namespace nanopush::tip

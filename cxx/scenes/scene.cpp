@@ -418,10 +418,6 @@ void check_tip_scene(Scene& sc) {
       throw InputError("tip.stiffness", "(missing)",
                        "the dynamic tip model needs the tip's spring: give tip.stiffness (N/m, > 0) or the "
                        "tip.cantilever keys" + why);
-    if (sc.tip.mu != 0.0)
-      throw InputError("tip.mu", fmt(sc.tip.mu),
-                       "the dynamic tip model has a frictionless tip: must be 0 (tip friction: tip.model = "
-                       "\"quasi_static\")" + why);
   }
   if (sc.solver.t_end == 0)
     sc.solver.t_end = sc.tip_model_run() == TipModel::dynamic

@@ -65,7 +65,7 @@ const std::vector<SceneKey>& scene_keys() {
       {"tip.travel", K::number, "m", "required (mode tip)", "> 0", "rough", "length of the tip's path"},
       {"tip.radius", K::number, "m", "1e-8", "> 0", "rough", "radius of the tip (a disc seen from above)"},
       {"tip.mu", K::number, "1", "0", "[0, 10]", "rough",
-       "Coulomb friction between tip and object (0 in the dynamic model)"},
+       "Coulomb friction between tip and object"},
       {"tip.model", K::string, "", "quasi_static", tip_models, "rough",
        "quasi_static: the object in force equilibrium with the tip; dynamic: its inertia and the tip's spring; "
        "auto: dynamic where m v^2/(mu N travel) > 1e-3 (docs/tip.md)"},

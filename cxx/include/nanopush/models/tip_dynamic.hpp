@@ -8,8 +8,12 @@
 // inside that surface. The spring then carries the contact force
 //     F = k (b - q) = -k delta n,   delta = r - d(b) > 0,
 // d the signed distance from b to the rectangle and n the outward normal at the contact point
-// p: a penetration penalty through the spring, along the normal (a frictionless tip: tip.mu
-// = 0), zero when delta <= 0, so the tip never pulls. The bar obeys
+// p: a penetration penalty through the spring, along the normal, zero when delta <= 0, so the
+// tip never pulls (tip.mu = 0). With tip friction (tip.mu > 0) the tip's centre q lies on
+// the offset surface, at arc length s, in one of two states changed at located events:
+// stuck (no sliding at the contact: the tip does not turn, so s = s0 - r (theta - theta0))
+// or sliding in the sense sigma (b - q = lambda (-n + mu sigma t), the spring's force on the
+// edge of the friction cone, t the tangent), and F = k (b - q). The bar obeys
 //     m dv/dt = F + f(V),   I domega/dt = p x F + mf(V),
 // with the two work accumulators W_tip = int F.v_p dt and W_fric = int (f.v + mf omega) dt,
 // so that W_tip + W_fric = the kinetic energy gained.
@@ -35,6 +39,31 @@ struct SpringContact {
 };
 SpringContact spring_contact(const BarGeometry& g, double radius, double stiffness, double bx, double by);
 
+/// A point of the offset surface {distance to the rectangle = r} (body axes), at arc length s
+/// counter-clockwise from (a + r, -b): the tip's centre q, the contact point p = q - r n on
+/// the rectangle, the outward normal n and the tangent t = (-ny, nx).
+struct OffsetPoint {
+  double s = 0;
+  double qx = 0, qy = 0, px = 0, py = 0, nx = 0, ny = 0;
+  bool corner = false;  ///< on a corner's arc (p the corner), else on a face
+};
+/// Length of the offset surface: 4 (a + b) + 2 pi r.
+double offset_perimeter(const BarGeometry& g, double radius);
+/// The point at arc length s (taken modulo the perimeter).
+OffsetPoint offset_point(const BarGeometry& g, double radius, double s);
+/// The arc length of the offset surface's point nearest to body-axis point (x, y).
+double offset_coordinate(const BarGeometry& g, double radius, double x, double y);
+
+/// A sliding tip whose base is at body-axis point (bx, by): the point q of the offset surface
+/// with b - q = lambda (-n + mu sigma t) (the spring's force on the edge of the friction cone,
+/// the tip sliding along sigma t), lambda of least magnitude (lambda < 0: the base is outside).
+/// Closed forms on each face and corner arc.
+struct SlipPoint {
+  OffsetPoint at;
+  double lambda = 0;  ///< [m]
+};
+SlipPoint slip_point(const BarGeometry& g, double radius, double mu, double sigma, double bx, double by);
+
 /// What the dynamic model needs beyond the quasi-static one.
 struct DynamicBar {
   double mass = 0;       ///< [kg]
@@ -55,16 +84,23 @@ inline constexpr double kAutoInertiaRatio = 1e-3;
 double dynamic_t_end(const DynamicBar& bar, double muN, const TipPath& tip);
 
 struct DynamicRunResult {
-  TipRunResult run;               ///< rows, events ("contact", "release", "slide", "rest", "tip stops"), counts
+  /// rows, events ("contact", "release", "slide", "rest", "tip stops"; with tip friction also
+  /// "tip slips" and "tip sticks"), counts
+  TipRunResult run;
   std::int64_t rest_analyses = 0; ///< stick/slip decisions at rest
-  double max_delta = 0;           ///< largest penetration of the base into the offset surface [m]
+  double max_delta = 0;           ///< largest extension of the spring |b - q| = |F|/k while touching [m]
+  /// The tip friction's work at each row [J] (<= 0; all zero for tip.mu = 0): rows' work_tip is
+  /// the contact force's work on the bar, work_tip - work_tip_fric what the tip passes on.
+  std::vector<double> work_tip_fric;
 };
 
 /// The dynamic tip-driven push of a bar at rest from pose (x0, y0, theta0), friction load muN:
 /// output at `samples` evenly spaced times over [0, t_end] (t_end <= 0: dynamic_t_end).
 /// Dormand-Prince 8(5,3) at rtol between events. Throws InputError naming the key for bad input
-/// (tip.stiffness, tip.mu != 0, a tip starting inside the bar) and SolverError when the
-/// integration fails.
+/// (tip.stiffness, tip.mu outside [0, 10], a tip starting inside the bar) and SolverError when
+/// the integration fails. With tip.mu > 0 the rows' work_tip is the contact force's work on the
+/// bar and work_tip_fric the tip friction's (<= 0): the base's work less the spring's energy,
+/// W_tip = work_tip - work_tip_fric, closes W_tip + W_fric + W_tip_fric = the kinetic energy.
 DynamicRunResult run_dynamic(const BarGeometry& g, double muN, const DynamicBar& bar, const TipPath& tip, double x0,
                              double y0, double theta0, double t_end, int samples, double rtol);
 
