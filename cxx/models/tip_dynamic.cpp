@@ -292,18 +292,10 @@ DynamicRunResult run_impl(const BarGeometry& g, double muN, const DynamicBar& ba
         op = sp.at;
         e.lambda = sp.lambda;
       }
+      const bool pushing = tstate == kStuck || e.lambda > 0;  // the tip never pulls
       SpringContact& c = e.sc;
-      c.touching = true;
-      c.px = op.px;
-      c.py = op.py;
-      c.nx = op.nx;
-      c.ny = op.ny;
-      c.qx = op.qx;
-      c.qy = op.qy;
-      if (tstate == kStuck || e.lambda > 0) {  // the tip never pulls
-        c.fx = k * (e.bx - op.qx);
-        c.fy = k * (e.by - op.qy);
-      }
+      c = {true, 0.0, op.px, op.py, op.nx, op.ny, op.qx, op.qy, pushing ? k * (e.bx - op.qx) : 0.0,
+           pushing ? k * (e.by - op.qy) : 0.0};
       c.torque = c.px * c.fy - c.py * c.fx;
       e.tx = -op.ny;
       e.ty = op.nx;
