@@ -20,6 +20,12 @@ linspace)  # every grid value the double numpy.linspace / numpy.geomspace gives 
   specs=("R=-45e-9:45e-9:19" "R=0:45e-9:10" "R=0.02:0.2:10" "R=0:1:10" "R=0.1:0.7:7" "R=1e-9:1e-6:50" "R=-3:7:1001" "R=5e-324:1e-322:7"
          "R=1e300:-1e300:5" "R=2:2:3" "R=0.3:0.1:4")
   logs=("R=1e-9:1e-6:50" "R=-1e-3:-10:13" "R=3:7:9" "R=1e-300:1e300:61")
+  # numpy's power ufunc (geomspace's 10^x) takes an AVX-512 (SVML) path on CPUs that have it,
+  # within ~1 ulp but not correctly rounded, so its last bit depends on the machine; nanopush
+  # uses the C library's pow, as numpy's portable path does. The oracle is that portable path:
+  # numpy with its AVX-512 features disabled, where the CPU has them.
+  npy_off=$(grep -m1 -o -w -E 'avx512(f|cd|bw|dq|vl)' /proc/cpuinfo 2> /dev/null | head -1 || true)
+  [ -z "$npy_off" ] || export NPY_DISABLE_CPU_FEATURES="AVX512F AVX512CD AVX512_SKX AVX512_CLX AVX512_CNL AVX512_ICL"
   for s in "${specs[@]}" "${logs[@]/#/log:}"; do
     if [[ $s == log:* ]]; then opt=--vary-log; s=${s#log:}; kind=geomspace; else opt=--vary; kind=linspace; fi
     "$np" sweep --task friction "$opt" "$s" --out t.csv --quiet || [ $? -ge 64 ] || fail "sweep $opt $s"
