@@ -15,11 +15,7 @@
 namespace nanopush {
 
 enum class Medium { vacuum, humid_air, liquid };
-template <>
-struct NameTable<Medium> {
-  static constexpr std::array<std::pair<Medium, std::string_view>, 3> table{
-      {{Medium::vacuum, "vacuum"}, {Medium::humid_air, "humid_air"}, {Medium::liquid, "liquid"}}};
-};
+NANOPUSH_NAMES(Medium, {Medium::vacuum, "vacuum"}, {Medium::humid_air, "humid_air"}, {Medium::liquid, "liquid"});
 inline std::string_view medium_name(Medium m) { return name_of(m); }
 
 struct Environment {
@@ -36,11 +32,7 @@ struct Environment {
 };
 
 enum class Shape { bar, rod, tube, sphere };
-template <>
-struct NameTable<Shape> {
-  static constexpr std::array<std::pair<Shape, std::string_view>, 4> table{
-      {{Shape::bar, "bar"}, {Shape::rod, "rod"}, {Shape::tube, "tube"}, {Shape::sphere, "sphere"}}};
-};
+NANOPUSH_NAMES(Shape, {Shape::bar, "bar"}, {Shape::rod, "rod"}, {Shape::tube, "tube"}, {Shape::sphere, "sphere"});
 inline std::string_view shape_name(Shape s) { return name_of(s); }
 
 struct Body {
@@ -70,11 +62,8 @@ struct LoadOptions {
 };
 
 enum class TermStatus { evaluated, dropped, not_needed };
-template <>
-struct NameTable<TermStatus> {
-  static constexpr std::array<std::pair<TermStatus, std::string_view>, 3> table{
-      {{TermStatus::evaluated, "evaluated"}, {TermStatus::dropped, "dropped"}, {TermStatus::not_needed, "not needed"}}};
-};
+NANOPUSH_NAMES(TermStatus, {TermStatus::evaluated, "evaluated"}, {TermStatus::dropped, "dropped"},
+               {TermStatus::not_needed, "not needed"});
 inline std::string_view term_status_name(TermStatus s) { return name_of(s); }
 
 struct LoadTerm {

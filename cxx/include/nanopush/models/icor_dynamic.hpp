@@ -91,11 +91,7 @@ DynamicIcorRun dynamic_icor(const DynamicIcorSetup& setup);
 }  // namespace nanopush::icor
 
 namespace nanopush {
-template <>
-struct NameTable<icor::DynamicIntegrator> {
-  static constexpr std::array<std::pair<icor::DynamicIntegrator, std::string_view>, 3> table{
-      {{icor::DynamicIntegrator::automatic, "automatic"},
-       {icor::DynamicIntegrator::bulirsch_stoer, "bulirsch-stoer"},
-       {icor::DynamicIntegrator::cvode, "cvode"}}};
-};
+NANOPUSH_NAMES(icor::DynamicIntegrator, {icor::DynamicIntegrator::automatic, "automatic"},
+               {icor::DynamicIntegrator::bulirsch_stoer, "bulirsch-stoer"},
+               {icor::DynamicIntegrator::cvode, "cvode"});
 }  // namespace nanopush

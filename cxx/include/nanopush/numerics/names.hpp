@@ -16,8 +16,17 @@ namespace nanopush {
 
 /// The name table of an enumeration: specialise with
 ///   static constexpr std::array<std::pair<E, std::string_view>, N> table{...};
+/// or, in namespace nanopush, declare it with NANOPUSH_NAMES below.
 template <class E>
 struct NameTable;
+
+/// Declares the name table of enumeration E (in namespace nanopush), its size taken from the
+/// entries:  NANOPUSH_NAMES(Law, {Law::thesis, "thesis"}, {Law::coulomb, "coulomb"});
+#define NANOPUSH_NAMES(E, ...)                                                                   \
+  template <>                                                                                    \
+  struct NameTable<E> {                                                                          \
+    static constexpr auto table = std::to_array<std::pair<E, std::string_view>>({__VA_ARGS__}); \
+  }
 
 /// The name of a value.
 template <class E>

@@ -66,9 +66,5 @@ bool available();
 }  // namespace nanopush::plot
 
 namespace nanopush {
-template <>
-struct NameTable<plot::Format> {
-  static constexpr std::array<std::pair<plot::Format, std::string_view>, 3> table{
-      {{plot::Format::png, "png"}, {plot::Format::svg, "svg"}, {plot::Format::pdf, "pdf"}}};
-};
+NANOPUSH_NAMES(plot::Format, {plot::Format::png, "png"}, {plot::Format::svg, "svg"}, {plot::Format::pdf, "pdf"});
 }  // namespace nanopush

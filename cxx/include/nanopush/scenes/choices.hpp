@@ -32,43 +32,14 @@ enum class PushMode { force, tip };
 enum class TipModel { quasi_static, dynamic, automatic };
 
 /// The name tables (numerics/names.hpp): every value and its name, in the order messages list them.
-template <>
-struct NameTable<Engine> {
-  static constexpr std::array<std::pair<Engine, std::string_view>, 2> table{
-      {{Engine::cxx, "cxx"}, {Engine::f77, "f77"}}};
-};
-template <>
-struct NameTable<Method> {
-  static constexpr std::array<std::pair<Method, std::string_view>, 5> table{{{Method::faithful, "faithful"},
-                                                                             {Method::modern, "modern"},
-                                                                             {Method::dop853, "dop853"},
-                                                                             {Method::cvode, "cvode"},
-                                                                             {Method::automatic, "auto"}}};
-};
-template <>
-struct NameTable<Law> {
-  static constexpr std::array<std::pair<Law, std::string_view>, 3> table{
-      {{Law::thesis, "thesis"}, {Law::printed, "printed"}, {Law::coulomb, "coulomb"}}};
-};
-template <>
-struct NameTable<Precision> {
-  static constexpr std::array<std::pair<Precision, std::string_view>, 3> table{
-      {{Precision::double_, "double"}, {Precision::long_, "long"}, {Precision::quad, "quad"}}};
-};
-template <>
-struct NameTable<SurfaceKind> {
-  static constexpr std::array<std::pair<SurfaceKind, std::string_view>, 2> table{
-      {{SurfaceKind::smooth, "smooth"}, {SurfaceKind::rough, "rough"}}};
-};
+NANOPUSH_NAMES(Engine, {Engine::cxx, "cxx"}, {Engine::f77, "f77"});
+NANOPUSH_NAMES(Method, {Method::faithful, "faithful"}, {Method::modern, "modern"}, {Method::dop853, "dop853"},
+               {Method::cvode, "cvode"}, {Method::automatic, "auto"});
+NANOPUSH_NAMES(Law, {Law::thesis, "thesis"}, {Law::printed, "printed"}, {Law::coulomb, "coulomb"});
+NANOPUSH_NAMES(Precision, {Precision::double_, "double"}, {Precision::long_, "long"}, {Precision::quad, "quad"});
+NANOPUSH_NAMES(SurfaceKind, {SurfaceKind::smooth, "smooth"}, {SurfaceKind::rough, "rough"});
 
-template <>
-struct NameTable<PushMode> {
-  static constexpr std::array<std::pair<PushMode, std::string_view>, 2> table{
-      {{PushMode::force, "force"}, {PushMode::tip, "tip"}}};
-};
-template <>
-struct NameTable<TipModel> {
-  static constexpr std::array<std::pair<TipModel, std::string_view>, 3> table{
-      {{TipModel::quasi_static, "quasi_static"}, {TipModel::dynamic, "dynamic"}, {TipModel::automatic, "auto"}}};
-};
+NANOPUSH_NAMES(PushMode, {PushMode::force, "force"}, {PushMode::tip, "tip"});
+NANOPUSH_NAMES(TipModel, {TipModel::quasi_static, "quasi_static"}, {TipModel::dynamic, "dynamic"},
+               {TipModel::automatic, "auto"});
 }  // namespace nanopush

@@ -91,16 +91,9 @@ enum class Outcome {
   accuracy_not_reached,  ///< --accuracy E could not be met; the best answer and its estimate are kept
   solver_failure,        ///< the integrator gave up (stats.status says how)
 };
-template <>
-struct NameTable<Outcome> {
-  static constexpr std::array<std::pair<Outcome, std::string_view>, 6> table{
-      {{Outcome::ok, "ok"},
-       {Outcome::at_rest, "at_rest"},
-       {Outcome::no_static_friction, "no_static_friction"},
-       {Outcome::law_blowup, "law_blowup"},
-       {Outcome::accuracy_not_reached, "accuracy_not_reached"},
-       {Outcome::solver_failure, "solver_failure"}}};
-};
+NANOPUSH_NAMES(Outcome, {Outcome::ok, "ok"}, {Outcome::at_rest, "at_rest"},
+               {Outcome::no_static_friction, "no_static_friction"}, {Outcome::law_blowup, "law_blowup"},
+               {Outcome::accuracy_not_reached, "accuracy_not_reached"}, {Outcome::solver_failure, "solver_failure"});
 /// An outcome that is an answer (ok, at_rest).
 inline bool is_answer(Outcome o) { return o == Outcome::ok || o == Outcome::at_rest; }
 
