@@ -98,12 +98,7 @@ DynamicIcorRun dynamic_icor(const DynamicIcorSetup& s) {
     run.samples.clear();
     run.integrator = which;
     auto observe = [&](double t, const double* y, const WorldWrench&) {
-      DynamicIcorSample q;
-      q.t = t;
-      q.theta = y[kTheta];
-      q.vx = y[kVx];
-      q.vy = y[kVy];
-      q.omega = y[kOmega];
+      DynamicIcorSample q{.t = t, .theta = y[kTheta], .vx = y[kVx], .vy = y[kVy], .omega = y[kOmega]};
       q.moving = !(y[kVx] == 0.0 && y[kVy] == 0.0 && y[kOmega] == 0.0);
       if (q.moving) {
         const VelocityIcor c = icor_from_velocity(y[kVx], y[kVy], y[kOmega]);

@@ -360,16 +360,8 @@ DynamicRunResult run_impl(const BarGeometry& g, double muN, const DynamicBar& ba
     return 0;
   };
   auto make_row = [&](double t, const double* s) {
-    TipRow row;
-    row.t = t;
-    row.x = s[kX];
-    row.y = s[kY];
-    row.theta = s[kTheta];
-    row.vx = s[kVx];
-    row.vy = s[kVy];
-    row.omega = s[kOmega];
-    row.work_tip = s[kWorkPush];
-    row.work_fric = s[kWorkFric];
+    TipRow row{.t = t, .x = s[kX], .y = s[kY], .theta = s[kTheta], .vx = s[kVx], .vy = s[kVy], .omega = s[kOmega],
+               .work_tip = s[kWorkPush], .work_fric = s[kWorkFric]};
     const Eval e = spring_at(t, s);
     row.tip_x = s[kX] + e.c * e.sc.qx - e.s * e.sc.qy;
     row.tip_y = s[kY] + e.s * e.sc.qx + e.c * e.sc.qy;
