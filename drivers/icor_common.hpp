@@ -115,9 +115,7 @@ inline void check(ReproduceContext& ctx, bool ok, const std::string& what) {
   if (!ok) ctx.failures.push_back(what);
 }
 
-/// Draw a one-panel figure. (plot::render emits "set key best", which Debian's gnuplot
-/// rejects; until the shared plot.cpp is fixed we write the script body ourselves and use
-/// plot::render_script, which keeps the same atomic-output guarantees.)
+/// A gnuplot string literal (for the scripts a command writes itself, e.g. fit-icor's).
 inline std::string gp_quote(const std::string& s) {
   std::string r = "\"";
   for (char c : s) {
@@ -127,6 +125,7 @@ inline std::string gp_quote(const std::string& s) {
   return r + "\"";
 }
 
+/// Draw a one-panel figure with the shared plot writer (plot::render), or say why not.
 inline void render_if_possible(ReproduceContext& ctx, const std::string& title, const plot::Panel& panel,
                                const std::filesystem::path& png) {
   plot::Figure fig;
@@ -136,24 +135,7 @@ inline void render_if_possible(ReproduceContext& ctx, const std::string& title, 
     ctx.report << "\n(gnuplot not found: " << png.filename().string() << " not drawn)\n";
     return;
   }
-  std::ostringstream b;
-  for (const auto& p : fig.panels) {
-    b << "set grid\nset key outside right top box\n";
-    if (p.logy) b << "set format y \"10^{%L}\"\n";
-    b << "set title " << gp_quote(p.title.empty() ? fig.title : p.title) << "\n";
-    b << "set xlabel " << gp_quote(p.xlabel) << "\nset ylabel " << gp_quote(p.ylabel) << "\n";
-    if (p.logx) b << "set logscale x\n";
-    if (p.logy) b << "set logscale y\n";
-    if (!p.extra.empty()) b << p.extra << "\n";
-    b << "plot ";
-    for (std::size_t i = 0; i < p.series.size(); ++i) {
-      const auto& s = p.series[i];
-      b << (i ? ", \\\n     " : "") << gp_quote(s.csv.string()) << " every ::1 using " << s.x << ":" << s.y
-        << " with " << s.style << " title " << gp_quote(s.title);
-    }
-    b << "\n";
-  }
-  plot::render_script(b.str(), png, fig.width, fig.height);
+  plot::render(fig, png);
   ctx.produced(png);
   ctx.produced(std::filesystem::path(png).replace_extension(".gp"));
 }
