@@ -16,6 +16,13 @@ void count(Model m) noexcept {
 
 void need_hamaker(double A) { require_nonnegative("Hamaker constant A", A, "J"); }
 void need_gap(const char* field, double D) { require_positive(field, D, "m"); }
+/// What every van der Waals model of two continua checks: the model counted, the Hamaker
+/// constant >= 0 and the gap (named `gap`) > 0.
+void vdw_model(Model m, double A, const char* gap, double D) {
+  count(m);
+  need_hamaker(A);
+  need_gap(gap, D);
+}
 
 /// sqrt of a product that must not be negative (combining relations).
 double geometric_mean(const char* field, double x, double y) {
@@ -88,57 +95,43 @@ double molecule_surface_force(double C, double rho, double D) {
 }
 
 double sphere_flat_vdw_energy(double A, double R, double D) {
-  count(Model::sphere_surface_vdw);
-  need_hamaker(A);
+  vdw_model(Model::sphere_surface_vdw, A, "separation D", D);
   require_positive("sphere radius R", R, "m");
-  need_gap("separation D", D);
   return -A * R / (6.0 * D);
 }
 double sphere_flat_vdw_force(double A, double R, double D) {
-  count(Model::sphere_surface_vdw);
-  need_hamaker(A);
+  vdw_model(Model::sphere_surface_vdw, A, "separation D", D);
   require_positive("sphere radius R", R, "m");
-  need_gap("separation D", D);
   return A * R / (6.0 * D * D);
 }
 double sphere_sphere_vdw_force(double A, double R1, double R2, double D) {
-  count(Model::sphere_sphere_vdw);
-  need_hamaker(A);
+  vdw_model(Model::sphere_sphere_vdw, A, "separation D", D);
   require_positive("sphere radius R1", R1, "m");
   require_positive("sphere radius R2", R2, "m");
-  need_gap("separation D", D);
   return A * (R1 * R2 / (R1 + R2)) / (6.0 * D * D);
 }
 
 double flat_flat_vdw_energy_per_area(double A, double D) {
-  count(Model::surface_surface_vdw);
-  need_hamaker(A);
-  need_gap("separation D", D);
+  vdw_model(Model::surface_surface_vdw, A, "separation D", D);
   return -A / (12.0 * kPi * D * D);
 }
 double flat_flat_vdw_pressure(double A, double D) {
-  count(Model::surface_surface_vdw);
-  need_hamaker(A);
-  need_gap("separation D", D);
+  vdw_model(Model::surface_surface_vdw, A, "separation D", D);
   return A / (6.0 * kPi * D * D * D);
 }
 
 double rod_plane_vdw_force(double A, double L, double d, double z0) {
-  count(Model::rod_plane_vdw);
-  need_hamaker(A);
+  vdw_model(Model::rod_plane_vdw, A, "rod-plane gap z0", z0);
   require_positive("rod length L", L, "m");
   require_positive("rod diameter d", d, "m");
-  need_gap("rod-plane gap z0", z0);
   return L * A * std::sqrt(d) / (16.0 * std::pow(z0, 2.5));
 }
 
 double bar_plane_vdw_force(double A, double length, double width, double T, double D) {
-  count(Model::surface_surface_vdw);
-  need_hamaker(A);
+  vdw_model(Model::surface_surface_vdw, A, "bar-plane gap D", D);
   require_positive("bar length", length, "m");
   require_positive("bar width", width, "m");
   require_positive("bar thickness T", T, "m");
-  need_gap("bar-plane gap D", D);
   const double DT = D + T;
   return length * width * A / (6.0 * kPi) * (1.0 / (D * D * D) - 1.0 / (DT * DT * DT));
 }
