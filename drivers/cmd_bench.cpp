@@ -19,6 +19,7 @@
 #include "cli_checks.hpp"
 #include "registry.hpp"
 #include "scene_args.hpp"
+#include "sweep_output.hpp"
 
 namespace nanopush::cli {
 namespace {
@@ -493,16 +494,26 @@ int bench_cmd(BenchOptions o) {
   require_range("--kmax", o.sweep.kmax, o.sweep.kmin, 60);
   require_range("--kmax-extended", o.sweep.kmax_extended, o.sweep.kmin, 60);
   namespace fs = std::filesystem;
-  const fs::path csv = o.out.empty() ? fs::path("bench_" + scene.name + ".csv") : fs::path(o.out);
+  // The table: FILE.csv, or FILE.nc (netCDF-4, docs/data.md), refused before the run otherwise.
+  const TableOutput table(o.out.empty() ? fs::path("bench_" + scene.name + ".csv") : fs::path(o.out), "--out", false);
+  if (table.netcdf()) {
+    // The figure and its script read the CSV, which a .nc output does not keep.
+    if (!o.plot.empty())
+      throw InputError("--plot", o.plot, "the figure is drawn from the CSV: with --out FILE.nc there is none "
+                                         "(write FILE.csv, or convert it afterwards: nanopush convert)");
+    o.no_plot = true;
+  }
+  const fs::path csv = table.table();
   fs::path png = o.plot.empty() ? fs::path(csv).replace_extension(".png") : fs::path(o.plot);
   if (csv.has_parent_path()) fs::create_directories(csv.parent_path());
   const BenchOutcome r = run_bench(scene, o, o.quiet ? nullptr : &std::cerr);
   bench::write_csv(r.rows, csv);
+  const std::string written = table.finish();
   std::string png_rel = png.filename().string();
   if (!o.no_plot) plot_all(r.rows, csv, png, scene.name);
   std::cout << "# nanopush bench " << scene.name << "\n\n"
-            << report_section(scene, o, r, o.no_plot ? std::string() : png_rel, csv.string());
-  std::cerr << "bench: " << r.rows.size() << " rows in " << csv.string() << (o.no_plot ? "" : ", plot " + png.string())
+            << report_section(scene, o, r, o.no_plot ? std::string() : png_rel, written);
+  std::cerr << "bench: " << r.rows.size() << " rows in " << written << (o.no_plot ? "" : ", plot " + png.string())
             << " (" << num3(r.seconds) << " s)\n";
   if (!r.ratios.failures.empty()) {
     for (const auto& f : r.ratios.failures) std::cerr << "bench: check failed: " << f << "\n";
@@ -567,7 +578,9 @@ RegisterCommand reg{
        auto o = std::make_shared<BenchOptions>();
        app.add_option("SCENE", o->scene, "scene file or preset name (smooth, or rough under the thesis law)")->capture_default_str();
        add_set_option(app, o->sets);
-       app.add_option("--out", o->out, "CSV output (default bench_<scene>.csv); columns in docs/performance.md");
+       app.add_option("--out", o->out,
+                      "the table: FILE.csv (default bench_<scene>.csv; columns in docs/performance.md) or FILE.nc "
+                      "(netCDF-4, no figure; docs/data.md)");
        app.add_option("--plot", o->plot, "work-precision PNG (default: the CSV's name with .png)");
        app.add_flag("--no-plot", o->no_plot, "write the CSV only");
        app.add_option("--engines", o->engines,

@@ -17,6 +17,7 @@
 #include "columns.hpp"
 #include "registry.hpp"
 #include "scene_args.hpp"
+#include "sweep_output.hpp"
 
 namespace nanopush::cli {
 namespace {
@@ -161,6 +162,7 @@ int run_fit(const FitCliOptions& o) {
     if (!o.data.empty()) throw InputError("DATA", o.data, "--synthesize writes data; give no DATA file with it");
     if (!o.free.empty()) throw InputError("--free", o.free[0], "--synthesize fits nothing; drop --free");
     if (sigma.empty()) throw InputError("--sigma", "(none)", "--synthesize needs the noise of each column to write, e.g. --sigma x=1e-9");
+    const TableOutput table(o.synthesize, "--synthesize", false);  // FILE.csv or FILE.nc, checked before the runs
     std::array<double, 3> s{0, 0, 0};
     for (std::size_t c = 0; c < 3; ++c)
       if (auto it = sigma.find(fit::kPoseColumns[c]); it != sigma.end()) s[c] = it->second;
@@ -172,7 +174,7 @@ int run_fit(const FitCliOptions& o) {
         cols.push_back({fit::kPoseColumns[c], units[c], std::string("model ") + fit::kPoseColumns[c] + " plus Gaussian noise"});
         cols.push_back({std::string("sigma_") + fit::kPoseColumns[c], units[c], "standard deviation of the noise"});
       }
-    CsvWriter w(o.synthesize, cols);
+    CsvWriter w(table.table(), cols);
     for (std::size_t i = 0; i < obs.t.size(); ++i) {
       std::vector<double> row = {obs.t[i]};
       for (std::size_t c = 0; c < 3; ++c)
@@ -184,6 +186,7 @@ int run_fit(const FitCliOptions& o) {
     }
     w.run_info({{"seed", o.seed}});
     w.commit();
+    (void)table.finish();
     if (!o.quiet) std::cerr << "synthetic data of " << sc.name << " (seed " << o.seed << "): " << o.synthesize << "\n";
     return 0;
   }
@@ -249,7 +252,8 @@ RegisterCommand reg_fit{{"fit", "Fit scene keys (e.g. surface.mu) to an observed
                            app.add_option("--out", o->out, "directory of SCENE.fit.csv (+ schema) and SCENE.fit.png (default .)");
                            app.add_option("--synthesize", o->synthesize,
                                           "write synthetic data instead of fitting: the scene's model at its output times "
-                                          "plus Gaussian noise of --sigma (seeded)");
+                                          "plus Gaussian noise of --sigma (seeded), as FILE.csv (and its sidecar) or "
+                                          "FILE.nc (netCDF-4, docs/data.md)");
                            app.add_option("--seed", o->seed, "seed of --synthesize (default 1)")->check(count(0, 1LL << 62));
                            app.add_option("--format", o->format, "figure format: png, svg or pdf (default png)");
                            app.add_flag("--no-plot", o->no_plot, "no figure");

@@ -24,6 +24,7 @@
 #include "cli_checks.hpp"
 #include "columns.hpp"
 #include "registry.hpp"
+#include "sweep_output.hpp"
 
 namespace nanopush::cli {
 namespace {
@@ -162,6 +163,7 @@ int run_bench(const Options& o) {
   (void)rectangle_friction_wrench_checked(o.a, o.b, 1.0, 0.0, 0.0, 1);
   if (!(o.bench_seconds > 0.0 && o.bench_seconds <= 20.0))
     throw InputError("--bench-seconds", fmt(o.bench_seconds), "must be in (0, 20] (s)");
+  if (!o.bench_csv.empty()) (void)TableOutput::kind_of(o.bench_csv, "--bench-csv", false);  // before the timing
   const double a = o.a, b = o.b, L = std::max(a, b);
   std::mt19937_64 rng(1);
   std::uniform_real_distribution<double> u(0.0, 1.0);
@@ -231,10 +233,12 @@ int run_bench(const Options& o) {
     std::cout << "| " << r.what << " | " << std::setprecision(4) << r.evals_per_s << " | " << r.evals << " | "
               << std::setprecision(3) << r.seconds << " |\n";
   if (!o.bench_csv.empty()) {
-    CsvWriter f(o.bench_csv, columns("friction_bench"));
+    const TableOutput table(o.bench_csv, "--bench-csv", false);  // FILE.csv or FILE.nc
+    CsvWriter f(table.table(), columns("friction_bench"));
     for (const auto& r : rows)
       f.cells({csv_quote(r.what), csv_number(r.evals_per_s), std::to_string(r.evals), csv_number(r.seconds)});
     f.commit();
+    (void)table.finish();
   }
   return 0;
 }
@@ -260,7 +264,7 @@ RegisterCommand reg{{"friction",
                                     "microbenchmark: evaluations per second of each form vs the cubature");
                        app.add_option("--bench-seconds", o->bench_seconds, "time per benchmark row (s)")
                            ->capture_default_str();
-                       app.add_option("--bench-csv", o->bench_csv, "also write the benchmark table to this CSV");
+                       app.add_option("--bench-csv", o->bench_csv, "also write the benchmark table to FILE.csv (and its sidecar) or FILE.nc (netCDF-4, docs/data.md)");
                        app.footer(
                            "Input rows: R [m] >= 0 (distance from the iCOR to the centre of mass), alpha [rad];\n"
                            "the iCOR is at -R (cos alpha, sin alpha) in body axes (x' across the width, y' along\n"

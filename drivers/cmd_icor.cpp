@@ -336,7 +336,7 @@ RegisterCommand reg{{"icor",
                              m.add_option("--length-sigma", mo.length_sigma, "standard uncertainty of L [m]")->check(non_negative())->capture_default_str();
                              m.add_option("--hamaker-sigma", mo.hamaker_sigma, "standard uncertainty of H [J]")
                                  ->check(non_negative())->capture_default_str();
-                             m.add_option("--out", mo.out, "also write the estimate and its budget as CSV");
+                             m.add_option("--out", mo.out, "also write the estimate and its budget: CSV file, or FILE.nc: netCDF-4");
                            });
 
                        icor_subcommand<DynamicOptions>(

@@ -85,7 +85,7 @@ int run_cmd(const RunOptions& o) {
   if (o.no_estimate) rs.error_estimate = false;
   check_engine_method(sc, rs);
   // An output name of unknown extension is refused before the run (docs/data.md).
-  if (!o.out.empty() && o.out != "-") (void)SweepOutput(o.out);
+  (void)TableOutput::kind_of(o.out);
   const auto t0 = std::chrono::steady_clock::now();
   const Trajectory tr = run_engine(sc, rs);
   const double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -118,7 +118,7 @@ int run_cmd(const RunOptions& o) {
     std::cout << csv_document(trajectory_column_specs(), rows);
   } else if (std::filesystem::path(out).extension() == ".nc") {
     // netCDF-4 (docs/data.md): the trajectory over its times, `t` the coordinate.
-    const SweepOutput nc(out);
+    const TableOutput nc(out);
     write_trajectory_csv(tr, nc.table());
     (void)nc.finish({{"t", tr.rows.size()}});
   } else {

@@ -95,7 +95,7 @@ int sweep_cmd(SweepOptions o) {
                          "--merge joins finished shard tables and takes only --out and --quiet: run the sweep "
                          "(with " + g + ") and merge its shards in a separate command");
     if (o.out.empty()) throw InputError("--out", "(missing)", "--merge writes the joined table to --out FILE");
-    const SweepOutput output(o.out);  // CSV, netCDF (over `point`) or standard output, by extension
+    const TableOutput output(o.out);  // CSV, netCDF (over `point`) or standard output, by extension
     const auto failed = sweep::merge_tables({o.merge.begin(), o.merge.end()}, output.table());
     const std::string where = output.finish({});
     if (!o.quiet) std::cerr << "sweep: joined " << o.merge.size() << " shards into " << where << "\n";
@@ -166,7 +166,7 @@ int sweep_cmd(SweepOptions o) {
 
   // The table's format, by the extension of --out (docs/data.md): the sweep writes CSV, which
   // a .nc is converted from once complete; a grid's axes become its dimensions.
-  const SweepOutput output(opt.out);
+  const TableOutput output(opt.out);
   opt.out = output.table();
   const std::vector<NetcdfAxis> axes = output.netcdf() && o.points.empty() && o.shard.empty()
                                            ? grid_axes(o.vary, o.vary_log, sweep::table_columns(plan, *task))

@@ -59,7 +59,7 @@ inline std::string cell(const std::optional<double>& v) { return v ? csv_number(
 class Table {
  public:
   Table(const std::filesystem::path& path, Columns columns) : path_(path), columns_(std::move(columns)) {
-    if (!to_stdout()) (void)SweepOutput(path_);
+    (void)TableOutput::kind_of(path_);
   }
   void row(std::vector<std::string> cells) {
     if (cells.size() != columns_.size())
@@ -73,9 +73,9 @@ class Table {
       std::cout << text();
       return;
     }
-    const SweepOutput out(path_);  // the CSV itself, or FILE.nc.csv converted into FILE.nc
+    const TableOutput out(path_);  // the CSV itself, or FILE.nc.csv converted into FILE.nc
     write_csv_atomic(out.table(), columns_, rows_);
-    (void)out.finish({});
+    (void)out.finish();
   }
 
  private:

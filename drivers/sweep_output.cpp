@@ -46,33 +46,42 @@ std::function<void(std::size_t, std::size_t)> progress_line(bool quiet, const st
   };
 }
 
-SweepOutput::SweepOutput(const fs::path& out) : out_(out) {
+TableOutput::Kind TableOutput::kind_of(const fs::path& out, const std::string& option, bool standard_output) {
   const std::string ext = out.extension().string();
-  if (out == "-") {
-    kind_ = Kind::standard_output;
-    tmpdir_ = fs::temp_directory_path() / ("nanopush-sweep-" + std::to_string(::getpid()));
-    fs::create_directories(tmpdir_);
-    table_ = tmpdir_ / "table.csv";
-  } else if (ext == ".nc") {
-    kind_ = Kind::netcdf;
-    table_ = out.string() + ".csv";
-  } else if (ext == ".csv" || ext.empty()) {
-    table_ = out;
-  } else {
-    throw InputError("--out", out.string(),
-                     "unknown extension '" + ext + "': the table is written as FILE.csv (CSV and its Table Schema "
-                     "sidecar) or FILE.nc (netCDF-4); - writes the CSV to standard output (docs/data.md)");
+  if (out == "-" && standard_output) return Kind::standard_output;
+  if (ext == ".nc") return Kind::netcdf;
+  if (ext == ".csv" || ext.empty()) return Kind::csv;
+  throw InputError(option, out.string(),
+                   "unknown extension '" + ext + "': the table is written as FILE.csv (CSV and its Table Schema "
+                   "sidecar) or FILE.nc (netCDF-4)" +
+                       (standard_output ? "; - writes the CSV to standard output" : "") + " (docs/data.md)");
+}
+
+TableOutput::TableOutput(const fs::path& out, const std::string& option, bool standard_output)
+    : kind_(kind_of(out, option, standard_output)), out_(out) {
+  switch (kind_) {
+    case Kind::standard_output:
+      tmpdir_ = fs::temp_directory_path() / ("nanopush-sweep-" + std::to_string(::getpid()));
+      fs::create_directories(tmpdir_);
+      table_ = tmpdir_ / "table.csv";
+      break;
+    case Kind::netcdf:
+      table_ = out.string() + ".csv";
+      break;
+    case Kind::csv:
+      table_ = out;
+      break;
   }
 }
 
-SweepOutput::~SweepOutput() {
+TableOutput::~TableOutput() {
   if (!tmpdir_.empty()) {
     std::error_code ec;
     fs::remove_all(tmpdir_, ec);
   }
 }
 
-std::string SweepOutput::finish(const std::vector<NetcdfAxis>& axes, const std::vector<fs::path>& trajectories) const {
+std::string TableOutput::finish(const std::vector<NetcdfAxis>& axes, const std::vector<fs::path>& trajectories) const {
   switch (kind_) {
     case Kind::csv:
       return out_.string();

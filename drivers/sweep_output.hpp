@@ -1,7 +1,10 @@
-// Where a sweep's table goes, chosen by the extension of --out (docs/data.md): FILE.csv (or a
-// name without extension) the CSV and its Table Schema sidecar; FILE.nc netCDF-4, converted
-// from the finished CSV (outputs/netcdf.hpp); `-` the CSV on standard output. Any other
-// extension is bad input (exit 2), refused before any work.
+// Where a command's table goes, chosen by the extension of its output name (docs/data.md):
+// TableOutput, the one place every command that writes a table file (sweep, run, icor, bench,
+// friction --bench-csv, fit --synthesize) decides between FILE.csv (or a name without
+// extension) the CSV and its Table Schema sidecar, FILE.nc netCDF-4 converted from the finished
+// CSV (outputs/netcdf.hpp), and `-` the CSV on standard output; any other extension is bad
+// input (exit 2), refused before any work. And the pieces of a sweep's run: progress, stop
+// signals, grid axes.
 #pragma once
 #include <atomic>
 #include <csignal>
@@ -16,27 +19,35 @@
 
 namespace nanopush::cli {
 
-class SweepOutput {
+class TableOutput {
  public:
-  /// InputError naming the extension and the formats for anything but .csv, .nc, none or "-".
-  explicit SweepOutput(const std::filesystem::path& out);
-  SweepOutput(const SweepOutput&) = delete;
-  SweepOutput& operator=(const SweepOutput&) = delete;
-  ~SweepOutput();  // removes the temporary directory of a table for standard output
+  enum class Kind { csv, netcdf, standard_output };
+  /// What `out` names: FILE.nc netCDF; FILE.csv or no extension CSV; "-" standard output where
+  /// `standard_output` (the commands whose `--out -` prints the table), else a file named `-`
+  /// (CSV). Any other extension: InputError naming `option`, what was written and the allowed
+  /// extensions. Creates nothing: a command calls it before its work.
+  static Kind kind_of(const std::filesystem::path& out, const std::string& option = "--out",
+                      bool standard_output = true);
+  explicit TableOutput(const std::filesystem::path& out, const std::string& option = "--out",
+                       bool standard_output = true);
+  TableOutput(const TableOutput&) = delete;
+  TableOutput& operator=(const TableOutput&) = delete;
+  ~TableOutput();  // removes the temporary directory of a table for standard output
 
-  /// The CSV table the sweep writes (its journal beside it): the output itself for CSV;
-  /// FILE.nc.csv for FILE.nc (so an interrupted sweep resumes from FILE.nc.csv.journal); a
+  /// The CSV table the command writes (a sweep's journal beside it): the output itself for
+  /// CSV; FILE.nc.csv for FILE.nc (so an interrupted sweep resumes from FILE.nc.csv.journal); a
   /// file in a temporary directory for standard output.
   [[nodiscard]] const std::filesystem::path& table() const { return table_; }
   [[nodiscard]] bool netcdf() const { return kind_ == Kind::netcdf; }
-  /// After a finished sweep: the CSV is the output; or it is converted into the .nc (a grid
-  /// over `axes`; none: a `point` dimension) and removed with its sidecar; or it is copied to
-  /// standard output. Returns what to name in the summary.
+  /// After the table is finished: the CSV is the output; or it is converted into the .nc (a
+  /// grid over `axes`; none: a `point` dimension) and removed with its sidecar; or it is copied
+  /// to standard output. Returns what to name in a summary.
   /// `trajectories` (netCDF only): one trajectory CSV per row, into the .nc's `trajectory`.
-  std::string finish(const std::vector<NetcdfAxis>& axes, const std::vector<std::filesystem::path>& trajectories = {}) const;
+  std::string finish(const std::vector<NetcdfAxis>& axes = {},
+                     const std::vector<std::filesystem::path>& trajectories = {}) const;
 
  private:
-  enum class Kind { csv, netcdf, standard_output } kind_ = Kind::csv;
+  Kind kind_ = Kind::csv;
   std::filesystem::path out_, table_, tmpdir_;
 };
 
