@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <fstream>
 #include <limits>
+#include <set>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <system_error>
@@ -195,7 +196,7 @@ struct NcFile {
 // transaction over the same variable ids, strides and the cells read once; its sections (read,
 // grid check, define, write table, write trajectories) are marked, and cutting them into
 // functions would pass those ten locals around without making any of them testable alone.
-void write_netcdf_from_table(const fs::path& csv, const fs::path& nc_path, const std::vector<NetcdfAxis>& axes,
+void write_netcdf_from_table(const fs::path& csv, const fs::path& nc_path, const std::vector<NetcdfAxis>& given_axes,
                              const std::vector<fs::path>& trajectories) {
   const auto [fields, prov] = read_schema(csv);
   // The whole table, column by column.
@@ -224,12 +225,14 @@ void write_netcdf_from_table(const fs::path& csv, const fs::path& nc_path, const
   const std::size_t rows = lines.size();
 
   // The grid: each axis's column, stride and values; every row checked against it.
+  std::vector<NetcdfAxis> axes = given_axes;
   std::vector<std::size_t> axis_col, stride(axes.size(), 1);
   std::size_t grid = 1;
-  for (const auto& a : axes) {
+  for (auto& a : axes) {
     std::size_t c = 0;
     while (c < ncol && fields[c].name != a.column) ++c;
     if (c == ncol) throw InputError("axis", a.column, "is not a column of " + csv.string());
+    if (a.size == 0) a.size = std::set<std::string>(cells[c].begin(), cells[c].end()).size();  // its distinct values
     if (a.size == 0) throw InputError("axis", a.column, "has no values");
     axis_col.push_back(c);
     grid *= a.size;

@@ -10,7 +10,8 @@
 
 namespace nanopush {
 
-/// One dimension of a grid table: the column that holds the axis, and its number of values.
+/// One dimension of a grid table: the column that holds the axis, and its number of values
+/// (0: the number of distinct values in the column, as written).
 struct NetcdfAxis {
   std::string column;
   std::size_t size = 0;
