@@ -11,3 +11,13 @@ add_test(NAME cli.netcdf.sweep_out
                  ${CMAKE_CURRENT_BINARY_DIR}/netcdf/sweep_out)
 set_tests_properties(cli.netcdf.sweep_out PROPERTIES ENVIRONMENT "NANOPUSH_SCENES=${NANOPUSH_SCENES}"
                      PASS_REGULAR_EXPRESSION "netcdf check: ok")
+# Every other command that writes a table file (bench --out, friction --bench-csv, fit
+# --synthesize, icor estimate-mu --out) and `nanopush convert` for the directories of tables:
+# each .nc compared with its CSV by `netcdf_readback --compare` (tests/cli/scripts/netcdf_commands.sh).
+find_package(nlohmann_json 3 REQUIRED)
+target_link_libraries(netcdf_readback PRIVATE nlohmann_json::nlohmann_json)
+add_test(NAME cli.netcdf.commands
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/netcdf_commands.sh $<TARGET_FILE:nanopush>
+                 $<TARGET_FILE:netcdf_readback> ${CMAKE_CURRENT_BINARY_DIR}/netcdf/commands)
+set_tests_properties(cli.netcdf.commands PROPERTIES ENVIRONMENT "NANOPUSH_SCENES=${NANOPUSH_SCENES}"
+                     PASS_REGULAR_EXPRESSION "netcdf commands: ok")

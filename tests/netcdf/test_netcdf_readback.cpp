@@ -3,17 +3,31 @@
 // double bit for bit (missing: the NaN fill), integers and text exact, CF attributes and the
 // provenance; a table that is not its grid is refused with nothing written.
 // Usage: netcdf_readback WORKDIR
+//
+// And any command's .nc against the CSV table it was converted from (tests/cli/netcdf.cmake):
+//   netcdf_readback --compare TABLE.csv FILE.nc [--measured COL,...]
+// every column of the sidecar a variable of its type, units and long_name; over the table's
+// dimensions (`point`, the axes, `t`) row by row, a coordinate by its axis position; each number
+// the CSV's double bit for bit (the empty cell: NaN), each integer and text exact; the
+// provenance as global attributes. --measured: columns a second run measures anew (timings),
+// checked for all but their values.
 #include <netcdf.h>
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <limits>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "nanopush/numerics/error.hpp"
+#include "nanopush/outputs/csv_reader.hpp"
 #include "nanopush/outputs/io.hpp"
 #include "nanopush/outputs/netcdf.hpp"
 
@@ -52,6 +66,14 @@ std::vector<std::string> dim_names(int nc, int var) {
   return names;
 }
 
+/// The length of dimension `name` (0 when there is none).
+std::size_t dim_length(int nc, const char* name) {
+  int d = -1;
+  std::size_t n = 0;
+  if (nc_inq_dimid(nc, name, &d) != NC_NOERR || nc_inq_dimlen(nc, d, &n) != NC_NOERR) return 0;
+  return n;
+}
+
 int var_id(int nc, const char* name) {
   int v = -1;
   check(nc_inq_varid(nc, name, &v) == NC_NOERR, std::string("variable ") + name);
@@ -60,9 +82,134 @@ int var_id(int nc, const char* name) {
 
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
 const double kInf = std::numeric_limits<double>::infinity();
+
+/// --compare: FILE.nc against TABLE.csv and its sidecar (see the file's head).
+int compare(const fs::path& csv, const fs::path& ncp, const std::set<std::string>& measured) {
+  std::ifstream sj(schema_path(csv));
+  check(static_cast<bool>(sj), "sidecar " + schema_path(csv).string());
+  if (!sj) return 1;
+  const nlohmann::json schema = nlohmann::json::parse(sj);
+  const auto& fields = schema.at("fields");
+  std::ifstream in(csv, std::ios::binary);
+  csv::Reader reader(in, csv.string());
+  csv::Record rec;
+  check(reader.next(rec), "a header in " + csv.string());
+  std::vector<std::vector<std::string>> rows;
+  for (csv::Record r; reader.next(r);) rows.push_back(r.fields);
+  int f = -1;
+  if (nc_open(ncp.c_str(), NC_NOWRITE, &f) != NC_NOERR) {
+    check(false, "open " + ncp.string());
+    return 1;
+  }
+  int fmt = 0;
+  nc_inq_format(f, &fmt);
+  check(fmt == NC_FORMAT_NETCDF4, "netCDF-4 format");
+  // The table's dimensions, in order (a sweep's trajectory adds `time` and `column`).
+  int ndims = 0;
+  nc_inq_dimids(f, &ndims, nullptr, 0);
+  std::vector<int> dim_ids(static_cast<std::size_t>(ndims));
+  nc_inq_dimids(f, &ndims, dim_ids.data(), 0);
+  std::vector<std::string> dims;
+  std::vector<std::size_t> len;
+  for (int d : dim_ids) {
+    char name[NC_MAX_NAME + 1] = {};
+    std::size_t n = 0;
+    nc_inq_dim(f, d, name, &n);
+    if (std::string(name) == "time" || std::string(name) == "column") continue;
+    dims.emplace_back(name);
+    len.push_back(n);
+  }
+  std::size_t cells = 1;
+  for (std::size_t n : len) cells *= n;
+  check(cells == rows.size(), "the dimensions hold " + std::to_string(cells) + " cells, the table " +
+                                  std::to_string(rows.size()) + " rows");
+  if (cells != rows.size()) return 1;
+  std::vector<std::size_t> stride(dims.size(), 1);
+  for (std::size_t k = dims.size(); k-- > 1;) stride[k - 1] = stride[k] * len[k];
+  int nvars = 0;
+  nc_inq_nvars(f, &nvars);
+  check(static_cast<std::size_t>(nvars) == fields.size() + (dims.size() < dim_ids.size() ? 4 : 0),
+        "one variable per column: " + std::to_string(nvars) + " variables, " + std::to_string(fields.size()) +
+            " columns");
+  for (std::size_t c = 0; c < fields.size(); ++c) {
+    const auto& fd = fields[c];
+    const std::string name = fd.at("name"), type = fd.at("type"), unit = fd.value("unit", "");
+    check(c < rec.fields.size() && rec.fields[c] == name, "header column " + std::to_string(c + 1) + " is " + name);
+    const int v = var_id(f, name.c_str());
+    if (v < 0) continue;
+    nc_type t = 0;
+    nc_inq_vartype(f, v, &t);
+    check(t == (type == "string" ? NC_STRING : type == "integer" ? NC_INT64 : NC_DOUBLE), name + ": type " + type);
+    check(text_att(f, v, "units") == (type == "string" || unit.empty() ? "(absent)" : unit), name + ": units");
+    const std::string description = fd.value("description", "");
+    check(text_att(f, v, "long_name") == (description.empty() ? "(absent)" : description), name + ": long_name");
+    // Row r's place in the variable: r itself over the table's dimensions; a coordinate's
+    // (its own dimension k): the row's index along axis k.
+    const auto vd = dim_names(f, v);
+    std::size_t axis = dims.size();
+    for (std::size_t k = 0; k < dims.size(); ++k)
+      if (vd == std::vector<std::string>{name} && dims[k] == name) axis = k;
+    check(axis < dims.size() || vd == dims, name + ": over the table's dimensions");
+    const auto at = [&](std::size_t r) { return axis < dims.size() ? (r / stride[axis]) % len[axis] : r; };
+    const std::size_t n = axis < dims.size() ? len[axis] : rows.size();
+    if (measured.count(name) || n == 0) continue;
+    bool same = true;
+    if (type == "string") {
+      std::vector<char*> got(n);
+      nc_get_var_string(f, v, got.data());
+      for (std::size_t r = 0; r < rows.size(); ++r) same = same && got[at(r)] && rows[r][c] == got[at(r)];
+      nc_free_string(n, got.data());
+    } else if (type == "integer") {
+      std::vector<long long> got(n);
+      nc_get_var_longlong(f, v, got.data());
+      for (std::size_t r = 0; r < rows.size(); ++r)
+        same = same && got[at(r)] == (rows[r][c].empty() ? NC_FILL_INT64 : std::stoll(rows[r][c]));
+    } else {
+      std::vector<double> got(n);
+      nc_get_var_double(f, v, got.data());
+      for (std::size_t r = 0; r < rows.size(); ++r) {
+        const std::string& cell = rows[r][c];
+        same = same && (cell.empty() ? std::isnan(got[at(r)]) : same_bits(got[at(r)], std::strtod(cell.c_str(), nullptr)));
+      }
+    }
+    check(same, name + ": every value the CSV's, bit for bit");
+  }
+  const auto& prov = schema.at("nanopush");
+  check(text_att(f, NC_GLOBAL, "Conventions") == "CF-1.8", "Conventions");
+  check(text_att(f, NC_GLOBAL, "nanopush_version") == prov.value("version", "?"), "provenance: version");
+  check(text_att(f, NC_GLOBAL, "command").rfind("nanopush ", 0) == 0, "provenance: the command line");
+  check(text_att(f, NC_GLOBAL, "created").size() == 20, "provenance: created (UTC)");
+  // Converted from this very file (nanopush convert): its provenance exactly.
+  if (text_att(f, NC_GLOBAL, "source_table") == csv.filename().string())
+    for (const char* k : {"command", "scene", "created"})
+      check(text_att(f, NC_GLOBAL, k) == prov.value(k, "(absent)"), std::string("provenance: ") + k);
+  nc_close(f);
+  if (failures) {
+    std::fprintf(stderr, "netcdf compare: %s against %s: %d failures\n", ncp.c_str(), csv.c_str(), failures);
+    return 1;
+  }
+  std::printf("netcdf compare: %s holds %s (%zu rows, %zu columns)\n", ncp.c_str(), csv.c_str(), rows.size(),
+              fields.size());
+  return 0;
+}
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc >= 4 && std::string(argv[1]) == "--compare") {
+    std::set<std::string> measured;
+    if (argc == 6 && std::string(argv[4]) == "--measured") {
+      std::istringstream s(argv[5]);
+      for (std::string c; std::getline(s, c, ',');) measured.insert(c);
+    } else if (argc != 4) {
+      return 2;
+    }
+    try {
+      return compare(argv[2], argv[3], measured);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "netcdf compare: %s\n", e.what());
+      return 1;
+    }
+  }
   if (argc < 2) return 2;
   const fs::path dir = argv[1];
   fs::remove_all(dir);
@@ -146,6 +293,17 @@ int main(int argc, char** argv) {
     check(text_att(f, NC_GLOBAL, "run_task") == "run", "provenance: run.task");
     double wall = 0;
     check(nc_get_att_double(f, NC_GLOBAL, "run_wall_s", &wall) == NC_NOERR && wall == 0.5, "provenance: run.wall_s");
+    nc_close(f);
+  }
+
+  // Axes of size 0 (nanopush convert --axis): each as many as its column's distinct values.
+  const fs::path anc = dir / "auto.nc";
+  write_netcdf_from_table(csv, anc, {{"surface_mu", 0}, {"surface_law", 0}});
+  {
+    int f = -1;
+    check(nc_open(anc.c_str(), NC_NOWRITE, &f) == NC_NOERR, "open auto.nc");
+    check(dim_length(f, "surface_mu") == 3 && dim_length(f, "surface_law") == 2,
+          "axes of size 0: their columns' 3 and 2 distinct values");
     nc_close(f);
   }
 
