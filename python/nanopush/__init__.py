@@ -61,6 +61,20 @@ for _cls in (FitResult, MuBatch, MuEstimate, MuEstimates, PlanResult, Result, Sc
 FitResult.report = _fitting.report
 FitResult.plot = _fitting.plot
 
+
+def _result_to_xarray(self):
+    """The trajectory as an xarray.Dataset over the dimension ``t`` (its coordinate), every
+    other column a variable with its ``units``, as ``nanopush run --out FILE.nc`` writes it
+    (docs/data.md; xarray is imported here: an optional dependency)."""
+    import xarray
+
+    d = self.to_dict()
+    return xarray.Dataset({k: ("t", d[k], {"units": self.units[k]}) for k in self.columns if k != "t"},
+                          coords={"t": ("t", d["t"], {"units": self.units["t"]})})
+
+
+Result.to_xarray = _result_to_xarray
+
 _scenes.keep_description_true(Scene)
 
 __all__ = [
@@ -173,7 +187,7 @@ def run(scene, engine=None, method=None, law=None, rtol=None, atol=None, precisi
 
     The result has NumPy arrays t, x, y, theta, vx, vy, omega, fx, fy, mf (SI, world axes),
     the counts nfcn, steps, rejected, the error estimate ``error`` (a dict; ``error_estimate``
-    its norm), ``outcome`` (ok or at_rest), and to_dict() / to_csv(path); solve_ivp's names:
+    its norm), ``outcome`` (ok or at_rest), and to_dict() / to_csv(path) / to_xarray(); solve_ivp's names:
     ``states`` (6 x n: x, y, theta, vx, vy, omega; solve_ivp's ``y``), ``success``,
     ``status`` (0 or -1), ``message``, ``nfev``. The same numbers, bit
     for bit, as ``nanopush run SCENE --engine ... --method ...``. The GIL is released while

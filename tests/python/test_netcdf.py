@@ -168,3 +168,42 @@ def test_icor_table_out_netcdf(tmp_path):
     p = subprocess.run([CLI, "icor", "formulas", "--out", "f.parquet"], capture_output=True, text=True, cwd=tmp_path)
     assert p.returncode == 2 and "unknown extension '.parquet'" in p.stderr
     assert not (tmp_path / "f.parquet").exists()
+
+
+def test_result_to_xarray_is_run_netcdf(tmp_path):
+    """nanopush.Result.to_xarray(): the dataset `nanopush run --out FILE.nc` writes, over `t`,
+    the same values bit for bit and the same units."""
+    import nanopush
+
+    p = subprocess.run([CLI, "run", "fig3_17", "--out", "r.nc", "--quiet"], capture_output=True, text=True, cwd=tmp_path)
+    assert p.returncode == 0, p.stderr
+    ds = nanopush.run("fig3_17").to_xarray()
+    nc = xr.open_dataset(tmp_path / "r.nc")
+    assert ds.x.dims == ("t",) and list(ds.data_vars) == list(nc.data_vars)
+    assert same_bits(ds.t.values, nc.t.values) and ds.t.attrs["units"] == nc.t.attrs["units"] == "s"
+    for name in nc.data_vars:
+        assert same_bits(ds[name].values, nc[name].values), name
+        assert ds[name].attrs["units"] == nc[name].attrs["units"], name
+
+
+def test_convert_table_of_a_directory(tmp_path):
+    """`nanopush convert TABLE.csv`: any finished table (here fit-icor's) into TABLE.nc beside it,
+    every column over `point` bit for bit with its units; the CSV and its sidecar stay."""
+    (tmp_path / "pushes.csv").write_text("F,sigma_F,yn,sigma_yn\n8.505610578323183e-07,1.7e-08,5e-08,2e-9\n"
+                                         "5.33822956537572e-07,1.1e-08,2e-07,2e-9\n")
+    p = subprocess.run([CLI, "fit-icor", "pushes.csv", "--pressure", "known", "--out", "fi"], capture_output=True,
+                       text=True, cwd=tmp_path)
+    assert p.returncode == 0, p.stderr
+    p = subprocess.run([CLI, "convert", "fi/fit_icor.csv"], capture_output=True, text=True, cwd=tmp_path)
+    assert p.returncode == 0, p.stderr
+    assert {"fit_icor.csv", "fit_icor.schema.json", "fit_icor.nc"} <= {q.name for q in (tmp_path / "fi").iterdir()}
+    cols, schema = read_csv(tmp_path / "fi" / "fit_icor.csv")
+    ds = xr.open_dataset(tmp_path / "fi" / "fit_icor.nc")
+    assert list(ds.sizes) == ["point"] and ds.sizes["point"] == 2
+    for field in schema["fields"]:
+        if field["type"] == "number":
+            assert same_bits(ds[field["name"]].values, cols[field["name"]]), field["name"]
+            assert ds[field["name"]].attrs["units"] == field["unit"]
+        elif field["type"] == "string":
+            assert list(ds[field["name"]].values) == list(cols[field["name"]]), field["name"]
+    assert ds.attrs["command"] == schema["nanopush"]["command"] and ds.attrs["source_table"] == "fit_icor.csv"
