@@ -6,8 +6,8 @@
 #    values), nothing left beside it; an unknown extension refused (exit 2) before any work,
 #    naming what was written and the allowed extensions, nothing written; only a .nc loads
 #    libnetcdf;
-#  - the commands that write a directory of tables (plan, fit-icor, run's trajectory, a
-#    reproduce step's grid with blank lines): `nanopush convert` turns each table into its .nc
+#  - the commands that write a directory of tables (plan, fit-icor, bench-friction, run's
+#    trajectory, a reproduce step's grid with blank lines): `nanopush convert` turns each table into its .nc
 #    twin, compared the same way; its refusals are exit 2 with nothing written.
 # Usage: netcdf_commands.sh NANOPUSH NETCDF_READBACK WORKDIR
 set -euo pipefail
@@ -84,7 +84,8 @@ printf 'F,sigma_F,yn,sigma_yn\n8.505610578323183e-07,1.7e-08,5e-08,2e-9\n5.33822
 "$np" reproduce --quick --only fig3_10_11_friction --out conv/repro > /dev/null 2>&1
 grid=conv/repro/fig3_10_11_friction_maps.csv
 grep -q '^$' "$grid" || fail "$grid: no blank line between its scans (the case to convert)"
-tables=(conv/fit_icor/fit_icor.csv conv/plan/*.csv "$grid")
+"$np" bench-friction --seconds 0.01 --repeats 1 --no-plot --quiet --out conv/bench_friction > /dev/null
+tables=(conv/fit_icor/fit_icor.csv conv/plan/*.csv "$grid" conv/bench_friction/*.csv)
 LD_DEBUG=libs LD_DEBUG_OUTPUT=ld "$np" convert --quiet "${tables[@]}"
 grep -q 'calling init: .*libnetcdf' ld.* || fail "convert did not load libnetcdf"
 rm -f ld.*
