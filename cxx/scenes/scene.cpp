@@ -771,9 +771,14 @@ Scene load_scene(const std::filesystem::path& path) {
     throw InputError("SCENE", path.string(), "not a regular file (a device, FIFO or socket): give a scene file (.toml)");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError("SCENE", path.string(), "cannot open the scene file");
-  std::string text(kMaxSceneBytes + 1, '\0');
-  in.read(text.data(), static_cast<std::streamsize>(text.size()));
-  text.resize(static_cast<std::size_t>(in.gcount()));
+  // Read in blocks up to one byte past the limit: a buffer of the limit's size would be
+  // zero-filled page by page on every start (docs/performance.md, "Process start").
+  std::string text;
+  char block[16384];
+  while (text.size() <= kMaxSceneBytes && in.read(block, sizeof block).gcount() > 0) {
+    text.append(block, static_cast<std::size_t>(in.gcount()));
+    if (!in) break;
+  }
   if (text.size() > kMaxSceneBytes)
     throw InputError("SCENE", path.string(), "larger than a scene file may be (1 MiB)");
   Scene sc = parse_scene(text, path.string());
