@@ -9,6 +9,7 @@
 #include <deque>
 #include <filesystem>
 #include <iostream>
+#include <list>
 #include <optional>
 #include <set>
 #include <string>
@@ -175,9 +176,11 @@ constexpr microseconds kPollFirst(1000), kPollMost(4000);
 /// Points a worker rank holds per thread (running and queued), asked for before its threads
 /// run dry: a rank 0 that answers within kPollFirst (a worker's request follows its row, so
 /// rank 0 is at its shortest sleep) then never leaves them idle, and at the end at most
-/// kAhead - 1 points per thread wait behind a slow one. Measured on the benchmark's grid
-/// (docs/sweeps.md): 2 and 4 within noise at a fixed 1 ms poll, a fixed 5 ms starves the threads.
-constexpr int kAhead = 4;
+/// kAhead - 1 points per thread wait behind a slow one. A single-threaded worker rank asks
+/// again when half are left (one request per kAhead/2 points: at ~0.65 ms a point, faster than
+/// rank 0's kPollFirst). Measured on the benchmark's grid (docs/sweeps.md): 2, 4 and 8 within
+/// noise at a fixed 1 ms poll, a fixed 5 ms starves the threads.
+constexpr int kAhead = 8;
 
 /// Sleep until a local row is ready or `most` passes.
 void wait_for_rows(LocalWork& w, microseconds most) {
@@ -192,16 +195,60 @@ unsigned threads_per_rank(unsigned asked) {
   return std::max(1u, std::thread::hardware_concurrency() / local);
 }
 
-void send_row(std::size_t i, const std::vector<std::string>& row) {
-  std::string msg = std::to_string(i) + "\n" + sweep::join_cells(row);
-  MPI_Send(msg.data(), static_cast<int>(msg.size()), MPI_CHAR, 0, kRow, MPI_COMM_WORLD);
-}
+/// A worker rank's messages to rank 0, sent without blocking. Open MPI's MPI_Send of even a
+/// small (eager) message spins in its progress loop until rank 0's own progress hands back a
+/// send fragment, and rank 0 sleeps between its looks at MPI (kPollFirst..kPollMost): with
+/// blocking sends a worker rank spent ~20 % of its CPU inside MPI_Send (perf, bench-sweep's
+/// grid at 2 ranks). Each message keeps its buffer until MPI_Test says it is sent; messages to
+/// one rank keep their order (MPI's non-overtaking rule holds for MPI_Isend as for MPI_Send).
+class ToRank0 {
+ public:
+  ToRank0() = default;
+  ToRank0(const ToRank0&) = delete;
+  ToRank0& operator=(const ToRank0&) = delete;
+  /// Normally drained already. Left by an exception (the job then ends in MPI_Abort), the
+  /// messages still in flight keep their buffers: the list's nodes move to the heap, never freed.
+  ~ToRank0() {
+    if (!sent_.empty()) new std::list<Message>(std::move(sent_));
+  }
 
-/// kDone carries the rank's CPU time [s], for the sidecar's cpu_s.
-void send_done() {
-  double cpu = sweep::process_cpu_seconds();
-  MPI_Send(&cpu, 1, MPI_DOUBLE, 0, kDone, MPI_COMM_WORLD);
-}
+  void row(std::size_t i, const std::vector<std::string>& cells) {
+    post(std::to_string(i) + "\n" + sweep::join_cells(cells), MPI_CHAR, kRow);
+  }
+  void request(int want) { post(std::string(reinterpret_cast<const char*>(&want), sizeof want), MPI_INT, kRequest); }
+  /// kDone carries the rank's CPU time [s], for the sidecar's cpu_s.
+  void done() {
+    const double cpu = sweep::process_cpu_seconds();
+    post(std::string(reinterpret_cast<const char*>(&cpu), sizeof cpu), MPI_DOUBLE, kDone);
+  }
+  /// Forget the messages already sent.
+  void progress() {
+    std::erase_if(sent_, [](Message& m) {
+      int flag = 0;
+      MPI_Test(&m.req, &flag, MPI_STATUS_IGNORE);
+      return flag != 0;
+    });
+  }
+  /// Until every message is sent (looks and sleeps, never a blocking call).
+  void drain() {
+    Backoff wait(microseconds(50), microseconds(4000));
+    for (progress(); !sent_.empty(); progress()) wait.sleep();
+  }
+
+ private:
+  struct Message {
+    std::string buf;
+    MPI_Request req = MPI_REQUEST_NULL;
+  };
+  void post(std::string bytes, MPI_Datatype type, int tag) {
+    progress();
+    Message& m = sent_.emplace_back(Message{std::move(bytes)});  // std::list: the buffer stays put
+    int size = 1;
+    MPI_Type_size(type, &size);
+    MPI_Isend(m.buf.data(), static_cast<int>(m.buf.size()) / size, type, 0, tag, MPI_COMM_WORLD, &m.req);
+  }
+  std::list<Message> sent_;
+};
 
 /// Open MPI on one node: its shared-memory path (pml ob1 with btl vader) starts in ~0.03 s where
 /// the UCX pml that Debian's Open MPI prefers takes ~0.2 s per launch (measured with
@@ -248,6 +295,7 @@ std::optional<std::vector<long long>> work_reply(bool wait) {
 void serve_on_main_thread(const sweep::Plan& plan, const sweep::Task& task, const std::atomic<bool>* stop,
                           const volatile std::sig_atomic_t* sig) {
   std::deque<std::size_t> queue;
+  ToRank0 to0;
   bool finished = false, asked = false, remote = false;
   for (;;) {
     if (!remote) remote = stop_from_rank0();
@@ -255,9 +303,11 @@ void serve_on_main_thread(const sweep::Plan& plan, const sweep::Task& task, cons
     const bool stopping = local || remote;
     if (stopping) queue.clear();  // not started: a resumed sweep computes them
     if (!finished && !asked) {
-      const int want = stopping ? (local ? -signal_of(sig) : 0) : kAhead - static_cast<int>(queue.size());
+      // Refilled by half a batch at a time: one request per kAhead/2 points, not one per point.
+      const int held = static_cast<int>(queue.size());
+      const int want = stopping ? (local ? -signal_of(sig) : 0) : (held <= kAhead / 2 ? kAhead - held : 0);
       if (want > 0 || stopping) {
-        MPI_Send(&want, 1, MPI_INT, 0, kRequest, MPI_COMM_WORLD);
+        to0.request(want);
         asked = true;
       }
     }
@@ -274,9 +324,10 @@ void serve_on_main_thread(const sweep::Plan& plan, const sweep::Task& task, cons
     }
     const std::size_t i = queue.front();
     queue.pop_front();
-    send_row(i, sweep::evaluate_row(plan, task, i));
+    to0.row(i, sweep::evaluate_row(plan, task, i));
   }
-  send_done();
+  to0.done();
+  to0.drain();
 }
 
 /// An error on a rank (a journal of another sweep, a table that cannot be written, a bug) ends
@@ -486,6 +537,7 @@ int run_mpi_sweep(const sweep::Plan& plan, const sweep::Task& task, const sweep:
         std::atomic<bool> stop_all{false};
         for (unsigned t = 0; t < jobs; ++t)
           threads.emplace_back(worker, std::ref(w), std::cref(plan), std::cref(task), &stop_all);
+        ToRank0 to0;
         bool finished = false, asked = false, remote = false;
         Backoff poll(kPollFirst, kPollMost);
         while (true) {
@@ -503,10 +555,11 @@ int run_mpi_sweep(const sweep::Plan& plan, const sweep::Task& task, const sweep:
             want = kAhead * static_cast<int>(jobs) - static_cast<int>(w.queue.size()) - static_cast<int>(w.busy);
           }
           if (stopping) w.cv.notify_all();
-          for (const auto& [i, r] : out) send_row(i, r);
+          for (const auto& [i, r] : out) to0.row(i, r);
+          to0.progress();
           if (!finished && !asked && (want > 0 || stopping)) {
             if (stopping) want = local ? -signal_of(sig) : 0;
-            MPI_Send(&want, 1, MPI_INT, 0, kRequest, MPI_COMM_WORLD);
+            to0.request(want);
             asked = true;
           }
           if (asked) {
@@ -531,7 +584,8 @@ int run_mpi_sweep(const sweep::Plan& plan, const sweep::Task& task, const sweep:
           }
           wait_for_rows(w, poll.next());
         }
-        send_done();
+        to0.done();
+        to0.drain();
         w.cv.notify_all();
         for (auto& t : threads) t.join();
         threads.clear();
