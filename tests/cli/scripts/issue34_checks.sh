@@ -110,8 +110,9 @@ messages)  # item 7 (issue items 10, 11): what was written is named; nonsense re
   expect 3 'not converged: chi2 = (inf|nan) is not finite' \
     "$np" fit fig3_20 ../huge.csv --set solver.t_end=0.4e-9 --set surface.mu=0.1 --free surface.mu --out ../fit1 --no-plot ;;
 mpi_signal)  # item 4: a signal to any rank or to mpirun stops every rank; journal kept; exit 128 + N
-  # 1000 points of a rough scene (a few ms each): long enough to interrupt.
-  grid=(fig3_18 --set surface.law=coulomb --vary surface.mu=0.02:0.2:40 --vary push.yn=0:45e-9:25 --jobs 1 --quiet)
+  # 4000 points of a rough scene (~1 ms each): long enough to interrupt. (mpirun, itself
+  # signalled, passes the signal on to its ranks only ~1 s later: 1000 points were often done.)
+  grid=(fig3_18 --set surface.law=coulomb --vary surface.mu=0.02:0.2:40 --vary push.yn=0:45e-9:100 --jobs 1 --quiet)
   "$np" sweep "${grid[@]}" --out ../serial.csv
   rank_pid() {  # rank $2 of mpirun $1
     local p
