@@ -7,8 +7,6 @@
 #include <limits>
 #include <sstream>
 
-#include <toml++/toml.h>
-
 #include "f77_rolling.h"
 #include "nanopush/scenes/environment_toml.hpp"
 #include "nanopush/numerics/error.hpp"

@@ -9,8 +9,6 @@
 #include <iostream>
 #include <sstream>
 
-#include <toml++/toml.h>
-
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/sweeps/sweep.hpp"
 #include "cli_checks.hpp"

@@ -9,7 +9,6 @@
 #include <vector>
 
 #include <nlohmann/json.hpp>
-#include <toml++/toml.h>
 
 #include "nanopush/fitting/fit.hpp"
 #include "nanopush/numerics/error.hpp"

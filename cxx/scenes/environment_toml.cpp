@@ -10,8 +10,6 @@
 #include <set>
 #include <sstream>
 
-#include <toml++/toml.h>
-
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/scenes/scene_keys.hpp"
 
