@@ -2,8 +2,9 @@
 #   cc main.c $(pkg-config --cflags --libs nanopush)
 # Shared build: Libs is -lnanopush_capi (and an RPATH to the prefix's lib); the library names its
 # own dependencies (DT_NEEDED, RPATH $ORIGIN/../lib). Static build: Libs lists every nanopush
-# library in link order, then what they need (toml++, SUNDIALS, LAPACK/BLAS, the Fortran run
-# time, quadmath, the C++ run time, libm), so the plain --libs is enough.
+# library in link order, then what they need (SUNDIALS, LAPACK/BLAS, the Fortran run
+# time, quadmath, the C++ run time, libm; toml++ is compiled into nanopush_scenes), so the
+# plain --libs is enough.
 # The prefix is ${pcfiledir}/..: a copied or moved prefix still works; no build path is written.
 
 # Flatten a link item (target, path, -l flag, name) into link-line flags, appended to OUT.
@@ -107,9 +108,6 @@ else()
   endif()
   set(_external "")
   set(_seen "")
-  foreach(_t tomlplusplus::tomlplusplus)
-    _nanopush_pc_flatten(${_t} _external _seen)
-  endforeach()
   if(SUNDIALS_FOUND)
     foreach(_t SUNDIALS::cvode SUNDIALS::nvecserial)
       _nanopush_pc_flatten(${_t} _external _seen)

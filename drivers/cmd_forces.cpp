@@ -7,6 +7,8 @@
 #include <limits>
 #include <sstream>
 
+#include <toml++/toml.h>
+
 #include "f77_rolling.h"
 #include "nanopush/scenes/environment_toml.hpp"
 #include "nanopush/numerics/error.hpp"

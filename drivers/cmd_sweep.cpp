@@ -9,6 +9,8 @@
 #include <iostream>
 #include <sstream>
 
+#include <toml++/toml.h>
+
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/sweeps/sweep.hpp"
 #include "cli_checks.hpp"

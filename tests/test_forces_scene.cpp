@@ -6,6 +6,8 @@
 #include <limits>
 #include <string>
 
+#include <toml++/toml.h>
+
 #include "nanopush/scenes/environment_toml.hpp"
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/models/surface_forces.hpp"

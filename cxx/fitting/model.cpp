@@ -17,6 +17,8 @@
 #include <optional>
 #include <span>
 
+#include <toml++/toml.h>
+
 #include "internal.hpp"
 #include "nanopush/fitting/fit.hpp"
 #include "nanopush/models/rigid_body.hpp"

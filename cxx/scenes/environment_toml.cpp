@@ -10,6 +10,8 @@
 #include <set>
 #include <sstream>
 
+#include <toml++/toml.h>
+
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/scenes/scene_keys.hpp"
 

@@ -227,17 +227,21 @@ std::vector<double> Scene::atol_vector(double rtol, double atol, int n) const {
   return v;
 }
 
+namespace {
+Scene scene_from_owned_document(std::shared_ptr<const toml::table> doc, const std::string& source_name);
+}  // namespace
+
 Scene parse_scene(std::string_view text, const std::string& source_name) {
-  toml::table root;
+  std::shared_ptr<toml::table> root;
   try {
-    root = toml::parse(text, source_name);
+    root = std::make_shared<toml::table>(toml::parse(text, source_name));
   } catch (const toml::parse_error& e) {
     std::ostringstream s;
     s << source_name << ":" << e.source().begin.line << ":" << e.source().begin.column << ": TOML syntax: "
       << e.description();
     throw InputError(s.str());
   }
-  return scene_from_document(root, source_name);
+  return scene_from_owned_document(std::move(root), source_name);
 }
 
 namespace {
@@ -601,7 +605,10 @@ void assemble_load(const toml::table& root, Scene& sc) {
 
 }  // namespace
 
-Scene scene_from_document(const toml::table& root, const std::string& source_name) {
+namespace {
+/// The scene of `doc`, which it keeps as its document (no copy).
+Scene scene_from_owned_document(std::shared_ptr<const toml::table> doc, const std::string& source_name) {
+  const toml::table& root = *doc;
   check_keys(root, "", scene_table_keys(""));
   Scene sc;
   sc.source = source_name;
@@ -616,8 +623,13 @@ Scene scene_from_document(const toml::table& root, const std::string& source_nam
   assemble_load(root, sc);
   check_tip_scene(sc);
   check_representable(sc);
-  sc.document = std::make_shared<const toml::table>(root);
+  sc.document = std::move(doc);
   return sc;
+}
+}  // namespace
+
+Scene scene_from_document(const toml::table& root, const std::string& source_name) {
+  return scene_from_owned_document(std::make_shared<const toml::table>(root), source_name);
 }
 
 // ---- Setting keys after loading --------------------------------------------------------------
@@ -746,13 +758,25 @@ std::string Scene::to_toml() const {
   return o.str();
 }
 
+SceneBuilder::SceneBuilder() = default;
+SceneBuilder::SceneBuilder(const SceneBuilder& other)
+    : doc_(other.doc_ ? std::make_unique<toml::table>(*other.doc_) : nullptr) {}
+SceneBuilder::SceneBuilder(SceneBuilder&&) noexcept = default;
+SceneBuilder& SceneBuilder::operator=(const SceneBuilder& other) {
+  if (this != &other) doc_ = other.doc_ ? std::make_unique<toml::table>(*other.doc_) : nullptr;
+  return *this;
+}
+SceneBuilder& SceneBuilder::operator=(SceneBuilder&&) noexcept = default;
+SceneBuilder::~SceneBuilder() = default;
+
 SceneBuilder& SceneBuilder::set(const std::string& key, const SceneValue& value) {
-  put(doc_, key, value);
+  if (!doc_) doc_ = std::make_unique<toml::table>();
+  put(*doc_, key, value);
   return *this;
 }
 
 Scene SceneBuilder::build(const std::string& name) const {
-  toml::table doc = doc_;
+  toml::table doc = doc_ ? *doc_ : toml::table{};
   if (!doc.get("scene")) doc.insert_or_assign("scene", toml::table{});
   toml::table& st = *doc.get("scene")->as_table();
   if (!st.get("name")) st.insert_or_assign("name", name);

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The plain command line loads no MPI: `nanopush --version` and a run neither link nor load
 # libmpi (ldd, and the loader's own account: LD_DEBUG=libs), while nanopush-mpi, when built,
-# does (so the check can see it). Usage: startup_checks.sh NANOPUSH WORKDIR
+# does (so the check can see it). A run loads no toml++ either (compiled into the library). Usage: startup_checks.sh NANOPUSH WORKDIR
 set -euo pipefail
 np=$1 dir=$2
 np_mpi="$(dirname "$np")/nanopush-mpi"
@@ -21,6 +21,8 @@ echo "nanopush --version loads $(wc -l <<< "$libs") shared objects, none of MPI"
 libs=$(loaded "$np" run fig3_6a --out run.csv)
 [ -s run.csv ] || fail "nanopush run wrote no trajectory"
 ! grep -q 'libmpi' <<< "$libs" || fail "nanopush run loads libmpi"
+# toml++ is compiled into the scenes library: reading the scene loads no toml++ shared object.
+! grep -q 'libtomlplusplus' <<< "$libs" || fail "nanopush run loads libtomlplusplus"
 if [ -x "$np_mpi" ]; then
   deps_mpi=$(ldd "$np_mpi")
   grep -q 'libmpi' <<< "$deps_mpi" || fail "nanopush-mpi does not link libmpi"

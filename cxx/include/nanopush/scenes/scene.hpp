@@ -9,13 +9,12 @@
 #include <utility>
 #include <vector>
 
-#include <toml++/toml.h>
-
 #include "nanopush/models/printed_reading.hpp"
 #include "nanopush/models/rigid_body.hpp"
 #include "nanopush/models/tip_push.hpp"
 #include "nanopush/scenes/choices.hpp"
 #include "nanopush/scenes/scene_keys.hpp"
+#include "nanopush/scenes/toml_fwd.hpp"
 
 namespace nanopush {
 
@@ -131,7 +130,8 @@ struct Scene {
   void unset(const std::string& key);
   /// The scene file's document, with every set() applied (TOML).
   [[nodiscard]] std::string to_toml() const;
-  /// The document behind this scene (toml++). Null for a default-constructed Scene.
+  /// The document behind this scene (toml++; include <toml++/toml.h> to read it). Null for a
+  /// default-constructed Scene.
   std::shared_ptr<const toml::table> document;
 };
 
@@ -139,12 +139,18 @@ struct Scene {
 ///   SceneBuilder b; b.set("object.length", 100e-9); ... ; Scene s = b.build();
 class SceneBuilder {
  public:
+  SceneBuilder();
+  SceneBuilder(const SceneBuilder& other);
+  SceneBuilder(SceneBuilder&&) noexcept;
+  SceneBuilder& operator=(const SceneBuilder& other);
+  SceneBuilder& operator=(SceneBuilder&&) noexcept;
+  ~SceneBuilder();
   /// Checks the key exists and the value's type; the rest waits for build().
   SceneBuilder& set(const std::string& key, const SceneValue& value);
   [[nodiscard]] Scene build(const std::string& name = "scene") const;
 
  private:
-  toml::table doc_;
+  std::unique_ptr<toml::table> doc_;  ///< the keys set so far; null: none
 };
 
 /// Why extended precision (long, quad) cannot run with this surface, friction law, engine and
@@ -161,7 +167,8 @@ inline constexpr std::size_t kMaxSceneBytes = 1u << 20;
 /// inertia, loads, accelerations, the output spacing, the state scales) must be 0 or of
 /// magnitude 1e-150 to 1e150, which the integrators represent (docs/errors.md).
 Scene parse_scene(std::string_view toml_text, const std::string& source_name = "<string>");
-/// A scene from a parsed TOML document (what parse_scene and Scene::set use).
+/// A scene from a parsed TOML document (what parse_scene and Scene::set use; include
+/// <toml++/toml.h> to build one).
 Scene scene_from_document(const toml::table& doc, const std::string& source_name = "<string>");
 /// Load a scene file: a regular file of at most kMaxSceneBytes (InputError otherwise).
 Scene load_scene(const std::filesystem::path& path);
