@@ -11,6 +11,7 @@
 
 #include "f77_rolling.h"
 #include "nanopush/scenes/environment_toml.hpp"
+#include "nanopush/scenes/scene.hpp"
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/outputs/io.hpp"
 #include "nanopush/outputs/plot.hpp"
@@ -73,15 +74,7 @@ int run_forces(const Options& o) {
   if (!o.scene.empty()) {
     const auto path = resolve_scene(o.scene);
     source = path.string();
-    toml::table doc;
-    try {
-      doc = toml::parse_file(path.string());
-    } catch (const toml::parse_error& e) {
-      std::ostringstream m;
-      m << "TOML syntax error at line " << e.source().begin.line << ", column " << e.source().begin.column << ": "
-        << e.description();
-      throw InputError("SCENE", path.string(), m.str());
-    }
+    const toml::table doc = parse_toml_document(read_scene_text(path), source);
     if (auto* et = doc["environment"].as_table()) env = parse_environment(*et);
     if (auto* bt = doc["body"].as_table()) bodies.push_back(parse_body(*bt));
     if (auto* arr = doc["bodies"].as_array()) {

@@ -6,6 +6,7 @@
 
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/scenes/scene.hpp"
+#include "support/support.hpp"
 
 using namespace nanopush;
 using Catch::Matchers::Contains;
@@ -48,4 +49,40 @@ samples = 401
 rtol = 1e-10
 )";
   CHECK_THROWS_WITH(parse_scene(text, "fuzz.toml"), Contains("widvh"));
+}
+
+TEST_CASE("Fuzz finding: a non-ASCII character where toml++ tests for whitespace is refused first",
+          "[scene][fuzz][unit]") {
+  // toml++ 3.3's is_non_ascii_horizontal_whitespace() reaches TOML_UNREACHABLE for most code
+  // points of U+00A1..U+0499 (and three other blocks): UB wherever its lexer tests a non-ASCII
+  // character for whitespace. The fuzzer's input had a '§' (U+00A7) in a bare key.
+  CHECK_THROWS_WITH(parse_scene("[object]\ndescels.md \xC2\xA7" "C) = 1\n", "f.toml"),
+                    Contains("f.toml:2:12: TOML syntax: the character U+00A7") && Contains("outside a string"));
+  CHECK_THROWS_WITH(parse_scene("a = 1 \xD0\x96\n", "f.toml"), Contains("f.toml:1:7:") && Contains("U+0416"));
+  CHECK_THROWS_WITH(parse_scene("a = 1\n\xE3\x81\x82 = 2\n", "f.toml"), Contains("f.toml:2:1:") && Contains("U+3042"));
+  CHECK_THROWS_WITH(parse_scene("a = 1\xFF\n", "f.toml"), Contains("the byte 0xFF (not UTF-8)"));
+  // After a backslash in a multi-line basic string (an escape, or a line-ending backslash).
+  CHECK_THROWS_WITH(parse_scene("a = \"\"\"x\\\xC2\xA7\"\"\"\n", "f.toml"), Contains("follows a backslash"));
+  CHECK_THROWS_WITH(parse_scene("a = \"\"\"x\\  \n  \xC2\xA7\"\"\"\n", "f.toml"),
+                    Contains("f.toml:2:3:") && Contains("line-ending backslash") && Contains("\\uXXXX"));
+  CHECK_THROWS_WITH(parse_scene("a = \"x\\\xC2\xA7\"\n", "f.toml"), Contains("follows a backslash"));
+}
+
+TEST_CASE("Non-ASCII characters inside strings and comments reach toml++ and are kept", "[scene][unit]") {
+  const std::string base = nanopush::test::kBaseSceneText + "[solver]\nt_end = 1.6e-9\n";
+  const std::string desc = "\xC2\xA7 \xD0\x96 \xE3\x81\x82 \xEF\xBF\xBD";  // § Ж あ U+FFFD
+  for (const std::string& quoted : {"\"" + desc + "\"", "'" + desc + "'", "\"\"\"" + desc + "\"\"\"",
+                                    "'''" + desc + "'''", "\"\"\"\n" + desc + "\\\n  x\"\"\"",
+                                    "\"\"\"" + desc + "\"\"\"\"", "'''" + desc + "''''"}) {
+    const std::string text = "\xEF\xBB\xBF# " + desc + "\n[scene]\ndescription = " + quoted + "  # " + desc + "\n" + base;
+    INFO(quoted);
+    const Scene sc = parse_scene(text, "u.toml");
+    CHECK(sc.description.find(desc) != std::string::npos);
+  }
+  // Every code point of the blocks toml++ mishandles, inside a basic string: read, not refused.
+  for (char32_t c = 0xA0; c < 0x500; ++c) {
+    const std::string u8{static_cast<char>(0xC0 | (c >> 6)), static_cast<char>(0x80 | (c & 0x3F))};
+    const Scene sc = parse_scene("[scene]\ndescription = \"" + u8 + "\"\n" + base, "u.toml");
+    CHECK(sc.description == u8);
+  }
 }

@@ -232,16 +232,8 @@ Scene scene_from_owned_document(std::shared_ptr<const toml::table> doc, const st
 }  // namespace
 
 Scene parse_scene(std::string_view text, const std::string& source_name) {
-  std::shared_ptr<toml::table> root;
-  try {
-    root = std::make_shared<toml::table>(toml::parse(text, source_name));
-  } catch (const toml::parse_error& e) {
-    std::ostringstream s;
-    s << source_name << ":" << e.source().begin.line << ":" << e.source().begin.column << ": TOML syntax: "
-      << e.description();
-    throw InputError(s.str());
-  }
-  return scene_from_owned_document(std::move(root), source_name);
+  return scene_from_owned_document(std::make_shared<toml::table>(parse_toml_document(text, source_name)),
+                                   source_name);
 }
 
 namespace {
@@ -784,28 +776,7 @@ Scene SceneBuilder::build(const std::string& name) const {
 }
 
 Scene load_scene(const std::filesystem::path& path) {
-  // A scene is a regular file of at most kMaxSceneBytes: never a directory, a device, a FIFO
-  // or a socket (reading /dev/zero or a FIFO would grow or block for ever).
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  const fs::file_status st = fs::status(path, ec);
-  if (ec || !fs::exists(st)) throw InputError("SCENE", path.string(), "no such file");
-  if (fs::is_directory(st)) throw InputError("SCENE", path.string(), "is a directory: give a scene file (.toml)");
-  if (!fs::is_regular_file(st))
-    throw InputError("SCENE", path.string(), "not a regular file (a device, FIFO or socket): give a scene file (.toml)");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError("SCENE", path.string(), "cannot open the scene file");
-  // Read in blocks up to one byte past the limit: a buffer of the limit's size would be
-  // zero-filled page by page on every start (docs/performance.md, "Process start").
-  std::string text;
-  char block[16384];
-  while (text.size() <= kMaxSceneBytes && in.read(block, sizeof block).gcount() > 0) {
-    text.append(block, static_cast<std::size_t>(in.gcount()));
-    if (!in) break;
-  }
-  if (text.size() > kMaxSceneBytes)
-    throw InputError("SCENE", path.string(), "larger than a scene file may be (1 MiB)");
-  Scene sc = parse_scene(text, path.string());
+  Scene sc = parse_scene(read_scene_text(path), path.string());
   sc.source = path;
   return sc;
 }

@@ -47,6 +47,13 @@ scene)  # scene files and --set: names, file kinds, sizes, magnitudes
   expect 2 'SCENE = /dev/urandom: not a regular file' "$np" run /dev/urandom
   mkdir ../fifo && mkfifo ../fifo/f
   expect 2 'SCENE = \.\./fifo/f: not a regular file' timeout 10 "$np" run ../fifo/f
+  expect 2 'SCENE = \.\./fifo/f: not a regular file' timeout 10 "$np" forces ../fifo/f
+  # A non-ASCII character outside strings and comments (toml++ 3.3 must not see it: cxx/scenes/toml_text.cpp).
+  printf '[environment]\nmedium = "air"\nfoo\302\247 = 1\n' > ../non_ascii.toml
+  expect 2 'non_ascii.toml:3:4: TOML syntax: the character U\+00A7 stands outside a string' "$np" forces ../non_ascii.toml
+  sect=$(printf '\302\247')
+  sed "s/^description = .*/description = \"$sect ok\" # $sect/" "$NANOPUSH_SCENES/thesis/fig3_6a.toml" > ../non_ascii_ok.toml
+  "$np" run ../non_ascii_ok.toml --out ../ok.csv --quiet || fail "non-ASCII in a string and a comment refused"
   mkdir ../adir
   expect 2 'SCENE = \.\./adir: is a directory' "$np" run ../adir
   { cat "$NANOPUSH_SCENES/thesis/fig3_6a.toml"; head -c 1100000 /dev/zero | tr '\0' '#'; echo; } > ../big.toml

@@ -172,5 +172,17 @@ Scene parse_scene(std::string_view toml_text, const std::string& source_name = "
 Scene scene_from_document(const toml::table& doc, const std::string& source_name = "<string>");
 /// Load a scene file: a regular file of at most kMaxSceneBytes (InputError otherwise).
 Scene load_scene(const std::filesystem::path& path);
+/// The text of a scene file, with load_scene's checks (a regular file of at most
+/// kMaxSceneBytes; InputError otherwise).
+std::string read_scene_text(const std::filesystem::path& path);
+/// A TOML document (include <toml++/toml.h> to read it): InputError "SOURCE:LINE:COLUMN: TOML
+/// syntax: ..." for a syntax error, or for a character toml++ 3.3 cannot read safely
+/// (check_toml_characters).
+toml::table parse_toml_document(std::string_view toml_text, const std::string& source_name);
+/// Refuses (InputError, naming line and column) a non-ASCII character outside strings and
+/// comments, where TOML allows none, and one that follows a backslash in a multi-line basic
+/// string: where toml++ 3.3 tests for Unicode whitespace, such a character is undefined
+/// behaviour in its lexer (cxx/scenes/toml_text.cpp).
+void check_toml_characters(std::string_view toml_text, const std::string& source_name);
 
 }  // namespace nanopush
