@@ -49,7 +49,7 @@ double true_error(const Scene& sc, Law law, const Trajectory& tr) {
   r.rtol = std::min(kReferenceRtol, tr.rtol / 100);
   r.error_estimate = false;
   r.allow_partial = true;
-  if (r.rtol < 10 * dense_rtol_min<double>()) {
+  if (r.rtol < 10 * rtol_in_eps<double>(kDenseRtolEps)) {
     r.precision = Precision::long_;
     r.rtol = std::max(r.rtol, kLongReferenceRtolMin);
   }

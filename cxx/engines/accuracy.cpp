@@ -22,7 +22,7 @@ double rtol_floor(const ResolvedSettings& s) {
                                                        : std::numeric_limits<double>::epsilon();
   if (s.engine == Engine::f77) return 100 * std::numeric_limits<double>::epsilon();
   switch (s.method) {
-    case Method::dop853: return dop853_rtol_min<double>();
+    case Method::dop853: return rtol_in_eps<double>(kDop853RtolEps);
     case Method::modern: return kDenseRtolEps * eps;
     case Method::cvode: return 1e-13;
     default: return 100 * eps;

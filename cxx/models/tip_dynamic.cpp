@@ -900,9 +900,9 @@ DynamicRunResult run_dynamic(const BarGeometry& g, double muN, const DynamicBar&
   if (samples < 2) throw InputError("solver.samples", std::to_string(samples), "must be >= 2");
   if (!(t_end > 0)) t_end = dynamic_t_end(bar, muN, tip);
   if (!std::isfinite(t_end)) throw InputError("solver.t_end", fmt(t_end), "must be finite (s)");
-  if (!(rtol >= dop853_rtol_min<double>() && rtol <= 1e-2))
+  if (!(rtol >= rtol_in_eps<double>(kDop853RtolEps) && rtol <= 1e-2))
     throw InputError("solver.rtol", fmt(rtol),
-                     "must be in [" + fmt(dop853_rtol_min<double>()) + ", 1e-2] for the dynamic tip push");
+                     "must be in [" + fmt(rtol_in_eps<double>(kDop853RtolEps)) + ", 1e-2] for the dynamic tip push");
 
   return tip.mu > 0 ? run_impl<kFricStateSize>(g, muN, bar, tip, x0, y0, theta0, t_end, samples, rtol)
                     : run_impl<kRoughStateSize>(g, muN, bar, tip, x0, y0, theta0, t_end, samples, rtol);

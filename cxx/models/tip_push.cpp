@@ -395,9 +395,9 @@ TipRunResult run_quasi_static(const BarGeometry& g, double muN, const TipPath& t
   const double t_stop = tip.t_stop();
   if (!(t_end > 0)) t_end = t_stop;
   if (!std::isfinite(t_end)) throw InputError("solver.t_end", fmt(t_end), "must be finite (s)");
-  if (!(rtol >= dop853_rtol_min<double>() && rtol <= 1e-2))
+  if (!(rtol >= rtol_in_eps<double>(kDop853RtolEps) && rtol <= 1e-2))
     throw InputError("solver.rtol", fmt(rtol),
-                     "must be in [" + fmt(dop853_rtol_min<double>()) + ", 1e-2] for the quasi-static push");
+                     "must be in [" + fmt(rtol_in_eps<double>(kDop853RtolEps)) + ", 1e-2] for the quasi-static push");
 
   TipRunResult res;
   std::vector<double> tout(samples);

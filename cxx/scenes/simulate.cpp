@@ -83,15 +83,15 @@ ResolvedSettings resolve_settings(const Scene& scene, const RunSettings& in) {
     const std::string why = extended_precision_obstacle(scene.rough(), s.law, s.engine, s.method);
     if (!why.empty()) throw InputError(pfield, to_string(s.precision), why);
   }
-  if (s.method == Method::dop853 && s.rtol < dop853_rtol_min<double>())
+  if (s.method == Method::dop853 && s.rtol < rtol_in_eps<double>(kDop853RtolEps))
     throw InputError("rtol", fmt(s.rtol),
-                     "must be >= " + fmt_short(dop853_rtol_min<double>()) + " (" + fmt(kDop853RtolEps) +
+                     "must be >= " + fmt_short(rtol_in_eps<double>(kDop853RtolEps)) + " (" + fmt(kDop853RtolEps) +
                          " eps of double) with the dop853 method; use --method faithful, or modern with --precision "
                          "long or quad");
   if (s.method == Method::modern && s.engine == Engine::cxx) {
-    const double floor = s.precision == Precision::quad    ? dense_rtol_min<num::quad>()
-                         : s.precision == Precision::long_ ? dense_rtol_min<long double>()
-                                                           : dense_rtol_min<double>();
+    const double floor = s.precision == Precision::quad    ? rtol_in_eps<num::quad>(kDenseRtolEps)
+                         : s.precision == Precision::long_ ? rtol_in_eps<long double>(kDenseRtolEps)
+                                                           : rtol_in_eps<double>(kDenseRtolEps);
     if (s.rtol < floor)
       throw InputError("rtol", fmt(s.rtol),
                        "must be >= " + fmt_short(floor) + " (" + fmt(kDenseRtolEps) + " eps of " +

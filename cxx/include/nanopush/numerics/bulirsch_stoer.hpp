@@ -38,11 +38,8 @@ namespace nanopush {
 /// The smallest rtol > 0 dense output accepts, in units of the scalar's epsilon: below it the
 /// step's error estimate (the difference of two extrapolated values, each rounded) is mostly
 /// rounding, and the step size shrinks until it underflows (seen in double at rtol 1e-16).
+/// rtol_in_eps<S>(kDenseRtolEps) is that rtol in the scalar S.
 inline constexpr double kDenseRtolEps = 4.0;
-template <typename S>
-double dense_rtol_min() {
-  return rtol_in_eps<S>(kDenseRtolEps);
-}
 
 enum class Extrapolation { rational = 1, polynomial = 2 };
 
@@ -86,10 +83,7 @@ class BulirschStoer : public IntegrateOverloads<BulirschStoer<Scalar, N>, Scalar
   using Vec = StateVec<Scalar, N>;
 
   explicit BulirschStoer(BsOptions<Scalar> opt, int n = N) : opt_(std::move(opt)), n_(n) {
-    if constexpr (N == Dynamic) {
-      const auto sz = static_cast<std::size_t>(n_ > 0 ? n_ : 1);
-      for (Vec* v : {&y_, &f0_, &q_, &atol_, &f1_}) v->assign(sz, Scalar(0));
-    }
+    size_states(n_, y_, f0_, q_, atol_, f1_);
     tableau_.allocate(n_);
     midpoint_.allocate(n_);
     seq_ = &bs::sequence_tables<Scalar>(opt_.dense);  // built once per process
@@ -563,7 +557,7 @@ class BulirschStoer : public IntegrateOverloads<BulirschStoer<Scalar, N>, Scalar
     if (opt_.dense && !(opt_.dense_accept > 0 && opt_.dense_accept <= 1e6))
       return "dense_accept = " + fmt_g(opt_.dense_accept) + " must be in (0, 1e6]";
     if (opt_.dense && opt_.rtol > 0) {
-      const double floor = dense_rtol_min<Scalar>();
+      const double floor = rtol_in_eps<Scalar>(kDenseRtolEps);
       if (static_cast<double>(opt_.rtol) < floor)
         return "rtol = " + fmt_g(static_cast<double>(opt_.rtol)) + " is below " + fmt_g(floor) + " (" +
                fmt_g(kDenseRtolEps) + " eps of " + num::name<Scalar>() +

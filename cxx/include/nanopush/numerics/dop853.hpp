@@ -36,11 +36,8 @@ namespace nanopush {
 /// The smallest rtol dop853 accepts, in units of the scalar's epsilon (Hairer's dop853:
 /// "tolerances are too small" below 10 uround): below it the difference of the embedded
 /// solutions is rounding, and the step size follows it.
+/// rtol_in_eps<S>(kDop853RtolEps) is that rtol in the scalar S.
 inline constexpr double kDop853RtolEps = 10.0;
-template <typename S>
-double dop853_rtol_min() {
-  return rtol_in_eps<S>(kDop853RtolEps);
-}
 
 template <typename Scalar>
 struct Dop853Options {
@@ -82,177 +79,44 @@ namespace dop853_tableau {
 // Nodes c_i, coupling a_ij, weights b_i (order 8), the error estimators of orders 5 (er_i)
 // and 3 (b_i - bhh_i on stages 1, 9, 12), the three dense-output stages 14-16 and the
 // dense-output coefficients d_{r,i} (r = 4..7). Stage numbers as in the book (1-based):
-// stage 13 is f(t + h, y_new), the next step's stage 1. Zero entries are left out.
+// stage 13 is f(t + h, y_new), the next step's stage 1. Zero entries are left out. One
+// declaration a row of the tableau (a stage's a_ij, the b_i, ...), as the book prints it.
 template <class S>
 struct T {
-  static constexpr S c2 = S(0.526001519587677318785587544488e-01L);
-  static constexpr S c3 = S(0.789002279381515978178381316732e-01L);
-  static constexpr S c4 = S(0.118350341907227396726757197510e+00L);
-  static constexpr S c5 = S(0.281649658092772603273242802490e+00L);
-  static constexpr S c6 = S(0.333333333333333333333333333333e+00L);
-  static constexpr S c7 = S(0.25e+00L);
-  static constexpr S c8 = S(0.307692307692307692307692307692e+00L);
-  static constexpr S c9 = S(0.651282051282051282051282051282e+00L);
-  static constexpr S c10 = S(0.6e+00L);
-  static constexpr S c11 = S(0.857142857142857142857142857142e+00L);
-  static constexpr S c14 = S(0.1e+00L);
-  static constexpr S c15 = S(0.2e+00L);
-  static constexpr S c16 = S(0.777777777777777777777777777778e+00L);
+  static constexpr S c2 = S(0.526001519587677318785587544488e-01L), c3 = S(0.789002279381515978178381316732e-01L), c4 = S(0.118350341907227396726757197510e+00L), c5 = S(0.281649658092772603273242802490e+00L), c6 = S(0.333333333333333333333333333333e+00L), c7 = S(0.25e+00L), c8 = S(0.307692307692307692307692307692e+00L), c9 = S(0.651282051282051282051282051282e+00L), c10 = S(0.6e+00L), c11 = S(0.857142857142857142857142857142e+00L);
+  static constexpr S c14 = S(0.1e+00L), c15 = S(0.2e+00L), c16 = S(0.777777777777777777777777777778e+00L);
 
   static constexpr S a21 = S(5.26001519587677318785587544488e-2L);
-  static constexpr S a31 = S(1.97250569845378994544595329183e-2L);
-  static constexpr S a32 = S(5.91751709536136983633785987549e-2L);
-  static constexpr S a41 = S(2.95875854768068491816892993775e-2L);
-  static constexpr S a43 = S(8.87627564304205475450678981324e-2L);
-  static constexpr S a51 = S(2.41365134159266685502369798665e-1L);
-  static constexpr S a53 = S(-8.84549479328286085344864962717e-1L);
-  static constexpr S a54 = S(9.24834003261792003115737966543e-1L);
-  static constexpr S a61 = S(3.7037037037037037037037037037e-2L);
-  static constexpr S a64 = S(1.70828608729473871279604482173e-1L);
-  static constexpr S a65 = S(1.25467687566822425016691814123e-1L);
-  static constexpr S a71 = S(3.7109375e-2L);
-  static constexpr S a74 = S(1.70252211019544039314978060272e-1L);
-  static constexpr S a75 = S(6.02165389804559606850219397283e-2L);
-  static constexpr S a76 = S(-1.7578125e-2L);
-  static constexpr S a81 = S(3.70920001185047927108779319836e-2L);
-  static constexpr S a84 = S(1.70383925712239993810214054705e-1L);
-  static constexpr S a85 = S(1.07262030446373284651809199168e-1L);
-  static constexpr S a86 = S(-1.53194377486244017527936158236e-2L);
-  static constexpr S a87 = S(8.27378916381402288758473766002e-3L);
-  static constexpr S a91 = S(6.24110958716075717114429577812e-1L);
-  static constexpr S a94 = S(-3.36089262944694129406857109825e+0L);
-  static constexpr S a95 = S(-8.68219346841726006818189891453e-1L);
-  static constexpr S a96 = S(2.75920996994467083049415600797e+1L);
-  static constexpr S a97 = S(2.01540675504778934086186788979e+1L);
-  static constexpr S a98 = S(-4.34898841810699588477366255144e+1L);
-  static constexpr S a101 = S(4.77662536438264365890433908527e-1L);
-  static constexpr S a104 = S(-2.48811461997166764192642586468e+0L);
-  static constexpr S a105 = S(-5.90290826836842996371446475743e-1L);
-  static constexpr S a106 = S(2.12300514481811942347288949897e+1L);
-  static constexpr S a107 = S(1.52792336328824235832596922938e+1L);
-  static constexpr S a108 = S(-3.32882109689848629194453265587e+1L);
-  static constexpr S a109 = S(-2.03312017085086261358222928593e-2L);
-  static constexpr S a111 = S(-9.3714243008598732571704021658e-1L);
-  static constexpr S a114 = S(5.18637242884406370830023853209e+0L);
-  static constexpr S a115 = S(1.09143734899672957818500254654e+0L);
-  static constexpr S a116 = S(-8.14978701074692612513997267357e+0L);
-  static constexpr S a117 = S(-1.85200656599969598641566180701e+1L);
-  static constexpr S a118 = S(2.27394870993505042818970056734e+1L);
-  static constexpr S a119 = S(2.49360555267965238987089396762e+0L);
-  static constexpr S a1110 = S(-3.0467644718982195003823669022e+0L);
-  static constexpr S a121 = S(2.27331014751653820792359768449e+0L);
-  static constexpr S a124 = S(-1.05344954667372501984066689879e+1L);
-  static constexpr S a125 = S(-2.00087205822486249909675718444e+0L);
-  static constexpr S a126 = S(-1.79589318631187989172765950534e+1L);
-  static constexpr S a127 = S(2.79488845294199600508499808837e+1L);
-  static constexpr S a128 = S(-2.85899827713502369474065508674e+0L);
-  static constexpr S a129 = S(-8.87285693353062954433549289258e+0L);
-  static constexpr S a1210 = S(1.23605671757943030647266201528e+1L);
-  static constexpr S a1211 = S(6.43392746015763530355970484046e-1L);
+  static constexpr S a31 = S(1.97250569845378994544595329183e-2L), a32 = S(5.91751709536136983633785987549e-2L);
+  static constexpr S a41 = S(2.95875854768068491816892993775e-2L), a43 = S(8.87627564304205475450678981324e-2L);
+  static constexpr S a51 = S(2.41365134159266685502369798665e-1L), a53 = S(-8.84549479328286085344864962717e-1L), a54 = S(9.24834003261792003115737966543e-1L);
+  static constexpr S a61 = S(3.7037037037037037037037037037e-2L), a64 = S(1.70828608729473871279604482173e-1L), a65 = S(1.25467687566822425016691814123e-1L);
+  static constexpr S a71 = S(3.7109375e-2L), a74 = S(1.70252211019544039314978060272e-1L), a75 = S(6.02165389804559606850219397283e-2L), a76 = S(-1.7578125e-2L);
+  static constexpr S a81 = S(3.70920001185047927108779319836e-2L), a84 = S(1.70383925712239993810214054705e-1L), a85 = S(1.07262030446373284651809199168e-1L), a86 = S(-1.53194377486244017527936158236e-2L), a87 = S(8.27378916381402288758473766002e-3L);
+  static constexpr S a91 = S(6.24110958716075717114429577812e-1L), a94 = S(-3.36089262944694129406857109825e+0L), a95 = S(-8.68219346841726006818189891453e-1L), a96 = S(2.75920996994467083049415600797e+1L), a97 = S(2.01540675504778934086186788979e+1L), a98 = S(-4.34898841810699588477366255144e+1L);
+  static constexpr S a101 = S(4.77662536438264365890433908527e-1L), a104 = S(-2.48811461997166764192642586468e+0L), a105 = S(-5.90290826836842996371446475743e-1L), a106 = S(2.12300514481811942347288949897e+1L), a107 = S(1.52792336328824235832596922938e+1L), a108 = S(-3.32882109689848629194453265587e+1L), a109 = S(-2.03312017085086261358222928593e-2L);
+  static constexpr S a111 = S(-9.3714243008598732571704021658e-1L), a114 = S(5.18637242884406370830023853209e+0L), a115 = S(1.09143734899672957818500254654e+0L), a116 = S(-8.14978701074692612513997267357e+0L), a117 = S(-1.85200656599969598641566180701e+1L), a118 = S(2.27394870993505042818970056734e+1L), a119 = S(2.49360555267965238987089396762e+0L), a1110 = S(-3.0467644718982195003823669022e+0L);
+  static constexpr S a121 = S(2.27331014751653820792359768449e+0L), a124 = S(-1.05344954667372501984066689879e+1L), a125 = S(-2.00087205822486249909675718444e+0L), a126 = S(-1.79589318631187989172765950534e+1L), a127 = S(2.79488845294199600508499808837e+1L), a128 = S(-2.85899827713502369474065508674e+0L), a129 = S(-8.87285693353062954433549289258e+0L), a1210 = S(1.23605671757943030647266201528e+1L), a1211 = S(6.43392746015763530355970484046e-1L);
 
   // Weights of the order-8 solution (stages 1, 6..12).
-  static constexpr S b1 = S(5.42937341165687622380535766363e-2L);
-  static constexpr S b6 = S(4.45031289275240888144113950566e+0L);
-  static constexpr S b7 = S(1.89151789931450038304281599044e+0L);
-  static constexpr S b8 = S(-5.8012039600105847814672114227e+0L);
-  static constexpr S b9 = S(3.1116436695781989440891606237e-1L);
-  static constexpr S b10 = S(-1.52160949662516078556178806805e-1L);
-  static constexpr S b11 = S(2.01365400804030348374776537501e-1L);
-  static constexpr S b12 = S(4.47106157277725905176885569043e-2L);
+  static constexpr S b1 = S(5.42937341165687622380535766363e-2L), b6 = S(4.45031289275240888144113950566e+0L), b7 = S(1.89151789931450038304281599044e+0L), b8 = S(-5.8012039600105847814672114227e+0L), b9 = S(3.1116436695781989440891606237e-1L), b10 = S(-1.52160949662516078556178806805e-1L), b11 = S(2.01365400804030348374776537501e-1L), b12 = S(4.47106157277725905176885569043e-2L);
 
   // The order-3 estimator: sum b_i k_i - bhh1 k1 - bhh2 k9 - bhh3 k12.
-  static constexpr S bhh1 = S(0.244094488188976377952755905512e+00L);
-  static constexpr S bhh2 = S(0.733846688281611857341361741547e+00L);
-  static constexpr S bhh3 = S(0.220588235294117647058823529412e-01L);
+  static constexpr S bhh1 = S(0.244094488188976377952755905512e+00L), bhh2 = S(0.733846688281611857341361741547e+00L), bhh3 = S(0.220588235294117647058823529412e-01L);
 
   // The order-5 estimator (difference of the order-8 and an order-5 solution).
-  static constexpr S er1 = S(0.1312004499419488073250102996e-01L);
-  static constexpr S er6 = S(-0.1225156446376204440720569753e+01L);
-  static constexpr S er7 = S(-0.4957589496572501915214079952e+00L);
-  static constexpr S er8 = S(0.1664377182454986536961530415e+01L);
-  static constexpr S er9 = S(-0.3503288487499736816886487290e+00L);
-  static constexpr S er10 = S(0.3341791187130174790297318841e+00L);
-  static constexpr S er11 = S(0.8192320648511571246570742613e-01L);
-  static constexpr S er12 = S(-0.2235530786388629525884427845e-01L);
+  static constexpr S er1 = S(0.1312004499419488073250102996e-01L), er6 = S(-0.1225156446376204440720569753e+01L), er7 = S(-0.4957589496572501915214079952e+00L), er8 = S(0.1664377182454986536961530415e+01L), er9 = S(-0.3503288487499736816886487290e+00L), er10 = S(0.3341791187130174790297318841e+00L), er11 = S(0.8192320648511571246570742613e-01L), er12 = S(-0.2235530786388629525884427845e-01L);
 
   // Dense-output stages 14 (c = 0.1), 15 (0.2), 16 (7/9).
-  static constexpr S a141 = S(5.61675022830479523392909219681e-2L);
-  static constexpr S a147 = S(2.53500210216624811088794765333e-1L);
-  static constexpr S a148 = S(-2.46239037470802489917441475441e-1L);
-  static constexpr S a149 = S(-1.24191423263816360469010140626e-1L);
-  static constexpr S a1410 = S(1.5329179827876569731206322685e-1L);
-  static constexpr S a1411 = S(8.20105229563468988491666602057e-3L);
-  static constexpr S a1412 = S(7.56789766054569976138603589584e-3L);
-  static constexpr S a1413 = S(-8.298e-3L);
-  static constexpr S a151 = S(3.18346481635021405060768473261e-2L);
-  static constexpr S a156 = S(2.83009096723667755288322961402e-2L);
-  static constexpr S a157 = S(5.35419883074385676223797384372e-2L);
-  static constexpr S a158 = S(-5.49237485713909884646569340306e-2L);
-  static constexpr S a1511 = S(-1.08347328697249322858509316994e-4L);
-  static constexpr S a1512 = S(3.82571090835658412954920192323e-4L);
-  static constexpr S a1513 = S(-3.40465008687404560802977114492e-4L);
-  static constexpr S a1514 = S(1.41312443674632500278074618366e-1L);
-  static constexpr S a161 = S(-4.28896301583791923408573538692e-1L);
-  static constexpr S a166 = S(-4.69762141536116384314449447206e+0L);
-  static constexpr S a167 = S(7.68342119606259904184240953878e+0L);
-  static constexpr S a168 = S(4.06898981839711007970213554331e+0L);
-  static constexpr S a169 = S(3.56727187455281109270669543021e-1L);
-  static constexpr S a1613 = S(-1.39902416515901462129418009734e-3L);
-  static constexpr S a1614 = S(2.9475147891527723389556272149e+0L);
-  static constexpr S a1615 = S(-9.15095847217987001081870187138e+0L);
+  static constexpr S a141 = S(5.61675022830479523392909219681e-2L), a147 = S(2.53500210216624811088794765333e-1L), a148 = S(-2.46239037470802489917441475441e-1L), a149 = S(-1.24191423263816360469010140626e-1L), a1410 = S(1.5329179827876569731206322685e-1L), a1411 = S(8.20105229563468988491666602057e-3L), a1412 = S(7.56789766054569976138603589584e-3L), a1413 = S(-8.298e-3L);
+  static constexpr S a151 = S(3.18346481635021405060768473261e-2L), a156 = S(2.83009096723667755288322961402e-2L), a157 = S(5.35419883074385676223797384372e-2L), a158 = S(-5.49237485713909884646569340306e-2L), a1511 = S(-1.08347328697249322858509316994e-4L), a1512 = S(3.82571090835658412954920192323e-4L), a1513 = S(-3.40465008687404560802977114492e-4L), a1514 = S(1.41312443674632500278074618366e-1L);
+  static constexpr S a161 = S(-4.28896301583791923408573538692e-1L), a166 = S(-4.69762141536116384314449447206e+0L), a167 = S(7.68342119606259904184240953878e+0L), a168 = S(4.06898981839711007970213554331e+0L), a169 = S(3.56727187455281109270669543021e-1L), a1613 = S(-1.39902416515901462129418009734e-3L), a1614 = S(2.9475147891527723389556272149e+0L), a1615 = S(-9.15095847217987001081870187138e+0L);
 
   // Dense output: d_{r,i}, r = 4..7, on stages 1, 6..16.
-  static constexpr S d41 = S(-0.84289382761090128651353491142e+01L);
-  static constexpr S d46 = S(0.56671495351937776962531783590e+00L);
-  static constexpr S d47 = S(-0.30689499459498916912797304727e+01L);
-  static constexpr S d48 = S(0.23846676565120698287728149680e+01L);
-  static constexpr S d49 = S(0.21170345824450282767155149946e+01L);
-  static constexpr S d410 = S(-0.87139158377797299206789907490e+00L);
-  static constexpr S d411 = S(0.22404374302607882758541771650e+01L);
-  static constexpr S d412 = S(0.63157877876946881815570249290e+00L);
-  static constexpr S d413 = S(-0.88990336451333310820698117400e-01L);
-  static constexpr S d414 = S(0.18148505520854727256656404962e+02L);
-  static constexpr S d415 = S(-0.91946323924783554000451984436e+01L);
-  static constexpr S d416 = S(-0.44360363875948939664310572000e+01L);
-
-  static constexpr S d51 = S(0.10427508642579134603413151009e+02L);
-  static constexpr S d56 = S(0.24228349177525818288430175319e+03L);
-  static constexpr S d57 = S(0.16520045171727028198505394887e+03L);
-  static constexpr S d58 = S(-0.37454675472269020279518312152e+03L);
-  static constexpr S d59 = S(-0.22113666853125306036270938578e+02L);
-  static constexpr S d510 = S(0.77334326684722638389603898808e+01L);
-  static constexpr S d511 = S(-0.30674084731089398182061213626e+02L);
-  static constexpr S d512 = S(-0.93321305264302278729567221706e+01L);
-  static constexpr S d513 = S(0.15697238121770843886131091075e+02L);
-  static constexpr S d514 = S(-0.31139403219565177677282850411e+02L);
-  static constexpr S d515 = S(-0.93529243588444783865713862664e+01L);
-  static constexpr S d516 = S(0.35816841486394083752465898540e+02L);
-
-  static constexpr S d61 = S(0.19985053242002433820987653617e+02L);
-  static constexpr S d66 = S(-0.38703730874935176555105901742e+03L);
-  static constexpr S d67 = S(-0.18917813819516756882830838328e+03L);
-  static constexpr S d68 = S(0.52780815920542364900561016686e+03L);
-  static constexpr S d69 = S(-0.11573902539959630126141871134e+02L);
-  static constexpr S d610 = S(0.68812326946963000169666922661e+01L);
-  static constexpr S d611 = S(-0.10006050966910838403183860980e+01L);
-  static constexpr S d612 = S(0.77771377980534432092869265740e+00L);
-  static constexpr S d613 = S(-0.27782057523535084065932004339e+01L);
-  static constexpr S d614 = S(-0.60196695231264120758267380846e+02L);
-  static constexpr S d615 = S(0.84320405506677161018159903784e+02L);
-  static constexpr S d616 = S(0.11992291136182789328035130030e+02L);
-
-  static constexpr S d71 = S(-0.25693933462703749003312586129e+02L);
-  static constexpr S d76 = S(-0.15418974869023643374053993627e+03L);
-  static constexpr S d77 = S(-0.23152937917604549567536039109e+03L);
-  static constexpr S d78 = S(0.35763911791061412378285349910e+03L);
-  static constexpr S d79 = S(0.93405324183624310003907691704e+02L);
-  static constexpr S d710 = S(-0.37458323136451633156875139351e+02L);
-  static constexpr S d711 = S(0.10409964950896230045147246184e+03L);
-  static constexpr S d712 = S(0.29840293426660503123344363579e+02L);
-  static constexpr S d713 = S(-0.43533456590011143754432175058e+02L);
-  static constexpr S d714 = S(0.96324553959188282948394950600e+02L);
-  static constexpr S d715 = S(-0.39177261675615439165231486172e+02L);
-  static constexpr S d716 = S(-0.14972683625798562581422125276e+03L);
+  static constexpr S d41 = S(-0.84289382761090128651353491142e+01L), d46 = S(0.56671495351937776962531783590e+00L), d47 = S(-0.30689499459498916912797304727e+01L), d48 = S(0.23846676565120698287728149680e+01L), d49 = S(0.21170345824450282767155149946e+01L), d410 = S(-0.87139158377797299206789907490e+00L), d411 = S(0.22404374302607882758541771650e+01L), d412 = S(0.63157877876946881815570249290e+00L), d413 = S(-0.88990336451333310820698117400e-01L), d414 = S(0.18148505520854727256656404962e+02L), d415 = S(-0.91946323924783554000451984436e+01L), d416 = S(-0.44360363875948939664310572000e+01L);
+  static constexpr S d51 = S(0.10427508642579134603413151009e+02L), d56 = S(0.24228349177525818288430175319e+03L), d57 = S(0.16520045171727028198505394887e+03L), d58 = S(-0.37454675472269020279518312152e+03L), d59 = S(-0.22113666853125306036270938578e+02L), d510 = S(0.77334326684722638389603898808e+01L), d511 = S(-0.30674084731089398182061213626e+02L), d512 = S(-0.93321305264302278729567221706e+01L), d513 = S(0.15697238121770843886131091075e+02L), d514 = S(-0.31139403219565177677282850411e+02L), d515 = S(-0.93529243588444783865713862664e+01L), d516 = S(0.35816841486394083752465898540e+02L);
+  static constexpr S d61 = S(0.19985053242002433820987653617e+02L), d66 = S(-0.38703730874935176555105901742e+03L), d67 = S(-0.18917813819516756882830838328e+03L), d68 = S(0.52780815920542364900561016686e+03L), d69 = S(-0.11573902539959630126141871134e+02L), d610 = S(0.68812326946963000169666922661e+01L), d611 = S(-0.10006050966910838403183860980e+01L), d612 = S(0.77771377980534432092869265740e+00L), d613 = S(-0.27782057523535084065932004339e+01L), d614 = S(-0.60196695231264120758267380846e+02L), d615 = S(0.84320405506677161018159903784e+02L), d616 = S(0.11992291136182789328035130030e+02L);
+  static constexpr S d71 = S(-0.25693933462703749003312586129e+02L), d76 = S(-0.15418974869023643374053993627e+03L), d77 = S(-0.23152937917604549567536039109e+03L), d78 = S(0.35763911791061412378285349910e+03L), d79 = S(0.93405324183624310003907691704e+02L), d710 = S(-0.37458323136451633156875139351e+02L), d711 = S(0.10409964950896230045147246184e+03L), d712 = S(0.29840293426660503123344363579e+02L), d713 = S(-0.43533456590011143754432175058e+02L), d714 = S(0.96324553959188282948394950600e+02L), d715 = S(-0.39177261675615439165231486172e+02L), d716 = S(-0.14972683625798562581422125276e+03L);
 };
 }  // namespace dop853_tableau
 
@@ -262,12 +126,9 @@ class Dop853 : public IntegrateOverloads<Dop853<Scalar, N>, Scalar, Dop853Result
   using Vec = StateVec<Scalar, N>;
 
   explicit Dop853(Dop853Options<Scalar> opt, int n = N) : opt_(std::move(opt)), n_(n) {
-    if constexpr (N == Dynamic) {
-      const auto sz = static_cast<std::size_t>(n_ > 0 ? n_ : 1);
-      for (Vec& v : k_) v.assign(sz, Scalar(0));
-      for (Vec& v : cont_) v.assign(sz, Scalar(0));
-      for (Vec* v : {&y_, &ynew_, &ys_, &atol_}) v->assign(sz, Scalar(0));
-    }
+    for (Vec& v : k_) size_states(n_, v);
+    for (Vec& v : cont_) size_states(n_, v);
+    size_states(n_, y_, ynew_, ys_, atol_);
   }
 
   [[nodiscard]] int size() const { return n_; }
@@ -334,19 +195,7 @@ class Dop853 : public IntegrateOverloads<Dop853<Scalar, N>, Scalar, Dop853Result
     double facold = 1e-4;
     bool reject = false, last = false;
     int nonfinite_run = 0;
-    Vec& k1 = k_[0];
-    Vec& k2 = k_[1];
-    Vec& k3 = k_[2];
-    Vec& k4 = k_[3];
-    Vec& k5 = k_[4];
-    Vec& k6 = k_[5];
-    Vec& k7 = k_[6];
-    Vec& k8 = k_[7];
-    Vec& k9 = k_[8];
-    Vec& k10 = k_[9];
-    Vec& k11 = k_[10];
-    Vec& k12 = k_[11];
-    Vec& k13 = k_[12];
+    auto& [k1, k2, k3, k4, k5, k6, k7, k8, k9, k10, k11, k12, k13, k14, k15, k16] = k_;  // stages 1..16
     const Scalar* ys = &ys_[0];
 
     for (;;) {
@@ -517,7 +366,7 @@ class Dop853 : public IntegrateOverloads<Dop853<Scalar, N>, Scalar, Dop853Result
     if constexpr (N != Dynamic)
       if (n_ != N) return "n = " + std::to_string(n_) + " does not match the compile-time dimension " + std::to_string(N);
     const double rtol = static_cast<double>(opt_.rtol);
-    const double floor = dop853_rtol_min<Scalar>();
+    const double floor = rtol_in_eps<Scalar>(kDop853RtolEps);
     if (!(num::isfinite(opt_.rtol) && rtol >= floor && rtol < 1))
       return "rtol = " + fmt_g(rtol) + " must be in [" + fmt_g(floor) + ", 1) (" + fmt_g(kDop853RtolEps) +
              " eps of " + num::name<Scalar>() + " and above)";
@@ -587,9 +436,7 @@ class Dop853 : public IntegrateOverloads<Dop853<Scalar, N>, Scalar, Dop853Result
   bool build_dense(Rhs& rhs, Scalar t, Scalar h, Dop853Result& res) {
     using Tb = dop853_tableau::T<Scalar>;
     const int n = (N == Dynamic) ? n_ : N;
-    const Vec &k1 = k_[0], &k6 = k_[5], &k7 = k_[6], &k8 = k_[7], &k9 = k_[8], &k10 = k_[9], &k11 = k_[10],
-              &k12 = k_[11], &k13 = k_[12];
-    Vec &k14 = k_[13], &k15 = k_[14], &k16 = k_[15];
+    auto& [k1, k2, k3, k4, k5, k6, k7, k8, k9, k10, k11, k12, k13, k14, k15, k16] = k_;
     const Scalar* ys = &ys_[0];
     for (int i = 0; i < n; ++i)
       ys_[i] = y_[i] + h * (Tb::a141 * k1[i] + Tb::a147 * k7[i] + Tb::a148 * k8[i] + Tb::a149 * k9[i] +
@@ -604,6 +451,11 @@ class Dop853 : public IntegrateOverloads<Dop853<Scalar, N>, Scalar, Dop853Result
                             Tb::a169 * k9[i] + Tb::a1613 * k13[i] + Tb::a1614 * k14[i] + Tb::a1615 * k15[i]);
     if (!eval_at(rhs, t + Tb::c16 * h, ys, k16, res)) return false;
     ++res.ndense;
+    // h times a row d_r of the dense-output coefficients on stages 1, 6..16, at component i.
+    auto dense_row = [&](int i, const std::array<Scalar, 12>& d) {
+      return h * (d[0] * k1[i] + d[1] * k6[i] + d[2] * k7[i] + d[3] * k8[i] + d[4] * k9[i] + d[5] * k10[i] +
+                  d[6] * k11[i] + d[7] * k12[i] + d[8] * k13[i] + d[9] * k14[i] + d[10] * k15[i] + d[11] * k16[i]);
+    };
     for (int i = 0; i < n; ++i) {
       const Scalar ydiff = ynew_[i] - y_[i];
       const Scalar bspl = h * k1[i] - ydiff;
@@ -611,18 +463,10 @@ class Dop853 : public IntegrateOverloads<Dop853<Scalar, N>, Scalar, Dop853Result
       cont_[1][i] = ydiff;
       cont_[2][i] = bspl;
       cont_[3][i] = ydiff - h * k13[i] - bspl;
-      cont_[4][i] = h * (Tb::d41 * k1[i] + Tb::d46 * k6[i] + Tb::d47 * k7[i] + Tb::d48 * k8[i] + Tb::d49 * k9[i] +
-                         Tb::d410 * k10[i] + Tb::d411 * k11[i] + Tb::d412 * k12[i] + Tb::d413 * k13[i] +
-                         Tb::d414 * k14[i] + Tb::d415 * k15[i] + Tb::d416 * k16[i]);
-      cont_[5][i] = h * (Tb::d51 * k1[i] + Tb::d56 * k6[i] + Tb::d57 * k7[i] + Tb::d58 * k8[i] + Tb::d59 * k9[i] +
-                         Tb::d510 * k10[i] + Tb::d511 * k11[i] + Tb::d512 * k12[i] + Tb::d513 * k13[i] +
-                         Tb::d514 * k14[i] + Tb::d515 * k15[i] + Tb::d516 * k16[i]);
-      cont_[6][i] = h * (Tb::d61 * k1[i] + Tb::d66 * k6[i] + Tb::d67 * k7[i] + Tb::d68 * k8[i] + Tb::d69 * k9[i] +
-                         Tb::d610 * k10[i] + Tb::d611 * k11[i] + Tb::d612 * k12[i] + Tb::d613 * k13[i] +
-                         Tb::d614 * k14[i] + Tb::d615 * k15[i] + Tb::d616 * k16[i]);
-      cont_[7][i] = h * (Tb::d71 * k1[i] + Tb::d76 * k6[i] + Tb::d77 * k7[i] + Tb::d78 * k8[i] + Tb::d79 * k9[i] +
-                         Tb::d710 * k10[i] + Tb::d711 * k11[i] + Tb::d712 * k12[i] + Tb::d713 * k13[i] +
-                         Tb::d714 * k14[i] + Tb::d715 * k15[i] + Tb::d716 * k16[i]);
+      cont_[4][i] = dense_row(i, {Tb::d41, Tb::d46, Tb::d47, Tb::d48, Tb::d49, Tb::d410, Tb::d411, Tb::d412, Tb::d413, Tb::d414, Tb::d415, Tb::d416});
+      cont_[5][i] = dense_row(i, {Tb::d51, Tb::d56, Tb::d57, Tb::d58, Tb::d59, Tb::d510, Tb::d511, Tb::d512, Tb::d513, Tb::d514, Tb::d515, Tb::d516});
+      cont_[6][i] = dense_row(i, {Tb::d61, Tb::d66, Tb::d67, Tb::d68, Tb::d69, Tb::d610, Tb::d611, Tb::d612, Tb::d613, Tb::d614, Tb::d615, Tb::d616});
+      cont_[7][i] = dense_row(i, {Tb::d71, Tb::d76, Tb::d77, Tb::d78, Tb::d79, Tb::d710, Tb::d711, Tb::d712, Tb::d713, Tb::d714, Tb::d715, Tb::d716});
     }
     return true;
   }

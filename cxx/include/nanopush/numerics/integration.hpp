@@ -43,6 +43,18 @@ inline constexpr int Dynamic = -1;
 template <typename Scalar, int N>
 using StateVec = std::conditional_t<N == Dynamic, std::vector<Scalar>, std::array<Scalar, (N > 0 ? N : 1)>>;
 
+/// Size work vectors for n components (at least one), zeroed: a std::vector (N = Dynamic) is
+/// allocated here, once; a std::array (a compile-time N) has its size already and is left as is.
+template <typename... Vecs>
+void size_states(int n, Vecs&... vs) {
+  const auto sz = static_cast<std::size_t>(n > 0 ? n : 1);
+  auto size_one = [sz](auto& v) {
+    using Scalar = typename std::remove_reference_t<decltype(v)>::value_type;
+    if constexpr (requires { v.assign(sz, Scalar(0)); }) v.assign(sz, Scalar(0));
+  };
+  (size_one(vs), ...);
+}
+
 /// An rtol of `eps_units` epsilons of the scalar S: how an integrator states the smallest rtol
 /// it accepts (below it its error estimate is mostly rounding).
 template <typename S>

@@ -15,16 +15,12 @@ namespace nanopush::bs {
 template <typename Scalar, int N>
 class ExtrapolationTableau {
  public:
-  using Vec = StateVec<Scalar, N>;
-  using Row = std::array<Vec, kKmaxLimit + 2>;  ///< columns 1..kmax
+  using Row = std::array<StateVec<Scalar, N>, kKmaxLimit + 2>;  ///< columns 1..kmax
 
   /// Dynamic dimension: size every column for n components (once, at construction).
   void allocate(int n) {
-    if constexpr (N == Dynamic) {
-      const auto sz = static_cast<std::size_t>(n > 0 ? n : 1);
-      for (auto& half : tab_)
-        for (auto& row : half) row.assign(sz, Scalar(0));
-    }
+    for (auto& half : tab_)
+      for (auto& column : half) size_states(n, column);
   }
 
   Row& cur() { return tab_[static_cast<std::size_t>(icur_)]; }

@@ -22,11 +22,8 @@ class GraggMidpoint {
   /// Work space for n components, allocated once.
   void allocate(int n) {
     n_ = n;
-    if constexpr (N == Dynamic) {
-      const auto sz = static_cast<std::size_t>(n_ > 0 ? n_ : 1);
-      for (Vec* v : {&zm_, &z_, &fz_}) v->assign(sz, Scalar(0));
-      for (auto& row : held_) row.assign(sz, Scalar(0));
-    }
+    size_states(n_, zm_, z_, fz_);
+    for (auto& row : held_) size_states(n_, row);
     zg_.assign(static_cast<std::size_t>(3 * kL) * static_cast<std::size_t>(n_ > 0 ? n_ : 1), Scalar(0));
   }
 
