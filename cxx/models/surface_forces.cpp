@@ -252,9 +252,13 @@ double derjaguin_adhesion_force(double Reff, double W) {
 }
 
 namespace {
-void check_contact(double R, double Estar, double W) {
-  require_positive("effective radius R", R, "m");
+/// The elastic contact's radius (`radius`: how the model names R) and effective modulus.
+void check_elastic(const char* radius, double R, double Estar) {
+  require_positive(radius, R, "m");
   require_positive("effective modulus E*", Estar, "Pa");
+}
+void check_contact(double R, double Estar, double W) {
+  check_elastic("effective radius R", R, Estar);
   require_nonnegative("work of adhesion W", W, "J/m^2");
 }
 }  // namespace
@@ -311,8 +315,7 @@ double jkr_load_for_radius(double R, double Estar, double W, double a) {
 
 double hertz_contact_radius(double R, double Estar, double F) {
   count(Model::hertz);
-  require_positive("effective radius R", R, "m");
-  require_positive("effective modulus E*", Estar, "Pa");
+  check_elastic("effective radius R", R, Estar);
   require_nonnegative("load F", F, "N");
   return std::cbrt(3.0 * F * R / (4.0 * Estar));
 }
@@ -329,8 +332,7 @@ double hertz_pressure(double R, double Estar, double F, double x) {
 
 double hertz_line_half_width(double R, double Estar, double p) {
   count(Model::hertz);
-  require_positive("radius R", R, "m");
-  require_positive("effective modulus E*", Estar, "Pa");
+  check_elastic("radius R", R, Estar);
   require_nonnegative("load per length p", p, "N/m");
   return std::sqrt(4.0 * p * R / (kPi * Estar));
 }
@@ -373,8 +375,7 @@ double jkr_line_half_width(double R, double Estar, double W, double p) {
 }
 double jkr_line_thesis_work_of_adhesion(double R, double Estar, double b, double l, double P) {
   count(Model::jkr_line);
-  require_positive("radius R", R, "m");
-  require_positive("effective modulus E*", Estar, "Pa");
+  check_elastic("radius R", R, Estar);
   require_positive("half-width b", b, "m");
   require_positive("half-length l", l, "m");
   require_finite("load P", P, "N");

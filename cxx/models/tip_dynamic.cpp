@@ -327,7 +327,7 @@ DynamicRunResult run_impl(const BarGeometry& g, double muN, const DynamicBar& ba
   {
     const Eval e0 = spring_at(0.0, y.data());
     if (e0.sc.delta > 1e-9 * L)
-      throw InputError("tip.start", "[" + fmt(tip.start_x) + ", " + fmt(tip.start_y) + "]",
+      throw InputError("tip.start", fmt_point(tip.start_x, tip.start_y),
                        "the tip (radius " + fmt(r) + " m) overlaps the bar at t = 0 by " + fmt(e0.sc.delta) +
                            " m: start it outside the bar");
   }

@@ -197,8 +197,7 @@ std::array<double, 2> TipPath::velocity(double t) const {
 
 void TipPath::validate() const {
   require_positive("tip.radius", radius, "m");
-  require_finite("tip.start[0]", start_x, "m");
-  require_finite("tip.start[1]", start_y, "m");
+  require_finite_point("tip.start", start_x, start_y, "m");
   require_finite("tip.direction", direction, "rad");
   require_positive("tip.speed", speed, "m/s");
   require_positive("tip.travel", travel, "m");
@@ -416,7 +415,7 @@ TipRunResult run_quasi_static(const BarGeometry& g, double muN, const TipPath& t
   const double ell = std::max(g.a, g.b);
   const double g0 = gap(0.0);
   if (g0 < -1e-9 * ell)
-    throw InputError("tip.start", "[" + fmt(tip.start_x) + ", " + fmt(tip.start_y) + "]",
+    throw InputError("tip.start", fmt_point(tip.start_x, tip.start_y),
                      "the tip (radius " + fmt(tip.radius) + " m) overlaps the bar at t = 0 by " + fmt(-g0) +
                          " m: start it outside the bar");
   const double t_path_end = std::min(t_stop, t_end);

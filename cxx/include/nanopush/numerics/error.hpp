@@ -42,10 +42,22 @@ inline std::string fmt(double v) {
   return std::string(buf, r.ptr);
 }
 
+/// A point for messages: "[x, y]".
+inline std::string fmt_point(double x, double y) {
+  std::string s = "[";
+  s.append(fmt(x)).append(", ").append(fmt(y)).append("]");
+  return s;
+}
+
 /// Throw InputError unless lo < v < hi (strict) or lo <= v <= hi (closed), v finite.
 inline void require_finite(const std::string& field, double v, const std::string& unit = "") {
   if (!(v == v) || v - v != 0.0)
     throw InputError(field, fmt(v), "must be a finite number" + (unit.empty() ? "" : " (" + unit + ")"));
+}
+/// A point given as its two coordinates (tip.start: start_x, start_y), named as one.
+inline void require_finite_point(const std::string& field, double x, double y, const std::string& unit = "") {
+  if (!(x - x == 0.0 && y - y == 0.0))
+    throw InputError(field, fmt_point(x, y), "must be finite numbers" + (unit.empty() ? "" : " (" + unit + ")"));
 }
 inline void require_positive(const std::string& field, double v, const std::string& unit = "") {
   require_finite(field, v, unit);
