@@ -51,20 +51,6 @@ class CheckTask final : public sweep::Task {
   }
   [[nodiscard]] std::string name() const override { return "plan-check"; }
   [[nodiscard]] std::string scene_name() const override { return scene_.name; }
-  [[nodiscard]] Columns outputs() const override {
-    return {{"start_x", "m", "the trial's true start x: the plan's start plus noise"},
-            {"start_y", "m", "the trial's true start y"},
-            {"start_theta", "rad", "the trial's true start orientation"},
-            {"mu", "1", "the trial's surface friction coefficient"},
-            {"tip_mu", "1", "the trial's tip-bar friction coefficient (0: a force push's frictionless tip)"},
-            count_column("pushes_made", "pushes of the plan made (fewer: a push could not be made, see message)"),
-            {"final_x", "m", "true end x of the centre"},
-            {"final_y", "m", "true end y"},
-            {"final_theta", "rad", "true end orientation"},
-            {"final_distance", "m", "true end pose's distance from the goal"},
-            {"final_angle", "rad", "true end pose's angle from the goal"},
-            count_column("success", "1: every push made and the end pose within the tolerance")};
-  }
   [[nodiscard]] Column input_column(const std::string& key) const override {
     if (key != "trial") throw InputError(key, "(varied)", "plan --check varies only `trial`");
     return count_column("trial", "trial number (its world is drawn from the stream (seed, trial))");

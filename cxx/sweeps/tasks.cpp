@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -13,6 +14,7 @@
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/scenes/scene_keys.hpp"
 #include "nanopush/numerics/names.hpp"
+#include "nanopush/numerics/tsv.hpp"
 #include "hash.hpp"
 #include "nanopush/outputs/trajectory_csv.hpp"
 #include "nanopush/sweeps/sweep.hpp"
@@ -64,6 +66,28 @@ void check_static_range(const std::string& key, double v) {
 
 std::string cell(double v) { return csv_number(v); }  // NaN -> "" (missing)
 
+// The tasks' output columns are data: task_columns.tsv, compiled in as kTaskColumnsTsv
+// (cxx/sweeps/CMakeLists.txt).
+#include "task_columns.tsv.inc"
+
+}  // namespace
+
+Columns task_columns(std::string_view task) {
+  static const auto catalogue = [] {
+    std::map<std::string, Columns, std::less<>> c;
+    tsv::for_each_row(kTaskColumnsTsv, [&c](std::string_view row) {
+      const auto f = tsv::fields<5>(row);
+      c[std::string(f[0])].push_back({std::string(f[1]), std::string(f[3]), std::string(f[4]), std::string(f[2])});
+    });
+    return c;
+  }();
+  const auto it = catalogue.find(task);
+  if (it == catalogue.end()) throw std::logic_error("cxx/sweeps/task_columns.tsv lists no columns of task " + std::string(task));
+  return it->second;
+}
+
+namespace {
+
 // ---- run: a scene's trajectory, summarised ---------------------------------------------------
 
 class RunTask final : public Task {
@@ -75,29 +99,6 @@ class RunTask final : public Task {
   [[nodiscard]] std::string name() const override { return "run"; }
   [[nodiscard]] std::string scene_name() const override { return base_.name; }
 
-  [[nodiscard]] Columns outputs() const override {
-    return {{"x_final", "m", "x of the centre of mass at t_end (world axes)"},
-            {"y_final", "m", "y of the centre of mass at t_end"},
-            {"theta_final", "rad", "angle at t_end"},
-            {"distance", "m", "path length of the centre of mass over the output samples"},
-            {"rotation", "rad", "total rotation: the sum of |delta theta| over the output samples"},
-            {"icor_x", "m", "final iCOR, x offset from the centre of mass (world axes); empty in pure translation"},
-            {"icor_y", "m", "final iCOR, y offset from the centre of mass; empty in pure translation"},
-            {"t_stick", "s", "coulomb law: first time after 0 the object comes to rest and stays stuck; empty if never"},
-            {"f_peak", "N", "largest friction force |(fx, fy)| over the output samples"},
-            {"w_friction", "J", "work done by friction from 0 to t_end (rough surface; 0 on a smooth one)"},
-            {"error_estimate", "1",
-             "estimated error of the final pose: max(|error_x|, |error_y|) / max(length, distance) and |error_theta| "
-             "(docs/accuracy.md); empty when not estimated"},
-            {"error_x", "m", "estimated error of x_final"},
-            {"error_y", "m", "estimated error of y_final"},
-            {"error_theta", "rad", "estimated error of theta_final"},
-            {"error_trajectory", "1", "the error estimate's norm, max over the output times"},
-            {"rtol_used", "1", "the relative tolerance of the answer (--accuracy chooses it)"},
-            count_column("nfcn", "right-hand-side evaluations, the error estimate's companion runs included"),
-            count_column("steps", "accepted steps"),
-            count_column("rejected", "rejected steps")};
-  }
 
   [[nodiscard]] Column input_column(const std::string& key) const override {
     const SceneKey* k = find_scene_key(key);
@@ -321,11 +322,6 @@ class FrictionTask final : public ParamTask {
                    {"sense", "1", "+1 counter-clockwise, -1 clockwise rotation", 1.0}},
                   fixed) {}
   [[nodiscard]] std::string name() const override { return "friction"; }
-  [[nodiscard]] Columns outputs() const override {
-    return {{"fx", "N", "friction force, body x' (docs/friction.md)"},
-            {"fy", "N", "friction force, body y'"},
-            {"mf", "N m", "friction moment about the centre of mass"}};
-  }
 
  protected:
   [[nodiscard]] std::vector<std::string> compute(const Values& v) const override {
@@ -341,19 +337,6 @@ class IcorTask final : public ParamTask {
  public:
   explicit IcorTask(const std::vector<SceneSetting>& fixed) : ParamTask(params(), fixed) {}
   [[nodiscard]] std::string name() const override { return "icor"; }
-  [[nodiscard]] Columns outputs() const override {
-    return {{"R_experimental_fit", "m", "iCOR distance, experimental fit (thesis eq 4.1)"},
-            {"R_falvo", "m", "iCOR distance, Falvo et al. (eq 4.2)"},
-            {"R_li", "m", "iCOR distance, Li et al. (eq 4.3)"},
-            {"R_unknown_pressure", "m", "iCOR distance, unknown pressure distribution (eq 4.13)"},
-            {"R_constrained_negative", "m", "negative root of the constrained cubic (eq 5.4): Table 5.1's branch; empty if none"},
-            {"R_constrained_positive", "m", "smallest positive root of the constrained cubic (eq 5.4); empty if none"},
-            {"R_impulsive", "m", "impulsive iCOR (eq 5.5)"},
-            {"F_min", "N", "minimum push force for known pressure (eq 4.8)"},
-            {"R_known_pressure", "m", "iCOR for known pressure at push force `force` (eq 4.7); empty without force"},
-            {"load", "N", "rod load W = m g + F_vdw"},
-            {"F_from_icor", "N", "push force from the iCOR R_unknown_pressure (eq 4.10) at mu"}};
-  }
 
  protected:
   static std::vector<Param> params() {
@@ -389,12 +372,6 @@ class EstimateMuTask final : public ParamTask {
  public:
   explicit EstimateMuTask(const std::vector<SceneSetting>& fixed) : ParamTask(params(), fixed) {}
   [[nodiscard]] std::string name() const override { return "estimate-mu"; }
-  [[nodiscard]] Columns outputs() const override {
-    return {text_column("basis", "force (minimum push force at yn, eq 4.8) or icor (force and observed iCOR R, eq 4.10)"),
-            {"mu", "1", "estimated friction coefficient"},
-            {"sigma_mu", "1", "its standard uncertainty (first-order propagation, inputs uncorrelated)"},
-            {"load", "N", "rod load W used"}};
-  }
 
  protected:
   static std::vector<Param> params() {

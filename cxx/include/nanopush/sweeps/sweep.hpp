@@ -13,6 +13,7 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "nanopush/outputs/io.hpp"
@@ -79,14 +80,19 @@ Plan cartesian(const std::vector<Axis>& axes);
 /// is read once through (every row checked, counted and hashed), then by index.
 Plan points_from_csv(const std::filesystem::path& path);
 
+/// The output columns of the task named `task` as task_columns.tsv lists them (the table is
+/// compiled in and read on the first call); std::logic_error if it lists none.
+Columns task_columns(std::string_view task);
+
 /// What is evaluated at each point.
 class Task {
  public:
   virtual ~Task() = default;
-  /// run | friction | icor | estimate-mu
+  /// run | friction | icor | estimate-mu | plan-check
   [[nodiscard]] virtual std::string name() const = 0;
-  /// The summary columns a point gives (after the point index and the inputs).
-  [[nodiscard]] virtual Columns outputs() const = 0;
+  /// The summary columns a point gives (after the point index and the inputs): by default the
+  /// task's rows of task_columns.tsv.
+  [[nodiscard]] virtual Columns outputs() const { return task_columns(name()); }
   /// The column a varied key gets (unit and meaning); throws InputError for a key the task
   /// does not take.
   [[nodiscard]] virtual Column input_column(const std::string& key) const = 0;
