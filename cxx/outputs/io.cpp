@@ -276,18 +276,20 @@ void write_file_atomic(const std::filesystem::path& path, const std::string& tex
   f.commit();
 }
 
-std::string csv_number(double v) {
-  if (std::isnan(v)) return {};  // missing: the empty cell
-  char buf[64];
+char* csv_number_to(char* first, double v) {
+  if (std::isnan(v)) return first;  // missing: the empty cell
+  char* const last = first + kCsvNumberChars;
   // Integral values up to 2^53 (counts, most of all) in plain digits: 100000, not 1e+05.
   // Every such integer is exact, so the digits read back to the same double.
-  if (std::fabs(v) <= 9007199254740992.0 && v == std::trunc(v)) {
-    const auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed);
-    return std::string(buf, r.ptr);
-  }
+  if (std::fabs(v) <= 9007199254740992.0 && v == std::trunc(v))
+    return std::to_chars(first, last, v, std::chars_format::fixed).ptr;
   // Otherwise the shortest decimal that reads back to the same double (3e-08, 0.1, inf).
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
-  return std::string(buf, r.ptr);
+  return std::to_chars(first, last, v).ptr;
+}
+
+std::string csv_number(double v) {
+  char buf[kCsvNumberChars];
+  return std::string(buf, csv_number_to(buf, v));
 }
 
 std::string csv_quote(const std::string& s) {
@@ -458,9 +460,16 @@ void CsvWriter::check_width(std::size_t n) const {
 
 void CsvWriter::row(const std::vector<double>& values) {
   check_width(values.size());
-  auto& o = file_.stream();
-  for (std::size_t i = 0; i < values.size(); ++i) o << (i ? "," : "") << csv_number(values[i]);
-  o << '\n';
+  // One write a row, the numbers formatted in place (a trajectory's rows are most of what
+  // `nanopush run` spends beyond its integration: docs/performance.md, "Process start").
+  line_.resize(values.size() * (kCsvNumberChars + 1) + 1);
+  char* p = line_.data();
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (i) *p++ = ',';
+    p = csv_number_to(p, values[i]);
+  }
+  *p++ = '\n';
+  file_.stream().write(line_.data(), p - line_.data());
 }
 
 void CsvWriter::row(const std::string& label, const std::vector<double>& values) {

@@ -190,6 +190,7 @@ class CsvWriter {
   Columns columns_;
   std::string scene_;
   RunInfo run_;
+  std::string line_;  ///< row()'s buffer, kept between rows
 };
 
 /// Write a complete CSV (header from `columns`, then `rows` of formatted cells) and its sidecar.
@@ -205,6 +206,9 @@ std::string csv_document(const Columns& columns, const std::vector<std::vector<s
 /// digits (100000, not 1e+05); "inf"/"-inf" for infinities; NaN
 /// (a missing value) is the empty string.
 std::string csv_number(double v);
+/// csv_number's characters written at `first` (room for kCsvNumberChars); returns the end.
+char* csv_number_to(char* first, double v);
+inline constexpr std::size_t kCsvNumberChars = 32;  ///< the longest csv_number (24) and room
 
 /// Quote a text cell when it needs it (comma, quote, newline or leading/trailing blank).
 std::string csv_quote(const std::string& s);
