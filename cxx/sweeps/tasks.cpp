@@ -1,5 +1,6 @@
 // What a sweep evaluates at a point: a run of a scene (summary of its trajectory), or one of
 // the closed-form evaluations (friction wrench, iCOR formulas, mu estimate).
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <limits>
@@ -66,9 +67,10 @@ void check_static_range(const std::string& key, double v) {
 
 std::string cell(double v) { return csv_number(v); }  // NaN -> "" (missing)
 
-// The tasks' output columns are data: task_columns.tsv, compiled in as kTaskColumnsTsv
-// (cxx/sweeps/CMakeLists.txt).
+// The tasks' output columns and the closed-form tasks' parameters are data: task_columns.tsv
+// and task_parameters.tsv, compiled in (cxx/sweeps/CMakeLists.txt).
 #include "task_columns.tsv.inc"
+#include "task_parameters.tsv.inc"
 
 }  // namespace
 
@@ -219,12 +221,44 @@ struct Param {
   std::vector<std::string> choices = {};  ///< a text parameter: its allowed values (stored as their index)
 };
 
+/// The parameters of a task as task_parameters.tsv lists them, in its order.
+std::vector<Param> task_parameters(std::string_view task) {
+  std::vector<Param> out;
+  tsv::for_each_row(kTaskParametersTsv, [&](std::string_view row) {
+    const auto f = tsv::fields<6>(row);
+    if (f[0] != task) return;
+    Param p{std::string(f[1]), std::string(f[2]), std::string(f[5]), kNaN};
+    for (std::string_view rest = f[4]; !rest.empty();) {
+      const std::size_t comma = std::min(rest.find(", "), rest.size());
+      p.choices.emplace_back(rest.substr(0, comma));
+      rest.remove_prefix(std::min(comma + 2, rest.size()));
+    }
+    if (!p.choices.empty()) {
+      const auto it = std::find(p.choices.begin(), p.choices.end(), f[3]);
+      if (it == p.choices.end()) throw std::logic_error("task_parameters.tsv: " + p.key + "'s default is not a choice");
+      p.dflt = static_cast<double>(it - p.choices.begin());
+    } else if (f[3] != "none") {
+      const auto r = std::from_chars(f[3].data(), f[3].data() + f[3].size(), p.dflt);
+      if (r.ec != std::errc() || r.ptr != f[3].data() + f[3].size())
+        throw std::logic_error("task_parameters.tsv: " + p.key + "'s default is not a number");
+    }
+    out.push_back(std::move(p));
+  });
+  if (out.empty()) throw std::logic_error("task_parameters.tsv lists no parameters of task " + std::string(task));
+  return out;
+}
+
+/// A closed-form task: its parameters (task_parameters.tsv, then `more`), each fixed by --set
+/// or varied, and compute() on their values.
 class ParamTask : public Task {
  public:
-  ParamTask(std::vector<Param> params, const std::vector<SceneSetting>& fixed) : params_(std::move(params)) {
+  ParamTask(std::string name, const std::vector<SceneSetting>& fixed, const std::vector<Param>& more = {})
+      : name_(std::move(name)), params_(task_parameters(name_)) {
+    params_.insert(params_.end(), more.begin(), more.end());
     for (const auto& p : params_) values_[p.key] = p.dflt;
     for (const auto& [k, v] : fixed) values_[k] = value(k, v);
   }
+  [[nodiscard]] std::string name() const override { return name_; }
   [[nodiscard]] Column input_column(const std::string& key) const override {
     for (const auto& p : params_)
       if (p.key == key) {
@@ -263,26 +297,6 @@ class ParamTask : public Task {
     if (std::isnan(x)) throw InputError(key, "(missing)", "required: give it with --set or vary it");
     return x;
   }
-  static icor::Rod rod_of(const Values& v) {
-    icor::Rod r;
-    r.length = v.at("rod.length");
-    r.radius = v.at("rod.radius");
-    r.density = v.at("rod.density");
-    r.hamaker = v.at("rod.hamaker");
-    r.z0 = v.at("rod.z0");
-    r.gravity = v.at("rod.gravity");
-    r.validate();
-    return r;
-  }
-  static std::vector<Param> rod_params() {
-    const icor::Rod r;
-    return {{"rod.length", "m", "rod length L", r.length},
-            {"rod.radius", "m", "rod radius", r.radius},
-            {"rod.density", "kg/m^3", "rod density", r.density},
-            {"rod.hamaker", "J", "Hamaker constant H (assumed literature-order value by default)", r.hamaker},
-            {"rod.z0", "m", "rod-plane separation z0", r.z0},
-            {"rod.gravity", "m/s^2", "gravity", r.gravity}};
-  }
 
  private:
   /// The value of parameter `key` (a choice: the index of its text), or InputError.
@@ -307,21 +321,47 @@ class ParamTask : public Task {
     for (const auto& p : params_) s += (s.empty() ? "" : ", ") + p.key;
     return s;
   }
+  std::string name_;
   std::vector<Param> params_;
   Values values_;
 };
 
+/// A task on a rod (icor, estimate-mu): its parameters and the rod's (rod.*, the defaults of
+/// icor::Rod); compute_on gets the rod built from them and validated.
+class RodTask : public ParamTask {
+ public:
+  RodTask(std::string name, const std::vector<SceneSetting>& fixed) : ParamTask(std::move(name), fixed, rod_params()) {}
+
+ protected:
+  [[nodiscard]] virtual std::vector<std::string> compute_on(const Values& v, const icor::Rod& rod) const = 0;
+  [[nodiscard]] std::vector<std::string> compute(const Values& v) const final { return compute_on(v, rod_of(v)); }
+
+ private:
+  static icor::Rod rod_of(const Values& v) {
+    icor::Rod r;
+    r.length = v.at("rod.length");
+    r.radius = v.at("rod.radius");
+    r.density = v.at("rod.density");
+    r.hamaker = v.at("rod.hamaker");
+    r.z0 = v.at("rod.z0");
+    r.gravity = v.at("rod.gravity");
+    r.validate();
+    return r;
+  }
+  static std::vector<Param> rod_params() {
+    const icor::Rod r;
+    return {{"rod.length", "m", "rod length L", r.length},
+            {"rod.radius", "m", "rod radius", r.radius},
+            {"rod.density", "kg/m^3", "rod density", r.density},
+            {"rod.hamaker", "J", "Hamaker constant H (assumed literature-order value by default)", r.hamaker},
+            {"rod.z0", "m", "rod-plane separation z0", r.z0},
+            {"rod.gravity", "m/s^2", "gravity", r.gravity}};
+  }
+};
+
 class FrictionTask final : public ParamTask {
  public:
-  explicit FrictionTask(const std::vector<SceneSetting>& fixed)
-      : ParamTask({{"a", "m", "contact half-width (body x')", 27.5e-9},
-                   {"b", "m", "contact half-length (body y')", 50e-9},
-                   {"muN", "N", "friction limit mu N", 1.0},
-                   {"R", "m", "iCOR distance from the centre of mass", kNaN},
-                   {"alpha", "rad", "iCOR direction: the iCOR is at -R (cos alpha, sin alpha) in body axes", 0.0},
-                   {"sense", "1", "+1 counter-clockwise, -1 clockwise rotation", 1.0}},
-                  fixed) {}
-  [[nodiscard]] std::string name() const override { return "friction"; }
+  explicit FrictionTask(const std::vector<SceneSetting>& fixed) : ParamTask("friction", fixed) {}
 
  protected:
   [[nodiscard]] std::vector<std::string> compute(const Values& v) const override {
@@ -333,23 +373,12 @@ class FrictionTask final : public ParamTask {
   }
 };
 
-class IcorTask final : public ParamTask {
+class IcorTask final : public RodTask {
  public:
-  explicit IcorTask(const std::vector<SceneSetting>& fixed) : ParamTask(params(), fixed) {}
-  [[nodiscard]] std::string name() const override { return "icor"; }
+  explicit IcorTask(const std::vector<SceneSetting>& fixed) : RodTask("icor", fixed) {}
 
  protected:
-  static std::vector<Param> params() {
-    std::vector<Param> p = {{"yn", "m", "push point: distance from the centre of mass along the rod", kNaN},
-                            {"mu", "1", "friction coefficient", 0.1},
-                            {"force", "N", "push force (for eq 4.7; optional)", kNaN},
-                            {"cubic", "", "solver of the constrained cubic (eq 5.4): brent or eigen (companion eigenvalues)", 0.0,
-                             {"brent", "eigen"}}};
-    for (auto& r : rod_params()) p.push_back(r);
-    return p;
-  }
-  [[nodiscard]] std::vector<std::string> compute(const Values& v) const override {
-    const icor::Rod rod = rod_of(v);
+  [[nodiscard]] std::vector<std::string> compute_on(const Values& v, const icor::Rod& rod) const override {
     const double L = rod.length, yn = need(v, "yn"), mu = need(v, "mu"), W = rod.load();
     const auto method = v.at("cubic") == 0.0 ? icor::CubicMethod::Brent : icor::CubicMethod::Eigen;
     const auto sol = icor::solve_constrained_cubic(yn, L, rod.gyration_squared(), method);
@@ -368,26 +397,12 @@ class IcorTask final : public ParamTask {
   }
 };
 
-class EstimateMuTask final : public ParamTask {
+class EstimateMuTask final : public RodTask {
  public:
-  explicit EstimateMuTask(const std::vector<SceneSetting>& fixed) : ParamTask(params(), fixed) {}
-  [[nodiscard]] std::string name() const override { return "estimate-mu"; }
+  explicit EstimateMuTask(const std::vector<SceneSetting>& fixed) : RodTask("estimate-mu", fixed) {}
 
  protected:
-  static std::vector<Param> params() {
-    std::vector<Param> p = {{"force", "N", "measured push force", kNaN},
-                            {"sigma_force", "N", "its standard uncertainty", 0.0},
-                            {"yn", "m", "push point (basis force); give yn or R", kNaN},
-                            {"sigma_yn", "m", "its standard uncertainty", 0.0},
-                            {"R", "m", "observed iCOR distance (basis icor); give yn or R", kNaN},
-                            {"sigma_R", "m", "its standard uncertainty", 0.0},
-                            {"sigma_L", "m", "uncertainty of the rod length", 0.0},
-                            {"sigma_H", "J", "uncertainty of the Hamaker constant", 0.0}};
-    for (auto& r : rod_params()) p.push_back(r);
-    return p;
-  }
-  [[nodiscard]] std::vector<std::string> compute(const Values& v) const override {
-    const icor::Rod rod = rod_of(v);
+  [[nodiscard]] std::vector<std::string> compute_on(const Values& v, const icor::Rod& rod) const override {
     const bool has_yn = !std::isnan(v.at("yn")), has_R = !std::isnan(v.at("R"));
     if (has_yn == has_R)
       throw InputError("yn/R", has_yn ? "both given" : "neither given", "give exactly one: yn (basis force) or R (basis icor)");
