@@ -77,12 +77,14 @@ struct BsOptions {
 };
 
 template <typename Scalar, int N = Dynamic>
-class BulirschStoer : public IntegrateOverloads<BulirschStoer<Scalar, N>, Scalar, BsResult> {
+class BulirschStoer : public IntegratorBase<BulirschStoer<Scalar, N>, Scalar, BsResult, BsOptions<Scalar>> {
+  using Base = IntegratorBase<BulirschStoer, Scalar, BsResult, BsOptions<Scalar>>;
+
  public:
   static constexpr int kKmaxLimit = bs::kKmaxLimit;
   using Vec = StateVec<Scalar, N>;
 
-  explicit BulirschStoer(BsOptions<Scalar> opt, int n = N) : opt_(std::move(opt)), n_(n) {
+  explicit BulirschStoer(BsOptions<Scalar> opt, int n = N) : Base(std::move(opt), n) {
     size_states(n_, y_, f0_, q_, atol_, f1_);
     tableau_.allocate(n_);
     midpoint_.allocate(n_);
@@ -90,11 +92,8 @@ class BulirschStoer : public IntegrateOverloads<BulirschStoer<Scalar, N>, Scalar
     if (opt_.dense && n_ > 0) dense_.allocate(n_);   // every line's RHS values, allocated once
   }
 
-  [[nodiscard]] int size() const { return n_; }
-  [[nodiscard]] const BsOptions<Scalar>& options() const { return opt_; }
-
   /// Integrate without a step hook, or to one output time (integration.hpp).
-  using IntegrateOverloads<BulirschStoer, Scalar, BsResult>::integrate;
+  using Base::integrate;
 
   /// Integrate; y holds the initial state on entry and the state at the last output time
   /// reached on return. A hook is called after every accepted step, before it is committed:
@@ -567,8 +566,7 @@ class BulirschStoer : public IntegrateOverloads<BulirschStoer<Scalar, N>, Scalar
     return {};
   }
 
-  BsOptions<Scalar> opt_;
-  int n_;
+  using Base::opt_, Base::n_;
   Vec y_{}, f0_{}, f1_{}, atol_{};
   Vec q_{};  // the scaled differences of line_error (dynamic dimension)
   const bs::SequenceTables<Scalar>* seq_ = nullptr;

@@ -121,21 +121,20 @@ struct T {
 }  // namespace dop853_tableau
 
 template <typename Scalar, int N = Dynamic>
-class Dop853 : public IntegrateOverloads<Dop853<Scalar, N>, Scalar, Dop853Result> {
+class Dop853 : public IntegratorBase<Dop853<Scalar, N>, Scalar, Dop853Result, Dop853Options<Scalar>> {
+  using Base = IntegratorBase<Dop853, Scalar, Dop853Result, Dop853Options<Scalar>>;
+
  public:
   using Vec = StateVec<Scalar, N>;
 
-  explicit Dop853(Dop853Options<Scalar> opt, int n = N) : opt_(std::move(opt)), n_(n) {
+  explicit Dop853(Dop853Options<Scalar> opt, int n = N) : Base(std::move(opt), n) {
     for (Vec& v : k_) size_states(n_, v);
     for (Vec& v : cont_) size_states(n_, v);
     size_states(n_, y_, ynew_, ys_, atol_);
   }
 
-  [[nodiscard]] int size() const { return n_; }
-  [[nodiscard]] const Dop853Options<Scalar>& options() const { return opt_; }
-
   /// Integrate without a step hook, or to one output time (integration.hpp).
-  using IntegrateOverloads<Dop853, Scalar, Dop853Result>::integrate;
+  using Base::integrate;
 
   /// Integrate; y holds the initial state on entry and, on return, the state at t_reached
   /// (the last output time on success; the end of the last accepted step on a failure).
@@ -342,8 +341,7 @@ class Dop853 : public IntegrateOverloads<Dop853<Scalar, N>, Scalar, Dop853Result
  private:
   static constexpr int kMaxNonFinite = 10;
 
-  Dop853Options<Scalar> opt_;
-  int n_;
+  using Base::opt_, Base::n_;
   std::array<Vec, 16> k_{};   // stages 1..16 (k_[s-1])
   std::array<Vec, 8> cont_{};  // dense-output coefficients of the last step
   Vec y_{}, ynew_{}, ys_{}, atol_{};

@@ -4,10 +4,10 @@
 //
 // The contract. An integrator is a class template Integrator<Scalar, N> (N = Dynamic for a
 // size chosen at run time), constructed from its options (and n when N is Dynamic), with
-//   - size() -> int, options() -> its options;
+//   - size() -> int, options() -> its options (both from IntegratorBase below);
 //   - integrate(rhs, t0, y, tout, observer [, hook]) -> a result that is, or derives from,
 //     IntegrationResult (an integrator writes the hooked one and takes the others from
-//     IntegrateOverloads below):
+//     IntegratorBase below):
 //       rhs(t, y, dydt) -> int writes dydt[0..n) and returns 0, or non-zero to abort (that
 //         value is reported in rhs_status, status rhs_failed; never retried);
 //       y holds the state at t0 on entry and the state at the last output time reached on
@@ -145,13 +145,17 @@ struct ContractObserver {
 };
 }  // namespace integration_detail
 
-/// The integrate() overloads every integrator offers on top of the one it writes,
-/// integrate(rhs, t0, y, tout, observer, hook): without a step hook, and to one output time
-/// without an observer. Integrator derives from IntegrateOverloads<Integrator, Scalar, Result>
-/// and says `using IntegrateOverloads<...>::integrate;`.
-template <class Integrator, typename Scalar, class Result>
-class IntegrateOverloads {
+/// What every integrator has besides the integrate() it writes, integrate(rhs, t0, y, tout,
+/// observer, hook): the options and the dimension it was made with (options(), size()), and
+/// the overloads without a step hook and to one output time without an observer. Integrator
+/// derives from IntegratorBase<Integrator, Scalar, Result, Options>, constructs it from its
+/// options and n, and says `using Base::integrate;` (and `using Base::opt_, Base::n_;`).
+template <class Integrator, typename Scalar, class Result, class Options>
+class IntegratorBase {
  public:
+  [[nodiscard]] int size() const { return n_; }
+  [[nodiscard]] const Options& options() const { return opt_; }
+
   /// Integrate; y holds the initial state on entry and the state at t_reached on return.
   template <class Rhs, class Observer>
   Result integrate(Rhs&& rhs, Scalar t0, Scalar* y, std::span<const Scalar> tout, Observer&& observer) {
@@ -165,6 +169,11 @@ class IntegrateOverloads {
     return integrate(std::forward<Rhs>(rhs), t0, y, std::span<const Scalar>(tt, 1),
                      [](std::size_t, Scalar, const Scalar*) {});
   }
+
+ protected:
+  IntegratorBase(Options opt, int n) : opt_(std::move(opt)), n_(n) {}
+  Options opt_;
+  int n_;
 
  private:
   Integrator& self() { return static_cast<Integrator&>(*this); }
