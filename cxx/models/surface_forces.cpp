@@ -16,6 +16,8 @@ void count(Model m) noexcept {
 
 void need_hamaker(double A) { require_nonnegative("Hamaker constant A", A, "J"); }
 void need_gap(const char* field, double D) { require_positive(field, D, "m"); }
+/// An energy per area (a surface energy, a work of adhesion), >= 0.
+void need_energy(const char* field, double gamma) { require_nonnegative(field, gamma, "J/m^2"); }
 /// What every van der Waals model of two continua checks: the model counted, the Hamaker
 /// constant >= 0 and the gap (named `gap`) > 0.
 void vdw_model(Model m, double A, const char* gap, double D) {
@@ -164,7 +166,7 @@ namespace {
 /// The metallic-adhesion model's checks, counted once per evaluation; x = (D - D0)/lambda_M.
 double metallic_x(double gamma, double D, double D0, double lambda) {
   count(Model::metallic_adhesion);
-  require_nonnegative("surface energy gamma", gamma, "J/m^2");
+  need_energy("surface energy gamma", gamma);
   require_positive("equilibrium distance D0", D0, "m");
   require_positive("decay length lambda_M", lambda, "m");
   need_gap("separation D", D);
@@ -196,20 +198,20 @@ double surface_energy_corrected(double A) {
 }
 double work_of_cohesion(double gamma1) {
   count(Model::dupre);
-  require_nonnegative("surface energy gamma1", gamma1, "J/m^2");
+  need_energy("surface energy gamma1", gamma1);
   return 2.0 * gamma1;
 }
 double interfacial_energy(double gamma1, double gamma2, double W12) {
   count(Model::dupre);
-  require_nonnegative("surface energy gamma1", gamma1, "J/m^2");
-  require_nonnegative("surface energy gamma2", gamma2, "J/m^2");
+  need_energy("surface energy gamma1", gamma1);
+  need_energy("surface energy gamma2", gamma2);
   require_finite("work of adhesion W12", W12, "J/m^2");
   return gamma1 + gamma2 - W12;
 }
 double work_of_adhesion_dispersion(double gamma1d, double gamma2d) {
   count(Model::dupre);
-  require_nonnegative("dispersion surface energy gamma1d", gamma1d, "J/m^2");
-  require_nonnegative("dispersion surface energy gamma2d", gamma2d, "J/m^2");
+  need_energy("dispersion surface energy gamma1d", gamma1d);
+  need_energy("dispersion surface energy gamma2d", gamma2d);
   return 2.0 * std::sqrt(gamma1d * gamma2d);
 }
 double work_of_adhesion_in_medium(double gamma13, double gamma23, double gamma12) {
@@ -247,7 +249,7 @@ double effective_modulus(double E1, double nu1, double E2, double nu2) {
 double derjaguin_adhesion_force(double Reff, double W) {
   count(Model::derjaguin);
   require_positive("effective radius R", Reff, "m");
-  require_nonnegative("work of adhesion W", W, "J/m^2");
+  need_energy("work of adhesion W", W);
   return 2.0 * kPi * Reff * W;
 }
 
@@ -259,7 +261,7 @@ void check_elastic(const char* radius, double R, double Estar) {
 }
 void check_contact(double R, double Estar, double W) {
   check_elastic("effective radius R", R, Estar);
-  require_nonnegative("work of adhesion W", W, "J/m^2");
+  need_energy("work of adhesion W", W);
 }
 }  // namespace
 
@@ -283,7 +285,7 @@ double jkr_zero_load_radius(double R, double Estar, double W) {
 double jkr_pull_off_force(double R, double W) {
   count(Model::jkr);
   require_positive("effective radius R", R, "m");
-  require_nonnegative("work of adhesion W", W, "J/m^2");
+  need_energy("work of adhesion W", W);
   return 1.5 * kPi * R * W;
 }
 double jkr_separation_radius(double R, double Estar, double W) {
@@ -436,7 +438,7 @@ double capillary_force_sphere(double R, double gammaL, double theta, double r1, 
 }
 double capillary_force_with_solid_contact(double R, double gammaL, double theta, double gamma_SL) {
   check_sphere(R, gammaL, theta);
-  require_nonnegative("solid-liquid energy gamma_SL", gamma_SL, "J/m^2");
+  need_energy("solid-liquid energy gamma_SL", gamma_SL);
   return 4.0 * kPi * R * (gammaL * std::cos(theta) + gamma_SL);
 }
 double capillary_force_cylinder(double R, double L, double gammaL, double theta, double r1, double D) {
