@@ -18,6 +18,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <system_error>
+#include <tuple>
 
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/outputs/csv_reader.hpp"
@@ -190,69 +191,244 @@ struct NcFile {
   }
 };
 
-}  // namespace
+/// A finished table read whole: its sidecar's fields and provenance, its cells column by column
+/// and the line each row came from.
+struct Table {
+  std::vector<Field> fields;
+  json prov;
+  std::vector<std::vector<std::string>> cells;  ///< cells[column][row]
+  std::vector<std::size_t> lines;
+  [[nodiscard]] std::size_t rows() const { return lines.size(); }
+};
 
-// Long (~190 lines) on purpose: netCDF's define mode and data mode are two halves of one
-// transaction over the same variable ids, strides and the cells read once; its sections (read,
-// grid check, define, write table, write trajectories) are marked, and cutting them into
-// functions would pass those ten locals around without making any of them testable alone.
-void write_netcdf_from_table(const fs::path& csv, const fs::path& nc_path, const std::vector<NetcdfAxis>& given_axes,
-                             const std::vector<fs::path>& trajectories) {
-  const auto [fields, prov] = read_schema(csv);
-  // The whole table, column by column.
+Table read_table(const fs::path& csv) {
+  Table t;
+  std::tie(t.fields, t.prov) = read_schema(csv);
   std::ifstream in(csv, std::ios::binary);
   if (!in) throw InputError("table", csv.string(), "cannot be read");
   csv::Reader reader(in, csv.string());
   csv::Record rec;
   if (!reader.next(rec)) throw InputError("table", csv.string(), "is empty (no header)");
-  if (rec.fields.size() != fields.size())
+  const std::size_t ncol = t.fields.size();
+  if (rec.fields.size() != ncol)
     throw InputError("table", csv.string(), "has " + std::to_string(rec.fields.size()) + " columns, its sidecar " +
-                                                std::to_string(fields.size()));
-  for (std::size_t c = 0; c < fields.size(); ++c)
-    if (rec.fields[c] != fields[c].name)
+                                                std::to_string(ncol));
+  for (std::size_t c = 0; c < ncol; ++c)
+    if (rec.fields[c] != t.fields[c].name)
       throw InputError("table", csv.string(), "column " + std::to_string(c + 1) + " is " + rec.fields[c] +
-                                                  ", its sidecar says " + fields[c].name);
-  const std::size_t ncol = fields.size();
-  std::vector<std::vector<std::string>> cells(ncol);
-  std::vector<std::size_t> lines;
+                                                  ", its sidecar says " + t.fields[c].name);
+  t.cells.resize(ncol);
   while (reader.next(rec)) {
     if (rec.fields.size() != ncol)
       throw InputError(csv.string() + ":" + std::to_string(rec.line), csv::join(rec.fields),
                        std::to_string(ncol) + " cells expected");
-    for (std::size_t c = 0; c < ncol; ++c) cells[c].push_back(std::move(rec.fields[c]));
-    lines.push_back(rec.line);
+    for (std::size_t c = 0; c < ncol; ++c) t.cells[c].push_back(std::move(rec.fields[c]));
+    t.lines.push_back(rec.line);
   }
-  const std::size_t rows = lines.size();
+  return t;
+}
 
-  // The grid: each axis's column, stride and values; every row checked against it.
-  std::vector<NetcdfAxis> axes = given_axes;
-  std::vector<std::size_t> axis_col, stride(axes.size(), 1);
-  std::size_t grid = 1;
-  for (auto& a : axes) {
+/// The grid of a table's axes: each axis's column, size and stride (the last axis fastest).
+struct Grid {
+  std::vector<NetcdfAxis> axes;
+  std::vector<std::size_t> column, stride;
+  /// The axis whose coordinate column is c, or axes.size().
+  [[nodiscard]] std::size_t axis_of(std::size_t c) const {
+    return static_cast<std::size_t>(std::find(column.begin(), column.end(), c) - column.begin());
+  }
+};
+
+/// The grid of the given axes (a size of 0: the column's distinct values), every row checked
+/// against it.
+Grid check_grid(const Table& t, const std::vector<NetcdfAxis>& given_axes, const fs::path& csv) {
+  Grid g{given_axes, {}, std::vector<std::size_t>(given_axes.size(), 1)};
+  std::size_t points = 1;
+  for (auto& a : g.axes) {
     std::size_t c = 0;
-    while (c < ncol && fields[c].name != a.column) ++c;
-    if (c == ncol) throw InputError("axis", a.column, "is not a column of " + csv.string());
-    if (a.size == 0) a.size = std::set<std::string>(cells[c].begin(), cells[c].end()).size();  // its distinct values
+    while (c < t.fields.size() && t.fields[c].name != a.column) ++c;
+    if (c == t.fields.size()) throw InputError("axis", a.column, "is not a column of " + csv.string());
+    if (a.size == 0) a.size = std::set<std::string>(t.cells[c].begin(), t.cells[c].end()).size();
     if (a.size == 0) throw InputError("axis", a.column, "has no values");
-    axis_col.push_back(c);
-    grid *= a.size;
+    g.column.push_back(c);
+    points *= a.size;
   }
-  for (std::size_t k = axes.size(); k-- > 1;) stride[k - 1] = stride[k] * axes[k].size;
-  if (!axes.empty() && grid != rows)
-    throw InputError("table", csv.string(), "has " + std::to_string(rows) + " rows, the grid of its axes " +
-                                                std::to_string(grid) + " points (a shard? write it as CSV)");
-  for (std::size_t k = 0; k < axes.size(); ++k)
-    for (std::size_t r = 0; r < rows; ++r) {
-      const std::size_t j = (r / stride[k]) % axes[k].size;
-      if (cells[axis_col[k]][r] != cells[axis_col[k]][j * stride[k]])
-        throw InputError(csv.string() + ":" + std::to_string(lines[r]), cells[axis_col[k]][r],
-                         "the table is not the grid of its axes (" + axes[k].column + " should be " +
-                             cells[axis_col[k]][j * stride[k]] + ", last axis fastest)");
+  for (std::size_t k = g.axes.size(); k-- > 1;) g.stride[k - 1] = g.stride[k] * g.axes[k].size;
+  if (!g.axes.empty() && points != t.rows())
+    throw InputError("table", csv.string(), "has " + std::to_string(t.rows()) + " rows, the grid of its axes " +
+                                                std::to_string(points) + " points (a shard? write it as CSV)");
+  for (std::size_t k = 0; k < g.axes.size(); ++k) {
+    const auto& col = t.cells[g.column[k]];
+    for (std::size_t r = 0; r < t.rows(); ++r) {
+      const std::size_t first = ((r / g.stride[k]) % g.axes[k].size) * g.stride[k];
+      if (col[r] != col[first])
+        throw InputError(csv.string() + ":" + std::to_string(t.lines[r]), col[r],
+                         "the table is not the grid of its axes (" + g.axes[k].column + " should be " + col[first] +
+                             ", last axis fastest)");
     }
+  }
+  return g;
+}
 
-  if (!trajectories.empty() && trajectories.size() != rows)
+/// Defines and writes one netCDF file from a checked table, its grid and its points'
+/// trajectories: define mode (dimensions, the table's variables, the trajectories' variables,
+/// global attributes), then data mode, over the same variable ids.
+class NetcdfTableWriter {
+ public:
+  NetcdfTableWriter(int nc, const fs::path& name, const fs::path& csv, const Table& t, const Grid& g,
+                    const Trajectories& traj)
+      : nc_(nc), name_(name), csv_(csv), t_(t), g_(g), traj_(traj) {}
+
+  void define() {
+    define_dimensions();
+    define_columns();
+    if (traj_.longest > 0) define_trajectories();
+    put_text(nc_, NC_GLOBAL, "Conventions", "CF-1.8", name_);
+    put_text(nc_, NC_GLOBAL, "title", "nanopush table " + csv_.filename().string(), name_);
+    put_text(nc_, NC_GLOBAL, "source_table", csv_.filename().string(), name_);
+    put_provenance(nc_, t_.prov, name_);
+    check(netcdf().nc_enddef(nc_), name_, "end of definitions");
+  }
+
+  void write(const std::vector<fs::path>& trajectories) const {
+    for (std::size_t c = 0; c < t_.fields.size(); ++c) write_column(c);
+    if (traj_var_ >= 0) write_trajectories(trajectories);
+  }
+
+ private:
+  /// The grid's axes, or one dimension `point` for a table without axes.
+  void define_dimensions() {
+    if (g_.axes.empty()) {
+      int d = -1;
+      check(netcdf().nc_def_dim(nc_, "point", t_.rows(), &d), name_, "define dimension point");
+      dims_.push_back(d);
+    }
+    for (const auto& a : g_.axes) {
+      int d = -1;
+      check(netcdf().nc_def_dim(nc_, a.column.c_str(), a.size, &d), name_, "define a dimension");
+      dims_.push_back(d);
+    }
+  }
+
+  void define_columns() {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    var_.assign(t_.fields.size(), -1);
+    for (std::size_t c = 0; c < t_.fields.size(); ++c) {
+      const Field& fd = t_.fields[c];
+      // An axis: its coordinate variable, over its own dimension.
+      const std::size_t k = g_.axis_of(c);
+      const std::vector<int> vd = k < g_.axes.size() ? std::vector<int>{dims_[k]} : dims_;
+      const nc_type type = fd.type == "string" ? NC_STRING : fd.type == "integer" ? NC_INT64 : NC_DOUBLE;
+      check(netcdf().nc_def_var(nc_, fd.name.c_str(), type, static_cast<int>(vd.size()), vd.data(), &var_[c]), name_,
+            ("define variable " + fd.name).c_str());
+      if (type == NC_DOUBLE) check(netcdf().nc_def_var_fill(nc_, var_[c], 0, &nan), name_, "_FillValue");
+      // An integer column declares its fill only when a cell is missing: xarray reads an integer
+      // variable with a _FillValue as floats.
+      const auto& cells = t_.cells[c];
+      const bool missing = std::any_of(cells.begin(), cells.end(), [](const std::string& x) { return x.empty(); });
+      if (type == NC_INT64 && missing) check(netcdf().nc_def_var_fill(nc_, var_[c], 0, &kIntFill), name_, "_FillValue");
+      if (type != NC_STRING && !fd.unit.empty()) put_text(nc_, var_[c], "units", fd.unit, name_);
+      if (!fd.description.empty()) put_text(nc_, var_[c], "long_name", fd.description, name_);
+    }
+  }
+
+  /// The points' trajectories: one variable over the table's dimensions, the samples (time)
+  /// and the trajectory's columns, NaN past a trajectory's end; `samples` says where it ends.
+  void define_trajectories() {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    int dt = -1, dc = -1;
+    check(netcdf().nc_def_dim(nc_, "time", traj_.longest, &dt), name_, "define dimension time");
+    check(netcdf().nc_def_dim(nc_, "column", traj_.columns.size(), &dc), name_, "define dimension column");
+    check(netcdf().nc_def_var(nc_, "column", NC_STRING, 1, &dc, &column_var_), name_, "define variable column");
+    put_text(nc_, column_var_, "long_name", "the trajectory's columns (as nanopush run's CSV names them)", name_);
+    check(netcdf().nc_def_var(nc_, "column_units", NC_STRING, 1, &dc, &units_var_), name_, "define column_units");
+    put_text(nc_, units_var_, "long_name", "the unit of each trajectory column", name_);
+    std::vector<int> td = dims_;
+    td.push_back(dt);
+    td.push_back(dc);
+    check(netcdf().nc_def_var(nc_, "trajectory", NC_DOUBLE, static_cast<int>(td.size()), td.data(), &traj_var_), name_,
+          "define variable trajectory");
+    check(netcdf().nc_def_var_fill(nc_, traj_var_, 0, &nan), name_, "_FillValue");
+    put_text(nc_, traj_var_, "long_name",
+             "each point's trajectory: its samples (time) by column; units per column in column_units; NaN after "
+             "the last sample",
+             name_);
+    check(netcdf().nc_def_var(nc_, "samples", NC_INT64, static_cast<int>(dims_.size()), dims_.data(), &samples_var_),
+          name_, "define variable samples");
+    put_text(nc_, samples_var_, "units", "1", name_);
+    put_text(nc_, samples_var_, "long_name", "the number of samples of each point's trajectory (0: none)", name_);
+  }
+
+  /// Column c's values; an axis holds its values alone (the first row of each of its steps).
+  void write_column(std::size_t c) const {
+    const Field& fd = t_.fields[c];
+    std::vector<std::size_t> pick;
+    if (const std::size_t k = g_.axis_of(c); k < g_.axes.size())
+      for (std::size_t j = 0; j < g_.axes[k].size; ++j) pick.push_back(j * g_.stride[k]);
+    else
+      for (std::size_t r = 0; r < t_.rows(); ++r) pick.push_back(r);
+    if (pick.empty()) return;
+    const auto& cells = t_.cells[c];
+    const std::string what = "write " + fd.name;
+    if (fd.type == "string") {
+      std::vector<const char*> p;
+      for (std::size_t r : pick) p.push_back(cells[r].c_str());
+      check(netcdf().nc_put_var_string(nc_, var_[c], p.data()), name_, what.c_str());
+    } else if (fd.type == "integer") {
+      std::vector<long long> v;
+      for (std::size_t r : pick) v.push_back(parse_integer(cells[r], csv_, t_.lines[r]));
+      check(netcdf().nc_put_var_longlong(nc_, var_[c], v.data()), name_, what.c_str());
+    } else {
+      std::vector<double> v;
+      for (std::size_t r : pick) v.push_back(parse_number(cells[r], csv_, t_.lines[r]));
+      check(netcdf().nc_put_var_double(nc_, var_[c], v.data()), name_, what.c_str());
+    }
+  }
+
+  void write_trajectories(const std::vector<fs::path>& files) const {
+    std::vector<const char*> names, units;
+    for (const auto& c : traj_.columns) {
+      names.push_back(c.name.c_str());
+      units.push_back(c.unit.c_str());
+    }
+    check(netcdf().nc_put_var_string(nc_, column_var_, names.data()), name_, "write column");
+    check(netcdf().nc_put_var_string(nc_, units_var_, units.data()), name_, "write column_units");
+    std::vector<long long> n(traj_.samples.begin(), traj_.samples.end());
+    check(netcdf().nc_put_var_longlong(nc_, samples_var_, n.data()), name_, "write samples");
+    const std::size_t width = traj_.columns.size();
+    for (std::size_t r = 0; r < t_.rows(); ++r) {
+      if (traj_.samples[r] == 0) continue;
+      const std::vector<double> v = read_trajectory(files[r], width);
+      // Row r of the table is grid point (i_1, ..., i_k), the last axis fastest (or point r).
+      std::vector<std::size_t> start, count;
+      if (g_.axes.empty()) start.push_back(r);
+      for (std::size_t k = 0; k < g_.axes.size(); ++k) start.push_back((r / g_.stride[k]) % g_.axes[k].size);
+      count.assign(start.size(), 1);
+      start.insert(start.end(), {0, 0});
+      count.insert(count.end(), {v.size() / width, width});
+      check(netcdf().nc_put_vara_double(nc_, traj_var_, start.data(), count.data(), v.data()), name_,
+            "write trajectory");
+    }
+  }
+
+  int nc_;
+  const fs::path& name_;
+  const fs::path& csv_;
+  const Table& t_;
+  const Grid& g_;
+  const Trajectories& traj_;
+  std::vector<int> dims_, var_;
+  int traj_var_ = -1, samples_var_ = -1, column_var_ = -1, units_var_ = -1;
+};
+
+}  // namespace
+
+void write_netcdf_from_table(const fs::path& csv, const fs::path& nc_path, const std::vector<NetcdfAxis>& given_axes,
+                             const std::vector<fs::path>& trajectories) {
+  const Table table = read_table(csv);
+  const Grid grid = check_grid(table, given_axes, csv);
+  if (!trajectories.empty() && trajectories.size() != table.rows())
     throw std::logic_error("write_netcdf_from_table: " + std::to_string(trajectories.size()) + " trajectories for " +
-                           std::to_string(rows) + " rows");
+                           std::to_string(table.rows()) + " rows");
   const Trajectories traj = scan_trajectories(trajectories);
 
   // The file: a temporary beside the target, renamed over it when complete.
@@ -265,124 +441,9 @@ void write_netcdf_from_table(const fs::path& csv, const fs::path& nc_path, const
   {
     NcFile f;
     check(netcdf().nc_create(tmp.path().c_str(), NC_NETCDF4 | NC_CLOBBER, &f.id), nc_path, "create");
-    std::vector<int> dims;
-    if (axes.empty()) {
-      int d = -1;
-      check(netcdf().nc_def_dim(f.id, "point", rows, &d), nc_path, "define dimension point");
-      dims.push_back(d);
-    } else {
-      for (const auto& a : axes) {
-        int d = -1;
-        check(netcdf().nc_def_dim(f.id, a.column.c_str(), a.size, &d), nc_path, "define a dimension");
-        dims.push_back(d);
-      }
-    }
-    const double nan = std::numeric_limits<double>::quiet_NaN();
-    std::vector<int> var(ncol, -1);
-    for (std::size_t c = 0; c < ncol; ++c) {
-      const Field& fd = fields[c];
-      // An axis: its coordinate variable, over its own dimension.
-      std::vector<int> vd = dims;
-      for (std::size_t k = 0; k < axes.size(); ++k)
-        if (axis_col[k] == c) vd = {dims[k]};
-      const nc_type t = fd.type == "string" ? NC_STRING : fd.type == "integer" ? NC_INT64 : NC_DOUBLE;
-      check(netcdf().nc_def_var(f.id, fd.name.c_str(), t, static_cast<int>(vd.size()), vd.data(), &var[c]), nc_path,
-            ("define variable " + fd.name).c_str());
-      if (t == NC_DOUBLE) check(netcdf().nc_def_var_fill(f.id, var[c], 0, &nan), nc_path, "_FillValue");
-      // An integer column declares its fill only when a cell is missing: xarray reads an integer
-      // variable with a _FillValue as floats.
-      const bool missing = std::any_of(cells[c].begin(), cells[c].end(), [](const std::string& x) { return x.empty(); });
-      if (t == NC_INT64 && missing) check(netcdf().nc_def_var_fill(f.id, var[c], 0, &kIntFill), nc_path, "_FillValue");
-      if (t != NC_STRING && !fd.unit.empty()) put_text(f.id, var[c], "units", fd.unit, nc_path);
-      if (!fd.description.empty()) put_text(f.id, var[c], "long_name", fd.description, nc_path);
-    }
-    // The points' trajectories: one variable over the table's dimensions, the samples (time)
-    // and the trajectory's columns, NaN past a trajectory's end; `samples` says where it ends.
-    int traj_var = -1, samples_var = -1, column_var = -1, units_var = -1;
-    if (traj.longest > 0) {
-      int dt = -1, dc = -1;
-      check(netcdf().nc_def_dim(f.id, "time", traj.longest, &dt), nc_path, "define dimension time");
-      check(netcdf().nc_def_dim(f.id, "column", traj.columns.size(), &dc), nc_path, "define dimension column");
-      check(netcdf().nc_def_var(f.id, "column", NC_STRING, 1, &dc, &column_var), nc_path, "define variable column");
-      put_text(f.id, column_var, "long_name", "the trajectory's columns (as nanopush run's CSV names them)", nc_path);
-      check(netcdf().nc_def_var(f.id, "column_units", NC_STRING, 1, &dc, &units_var), nc_path, "define column_units");
-      put_text(f.id, units_var, "long_name", "the unit of each trajectory column", nc_path);
-      std::vector<int> td = dims;
-      td.push_back(dt);
-      td.push_back(dc);
-      check(netcdf().nc_def_var(f.id, "trajectory", NC_DOUBLE, static_cast<int>(td.size()), td.data(), &traj_var),
-            nc_path, "define variable trajectory");
-      check(netcdf().nc_def_var_fill(f.id, traj_var, 0, &nan), nc_path, "_FillValue");
-      put_text(f.id, traj_var, "long_name",
-               "each point's trajectory: its samples (time) by column; units per column in column_units; NaN after "
-               "the last sample",
-               nc_path);
-      check(netcdf().nc_def_var(f.id, "samples", NC_INT64, static_cast<int>(dims.size()), dims.data(), &samples_var),
-            nc_path, "define variable samples");
-      put_text(f.id, samples_var, "units", "1", nc_path);
-      put_text(f.id, samples_var, "long_name", "the number of samples of each point's trajectory (0: none)", nc_path);
-    }
-    put_text(f.id, NC_GLOBAL, "Conventions", "CF-1.8", nc_path);
-    put_text(f.id, NC_GLOBAL, "title", "nanopush table " + csv.filename().string(), nc_path);
-    put_text(f.id, NC_GLOBAL, "source_table", csv.filename().string(), nc_path);
-    put_provenance(f.id, prov, nc_path);
-    check(netcdf().nc_enddef(f.id), nc_path, "end of definitions");
-
-    for (std::size_t c = 0; c < ncol; ++c) {
-      const Field& fd = fields[c];
-      // An axis holds its values alone (the first row of each of its steps).
-      std::vector<std::size_t> pick;
-      for (std::size_t k = 0; k < axes.size(); ++k)
-        if (axis_col[k] == c)
-          for (std::size_t j = 0; j < axes[k].size; ++j) pick.push_back(j * stride[k]);
-      if (pick.empty())
-        for (std::size_t r = 0; r < rows; ++r) pick.push_back(r);
-      if (pick.empty()) continue;
-      if (fd.type == "string") {
-        std::vector<const char*> p;
-        for (std::size_t r : pick) p.push_back(cells[c][r].c_str());
-        check(netcdf().nc_put_var_string(f.id, var[c], p.data()), nc_path, ("write " + fd.name).c_str());
-      } else if (fd.type == "integer") {
-        std::vector<long long> v;
-        for (std::size_t r : pick) v.push_back(parse_integer(cells[c][r], csv, lines[r]));
-        check(netcdf().nc_put_var_longlong(f.id, var[c], v.data()), nc_path, ("write " + fd.name).c_str());
-      } else {
-        std::vector<double> v;
-        for (std::size_t r : pick) v.push_back(parse_number(cells[c][r], csv, lines[r]));
-        check(netcdf().nc_put_var_double(f.id, var[c], v.data()), nc_path, ("write " + fd.name).c_str());
-      }
-    }
-    if (traj_var >= 0) {
-      std::vector<const char*> names, units;
-      for (const auto& c : traj.columns) {
-        names.push_back(c.name.c_str());
-        units.push_back(c.unit.c_str());
-      }
-      check(netcdf().nc_put_var_string(f.id, column_var, names.data()), nc_path, "write column");
-      check(netcdf().nc_put_var_string(f.id, units_var, units.data()), nc_path, "write column_units");
-      std::vector<long long> n(traj.samples.begin(), traj.samples.end());
-      check(netcdf().nc_put_var_longlong(f.id, samples_var, n.data()), nc_path, "write samples");
-      const std::size_t width = traj.columns.size();
-      for (std::size_t r = 0; r < rows; ++r) {
-        if (traj.samples[r] == 0) continue;
-        const std::vector<double> v = read_trajectory(trajectories[r], width);
-        // Row r of the table is grid point (i_1, ..., i_k), the last axis fastest (or point r).
-        std::vector<std::size_t> start, count;
-        if (axes.empty()) {
-          start.push_back(r);
-          count.push_back(1);
-        } else {
-          for (std::size_t k = 0; k < axes.size(); ++k) {
-            start.push_back((r / stride[k]) % axes[k].size);
-            count.push_back(1);
-          }
-        }
-        start.insert(start.end(), {0, 0});
-        count.insert(count.end(), {v.size() / width, width});
-        check(netcdf().nc_put_vara_double(f.id, traj_var, start.data(), count.data(), v.data()), nc_path,
-              "write trajectory");
-      }
-    }
+    NetcdfTableWriter w(f.id, nc_path, csv, table, grid, traj);
+    w.define();
+    w.write(trajectories);
     const int id = f.id;
     f.id = -1;
     check(netcdf().nc_close(id), nc_path, "close");
