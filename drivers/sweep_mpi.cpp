@@ -356,6 +356,279 @@ void serve_on_main_thread(const sweep::Plan& plan, const sweep::Task& task, cons
   std::_Exit(code);
 }
 
+/// A worker rank's loop over its threads (serve_with_threads): rows out to rank 0 as they
+/// finish, kAhead points per thread asked for before they run dry (one request in flight),
+/// until rank 0 has no more work.
+void feed_threads(LocalWork& w, std::atomic<bool>& stop_all, unsigned jobs, const std::atomic<bool>* stop,
+                  const volatile std::sig_atomic_t* sig) {
+  ToRank0 to0;
+  bool finished = false, asked = false, remote = false;
+  Backoff poll(kPollFirst, kPollMost);
+  while (true) {
+    if (!remote) remote = stop_from_rank0();
+    const bool local = stop && stop->load();
+    const bool stopping = local || remote;
+    if (stopping) stop_all = true;
+    std::vector<std::pair<std::size_t, std::vector<std::string>>> out;
+    int want = 0;
+    {
+      std::lock_guard<std::mutex> lock(w.m);
+      out.swap(w.outbox);
+      if (w.failure) std::rethrow_exception(w.failure);
+      if (stopping) w.queue.clear();  // not started: a resumed sweep computes them
+      want = kAhead * static_cast<int>(jobs) - static_cast<int>(w.queue.size()) - static_cast<int>(w.busy);
+    }
+    if (stopping) w.cv.notify_all();
+    for (const auto& [i, r] : out) to0.row(i, r);
+    to0.progress();
+    if (!finished && !asked && (want > 0 || stopping)) {
+      if (stopping) want = local ? -signal_of(sig) : 0;
+      to0.request(want);
+      asked = true;
+    }
+    if (asked) {
+      if (auto got = work_reply(false)) {
+        asked = false;
+        {
+          std::lock_guard<std::mutex> lock(w.m);
+          if (got->empty()) {
+            finished = true;
+            w.no_more = true;
+          }
+          for (long long i : *got) w.queue.push_back(static_cast<std::size_t>(i));
+        }
+        w.cv.notify_all();
+        poll.reset();
+        continue;
+      }
+    }
+    {
+      std::lock_guard<std::mutex> lock(w.m);
+      if (finished && w.queue.empty() && w.busy == 0 && w.outbox.empty()) break;
+    }
+    wait_for_rows(w, poll.next());
+  }
+  to0.done();
+  to0.drain();
+}
+
+/// A worker rank of several threads. An error ends the job here (abort_job never returns), so
+/// the threads never outlive their work.
+void serve_with_threads(const sweep::Plan& plan, const sweep::Task& task, unsigned jobs, const std::atomic<bool>* stop,
+                        const volatile std::sig_atomic_t* sig) {
+  LocalWork w;
+  std::vector<std::thread> threads;
+  std::atomic<bool> stop_all{false};
+  try {
+    for (unsigned t = 0; t < jobs; ++t)
+      threads.emplace_back(worker, std::ref(w), std::cref(plan), std::cref(task), &stop_all);
+    feed_threads(w, stop_all, jobs, stop, sig);
+  } catch (...) {
+    abort_job(std::current_exception());
+  }
+  w.cv.notify_all();
+  for (auto& t : threads) t.join();
+}
+
+/// Rank 0: the journal, the ordered table, the next point to hand out to its own threads and
+/// to the worker ranks, and the stop; run() returns the exit status.
+class Coordinator {
+ public:
+  Coordinator(const sweep::Plan& plan, const sweep::Task& task, const sweep::Options& o, unsigned jobs, int size,
+              const volatile std::sig_atomic_t* sig)
+      : plan_(plan), task_(task), o_(o), jobs_(jobs), size_(size), sig_(sig),
+        record_((void(sweep::table_columns(plan, task)), sweep::plan_record(plan, task, o.fixed))),
+        journal_path_(sweep::journal_path(o.out)),  // a directory or a FIFO: refused here
+        table_(o.out, plan, task, o.shard_index, o.shard_count, o.row_sink, o.window),
+        journal_(journal_path_, sweep::sweep_identity(plan, task, o.shard_index, o.shard_count), journal_record(),
+                 [this](std::size_t i, std::string line) { resume_row(i, std::move(line)); }) {}
+
+  /// An error ends the job here (abort_job never returns), so the threads never outlive their
+  /// work.
+  int run(std::chrono::steady_clock::time_point start, bool quiet) {
+    try {
+      // Rank 0's own threads draw from the same positions, a few at a time; a stop (this
+      // rank's signal, or one a worker rank reports) ends them after their points in flight.
+      for (unsigned t = 0; t < jobs_; ++t)
+        threads_.emplace_back(worker, std::ref(w_), std::cref(plan_), std::cref(task_), &stop_all_);
+      loop();
+      {
+        std::lock_guard<std::mutex> lock(w_.m);
+        w_.no_more = true;
+      }
+      w_.cv.notify_all();
+      for (auto& t : threads_) t.join();
+      threads_.clear();
+      return finish(start, quiet);
+    } catch (...) {
+      abort_job(std::current_exception());
+    }
+  }
+
+ private:
+  sweep::PlanRecord journal_record() const {
+    sweep::PlanRecord jrec = record_;
+    jrec.emplace_back("shard", std::to_string(o_.shard_index) + "/" + std::to_string(o_.shard_count));
+    return jrec;
+  }
+
+  /// A row of the journal: into the table as it is read (few wait: docs/sweeps.md, "Memory").
+  void resume_row(std::size_t i, std::string line) {
+    if (i >= plan_.size() || i % o_.shard_count != o_.shard_index || table_.has((i - o_.shard_index) / o_.shard_count))
+      return;
+    const bool failed = sweep::row_failed(sweep::split_cells(line));
+    table_.add(i, std::move(line), failed);
+    ++resumed_;
+  }
+
+  /// The next point that may start (within the table's window), or nullopt.
+  std::optional<std::size_t> take() {
+    while (next_ < table_.positions() && table_.has(next_)) ++next_;
+    if (next_ >= table_.positions() || !table_.may_start(next_)) return std::nullopt;
+    return table_.index_of(next_++);
+  }
+  bool all_handed_out() {
+    while (next_ < table_.positions() && table_.has(next_)) ++next_;
+    return next_ >= table_.positions();
+  }
+  void add_row(std::size_t i, std::string line) {
+    journal_.append_line(i, line);
+    const bool failed = sweep::row_failed(sweep::split_cells(line));
+    table_.add(i, std::move(line), failed);
+  }
+
+  /// Up to `want` points to rank `dest` (none: no more work); false to wait for the window.
+  bool answer(int dest, int want) {
+    std::vector<long long> give;
+    while (!stop_sig_ && static_cast<int>(give.size()) < want)
+      if (auto i = take()) give.push_back(static_cast<long long>(*i));
+      else break;
+    if (want > 0 && give.empty() && !stop_sig_ && !all_handed_out()) return false;
+    MPI_Send(give.data(), static_cast<int>(give.size()), MPI_LONG_LONG, dest, kWork, MPI_COMM_WORLD);
+    return true;
+  }
+
+  void loop() {
+    auto last = std::chrono::steady_clock::now();
+    Backoff poll(kPollFirst, kPollMost);
+    while (true) {
+      if (!stop_sig_ && o_.stop && o_.stop->load()) stop_sig_ = signal_of(sig_);
+      if (stop_sig_ && !told_) tell_stop();
+      feed_local_threads();
+      while (!asks_.empty() && answer(asks_.front().first, asks_.front().second)) asks_.pop_front();
+      int flag = 0;
+      MPI_Status st;
+      MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &flag, &st);
+      if (flag) {
+        receive(st);
+        poll.reset();  // another message may follow at once
+        continue;
+      }
+      if (done_ranks_ == size_ - 1 && local_idle() && (all_handed_out() || stop_sig_)) break;
+      if (o_.progress && std::chrono::steady_clock::now() - last > std::chrono::milliseconds(500)) {
+        last = std::chrono::steady_clock::now();
+        o_.progress(table_.done(), table_.positions());
+      }
+      wait_for_rows(w_, poll.next());
+    }
+  }
+
+  void tell_stop() {
+    stop_all_ = true;
+    for (int r = 1; r < size_; ++r) MPI_Send(&stop_sig_, 1, MPI_INT, r, kStop, MPI_COMM_WORLD);
+    told_ = true;
+  }
+
+  /// The local threads' rows into the table; their queue refilled (cleared when stopping).
+  void feed_local_threads() {
+    std::vector<std::pair<std::size_t, std::vector<std::string>>> out;
+    {
+      std::lock_guard<std::mutex> lock(w_.m);
+      out.swap(w_.outbox);
+      if (w_.failure) std::rethrow_exception(w_.failure);
+    }
+    for (auto& [i, r] : out) add_row(i, sweep::join_cells(r));
+    {
+      std::lock_guard<std::mutex> lock(w_.m);
+      if (stop_sig_) w_.queue.clear();  // not started: a resumed sweep computes them
+      while (!stop_sig_ && w_.queue.size() < jobs_)
+        if (auto i = take()) w_.queue.push_back(*i);
+        else break;
+      if (all_handed_out() || stop_sig_) w_.no_more = true;
+    }
+    w_.cv.notify_all();
+  }
+
+  /// One message from a worker rank: a request, a row, or its last word.
+  void receive(const MPI_Status& st) {
+    if (st.MPI_TAG == kRequest) {
+      int want = 0;
+      MPI_Recv(&want, 1, MPI_INT, st.MPI_SOURCE, kRequest, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+      if (want < 0 && !stop_sig_) stop_sig_ = -want;  // a worker rank's signal stops every rank
+      if (!answer(st.MPI_SOURCE, want)) asks_.emplace_back(st.MPI_SOURCE, want);
+    } else if (st.MPI_TAG == kRow) {
+      int len = 0;
+      MPI_Get_count(&st, MPI_CHAR, &len);
+      std::string msg(static_cast<std::size_t>(len), '\0');
+      MPI_Recv(msg.data(), len, MPI_CHAR, st.MPI_SOURCE, kRow, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+      const auto nl = msg.find('\n');
+      const auto i =
+          nl == std::string::npos ? std::nullopt : parse_count(std::string_view(msg).substr(0, nl), plan_.size() - 1);
+      if (!i) throw std::logic_error("a row from rank " + std::to_string(st.MPI_SOURCE) + " without its point index");
+      add_row(*i, msg.substr(nl + 1));
+    } else if (st.MPI_TAG == kDone) {
+      double cpu = 0;
+      MPI_Recv(&cpu, 1, MPI_DOUBLE, st.MPI_SOURCE, kDone, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+      worker_cpu_ += cpu;
+      ++done_ranks_;
+    }
+  }
+
+  bool local_idle() {
+    std::lock_guard<std::mutex> lock(w_.m);
+    return w_.queue.empty() && w_.busy == 0 && w_.outbox.empty();
+  }
+
+  /// The table committed (or the interrupt said): the exit status.
+  int finish(std::chrono::steady_clock::time_point start, bool quiet) {
+    if (!table_.complete()) {
+      std::cerr << "sweep: interrupted: " << table_.done() << " of " << table_.positions() << " points are in "
+                << journal_.path().string() << "; run the same command again to resume\n";
+      return 128 + (stop_sig_ ? stop_sig_ : SIGINT);
+    }
+    const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - start;
+    const double cpu = sweep::process_cpu_seconds() + worker_cpu_;  // every rank, start to end
+    table_.commit(sweep::sweep_timings(wall.count(), jobs_, size_, resumed_, cpu), record_);
+    journal_.remove();
+    const std::size_t failed = table_.failed();
+    if (!quiet)
+      std::cerr << "sweep: " << table_.positions() << " points (" << resumed_ << " from the journal) over " << size_
+                << " MPI ranks x " << jobs_ << " threads, " << failed << " failed: " << o_.out.string() << "\n";
+    return failed ? 64 + static_cast<int>(std::min<std::size_t>(failed, 63)) : 0;
+  }
+
+  const sweep::Plan& plan_;
+  const sweep::Task& task_;
+  const sweep::Options& o_;
+  const unsigned jobs_;
+  const int size_;
+  const volatile std::sig_atomic_t* sig_;
+  const sweep::PlanRecord record_;
+  const std::filesystem::path journal_path_;
+  sweep::OrderedTable table_;
+  std::size_t resumed_ = 0;  // declared before journal_: the journal's rows count into it
+  sweep::Journal journal_;
+  LocalWork w_;
+  std::vector<std::thread> threads_;
+  std::atomic<bool> stop_all_{false};
+  std::size_t next_ = 0;                   // the next shard position to hand out
+  int done_ranks_ = 0;                     // worker ranks that sent kDone (all their rows are in)
+  int stop_sig_ = 0;                       // the signal that stops the sweep (here or on a worker rank)
+  bool told_ = false;                      // the worker ranks were sent kStop
+  double worker_cpu_ = 0;                  // the worker ranks' CPU time [s]
+  std::deque<std::pair<int, int>> asks_;  // requests waiting for the window to move: (rank, points)
+};
+
 }  // namespace
 
 int run_mpi_sweep(const sweep::Plan& plan, const sweep::Task& task, const sweep::Options& o, bool quiet,
@@ -374,154 +647,11 @@ int run_mpi_sweep(const sweep::Plan& plan, const sweep::Task& task, const sweep:
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   MPI_Comm_size(MPI_COMM_WORLD, &size);
   const unsigned jobs = threads_per_rank(o.jobs);
-  LocalWork w;
-  std::vector<std::thread> threads;
   int status = 0;
-
   if (rank == 0) {
     try {
-      // The coordinator: the journal, the ordered table, the next point to hand out.
-      (void)sweep::table_columns(plan, task);
-      const sweep::PlanRecord record = sweep::plan_record(plan, task, o.fixed);
-      sweep::PlanRecord jrec = record;
-      jrec.emplace_back("shard", std::to_string(o.shard_index) + "/" + std::to_string(o.shard_count));
-      const auto jpath = sweep::journal_path(o.out);  // a directory or a FIFO: refused here
-      sweep::OrderedTable table(o.out, plan, task, o.shard_index, o.shard_count, o.row_sink, o.window);
-      std::size_t resumed = 0;
-      // The journal's rows go to the table as they are read (few wait: docs/sweeps.md, "Memory").
-      sweep::Journal journal(jpath, sweep::sweep_identity(plan, task, o.shard_index, o.shard_count), jrec,
-                             [&](std::size_t i, std::string line) {
-                               if (i >= plan.size() || i % o.shard_count != o.shard_index ||
-                                   table.has((i - o.shard_index) / o.shard_count))
-                                 return;
-                               const bool failed = sweep::row_failed(sweep::split_cells(line));
-                               table.add(i, std::move(line), failed);
-                               ++resumed;
-                             });
-      std::size_t next = 0;  // the next shard position to hand out
-      // The next point that may start (within the table's window), or nullopt.
-      auto take = [&]() -> std::optional<std::size_t> {
-        while (next < table.positions() && table.has(next)) ++next;
-        if (next >= table.positions() || !table.may_start(next)) return std::nullopt;
-        return table.index_of(next++);
-      };
-      auto all_handed_out = [&] {
-        while (next < table.positions() && table.has(next)) ++next;
-        return next >= table.positions();
-      };
-      auto add_row = [&](std::size_t i, std::string line) {
-        journal.append_line(i, line);
-        const bool failed = sweep::row_failed(sweep::split_cells(line));
-        table.add(i, std::move(line), failed);
-      };
-      // Rank 0's own threads draw from the same positions, a few at a time; a stop (this
-      // rank's signal, or one a worker rank reports) ends them after their points in flight.
-      std::atomic<bool> stop_all{false};
-      for (unsigned t = 0; t < jobs; ++t)
-        threads.emplace_back(worker, std::ref(w), std::cref(plan), std::cref(task), &stop_all);
-      int done_ranks = 0;  // worker ranks that sent kDone (all their rows are in)
-      int stop_sig = 0;    // the signal that stops the sweep (here or on a worker rank)
-      bool told = false;   // the worker ranks were sent kStop
-      double worker_cpu = 0;
-      std::deque<std::pair<int, int>> asks;  // requests waiting for the window to move: (rank, points)
-      auto answer = [&](int dest, int want) {
-        std::vector<long long> give;
-        while (!stop_sig && static_cast<int>(give.size()) < want)
-          if (auto i = take()) give.push_back(static_cast<long long>(*i));
-          else break;
-        if (want > 0 && give.empty() && !stop_sig && !all_handed_out()) return false;  // wait for the window
-        MPI_Send(give.data(), static_cast<int>(give.size()), MPI_LONG_LONG, dest, kWork, MPI_COMM_WORLD);
-        return true;
-      };
-      auto last = std::chrono::steady_clock::now();
-      Backoff poll(kPollFirst, kPollMost);
-      while (true) {
-        if (!stop_sig && o.stop && o.stop->load()) stop_sig = signal_of(sig);
-        const bool stopping = stop_sig != 0;
-        if (stopping && !told) {
-          stop_all = true;
-          for (int r = 1; r < size; ++r) MPI_Send(&stop_sig, 1, MPI_INT, r, kStop, MPI_COMM_WORLD);
-          told = true;
-        }
-        {  // collect the local threads' rows and feed them
-          std::vector<std::pair<std::size_t, std::vector<std::string>>> out;
-          {
-            std::lock_guard<std::mutex> lock(w.m);
-            out.swap(w.outbox);
-            if (w.failure) std::rethrow_exception(w.failure);
-          }
-          for (auto& [i, r] : out) add_row(i, sweep::join_cells(r));
-          std::lock_guard<std::mutex> lock(w.m);
-          if (stopping) w.queue.clear();  // not started: a resumed sweep computes them
-          while (!stopping && w.queue.size() < jobs)
-            if (auto i = take()) w.queue.push_back(*i);
-            else break;
-          if (all_handed_out() || stopping) w.no_more = true;
-        }
-        w.cv.notify_all();
-        while (!asks.empty() && answer(asks.front().first, asks.front().second)) asks.pop_front();
-        int flag = 0;
-        MPI_Status st;
-        MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &flag, &st);
-        if (flag) {
-          if (st.MPI_TAG == kRequest) {
-            int want = 0;
-            MPI_Recv(&want, 1, MPI_INT, st.MPI_SOURCE, kRequest, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-            if (want < 0 && !stop_sig) stop_sig = -want;  // a worker rank's signal stops every rank
-            if (!answer(st.MPI_SOURCE, want)) asks.emplace_back(st.MPI_SOURCE, want);
-          } else if (st.MPI_TAG == kRow) {
-            int len = 0;
-            MPI_Get_count(&st, MPI_CHAR, &len);
-            std::string msg(static_cast<std::size_t>(len), '\0');
-            MPI_Recv(msg.data(), len, MPI_CHAR, st.MPI_SOURCE, kRow, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-            const auto nl = msg.find('\n');
-            const auto i = nl == std::string::npos ? std::nullopt
-                                                   : parse_count(std::string_view(msg).substr(0, nl), plan.size() - 1);
-            if (!i) throw std::logic_error("a row from rank " + std::to_string(st.MPI_SOURCE) + " without its point index");
-            add_row(*i, msg.substr(nl + 1));
-          } else if (st.MPI_TAG == kDone) {
-            double cpu = 0;
-            MPI_Recv(&cpu, 1, MPI_DOUBLE, st.MPI_SOURCE, kDone, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-            worker_cpu += cpu;
-            ++done_ranks;
-          }
-          poll.reset();  // another message may follow at once
-          continue;
-        }
-        bool local_idle;
-        {
-          std::lock_guard<std::mutex> lock(w.m);
-          local_idle = w.queue.empty() && w.busy == 0 && w.outbox.empty();
-        }
-        if (done_ranks == size - 1 && local_idle && (all_handed_out() || stopping)) break;
-        if (o.progress && std::chrono::steady_clock::now() - last > std::chrono::milliseconds(500)) {
-          last = std::chrono::steady_clock::now();
-          o.progress(table.done(), table.positions());
-        }
-        wait_for_rows(w, poll.next());
-      }
-      {
-        std::lock_guard<std::mutex> lock(w.m);
-        w.no_more = true;
-      }
-      w.cv.notify_all();
-      for (auto& t : threads) t.join();
-      threads.clear();
-      if (!table.complete()) {
-        std::cerr << "sweep: interrupted: " << table.done() << " of " << table.positions() << " points are in "
-                  << journal.path().string() << "; run the same command again to resume\n";
-        status = 128 + (stop_sig ? stop_sig : SIGINT);
-      } else {
-        const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - start;
-        const double cpu = sweep::process_cpu_seconds() + worker_cpu;  // every rank, start to end
-        table.commit(sweep::sweep_timings(wall.count(), jobs, size, resumed, cpu), record);
-        journal.remove();
-        const std::size_t failed = table.failed();
-        if (!quiet)
-          std::cerr << "sweep: " << table.positions() << " points (" << resumed << " from the journal) over " << size
-                    << " MPI ranks x " << jobs << " threads, " << failed << " failed: " << o.out.string() << "\n";
-        status = failed ? 64 + static_cast<int>(std::min<std::size_t>(failed, 63)) : 0;
-      }
+      Coordinator c(plan, task, o, jobs, size, sig);
+      status = c.run(start, quiet);
     } catch (...) {
       abort_job(std::current_exception());
     }
@@ -529,67 +659,8 @@ int run_mpi_sweep(const sweep::Plan& plan, const sweep::Task& task, const sweep:
     for (int r = 1; r < size; ++r) MPI_Send(&status, 1, MPI_INT, r, kFinal, MPI_COMM_WORLD);
   } else {
     try {
-      if (jobs == 1) {
-        serve_on_main_thread(plan, task, o.stop, sig);
-      } else {
-        // A worker rank: keep its threads supplied (kAhead points per thread, asked for before
-        // the threads run dry, one request in flight), send rows back as they finish.
-        std::atomic<bool> stop_all{false};
-        for (unsigned t = 0; t < jobs; ++t)
-          threads.emplace_back(worker, std::ref(w), std::cref(plan), std::cref(task), &stop_all);
-        ToRank0 to0;
-        bool finished = false, asked = false, remote = false;
-        Backoff poll(kPollFirst, kPollMost);
-        while (true) {
-          if (!remote) remote = stop_from_rank0();
-          const bool local = o.stop && o.stop->load();
-          const bool stopping = local || remote;
-          if (stopping) stop_all = true;
-          std::vector<std::pair<std::size_t, std::vector<std::string>>> out;
-          int want = 0;
-          {
-            std::lock_guard<std::mutex> lock(w.m);
-            out.swap(w.outbox);
-            if (w.failure) std::rethrow_exception(w.failure);
-            if (stopping) w.queue.clear();  // not started: a resumed sweep computes them
-            want = kAhead * static_cast<int>(jobs) - static_cast<int>(w.queue.size()) - static_cast<int>(w.busy);
-          }
-          if (stopping) w.cv.notify_all();
-          for (const auto& [i, r] : out) to0.row(i, r);
-          to0.progress();
-          if (!finished && !asked && (want > 0 || stopping)) {
-            if (stopping) want = local ? -signal_of(sig) : 0;
-            to0.request(want);
-            asked = true;
-          }
-          if (asked) {
-            if (auto got = work_reply(false)) {
-              asked = false;
-              {
-                std::lock_guard<std::mutex> lock(w.m);
-                if (got->empty()) {
-                  finished = true;
-                  w.no_more = true;
-                }
-                for (long long i : *got) w.queue.push_back(static_cast<std::size_t>(i));
-              }
-              w.cv.notify_all();
-              poll.reset();
-              continue;
-            }
-          }
-          {
-            std::lock_guard<std::mutex> lock(w.m);
-            if (finished && w.queue.empty() && w.busy == 0 && w.outbox.empty()) break;
-          }
-          wait_for_rows(w, poll.next());
-        }
-        to0.done();
-        to0.drain();
-        w.cv.notify_all();
-        for (auto& t : threads) t.join();
-        threads.clear();
-      }
+      if (jobs == 1) serve_on_main_thread(plan, task, o.stop, sig);
+      else serve_with_threads(plan, task, jobs, o.stop, sig);
     } catch (...) {
       abort_job(std::current_exception());
     }
