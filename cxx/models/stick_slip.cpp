@@ -194,223 +194,262 @@ void coulomb_rhs(const RoughBarModel& model, const double* y, const std::array<d
   coulomb_rhs_t(model, y, mode, d);
 }
 
-// One event loop (~250 lines): slide, locate the rest event (a step hook, then a regula falsi
-// whose sub-integrations stop at the main integration's terminal test), decide stick or slide
-// by Gauss' principle, hold the stick until the push overcomes the limit surface. Every branch
-// reads and writes the same state (mode, the last state and time, the pending event, the
-// outputs emitted), so its named steps are the helpers above (rest_event, analyse_rest, ...)
-// and the loop stays whole; cutting it further means a StickSlip state object, planned with
-// the event-located iCOR changes of issue 33.
 namespace {
 
-// The loop in any scalar S: double (integrate_coulomb), long double and quad
-// (integrate_coulomb_extended). Times, the rest analysis and the slide-off direction stay in
-// double (docs/accuracy.md, "References with more digits").
+// The coulomb law's stick-slip loop in any scalar S: double (integrate_coulomb), long double
+// and quad (integrate_coulomb_extended). Times, the rest analysis and the slide-off direction
+// stay in double (docs/accuracy.md, "References with more digits"). One object per run holds
+// the state every step reads and writes (the mode, the last state and time, the outputs
+// emitted, the events); its steps: start (the rest analysis of a body given at rest), slide
+// (one integration up to an event or the last output), locate_rest (the event's instant by
+// regula falsi), rest_event (stick, or the direction it slides on by Gauss' principle) and
+// hold (the outputs of a body that stays stuck).
 template <typename S, class Observer>
-StickSlipResult integrate_coulomb_t(const RoughBarModel& model, const BsOptions<S>& options, const S* y0,
-                                    const std::vector<double>& tout, const Observer& observer) {
-  using State = std::array<S, kRoughStateSize>;
-  StickSlipResult out;
-  const S L = length_scale(model);
-  State y{};
-  std::copy(y0, y0 + kRoughStateSize, y.begin());
-  double t = 0.0;
-  std::size_t iout = 0;
-  std::array<S, 3> mode{1, 0, 0};
-  bool stuck = false;
+class StickSlipLoop {
+ public:
+  StickSlipLoop(const RoughBarModel& model, const BsOptions<S>& options, const S* y0, const std::vector<double>& tout,
+                const Observer& observer)
+      : model_(model), tout_(tout), observer_(observer), L_(length_scale(model)), bs_(options),
+        sub_options_(options) {
+    std::copy(y0, y0 + kRoughStateSize, y_.begin());
+    // The event location's sub-integrations need the state at their end time only, so they
+    // run without dense output: there is nothing to interpolate, and near the velocity's zero
+    // (where the friction turns with V/|V| on the time scale |V|/|A|) the interpolant's error
+    // control of the modern method held them at steps of 1e-6 of their span until the step
+    // budget ran out (stick_mu015, rtol 1e-12). Steps clipped at the end time as in faithful.
+    sub_options_.dense = false;
+    // Velocity tolerances: the absolute tolerances of vx, vy, omega (or rtol times the peak).
+    for (int i = 0; i < 3; ++i) {
+      const std::size_t k = static_cast<std::size_t>(kVx + i);
+      vtol_[static_cast<std::size_t>(i)] = options.atol.size() == 1 ? options.atol[0] : options.atol[k];
+    }
+    // Position and angle tolerances.
+    for (int i = 0; i < 3; ++i) {
+      const std::size_t k = static_cast<std::size_t>(kX + i);
+      ptol_[static_cast<std::size_t>(i)] = options.atol.size() == 1 ? options.atol[0] : options.atol[k];
+    }
+  }
+  StickSlipLoop(const StickSlipLoop&) = delete;
+  StickSlipLoop& operator=(const StickSlipLoop&) = delete;
 
-  auto static_friction = [&](double theta) {
-    const WorldWrench ap = model.applied(static_cast<double>(theta));
-    return WorldWrench{-ap.fx, -ap.fy, -ap.mf};
+  StickSlipResult run() {
+    start();
+    while (iout_ < tout_.size()) {
+      if (stuck_) {
+        hold();
+        break;
+      }
+      emit_due_outputs();
+      if (iout_ >= tout_.size()) break;
+      const SlideEnd e = slide();
+      if (e.all_done) break;  // all outputs done
+      if (e.snapped) {
+        // Rest within the tolerance at t: the state emitted at outputs up to t stands. The
+        // kinetic energy left is dissipated by friction in the remaining motion: book it there
+        // (the push's work over that motion is below F times the position tolerance).
+        y_[kWorkFric] -= model_.kinetic_energy(y_.data());
+        rest_event();
+        continue;
+      }
+      locate_rest(e.t_event_end);
+    }
+    out_.stuck_at_end = stuck_;
+    return std::move(out_);
+  }
+
+ private:
+  using State = std::array<S, kRoughStateSize>;
+  static constexpr int kMaxEvents = 10000;
+  /// How one slide's integration ended: every output done, at rest within the tolerances
+  /// (snapped), or with the velocity's zero inside the step ending at t_event_end.
+  struct SlideEnd {
+    bool all_done = false;
+    bool snapped = false;
+    double t_event_end = 0.0;
   };
-  // Enter a rest state at time t: stick, or choose the sliding direction.
-  auto at_rest = [&]() {
-    y[kVx] = y[kVy] = y[kOmega] = 0.0;
-    const RestAnalysis ra = analyse_rest(model, static_cast<double>(y[kTheta]));
-    out.stats.nfcn += ra.evaluations;
-    if (ra.stuck) {
-      stuck = true;
+
+  // The body given at rest at t = 0: stick, or the direction it starts sliding in; else the
+  // mode follows its velocity.
+  void start() {
+    if (y_[kVx] == 0.0 && y_[kVy] == 0.0 && y_[kOmega] == 0.0) {
+      const bool s = at_rest();
+      out_.events.push_back({t_, s});
     } else {
-      mode = mode_of(model, S(ra.accel[0]), S(ra.accel[1]), S(ra.accel[2]));
+      mode_ = mode_of(model_, y_[kVx], y_[kVy], y_[kOmega]);
+    }
+    // Speed below which a sign change of g is taken as "came to rest" (not a rotation of V by
+    // more than 90 degrees within one step, which the error control makes implausible anyway).
+    peak_speed_ = speed_scaled(model_, y_.data());
+  }
+
+  WorldWrench static_friction(double theta) const {
+    const WorldWrench ap = model_.applied(static_cast<double>(theta));
+    return WorldWrench{-ap.fx, -ap.fy, -ap.mf};
+  }
+
+  // Enter a rest state at time t: stick, or choose the sliding direction.
+  bool at_rest() {
+    y_[kVx] = y_[kVy] = y_[kOmega] = 0.0;
+    const RestAnalysis ra = analyse_rest(model_, static_cast<double>(y_[kTheta]));
+    out_.stats.nfcn += ra.evaluations;
+    if (ra.stuck) {
+      stuck_ = true;
+    } else {
+      mode_ = mode_of(model_, S(ra.accel[0]), S(ra.accel[1]), S(ra.accel[2]));
     }
     return ra.stuck;
-  };
-  if (y[kVx] == 0.0 && y[kVy] == 0.0 && y[kOmega] == 0.0) {
-    const bool s = at_rest();
-    out.events.push_back({t, s});
-  } else {
-    mode = mode_of(model, y[kVx], y[kVy], y[kOmega]);
   }
 
-  BulirschStoer<S, kRoughStateSize> bs(options);
-  // The event location's sub-integrations need the state at their end time only, so they
-  // run without dense output: there is nothing to interpolate, and near the velocity's zero
-  // (where the friction turns with V/|V| on the time scale |V|/|A|) the interpolant's error
-  // control of the modern method held them at steps of 1e-6 of their span until the step
-  // budget ran out (stick_mu015, rtol 1e-12). Steps clipped at the end time as in faithful.
-  BsOptions<S> sub_options = options;
-  sub_options.dense = false;
-  auto rhs = [&](S, const S* yy, S* d) {
-    coulomb_rhs_t(model, yy, mode, d);
-    return 0;
-  };
-  auto accumulate = [&](const BsResult& r) {
-    out.stats.nfcn += r.nfcn;
-    out.stats.naccpt += r.naccpt;
-    out.stats.nrejct += r.nrejct;
-  };
-  // Velocity tolerances: the absolute tolerances of vx, vy, omega (or rtol times the peak).
-  std::array<S, 3> vtol{};
-  for (int i = 0; i < 3; ++i) {
-    const std::size_t k = static_cast<std::size_t>(kVx + i);
-    vtol[static_cast<std::size_t>(i)] = options.atol.size() == 1 ? options.atol[0] : options.atol[k];
+  // The right-hand side in the current mode, as the integrators call it.
+  auto rhs() {
+    return [this](S, const S* yy, S* d) {
+      coulomb_rhs_t(model_, yy, mode_, d);
+      return 0;
+    };
   }
-  std::array<S, 3> ptol{};  // position and angle tolerances
-  for (int i = 0; i < 3; ++i) {
-    const std::size_t k = static_cast<std::size_t>(kX + i);
-    ptol[static_cast<std::size_t>(i)] = options.atol.size() == 1 ? options.atol[0] : options.atol[k];
+
+  void accumulate(const BsResult& r) {
+    out_.stats.nfcn += r.nfcn;
+    out_.stats.naccpt += r.naccpt;
+    out_.stats.nrejct += r.nrejct;
   }
+
   // Terminal phase of a slide. Near rest the components of V across its direction relax at
   // the rate mu N/(m |V|), which grows without bound: the problem turns stiff and an explicit
   // integrator's steps shrink with |V|. The slide is over, to the requested accuracy, once
   // the motion still to come is below the tolerances: every velocity component within its
   // absolute tolerance, or (decelerating) the distance and angle still to travel,
   // v^2/(2|a|) and omega^2/(2|alpha|), within the position and angle tolerances.
-  auto terminal = [&](const S* yy) {
+  bool terminal(const S* yy) {
     S d[kRoughStateSize];
-    coulomb_rhs_t(model, yy, mode, d);
-    ++out.stats.nfcn;  // an RHS evaluation like any other: counted
+    coulomb_rhs_t(model_, yy, mode_, d);
+    ++out_.stats.nfcn;  // an RHS evaluation like any other: counted
     // Only a slide that is running down can end: the kinetic energy must be falling. (A
     // slide that has just started from rest has |V| below the tolerances too, but it speeds up.)
-    const S dke = S(model.mass) * (yy[kVx] * d[kVx] + yy[kVy] * d[kVy]) + S(model.inertia) * yy[kOmega] * d[kOmega];
+    const S dke = S(model_.mass) * (yy[kVx] * d[kVx] + yy[kVy] * d[kVy]) + S(model_.inertia) * yy[kOmega] * d[kOmega];
     if (!(dke < 0.0)) return false;
-    if (num::abs(yy[kVx]) <= vtol[0] && num::abs(yy[kVy]) <= vtol[1] && num::abs(yy[kOmega]) <= vtol[2]) return true;
+    if (num::abs(yy[kVx]) <= vtol_[0] && num::abs(yy[kVy]) <= vtol_[1] && num::abs(yy[kOmega]) <= vtol_[2]) return true;
     const S v2 = yy[kVx] * yy[kVx] + yy[kVy] * yy[kVy];
     const S vdotA = yy[kVx] * d[kVx] + yy[kVy] * d[kVy];
     const S acc = num::hypot(d[kVx], d[kVy]);
-    const bool lin_done = v2 == 0.0 || (vdotA < 0.0 && v2 <= 2.0 * acc * std::min(ptol[0], ptol[1]));
+    const bool lin_done = v2 == 0.0 || (vdotA < 0.0 && v2 <= 2.0 * acc * std::min(ptol_[0], ptol_[1]));
     const bool rot_done = yy[kOmega] == 0.0 || (yy[kOmega] * d[kOmega] < 0.0 &&
-                                               yy[kOmega] * yy[kOmega] <= 2.0 * num::abs(d[kOmega]) * ptol[2]);
+                                               yy[kOmega] * yy[kOmega] <= 2.0 * num::abs(d[kOmega]) * ptol_[2]);
     return lin_done && rot_done;
-  };
-  constexpr int kMaxEvents = 10000;
+  }
+
   // A slide that starts from rest speeds up (the power margin is positive). If it is found
   // at rest again before a single step of it could be committed, the start direction is
   // not resolvable at this tolerance: the push lies within rounding of the limit surface
   // (e.g. just above the minimum force), where the direction of a slide from rest is
   // ill-conditioned. Say so at once instead of cycling through rest events.
-  long steps_in_slide = 1;
-  auto check_progress = [&] {
-    if (steps_in_slide == 0)
-      throw CoulombError(BsStatus::step_underflow, "coulomb law: the slide that started from rest at t = " + fmt(t) +
+  void check_progress() const {
+    if (steps_in_slide_ == 0)
+      throw CoulombError(BsStatus::step_underflow, "coulomb law: the slide that started from rest at t = " + fmt(t_) +
                         " s stopped again within its first step; the push is too close to the limit surface for "
                         "the start direction to be resolved (near the minimum force; the CVODE path copes)");
-  };
-  int n_events = 0;
+  }
+
   // A rest reached at time t (the state's velocity still to be zeroed): stick, or choose the
   // direction in which it slides on; recorded as an event.
-  auto rest_event = [&] {
-    if (++n_events > kMaxEvents)
+  void rest_event() {
+    if (++n_events_ > kMaxEvents)
       throw CoulombError(BsStatus::too_many_steps, "coulomb law: more than " + std::to_string(kMaxEvents) + " rest events");
     check_progress();
     const bool s = at_rest();
-    steps_in_slide = 0;
-    out.events.push_back({t, s});
-  };
-  // Speed below which a sign change of g is taken as "came to rest" (not a rotation of V by
-  // more than 90 degrees within one step, which the error control makes implausible anyway).
-  S peak_speed = speed_scaled(model, y.data());
+    steps_in_slide_ = 0;
+    out_.events.push_back({t_, s});
+  }
 
-  while (iout < tout.size()) {
-    if (stuck) {
-      const WorldWrench sf = static_friction(static_cast<double>(y[kTheta]));
-      for (; iout < tout.size(); ++iout) observer(tout[iout], y.data(), sf);
-      break;
+  // Stuck for good: every output still to come holds the state, with static friction.
+  void hold() {
+    const WorldWrench sf = static_friction(static_cast<double>(y_[kTheta]));
+    for (; iout_ < tout_.size(); ++iout_) observer_(tout_[iout_], y_.data(), sf);
+  }
+
+  // Outputs at the current time.
+  void emit_due_outputs() {
+    while (iout_ < tout_.size() && tout_[iout_] <= t_) {
+      observer_(tout_[iout_], y_.data(), to_double(coulomb_friction_t(model_, y_.data(), mode_)));
+      ++iout_;
     }
-    // Outputs at the current time.
-    while (iout < tout.size() && tout[iout] <= t) {
-      observer(tout[iout], y.data(), to_double(coulomb_friction_t(model, y.data(), mode)));
-      ++iout;
-    }
-    if (iout >= tout.size()) break;
+  }
+
+  // One slide: integrate from t through the outputs still to come until an event stops it.
+  // After each accepted step: (1) g = V·mode < 0 means the velocity passed through zero
+  // inside the step: stop before it and locate the instant; (2) a velocity below the
+  // absolute tolerances of vx, vy and omega is rest at the requested accuracy: stop after
+  // it (near rest the velocity direction can keep turning on a time scale |V|/|A|, and
+  // without this the steps would shrink geometrically without ever reaching the zero);
+  // (3) otherwise the mode follows the velocity.
+  SlideEnd slide() {
     // The output times still to come, in S (a view of tout in double, a copy otherwise).
     std::vector<S> rest_s;
     std::span<const S> rest;
     if constexpr (std::is_same_v<S, double>) {
-      rest = std::span<const double>(tout.data() + iout, tout.size() - iout);
+      rest = std::span<const double>(tout_.data() + iout_, tout_.size() - iout_);
     } else {
-      rest_s.assign(tout.begin() + static_cast<std::ptrdiff_t>(iout), tout.end());
+      rest_s.assign(tout_.begin() + static_cast<std::ptrdiff_t>(iout_), tout_.end());
       rest = rest_s;
     }
     std::size_t emitted = 0;
-    // After each accepted step: (1) g = V·mode < 0 means the velocity passed through zero
-    // inside the step: stop before it and locate the instant; (2) a velocity below the
-    // absolute tolerances of vx, vy and omega is rest at the requested accuracy: stop after
-    // it (near rest the velocity direction can keep turning on a time scale |V|/|A|, and
-    // without this the steps would shrink geometrically without ever reaching the zero);
-    // (3) otherwise the mode follows the velocity.
     bool snapped = false;
     const auto hook_and_track = [&](S, const S*, S, const S* yn) {
-      const S g = yn[kVx] * mode[0] + yn[kVy] * mode[1] + yn[kOmega] * L * mode[2];
+      const S g = yn[kVx] * mode_[0] + yn[kVy] * mode_[1] + yn[kOmega] * L_ * mode_[2];
       if (g < 0.0) return static_cast<int>(kHookStopBefore);
-      ++steps_in_slide;
+      ++steps_in_slide_;
       if (terminal(yn)) {
         snapped = true;
         return static_cast<int>(kHookStopAfter);
       }
-      const S sp = num::sqrt(yn[kVx] * yn[kVx] + yn[kVy] * yn[kVy] + yn[kOmega] * L * yn[kOmega] * L);
-      peak_speed = std::max(peak_speed, sp);
-      if (sp > 0.0) mode = {yn[kVx] / sp, yn[kVy] / sp, yn[kOmega] * L / sp};
+      const S sp = num::sqrt(yn[kVx] * yn[kVx] + yn[kVy] * yn[kVy] + yn[kOmega] * L_ * yn[kOmega] * L_);
+      peak_speed_ = std::max(peak_speed_, sp);
+      if (sp > 0.0) mode_ = {yn[kVx] / sp, yn[kVy] / sp, yn[kOmega] * L_ / sp};
       return static_cast<int>(kHookContinue);
     };
-    BsResult r = bs.integrate(
-        rhs, S(t), y.data(), rest,
+    BsResult r = bs_.integrate(
+        rhs(), S(t_), y_.data(), rest,
         [&](std::size_t, S tt, const S* yy) {
-          observer(static_cast<double>(tt), yy, to_double(coulomb_friction_t(model, yy, mode)));
+          observer_(static_cast<double>(tt), yy, to_double(coulomb_friction_t(model_, yy, mode_)));
           ++emitted;
         },
         hook_and_track);
     accumulate(r);
     if (!r.ok()) {
-      out.stats.status = r.status;
-      out.stats.message = r.message;
+      out_.stats.status = r.status;
+      out_.stats.message = r.message;
       throw CoulombError(r.status, "coulomb law: " + r.message);
     }
-    iout += emitted;
-    t = r.t_reached;
-    if (!r.stopped_by_hook) break;  // all outputs done
-    if (snapped) {
-      // Rest within the tolerance at t: the state emitted at outputs up to t stands. The
-      // kinetic energy left is dissipated by friction in the remaining motion: book it there
-      // (the push's work over that motion is below F times the position tolerance).
-      y[kWorkFric] -= model.kinetic_energy(y.data());
-      rest_event();
-      continue;
-    }
-    // An event lies in (t, t1]: the velocity passed through zero. Locate g(t*) = 0 by the
-    // Illinois variant of regula falsi, integrating from the step start each time. A
-    // sub-integration that meets the terminal test (the motion still to come within the
-    // tolerances, as in the main integration) ends the search there: close to the zero the
-    // components of V across the mode relax at the rate mu N/(m |V|), and resolving them to
-    // a tight rtol took 20000 steps of 1e-20 s (fig3_31, coulomb law at rtol 1e-14, push
-    // rounded 4 ulps up) before the search could reach the zero itself.
-    const double t0 = t, t1 = r.t_event_end;
-    const State ystart = y;
+    iout_ += emitted;
+    t_ = r.t_reached;
+    return {!r.stopped_by_hook, snapped, r.t_event_end};
+  }
+
+  // An event lies in (t, t1]: the velocity passed through zero. Locate g(t*) = 0 by the
+  // Illinois variant of regula falsi, integrating from the step start each time. A
+  // sub-integration that meets the terminal test (the motion still to come within the
+  // tolerances, as in the main integration) ends the search there: close to the zero the
+  // components of V across the mode relax at the rate mu N/(m |V|), and resolving them to
+  // a tight rtol took 20000 steps of 1e-20 s (fig3_31, coulomb law at rtol 1e-14, push
+  // rounded 4 ulps up) before the search could reach the zero itself.
+  void locate_rest(double t1) {
+    const double t0 = t_;
+    const State ystart = y_;
     bool rest_found = false;  // a sub-integration met the terminal test at t_rest
     double t_rest = t0;
     State y_rest{};
     auto g_at = [&](double tt, State& yt) {
       yt = ystart;
       if (tt > t0) {
-        BulirschStoer<S, kRoughStateSize> sub(sub_options);
+        BulirschStoer<S, kRoughStateSize> sub(sub_options_);
         const S end[1] = {S(tt)};
         BsResult rr = sub.integrate(
-            rhs, S(t0), yt.data(), std::span<const S>(end, 1), [](std::size_t, S, const S*) {},
+            rhs(), S(t0), yt.data(), std::span<const S>(end, 1), [](std::size_t, S, const S*) {},
             [&](S, const S*, S, const S* yn) {
               return static_cast<int>(terminal(yn) ? kHookStopAfter : kHookContinue);
             });
         accumulate(rr);
-        out.root_fcn += rr.nfcn;
+        out_.root_fcn += rr.nfcn;
         if (!rr.ok()) throw CoulombError(rr.status, "coulomb law, event location: " + rr.message);
         if (rr.stopped_by_hook && (!rest_found || rr.t_reached < t_rest)) {
           rest_found = true;
@@ -418,7 +457,7 @@ StickSlipResult integrate_coulomb_t(const RoughBarModel& model, const BsOptions<
           y_rest = yt;
         }
       }
-      return yt[kVx] * mode[0] + yt[kVy] * mode[1] + yt[kOmega] * L * mode[2];
+      return yt[kVx] * mode_[0] + yt[kVy] * mode_[1] + yt[kOmega] * L_ * mode_[2];
     };
     State ya{}, yb{}, yc{};
     double a = t0, b = t1;
@@ -432,26 +471,49 @@ StickSlipResult integrate_coulomb_t(const RoughBarModel& model, const BsOptions<
           if (side >= 0) yb = yc;
         });
     if (rest_found) {
-      // Rest within the tolerances at t_rest, as when the main integration snaps (above).
-      t = t_rest;
-      y = y_rest;
-      y[kWorkFric] -= model.kinetic_energy(y.data());
+      // Rest within the tolerances at t_rest, as when the main integration snaps (run).
+      t_ = t_rest;
+      y_ = y_rest;
+      y_[kWorkFric] -= model_.kinetic_energy(y_.data());
       rest_event();
-      continue;
+      return;
     }
     // The rest instant: the end of the bracket on the g >= 0 side, velocity set to zero.
-    t = a;
-    y = ya;
-    const S sp = speed_scaled(model, y.data());
-    if (sp > 1e-6 * std::max(peak_speed, S(1e-300))) {
+    t_ = a;
+    y_ = ya;
+    const S sp = speed_scaled(model_, y_.data());
+    if (sp > 1e-6 * std::max(peak_speed_, S(1e-300))) {
       // Not a rest: the velocity turned by more than 90 degrees within a step. Follow it.
-      mode = mode_of(model, y[kVx], y[kVy], y[kOmega]);
-      continue;
+      mode_ = mode_of(model_, y_[kVx], y_[kVy], y_[kOmega]);
+      return;
     }
     rest_event();
   }
-  out.stuck_at_end = stuck;
-  return out;
+
+  const RoughBarModel& model_;
+  const std::vector<double>& tout_;
+  const Observer& observer_;
+  const S L_;
+  StickSlipResult out_;
+  State y_{};
+  double t_ = 0.0;
+  std::size_t iout_ = 0;
+  std::array<S, 3> mode_{1, 0, 0};
+  bool stuck_ = false;
+  BulirschStoer<S, kRoughStateSize> bs_;
+  BsOptions<S> sub_options_;
+  std::array<S, 3> vtol_{};  // velocity tolerances
+  std::array<S, 3> ptol_{};  // position and angle tolerances
+  long steps_in_slide_ = 1;  // accepted steps since the last rest (check_progress)
+  int n_events_ = 0;
+  S peak_speed_{};
+};
+
+template <typename S, class Observer>
+StickSlipResult integrate_coulomb_t(const RoughBarModel& model, const BsOptions<S>& options, const S* y0,
+                                    const std::vector<double>& tout, const Observer& observer) {
+  StickSlipLoop<S, Observer> loop(model, options, y0, tout, observer);
+  return loop.run();
 }
 
 }  // namespace
