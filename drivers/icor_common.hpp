@@ -43,10 +43,10 @@ struct NamedSolver {
 };
 inline std::vector<NamedSolver> all_solvers(double L, double k2) {
   return {
-      {"brent_cxx", [=](double yn) { return icor::solve_constrained_cubic(yn, L, k2, CubicMethod::Brent); }},
-      {"eigen_cxx", [=](double yn) { return icor::solve_constrained_cubic(yn, L, k2, CubicMethod::Eigen); }},
-      {"brent_f77", [=](double yn) { return f77::icor_cubic(yn, L, k2, f77::IcorCubicMethod::Brent); }},
-      {"lapack_f77", [=](double yn) { return f77::icor_cubic(yn, L, k2, f77::IcorCubicMethod::Lapack); }},
+      {"brent_cxx", [=](double yn) { return solve_cubic(yn, L, k2, CubicSolver::brent); }},
+      {"eigen_cxx", [=](double yn) { return solve_cubic(yn, L, k2, CubicSolver::eigen); }},
+      {"brent_f77", [=](double yn) { return solve_cubic(yn, L, k2, CubicSolver::brent_f77); }},
+      {"lapack_f77", [=](double yn) { return solve_cubic(yn, L, k2, CubicSolver::lapack_f77); }},
   };
 }
 

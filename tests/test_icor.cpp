@@ -254,7 +254,7 @@ TEST_CASE("No NaN for any finite input; roots at infinity are counted", "[icor][
         continue;
       }
       for (const auto m : {CubicMethod::Brent, CubicMethod::Eigen}) {
-        INFO("yn = " << yn << " L = " << L << " " << icor::to_string(m));
+        INFO("yn = " << yn << " L = " << L << " " << nanopush::to_string(m));
         const auto s = icor::solve_constrained_cubic(yn, L, k2, m);
         CHECK(s.real_roots.size() + static_cast<std::size_t>(s.complex_roots + s.at_infinity) == 3);
         for (double R : s.real_roots) CHECK(std::isfinite(R));

@@ -190,7 +190,6 @@ double constrained_force(double mu, double W, double R, double yn, double L, dou
   return num / den;
 }
 
-std::string to_string(CubicMethod m) { return m == CubicMethod::Brent ? "brent" : "eigen"; }
 
 BrentRoots real_roots_brent(const std::vector<double>& c_in) {
   for (std::size_t i = 0; i < c_in.size(); ++i) require_finite("c[" + std::to_string(i) + "]", c_in[i]);

@@ -39,17 +39,10 @@ CubicSolution solve_cubic(double yn, double L, double k2, const std::string& sol
   // The push point lies on the rod, as `nanopush icor roots` and the C API require.
   require_positive("L", L, "m");
   require_range("yn", yn, 0.0, 0.5 * L, "m; push point on the rod, at most b = L/2");
-  if (solver == "brent") return icor::solve_constrained_cubic(yn, L, k2, icor::CubicMethod::Brent);
-  if (solver == "eigen") return icor::solve_constrained_cubic(yn, L, k2, icor::CubicMethod::Eigen);
-  if (solver == "brent_f77") return f77::icor_cubic(yn, L, k2, f77::IcorCubicMethod::Brent);
-  if (solver == "lapack_f77") return f77::icor_cubic(yn, L, k2, f77::IcorCubicMethod::Lapack);
-  throw InputError("solver", solver, "must be brent, eigen, brent_f77 or lapack_f77");
+  return nanopush::solve_cubic(yn, L, k2, parse_choice<CubicSolver>("solver", solver));
 }
 
-void check_solver(const std::string& solver) {
-  if (solver != "brent" && solver != "eigen" && solver != "brent_f77" && solver != "lapack_f77")
-    throw InputError("solver", solver, "must be brent, eigen, brent_f77 or lapack_f77");
-}
+void check_solver(const std::string& solver) { (void)parse_choice<CubicSolver>("solver", solver); }
 
 icor::DynamicIntegrator parse_integrator(const std::string& s) { return icor::parse_dynamic_integrator("integrator", s); }
 
@@ -165,7 +158,9 @@ Rod() is the thesis nanorod (L = 590 nm, radius 13.5 nm, graphite on graphite).)
         for (std::size_t i = 0; i < s.real_roots.size(); ++i) r += (i ? ", " : "") + fmt(s.real_roots[i]);
         return r + "]>";
       });
-  m.attr("cubic_solvers") = py::make_tuple("brent", "eigen", "brent_f77", "lapack_f77");
+  py::tuple solvers(NameTable<CubicSolver>::table.size());
+  for (std::size_t i = 0; i < solvers.size(); ++i) solvers[i] = std::string(NameTable<CubicSolver>::table[i].second);
+  m.attr("cubic_solvers") = solvers;
   m.def("cubic_roots", &solve_cubic, py::arg("yn"), py::arg("L"), py::arg("k2"), py::arg("solver") = "brent",
         "Roots of eq 5.4 for a push at yn >= 0 [m] on a rod of length L [m] with k^2 = I/m [m^2], by one "
         "solver: 'brent' or 'eigen' (C++: Brent's method, companion-matrix eigenvalues), 'brent_f77' or "
@@ -314,8 +309,7 @@ and stuck, load W [N], half_width [m], rhs_evaluations, integrator, minimum_forc
   m.def(
       "error_analysis",
       [](double L, double k2, const std::string& solver, int n) {
-        if (solver != "brent" && solver != "eigen") throw InputError("solver", solver, "must be brent or eigen");
-        const auto e = icor::error_analysis(L, k2, solver == "brent" ? icor::CubicMethod::Brent : icor::CubicMethod::Eigen, n);
+        const auto e = icor::error_analysis(L, k2, parse_choice<icor::CubicMethod>("solver", solver), n);
         py::dict d;
         d["n"] = e.n;
         d["std_unknown_pressure_nm"] = e.std_unknown_pressure_nm;

@@ -2,10 +2,12 @@
 // codes become exceptions (InputError for bad input, SolverError for numerical failures) and results the same
 // CubicSolution the C++ solvers return, so drivers and tests compare like with like.
 #pragma once
+#include <stdexcept>
 #include <string>
 
 #include "f77_icor.h"
 #include "nanopush/numerics/error.hpp"
+#include "nanopush/numerics/names.hpp"
 #include "nanopush/models/icor.hpp"
 
 namespace nanopush::f77 {
@@ -68,3 +70,25 @@ inline double icor_force(int which, double mu, double W, double yn, double L, do
 }
 
 }  // namespace nanopush::f77
+
+namespace nanopush {
+
+/// The four solvers of the constrained cubic (5.4): the C++ ones (Brent's method, the
+/// companion matrix's eigenvalues) and the thesis' FORTRAN 77 routines (Brent, LAPACK DGEEV).
+enum class CubicSolver { brent, eigen, brent_f77, lapack_f77 };
+NANOPUSH_NAMES(CubicSolver, {CubicSolver::brent, "brent"}, {CubicSolver::eigen, "eigen"},
+               {CubicSolver::brent_f77, "brent_f77"}, {CubicSolver::lapack_f77, "lapack_f77"});
+
+/// The roots of the constrained cubic (5.4) by one of the four solvers.
+inline icor::CubicSolution solve_cubic(double yn, double L, double k2, CubicSolver solver) {
+  switch (solver) {
+    case CubicSolver::brent: return icor::solve_constrained_cubic(yn, L, k2, icor::CubicMethod::Brent);
+    case CubicSolver::eigen: return icor::solve_constrained_cubic(yn, L, k2, icor::CubicMethod::Eigen);
+    case CubicSolver::brent_f77: return f77::icor_cubic(yn, L, k2, f77::IcorCubicMethod::Brent);
+    case CubicSolver::lapack_f77: return f77::icor_cubic(yn, L, k2, f77::IcorCubicMethod::Lapack);
+  }
+  throw std::logic_error("solve_cubic: not a CubicSolver");
+}
+
+}  // namespace nanopush
+

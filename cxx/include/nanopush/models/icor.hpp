@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "nanopush/models/materials.hpp"
+#include "nanopush/numerics/names.hpp"
 
 namespace nanopush::icor {
 
@@ -112,7 +113,6 @@ enum class CubicMethod {
   Brent,  ///< van Wijngaarden-Dekker-Brent on brackets found from the critical points
   Eigen,  ///< eigenvalues of the balanced companion matrix (Eigen)
 };
-std::string to_string(CubicMethod m);
 
 /// The roots of the constrained cubic (5.4), with both branches and their signs.
 struct CubicSolution {
@@ -249,3 +249,7 @@ ErrorAnalysis error_analysis(double L, double k2, CubicMethod method, int n = 29
 double sample_std(const std::vector<double>& x);
 
 }  // namespace nanopush::icor
+
+namespace nanopush {
+NANOPUSH_NAMES(icor::CubicMethod, {icor::CubicMethod::Brent, "brent"}, {icor::CubicMethod::Eigen, "eigen"});
+}  // namespace nanopush
