@@ -50,11 +50,8 @@ py::object optional_float(const std::optional<double>& v) { return v ? py::objec
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-}  // namespace
-
-void register_icor(py::module_& parent) {
-  py::module_ m = parent.def_submodule("icor", "The instantaneous centre of rotation of a pushed nanorod (thesis ch. 4-5).");
-
+/// The rod and the thesis nanorod.
+void register_rod(py::module_& m) {
   py::class_<icor::Rod>(m, "Rod", R"doc(A thin rod on a plane (docs/icor.md), SI units. Fields: length L [m], radius [m],
 density [kg/m^3], hamaker H [J], z0 (rod-plane separation) [m], gravity g [m/s^2].
 Rod() is the thesis nanorod (L = 590 nm, radius 13.5 nm, graphite on graphite).)doc")
@@ -92,8 +89,10 @@ Rod() is the thesis nanorod (L = 590 nm, radius 13.5 nm, graphite on graphite).)
                ")";
       });
   m.def("nanorod", &icor::nanorod, "The thesis' nanorod: L = 590 nm, radius 13.5 nm, graphite on graphite.");
+}
 
-  // ---- Chapter 4 and 5 formulas, broadcast ------------------------------------------------
+/// Chapter 4 and 5 formulas, broadcast over NumPy arrays.
+void register_formulas(py::module_& m) {
   def_vec<2>(m, "experimental_fit", &icor::experimental_fit, {"yn", "L"},
              "Eq 4.1 (experimental fit): iCOR distance R [m] from the centre of mass for a push at yn [m] "
              "(0 <= yn <= L/2) on a rod of length L [m]. Broadcasts.");
@@ -136,8 +135,10 @@ Rod() is the thesis nanorod (L = 590 nm, radius 13.5 nm, graphite on graphite).)
       },
       py::arg("yn"), py::arg("rod"),
       "Coefficients c0..c3 (ascending) of eq 5.4 exactly as printed, with the rod's m, g, F_vdw, I [kg^3 m^4 s^-2].");
+}
 
-  // ---- The cubic by every solver --------------------------------------------------------------
+/// The constrained cubic (5.4) by every solver.
+void register_cubic(py::module_& m) {
   py::class_<CubicSolution>(m, "CubicSolution", "Roots of the constrained cubic (5.4) at one push point, SI.")
       .def_readonly("yn", &CubicSolution::yn, "push point [m]")
       .def_property_readonly(
@@ -179,8 +180,10 @@ Rod() is the thesis nanorod (L = 590 nm, radius 13.5 nm, graphite on graphite).)
       py::arg("yn"), py::arg("L"), py::arg("k2"), py::arg("solver") = "brent",
       "Both branches of eq 5.4 over arrays (broadcast): (negative, positive) [m], NaN where a branch does not "
       "exist. Solver as for cubic_roots.");
+}
 
-  // ---- Velocity iCOR, line contact, finite rectangle, dynamic iCOR -------------------------
+/// Velocity iCOR, line contact, finite rectangle, dynamic iCOR.
+void register_contact_and_dynamic(py::module_& m) {
   m.def(
       "from_velocity",
       [](const py::object& vx, const py::object& vy, const py::object& omega) {
@@ -305,7 +308,10 @@ rod_contact_half_width); integrator 'automatic', 'bulirsch-stoer' or 'cvode'. GI
 Returns a dict: arrays t, moving, translation, R (distance CM -> iCOR [m]), axial (along the
 rod, > 0 on the far side [m]), offset (across [m]), theta [rad], vx, vy [m/s], omega [rad/s];
 and stuck, load W [N], half_width [m], rhs_evaluations, integrator, minimum_force [N].)doc");
+}
 
+/// Section 5.6.1.1's error analysis and Table 5.1 as printed.
+void register_thesis_checks(py::module_& m) {
   m.def(
       "error_analysis",
       [](double L, double k2, const std::string& solver, int n) {
@@ -336,6 +342,16 @@ and stuck, load W [N], half_width [m], rhs_evaluations, integrator, minimum_forc
         return l;
       },
       "Table 5.1 as printed: yn [m], |R| [m], significant digits, and whether the thesis prints +-.");
+}
+}  // namespace
+
+void register_icor(py::module_& parent) {
+  py::module_ m = parent.def_submodule("icor", "The instantaneous centre of rotation of a pushed nanorod (thesis ch. 4-5).");
+  register_rod(m);
+  register_formulas(m);
+  register_cubic(m);
+  register_contact_and_dynamic(m);
+  register_thesis_checks(m);
 }
 
 }  // namespace nanopush::python
