@@ -78,8 +78,8 @@ std::vector<CostRow> cost(const std::string& preset, Law law, double truth, doub
   std::vector<CostRow> rows;
   // The accuracy both must reach: 1e-3 of the standard error (far below what the data tell).
   const double accuracy = 1e-3 * fit::fit_trajectory(s, obs, tight).parameters[0].stderr_;
-  for (const std::string g : {"sensitivities", "differences"}) {
-    if (law == Law::coulomb && g == "sensitivities") continue;
+  for (const fit::Gradients g : {fit::Gradients::sensitivities, fit::Gradients::differences}) {
+    if (law == Law::coulomb && g == fit::Gradients::sensitivities) continue;
     fo.gradients = g;
     // Levenberg-Marquardt's tolerances tightened tenfold until it is that close.
     for (const double tol : {1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12}) {
@@ -89,7 +89,7 @@ std::vector<CostRow> cost(const std::string& preset, Law law, double truth, doub
       const fit::FitResult r = fit::fit_trajectory(s, obs, fo);
       const double err = std::abs(r.parameters[0].value - best);
       if (err <= accuracy || tol <= 1e-12) {
-        CostRow row{to_string(law), "levenberg-marquardt (" + g + ", tol " + fmt(tol) + ")", r.parameters[0].value, err,
+        CostRow row{to_string(law), "levenberg-marquardt (" + to_string(g) + ", tol " + fmt(tol) + ")", r.parameters[0].value, err,
                     static_cast<long>(r.n_forward_solves), seconds_since(t0)};
         rows.push_back(row);
         log << "  " << to_string(law) << ", " << row.method << ": mu = " << std::setprecision(12) << row.estimate << ", "

@@ -128,7 +128,7 @@ void write_outputs(const fit::FitResult& r, const fit::Observations& obs, const 
 std::string summary_text(const fit::FitResult& r, const fit::Observations& obs, const std::string& name) {
   std::ostringstream s;
   s << "fit of " << name << " to " << obs.source << ": " << obs.t.size() << " times, " << obs.count()
-    << " values; gradients: " << r.gradients << (r.law.empty() ? "" : ", law " + r.law) << "\n";
+    << " values; gradients: " << to_string(r.gradients) << (r.law.empty() ? "" : ", law " + r.law) << "\n";
   for (const auto& p : r.parameters) {
     s << "  ";
     put_estimate(s, p, 8, 3, " (not determined separately)");
@@ -197,7 +197,7 @@ int run_fit(const FitCliOptions& o) {
   fo.law = parse_optional_choice<Law>("--law", o.law);
   fo.rtol = o.rtol;
   fo.accuracy = o.accuracy;
-  fo.gradients = o.gradients;
+  fo.gradients = parse_choice<fit::Gradients>("--gradients", o.gradients);
   fo.max_evaluations = o.max_evaluations;
   const fit::FitResult r = fit::fit_trajectory(sc, obs, fo);
   std::vector<fs::path> produced;
@@ -245,7 +245,7 @@ RegisterCommand reg_fit{{"fit", "Fit scene keys (e.g. surface.mu) to an observed
                            app.add_option("--gradients", o->gradients,
                                           "auto (sensitivities where the right-hand side is smooth, differences under the "
                                           "coulomb law) | sensitivities | differences")
-                               ->check(CLI::IsMember({"auto", "sensitivities", "differences"}));
+                               ->check(is_choice<fit::Gradients>());
                            app.add_option("--max-evaluations", o->max_evaluations, "Levenberg-Marquardt evaluations (default 100)")
                                ->check(count(1, 100000));
                            app.add_option("--json", o->json, "write the JSON summary to FILE (- = standard output)");

@@ -168,7 +168,7 @@ TEST_CASE("fit gradients: coulomb law by differences of whole solves, across sti
   CHECK(relative_difference(m.jac, 0, fd) < 3e-5);
   CHECK_THAT(input_error_of([&] {
                (void)model_poses(s, {"surface.mu"}, {s.surface.mu}, s.output_times(), Law::coulomb, 1e-10, true,
-                                 "sensitivities");
+                                 fit::Gradients::sensitivities);
              }),
              Catch::Contains("rest events"));
 }
@@ -202,7 +202,7 @@ FitResult fit_synthetic(const Scene& truth, const std::string& key, double start
 TEST_CASE("fit synthetic: smooth scene, push.force", "[fit][numeric]") {
   const Scene s = short_scene("thesis/fig3_6a.toml", 0.8e-9, 81);
   const FitResult r = fit_synthetic(s, "push.force", 1.3 * s.push.force, {2e-9, 2e-9, 0.02}, "", 11);
-  CHECK(r.gradients == "sensitivities");
+  CHECK(r.gradients == fit::Gradients::sensitivities);
   CHECK(r.fitted.size() == 81);
 }
 
@@ -214,7 +214,7 @@ TEST_CASE("fit synthetic: rough scene, thesis law, surface.mu", "[fit][numeric]"
 TEST_CASE("fit synthetic: rough scene, coulomb law, surface.mu", "[fit][numeric]") {
   const Scene s = short_scene("bench/stick_mu015.toml", 0.8e-9, 81);
   const FitResult r = fit_synthetic(s, "surface.mu", 0.13, {1e-9, 1e-9, 0.01}, "coulomb", 13);
-  CHECK(r.gradients == "differences");
+  CHECK(r.gradients == fit::Gradients::differences);
 }
 
 /// The fit found the keys `undetermined` not determined separately, and the data determine

@@ -82,7 +82,7 @@ struct Problem : Eigen::DenseFunctor<double> {
   const Observations& obs;
   const FitOptions& opt;
   std::optional<Law> law;
-  std::string gradients;
+  Gradients gradients = Gradients::sensitivities;
   std::vector<double> c, lo, hi;  // parameter scales, bounds (in p)
   std::int64_t solves = 0, sens_solves = 0;
   bool eager = false;  // derivatives with every evaluation (sensitivities: no extra solve)
@@ -113,7 +113,7 @@ struct Problem : Eigen::DenseFunctor<double> {
     std::int64_t n = 0;
     ModelPoses m = model_poses(scene, opt.free, params(u), obs.t, law, opt.rtol, d, gradients, &n);
     solves += n;
-    if (d && gradients == "sensitivities") ++sens_solves;
+    if (d && gradients == Gradients::sensitivities) ++sens_solves;
     if (cache.size() >= 4) cache.erase(cache.begin());
     cache.push_back({u, std::move(m)});
     return cache.back().m;
@@ -171,7 +171,7 @@ namespace {
 
 /// The options' checks and the gradients to use (auto: sensitivities where the right-hand
 /// side is smooth, differences under the coulomb law).
-std::string checked_gradients(const Scene& scene, const FitOptions& options, Law law) {
+Gradients checked_gradients(const Scene& scene, const FitOptions& options, Law law) {
   if (options.free.empty()) throw InputError("--free", "(none)", "name at least one scene key to fit");
   for (std::size_t k = 0; k < options.free.size(); ++k)
     for (std::size_t j = 0; j < k; ++j)
@@ -183,11 +183,9 @@ std::string checked_gradients(const Scene& scene, const FitOptions& options, Law
   require_range("ftol", options.ftol, 0, 1);
   require_range("identifiability_threshold", options.identifiability_threshold, 0, 1);
   const bool coulomb = scene.rough() && law == Law::coulomb;
-  std::string gradients = options.gradients;
-  if (gradients == "auto") gradients = coulomb ? "differences" : "sensitivities";
-  if (gradients != "sensitivities" && gradients != "differences")
-    throw InputError("gradients", gradients, "must be auto, sensitivities or differences");
-  if (coulomb && gradients == "sensitivities")
+  Gradients gradients = options.gradients;
+  if (gradients == Gradients::automatic) gradients = coulomb ? Gradients::differences : Gradients::sensitivities;
+  if (coulomb && gradients == Gradients::sensitivities)
     throw InputError("gradients", "sensitivities",
                      "the coulomb law's right-hand side jumps at its rest events: use differences (or auto)");
   return gradients;
@@ -403,7 +401,7 @@ FitResult fit_trajectory(const Scene& scene, const Observations& obs, const FitO
   const auto t0 = std::chrono::steady_clock::now();
   const Law law = detail::fit_law(scene, options_in.law);
   FitOptions options = options_in;
-  const std::string gradients = checked_gradients(scene, options, law);
+  const Gradients gradients = checked_gradients(scene, options, law);
   check_observations(obs, scene, options.free.size());
   FitAccuracy accuracy;
   if (options.accuracy < 0) options.accuracy = scene.solver.accuracy;
@@ -417,7 +415,7 @@ FitResult fit_trajectory(const Scene& scene, const Observations& obs, const FitO
   Problem prob(scene, obs, options, static_cast<int>(np), m);
   prob.law = law;
   prob.gradients = gradients;
-  prob.eager = gradients == "sensitivities";
+  prob.eager = gradients == Gradients::sensitivities;
   FitResult res;
   res.gradients = gradients;
   res.law = scene.rough() ? to_string(law) : "";
@@ -496,7 +494,7 @@ std::string fit_json(const FitResult& r) {
               {"iterations", r.iterations},
               {"n_forward_solves", r.n_forward_solves},
               {"n_sensitivity_solves", r.n_sensitivity_solves},
-              {"gradients", r.gradients},
+              {"gradients", to_string(r.gradients)},
               {"law", r.law},
               {"n_observations", r.t.size()}};
   if (r.accuracy.requested > 0)

@@ -275,21 +275,19 @@ std::vector<std::array<double, 3>> coulomb_poses(const Scene& scene, const std::
 
 ModelPoses model_poses(const Scene& scene, const std::vector<std::string>& free, const std::vector<double>& p,
                        const std::vector<double>& times, std::optional<Law> law_in, double rtol, bool derivatives,
-                       const std::string& gradients, std::int64_t* solves) {
+                       Gradients gradients, std::int64_t* solves) {
   check_times(times);
   require_range("rtol", rtol, 1e-14, 1e-3);
-  if (gradients != "auto" && gradients != "sensitivities" && gradients != "differences")
-    throw InputError("gradients", gradients, "must be auto, sensitivities or differences");
   if (p.size() != free.size()) throw InputError("parameters", std::to_string(p.size()), "one value per free key");
   Scene sc = free.empty() ? scene : detail::scene_at(scene, free, p);
   const bool coulomb = sc.rough() && detail::fit_law(scene, law_in) == Law::coulomb;
-  if (coulomb && gradients == "sensitivities")
+  if (coulomb && gradients == Gradients::sensitivities)
     throw InputError("gradients", "sensitivities",
                      "the coulomb law's right-hand side jumps at its rest events: use differences (or auto)");
   auto count = [&] {
     if (solves) ++*solves;
   };
-  const bool differences = derivatives && (coulomb || gradients == "differences");
+  const bool differences = derivatives && (coulomb || gradients == Gradients::differences);
   if (!coulomb && !differences) {
     count();
     return smooth_poses(sc, free, p, times, rtol, derivatives);

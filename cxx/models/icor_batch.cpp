@@ -11,12 +11,11 @@
 
 namespace nanopush::icor {
 
-std::string to_string(Pressure p) { return p == Pressure::Known ? "known" : "unknown"; }
+std::string to_string(Pressure p) { return std::string(name_of(p)); }
 
 Pressure parse_pressure(const std::string& text, const std::string& field) {
-  if (text == "known") return Pressure::Known;
-  if (text == "unknown") return Pressure::Unknown;
-  throw InputError(field, text.empty() ? "\"\"" : text, "must be known or unknown");
+  if (const auto p = choice_from_name<Pressure>(text)) return *p;
+  throw InputError(field, text.empty() ? "\"\"" : text, "must be " + choice_names<Pressure>());
 }
 
 MuEstimate estimate_mu_unknown_pressure(const Rod& rod, Measured F, Measured R, Measured yn, double sigma_L,

@@ -85,7 +85,7 @@ PyFit fit_scene(const Scene& scene, const py::object& data, const py::object& fr
   o.accuracy = accuracy;
   o.free = keys_of(free);
   o.law = parse_optional_choice<Law>("--law", law);
-  o.gradients = gradients;
+  o.gradients = parse_choice<fit::Gradients>("gradients", gradients);
   o.rtol = rtol;
   o.max_evaluations = max_evaluations;
   const auto overrides = sigma_of(sigma);
@@ -155,7 +155,7 @@ SciPy/lmfit names: names, x, stderr, covariance, success (= converged), nfev
       .def_property_readonly("status", [](const PyFit& f) { return f.r.status; })
       .def_property_readonly("iterations", [](const PyFit& f) { return f.r.iterations; })
       .def_property_readonly("n_forward_solves", [](const PyFit& f) { return f.r.n_forward_solves; })
-      .def_property_readonly("gradients", [](const PyFit& f) { return f.r.gradients; })
+      .def_property_readonly("gradients", [](const PyFit& f) { return to_string(f.r.gradients); })
       .def_property_readonly("law", [](const PyFit& f) { return f.r.law; })
       .def_property_readonly("accuracy",
                              [](const PyFit& f) -> py::object {

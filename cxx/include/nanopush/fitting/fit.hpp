@@ -17,6 +17,20 @@
 
 namespace nanopush::fit {
 
+/// How the fit's Jacobian is computed: `automatic` ("auto") takes sensitivities where the
+/// right-hand side is smooth and differences of whole solves under the coulomb law, whose
+/// right-hand side jumps at its rest events.
+enum class Gradients { automatic, sensitivities, differences };
+
+}  // namespace nanopush::fit
+
+namespace nanopush {
+NANOPUSH_NAMES(fit::Gradients, {fit::Gradients::automatic, "auto"}, {fit::Gradients::sensitivities, "sensitivities"},
+               {fit::Gradients::differences, "differences"});
+}  // namespace nanopush
+
+namespace nanopush::fit {
+
 /// The observed pose components, in column order.
 inline constexpr std::array<const char*, 3> kPoseColumns = {"x", "y", "theta"};
 
@@ -63,7 +77,7 @@ struct FitOptions {
   /// at the estimate (FitResult::accuracy). 0: run at rtol; < 0: the scene's solver.accuracy
   /// (so C and Fortran, whose fit has no such argument, set it on the scene).
   double accuracy = -1;
-  std::string gradients = "auto";
+  Gradients gradients = Gradients::automatic;
   int max_evaluations = 100;     ///< Levenberg-Marquardt function evaluations
   double xtol = 1e-8, ftol = 1e-10;  ///< Levenberg-Marquardt: relative step and reduction of chi2
   /// Singular values of the scaled Jacobian below this fraction of the largest are
@@ -126,7 +140,7 @@ struct FitResult {
   std::int64_t n_forward_solves = 0;      ///< every solve of the model (with or without sensitivities)
   std::int64_t n_sensitivity_solves = 0;  ///< of those, solves with sensitivities
   double wall_seconds = 0;
-  std::string gradients;           ///< sensitivities | differences
+  Gradients gradients = Gradients::sensitivities;  ///< those used: sensitivities | differences
   std::string law;                 ///< the law used (rough scenes), "" on smooth
   FitAccuracy accuracy;            ///< with FitOptions::accuracy: rtol chosen, estimate at the estimate
   Identifiability identifiability;
@@ -141,15 +155,14 @@ struct FitResult {
 FitResult fit_trajectory(const Scene& scene, const Observations& obs, const FitOptions& options);
 
 /// The model's pose at `times` for the scene with free keys = p, and (optionally) its
-/// derivatives d pose / d p_k: jac[i][k] = {dx, dy, dtheta}. `gradients` as FitOptions
-/// (auto | sensitivities | differences). Counts solves in *solves if given.
+/// derivatives d pose / d p_k: jac[i][k] = {dx, dy, dtheta}. `gradients` as FitOptions. Counts solves in *solves if given.
 struct ModelPoses {
   std::vector<std::array<double, 3>> pose;
   std::vector<std::vector<std::array<double, 3>>> jac;  ///< empty without derivatives
 };
 ModelPoses model_poses(const Scene& scene, const std::vector<std::string>& free, const std::vector<double>& p,
                        const std::vector<double>& times, std::optional<Law> law, double rtol, bool derivatives,
-                       const std::string& gradients = "auto", std::int64_t* solves = nullptr);
+                       Gradients gradients = Gradients::automatic, std::int64_t* solves = nullptr);
 
 /// Synthetic data: the scene's forward model at `times` (default: its output times) with
 /// seeded Gaussian noise of the given sigma per column (x, y, theta; a column with sigma

@@ -34,6 +34,11 @@ enum class Pressure {
   Known,    ///< thesis section 4.2.3.1: eqs 4.8 / 4.10
   Unknown,  ///< thesis section 4.2.3.2: eqs 4.11 / 4.13
 };
+}  // namespace nanopush::icor
+namespace nanopush {
+NANOPUSH_NAMES(icor::Pressure, {icor::Pressure::Known, "known"}, {icor::Pressure::Unknown, "unknown"});
+}  // namespace nanopush
+namespace nanopush::icor {
 std::string to_string(Pressure p);
 /// "known" | "unknown"; anything else throws InputError naming `field`.
 Pressure parse_pressure(const std::string& text, const std::string& field = "pressure");
