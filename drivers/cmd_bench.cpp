@@ -33,7 +33,8 @@ struct BenchOptions {
   std::string out;  // CSV; default bench_<scene>.csv
   std::string plot;  // PNG; default beside the CSV
   std::vector<std::string> engines;
-  std::vector<std::string> precisions;
+  std::vector<Precision> precisions;
+  std::vector<std::string> precision_names;  ///< --precision, read into precisions by bench_cmd
   bench::SweepSettings sweep;  ///< --kmin .. --repeats-extended, --replay (its progress set by run_bench)
   int samples = 0;
   std::int64_t rhs_budget = 0;  // stick-slip: RHS evaluations per solve for engines without event location
@@ -62,7 +63,7 @@ void stick_slip_budgets(BenchOptions& o) {
 // ------------------------------------------------------------------ the issue's ratios
 /// Cheapest run of (engine, precision) whose error is <= target: {nfcn, wall_s}; NaN if none.
 std::pair<double, double> cheapest_at(const std::vector<Row>& rows, const std::string& eng, double target,
-                                      const std::string& prec = "double") {
+                                      Precision prec = Precision::double_) {
   double nf = std::numeric_limits<double>::quiet_NaN(), wall = nf;
   for (const auto& r : rows) {
     if (r.engine != eng || r.precision != prec || r.status != 0 || !(r.error <= target)) continue;
@@ -72,7 +73,7 @@ std::pair<double, double> cheapest_at(const std::vector<Row>& rows, const std::s
   return {nf, wall};
 }
 
-bool has_engine(const std::vector<Row>& rows, const std::string& eng, const std::string& prec = "double") {
+bool has_engine(const std::vector<Row>& rows, const std::string& eng, Precision prec = Precision::double_) {
   return std::any_of(rows.begin(), rows.end(), [&](const Row& r) { return r.engine == eng && r.precision == prec; });
 }
 
@@ -115,7 +116,7 @@ Ratios measure_ratios(const std::vector<Row>& rows) {
   {
     double lo = std::numeric_limits<double>::infinity(), hi = 0;
     for (const auto& r : rows)
-      if ((r.engine == "cxx-faithful" || r.engine == "cxx-modern") && r.precision == "double" && r.status == 0 &&
+      if ((r.engine == "cxx-faithful" || r.engine == "cxx-modern") && r.precision == Precision::double_ && r.status == 0 &&
           r.nfcn >= kHostMinCalls && r.rhs_s > 0) {
         const double ns = r.rhs_s / static_cast<double>(r.nfcn) * 1e9;
         lo = std::min(lo, ns);
@@ -195,9 +196,9 @@ Ratios measure_ratios(const std::vector<Row>& rows) {
     double lo = std::numeric_limits<double>::infinity(), hi = 0;
     int mismatches = 0;
     for (const auto& a : rows) {
-      if (a.engine != f77 || a.precision != "double") continue;
+      if (a.engine != f77 || a.precision != Precision::double_) continue;
       for (const auto& c : rows) {
-        if (c.engine != "cxx-faithful" || c.precision != "double" || c.rtol != a.rtol) continue;
+        if (c.engine != "cxx-faithful" || c.precision != Precision::double_ || c.rtol != a.rtol) continue;
         const bool same = a.nfcn == c.nfcn && a.naccpt == c.naccpt && a.nrejct == c.nrejct;
         if (!same) {
           ++mismatches;
@@ -228,7 +229,7 @@ Ratios measure_ratios(const std::vector<Row>& rows) {
      << (alone ? " alone: ns per RHS (min / median / max) | alone <= 10 ns at |\n|---|---|---|---|---|---|---|---|\n"
                : "\n|---|---|---|---|---|---|\n");
   // "rtol <= R", "every rtol of the sweep" or "no rtol of the sweep" for one column.
-  const auto within = [&rows](const std::string& eng, const std::string& prec, double Row::*field) {
+  const auto within = [&rows](const std::string& eng, Precision prec, double Row::*field) {
     const auto from = bench::overhead_within_from(rows, eng, prec, 10.0, field);
     double loosest = 0;
     for (const auto& r : rows)
@@ -236,7 +237,7 @@ Ratios measure_ratios(const std::vector<Row>& rows) {
     return !from ? std::string("no rtol of the sweep") : *from >= loosest ? std::string("every rtol of the sweep")
                                                                           : "rtol <= " + num3(*from);
   };
-  std::vector<std::pair<std::string, std::string>> seen;
+  std::vector<std::pair<std::string, Precision>> seen;
   for (const auto& r : rows)
     if (std::find(seen.begin(), seen.end(), std::make_pair(r.engine, r.precision)) == seen.end())
       seen.emplace_back(r.engine, r.precision);
@@ -254,7 +255,7 @@ Ratios measure_ratios(const std::vector<Row>& rows) {
     std::sort(rc.begin(), rc.end());
     std::sort(sp.begin(), sp.end());
     std::sort(own.begin(), own.end());
-    md << "| " << eng << " | " << prec << " | " << num3(ov.front()) << " / " << num3(ov[ov.size() / 2]) << " / "
+    md << "| " << eng << " | " << to_string(prec) << " | " << num3(ov.front()) << " / " << num3(ov[ov.size() / 2]) << " / "
        << num3(ov.back()) << " | " << num3(rc[rc.size() / 2]) << " | "
        << (sp.empty() ? std::string("n/a (< 4 repeats)") : num3(100 * sp[sp.size() / 2]) + " %") << " | "
        << within(eng, prec, &Row::overhead_ns_per_rhs) << " |";
@@ -277,7 +278,7 @@ Ratios measure_ratios(const std::vector<Row>& rows) {
     for (const auto& r : rows)
       if (r.engine == eng && r.precision == prec && r.status == 0 && (!best || r.error < best->error)) best = &r;
     if (best)
-      md << "| " << eng << " | " << prec << " | " << num3(best->error) << " | " << num3(best->rtol) << " | "
+      md << "| " << eng << " | " << to_string(prec) << " | " << num3(best->error) << " | " << num3(best->rtol) << " | "
          << best->nfcn << " | " << num3(best->wall_s * 1e3) << " |\n";
   }
   // 4. Event location (stick-slip scene): RHS of the event-locating engine against the best
@@ -319,7 +320,7 @@ Ratios measure_ratios(const std::vector<Row>& rows) {
   for (const auto& r : rows)
     if (r.status != 0 && r.status != bench::kStatusBelowReference) {
       if (stick && r.engine != "cxx-events" && r.engine != "cvode-events") continue;
-      out.failures.push_back(r.engine + " (" + r.precision + ") failed at rtol " + fmt(r.rtol) + " with status " +
+      out.failures.push_back(r.engine + " (" + to_string(r.precision) + ") failed at rtol " + fmt(r.rtol) + " with status " +
                              std::to_string(r.status));
     }
   out.markdown = md.str();
@@ -358,7 +359,7 @@ BenchOutcome run_bench(const Scene& scene, const BenchOptions& o, std::ostream* 
   bench::SweepSettings s = o.sweep;
   if (log)
     s.progress = [log](const Row& r) {
-      *log << "  " << std::left << std::setw(16) << r.engine << std::setw(7) << r.precision << " rtol "
+      *log << "  " << std::left << std::setw(16) << r.engine << std::setw(7) << to_string(r.precision) << " rtol "
            << std::setw(9) << std::setprecision(3) << r.rtol << " error " << std::setw(10) << r.error << " RHS "
            << std::setw(8) << r.nfcn << " wall " << std::setw(9) << r.wall_s * 1e3 << " ms  overhead " << std::setw(7)
            << r.overhead_ns_per_rhs << " ns/RHS"
@@ -383,8 +384,8 @@ BenchOutcome run_bench(const Scene& scene, const BenchOptions& o, std::ostream* 
   if (b.reference.kind == "exact" && !out.extended_check.accepted)
     out.ratios.failures.push_back("quad C++ BS vs exact: " + out.extended_check.explanation);
   for (const auto& e : b.engines)
-    if (e.precision == "double" || e.name == "cxx-faithful") out.engine_notes.push_back(e.label() + ": " + e.note);
-  out.has_precision_plot = std::any_of(out.rows.begin(), out.rows.end(), [](const Row& x) { return x.precision != "double"; });
+    if (e.precision == Precision::double_ || e.name == "cxx-faithful") out.engine_notes.push_back(e.label() + ": " + e.note);
+  out.has_precision_plot = std::any_of(out.rows.begin(), out.rows.end(), [](const Row& x) { return x.precision != Precision::double_; });
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
   return out;
 }
@@ -408,13 +409,13 @@ std::vector<std::filesystem::path> plot_all(const std::vector<Row>& rows, const 
                                             const std::filesystem::path& png, const std::string& scene) {
   std::vector<Row> dbl, prec;
   for (const auto& r : rows) {
-    if (r.precision == "double") dbl.push_back(r);
+    if (r.precision == Precision::double_) dbl.push_back(r);
     if (r.engine.rfind("cxx-", 0) == 0) prec.push_back(r);
   }
   std::vector<std::filesystem::path> out;
   bench::plot_work_precision(dbl, csv, png, "Work-precision in double precision, scene " + scene);
   out.push_back(png);
-  if (prec.size() != dbl.size() || std::any_of(prec.begin(), prec.end(), [](const Row& r) { return r.precision != "double"; })) {
+  if (prec.size() != dbl.size() || std::any_of(prec.begin(), prec.end(), [](const Row& r) { return r.precision != Precision::double_; })) {
     std::filesystem::path p2 = png;
     p2.replace_extension();
     p2 += "_precision.png";
@@ -465,7 +466,7 @@ std::string report_section(const Scene& scene, const BenchOptions& o, const Benc
     std::string p2 = png_rel.substr(0, png_rel.size() - 4) + "_precision.png";
     md << "\n![precision](" << p2 << ")\n";
   }
-  if (!png_rel.empty() && std::any_of(r.rows.begin(), r.rows.end(), [](const Row& x) { return x.precision == "double"; }))
+  if (!png_rel.empty() && std::any_of(r.rows.begin(), r.rows.end(), [](const Row& x) { return x.precision == Precision::double_; }))
     md << "\n![integrator overhead per RHS evaluation against rtol](" << png_rel.substr(0, png_rel.size() - 4)
        << "_overhead.png)\n";
   md << "\nData: `" << csv_rel << "`. Engines:\n\n";
@@ -475,6 +476,7 @@ std::string report_section(const Scene& scene, const BenchOptions& o, const Benc
 }
 
 int bench_cmd(BenchOptions o) {
+  for (const auto& p : o.precision_names) o.precisions.push_back(parse_choice<Precision>("--precision", p));
   Scene scene = load_scene_arg(o.scene, o.sets);
   set_provenance_scene(o.scene);
   if (o.samples != 0) {
@@ -533,11 +535,11 @@ void reproduce_bench_scene(ReproduceContext& ctx, const std::string& step, const
   fs::create_directories(dir);
   BenchOptions o;
   o.scene = preset;
-  o.precisions = {"double", "long", "quad"};
+  o.precisions = {Precision::double_, Precision::long_, Precision::quad};
   if (ctx.quick) {
     o.sweep.kstep = 6;
     o.sweep.repeats = 1;
-    o.precisions = {"double", "quad"};
+    o.precisions = {Precision::double_, Precision::quad};
   } else {
     // Medians of 5: up to two load spikes on a shared machine do not move them. A long/quad
     // solve takes 10-400 ms, long against any spike: one timing, every other tolerance (a
@@ -587,7 +589,7 @@ RegisterCommand reg{
                       "engines to run (default all but cxx-modern-odex, which runs only when named): cxx-faithful, cxx-modern, "
                       "cxx-modern-odex, cxx-dop853, f77-callback, f77-native, cvode-adams, "
                       "cvode-bdf, arkode-erk8, odeint-bs, odeint-bs-dense");
-       app.add_option("--precision", o->precisions,
+       app.add_option("--precision", o->precision_names,
                       "scalar of the C++ BS, repeatable: double (53-bit), long (x87 64-bit), quad (__float128, "
                       "113-bit); default double")
            ->check(is_choice<Precision>());
@@ -661,7 +663,7 @@ RegisterReproduce step_stick{
        reproduce_bench_scene(c, "bench_stick", "stick_mu015", "stick_mu015",
                              "Work-precision: stick-slip, mu = 0.15, coulomb law (event location)", "mu = 0.15 stick-slip",
                              [&c](BenchOptions& o) {
-                               o.precisions = {"double"};
+                               o.precisions = {Precision::double_};
                                stick_slip_budgets(o);
                                if (c.quick) o.sweep.kstep = 6;
                              });

@@ -44,10 +44,10 @@ struct QuadRun {
   Solve q = extended_run(sc, p, 1e-28, true);
 };
 
-const bench::Engine& find(const std::vector<bench::Engine>& v, const std::string& name, const std::string& prec = "double") {
+const bench::Engine& find(const std::vector<bench::Engine>& v, const std::string& name, Precision prec = Precision::double_) {
   for (const auto& e : v)
     if (e.name == name && e.precision == prec) return e;
-  throw std::runtime_error("no engine " + name + " " + prec);
+  throw std::runtime_error("no engine " + name + " " + to_string(prec));
 }
 
 }  // namespace
@@ -156,7 +156,7 @@ TEST_CASE("bench: reference acceptance (two runs agree to 1e-3 of the smallest p
   CHECK(scaled_max_error(p, ext.y, exact) <= 1e-24);
   Row r;
   r.engine = "x";
-  r.precision = "double";
+  r.precision = Precision::double_;
   r.error = 1e-15;
   CHECK(accept_reference(ext, {r}).accepted);
   r.error = ext.disagreement * 10;  // a plotted error too close to the reference's own spread
@@ -165,7 +165,7 @@ TEST_CASE("bench: reference acceptance (two runs agree to 1e-3 of the smallest p
   // judged against exact references only; failed rows have no error).
   Row q1 = r, q2 = r, q3 = r;
   q1.error = 1e-14;
-  q2.precision = "quad";
+  q2.precision = Precision::quad;
   q2.error = 1e-25;
   q3.status = 3;
   q3.error = 1e-20;
@@ -186,13 +186,13 @@ TEST_CASE("bench: rows below the reference's resolution are kept but not plotted
   ref.kind = "extended";
   ref.disagreement = 1e-15;  // resolves errors >= 1e-12
   Row a, b, c, d, e;
-  a.precision = b.precision = c.precision = d.precision = e.precision = "double";
+  a.precision = b.precision = c.precision = d.precision = e.precision = Precision::double_;
   a.error = 1e-9;
   b.error = 2e-12;
   c.error = 5e-13;  // below 1e3 x disagreement
   d.error = 5e-13;
   d.status = 3;  // a failure stays a failure
-  e.precision = "quad";
+  e.precision = Precision::quad;
   e.error = 1e-20;  // extended-precision rows are judged against exact references only
   std::vector<Row> rows = {a, b, c, d, e};
   CHECK_FALSE(accept_reference(ref, rows).accepted);  // 5e-13 is not resolvable
@@ -310,7 +310,7 @@ TEST_CASE("bench: loosest rtol from which the overhead stays within a bound", "[
   auto row = [](const std::string& eng, double rtol, double ov, int status = 0) {
     Row r;
     r.engine = eng;
-    r.precision = "double";
+    r.precision = Precision::double_;
     r.rtol = rtol;
     r.nfcn = 1000;
     r.overhead_ns_per_rhs = ov;
@@ -323,41 +323,41 @@ TEST_CASE("bench: loosest rtol from which the overhead stays within a bound", "[
   // Rows of another precision, failed rows and rows without RHS calls do not count.
   rows.push_back(row("a", 1e-6, 3, 1));
   Row q = row("a", 1e-6, 3);
-  q.precision = "quad";
+  q.precision = Precision::quad;
   rows.push_back(q);
-  const auto ra = overhead_within_from(rows, "a", "double", 10.0);
+  const auto ra = overhead_within_from(rows, "a", Precision::double_, 10.0);
   REQUIRE(ra.has_value());
   CHECK(*ra == 1e-9);
   // A tighter row above the bound cuts the range off at the row below it.
-  const auto rb = overhead_within_from(rows, "b", "double", 10.0);
+  const auto rb = overhead_within_from(rows, "b", Precision::double_, 10.0);
   REQUIRE(rb.has_value());
   CHECK(*rb == 1e-9);
-  CHECK_FALSE(overhead_within_from(rows, "c", "double", 10.0).has_value());  // nowhere
-  CHECK(overhead_within_from(rows, "d", "double", 10.0).value() == 1e-3);    // everywhere
-  CHECK_FALSE(overhead_within_from(rows, "none", "double", 10.0).has_value());
+  CHECK_FALSE(overhead_within_from(rows, "c", Precision::double_, 10.0).has_value());  // nowhere
+  CHECK(overhead_within_from(rows, "d", Precision::double_, 10.0).value() == 1e-3);    // everywhere
+  CHECK_FALSE(overhead_within_from(rows, "none", Precision::double_, 10.0).has_value());
   // The bound itself counts as within: the 9.9 ns row at 1e-12 does not cut the range
   // (with a strict comparison the answer would be 1e-13); a bound below it does.
-  CHECK(overhead_within_from(rows, "a", "double", 9.9).value() == 1e-9);
-  CHECK(overhead_within_from(rows, "a", "double", 9.8).value() == 1e-13);
-  CHECK_THROWS_AS(overhead_within_from(rows, "a", "double", std::nan("")), InputError);
+  CHECK(overhead_within_from(rows, "a", Precision::double_, 9.9).value() == 1e-9);
+  CHECK(overhead_within_from(rows, "a", Precision::double_, 9.8).value() == 1e-13);
+  CHECK_THROWS_AS(overhead_within_from(rows, "a", Precision::double_, std::nan("")), InputError);
   // The same rule on another column: the replay measurement of the integrator alone.
   std::vector<Row> own = rows;
   for (auto& r : own) {
     r.own_ns_per_rhs = r.overhead_ns_per_rhs;
     r.overhead_ns_per_rhs = 100;
   }
-  CHECK(overhead_within_from(own, "a", "double", 10.0, &Row::own_ns_per_rhs).value() == 1e-9);
-  CHECK_FALSE(overhead_within_from(own, "a", "double", 10.0).has_value());
+  CHECK(overhead_within_from(own, "a", Precision::double_, 10.0, &Row::own_ns_per_rhs).value() == 1e-9);
+  CHECK_FALSE(overhead_within_from(own, "a", Precision::double_, 10.0).has_value());
   // Rows without the column (NaN: no replay) end the range like a row above the bound.
   own[4].own_ns_per_rhs = std::nan("");  // a at 1e-13
-  CHECK_FALSE(overhead_within_from(own, "a", "double", 10.0, &Row::own_ns_per_rhs).has_value());
+  CHECK_FALSE(overhead_within_from(own, "a", Precision::double_, 10.0, &Row::own_ns_per_rhs).has_value());
 }
 
 TEST_CASE("bench: sweep rows and the CSV carry the documented columns", "[bench][unit]") {
   const Scene sc = smooth_scene("a");
   EngineConfig cfg;
   cfg.only = {"cxx-faithful", "f77-native"};
-  cfg.precisions = {"double", "quad"};
+  cfg.precisions = {Precision::double_, Precision::quad};
   const Bench b = make_bench(sc, cfg);
   REQUIRE(b.engines.size() == 3);  // cxx-faithful double, cxx-faithful quad, f77-native
   SweepSettings s;
@@ -367,7 +367,7 @@ TEST_CASE("bench: sweep rows and the CSV carry the documented columns", "[bench]
   const auto rows = run_sweep(b.problem, b.engines, b.reference, s);
   REQUIRE(rows.size() == 3 + 4 + 3);
   for (const auto& r : rows) {
-    INFO(r.engine << " " << r.precision << " " << r.rtol);
+    INFO(r.engine << " " << to_string(r.precision) << " " << r.rtol);
     CHECK(r.status == 0);
     CHECK(r.nfcn > 0);
     CHECK(r.wall_s > 0);
@@ -377,7 +377,7 @@ TEST_CASE("bench: sweep rows and the CSV carry the documented columns", "[bench]
     CHECK(std::isnan(r.wall_spread));  // one repeat: no spread
     CHECK(std::isnan(r.own_ns_per_rhs));  // replay not asked for
   }
-  CHECK(rows[4].precision == "quad");
+  CHECK(rows[4].precision == Precision::quad);
   CHECK(rows[6].rtol == Approx(1e-18));
   CHECK(rows[6].error <= 1e-17);
   const auto path = std::filesystem::temp_directory_path() / "nanopush_test_bench.csv";
@@ -406,12 +406,12 @@ TEST_CASE("bench: a replayed RHS reproduces every double engine's solve bit for 
   // and returns no timer otherwise. No timing is judged here, only that one is produced.
   const Scene sc = smooth_scene("a");
   EngineConfig cfg;
-  cfg.precisions = {"double", "quad"};
+  cfg.precisions = {Precision::double_, Precision::quad};
   const Bench b = make_bench(sc, cfg);
   std::set<std::string> replayed;
   for (const auto& e : b.engines) {
     INFO(e.label());
-    if (e.precision != "double" || e.name == "f77-native") {
+    if (e.precision != Precision::double_ || e.name == "f77-native") {
       CHECK_FALSE(e.replay);  // extended scalars and the F77 RHS called from F77: no replay
       continue;
     }
@@ -493,7 +493,7 @@ TEST_CASE("bench: a sweep with replay fills own_ns_per_rhs for the replayable en
 
 TEST_CASE("bench: the overhead plot, with and without the replay panel", "[bench][replay][unit]") {
   // Synthetic rows: the figure's layout only (gnuplot writes it; no timing is measured).
-  auto row = [](const std::string& eng, const std::string& prec, double rtol, double ov, double own) {
+  auto row = [](const std::string& eng, Precision prec, double rtol, double ov, double own) {
     Row r;
     r.engine = eng;
     r.precision = prec;
@@ -512,9 +512,9 @@ TEST_CASE("bench: the overhead plot, with and without the replay panel", "[bench
     ss << in.rdbuf();
     return ss.str();
   };
-  std::vector<Row> rows = {row("a", "double", 1e-3, 20, 18), row("a", "double", 1e-6, 12, 11),
-                           row("b", "double", 1e-3, -3, nan), row("b", "double", 1e-6, 5, nan),
-                           row("a", "quad", 1e-3, 700, nan)};
+  const Precision dbl = Precision::double_;
+  std::vector<Row> rows = {row("a", dbl, 1e-3, 20, 18), row("a", dbl, 1e-6, 12, 11), row("b", dbl, 1e-3, -3, nan),
+                           row("b", dbl, 1e-6, 5, nan), row("a", Precision::quad, 1e-3, 700, nan)};
   write_csv(rows, dir / "r.csv");
   plot_overhead(rows, dir / "r.csv", dir / "with.png", "t");
   CHECK(std::filesystem::file_size(dir / "with.png") > 0);

@@ -62,7 +62,7 @@ Reference extended_reference(const Problem& p, const Solve& a, const Solve& b, c
 double smallest_plotted_error(const std::vector<Row>& rows) {
   double m = std::numeric_limits<double>::infinity();
   for (const auto& r : rows)
-    if (r.status == 0 && r.precision == "double" && std::isfinite(r.error) && r.error > 0) m = std::min(m, r.error);
+    if (r.status == 0 && r.precision == Precision::double_ && std::isfinite(r.error) && r.error > 0) m = std::min(m, r.error);
   return m;
 }
 
@@ -88,7 +88,7 @@ int mark_below_reference(const Reference& ref, std::vector<Row>& rows) {
   const double floor = 1e3 * ref.disagreement;
   int marked = 0;
   for (auto& r : rows)
-    if (r.status == 0 && r.precision == "double" && std::isfinite(r.error) && r.error < floor) {
+    if (r.status == 0 && r.precision == Precision::double_ && std::isfinite(r.error) && r.error < floor) {
       r.status = kStatusBelowReference;
       ++marked;
     }
@@ -96,7 +96,7 @@ int mark_below_reference(const Reference& ref, std::vector<Row>& rows) {
 }
 
 std::optional<double> overhead_within_from(const std::vector<Row>& rows, const std::string& engine,
-                                           const std::string& precision, double bound_ns, double Row::*field) {
+                                           Precision precision, double bound_ns, double Row::*field) {
   if (!std::isfinite(bound_ns)) throw InputError("overhead bound", fmt(bound_ns), "must be a finite number of ns");
   // The engine's successful rows from the tightest tolerance up; the same rows as the
   // report's overhead table (status 0, at least one RHS call).
@@ -167,7 +167,7 @@ std::vector<Row> run_sweep(const Problem& p, const std::vector<Engine>& engines,
   };
   std::vector<Plan> plans;
   for (const auto& e : engines) {
-    const bool extended = e.precision != "double";
+    const bool extended = e.precision != Precision::double_;
     const int kmax = extended ? std::max(s.kmax, s.kmax_extended) : s.kmax;
     const int kstep = extended && s.kstep_extended > 0 ? s.kstep_extended : s.kstep;
     plans.push_back({&e, tolerance_sweep(s.kmin, kmax, kstep, e.rtol_min),
@@ -185,12 +185,12 @@ std::vector<Row> run_sweep(const Problem& p, const std::vector<Engine>& engines,
   // the sweep then reaches every engine compared at that tolerance alike, so their ratios
   // stay fair on a busy machine. Precisions run one after the other (a __float128 solve
   // between two double ones would leave them colder caches than their neighbours').
-  std::vector<std::string> precisions;
+  std::vector<Precision> precisions;
   for (const auto& pl : plans)
     if (std::find(precisions.begin(), precisions.end(), pl.e->precision) == precisions.end())
       precisions.push_back(pl.e->precision);
   std::vector<std::vector<Row>> per_engine(plans.size());
-  for (const std::string& prec : precisions) {
+  for (const Precision prec : precisions) {
     std::vector<double> all;
     for (const auto& pl : plans)
       if (pl.e->precision == prec) all.insert(all.end(), pl.rtols.begin(), pl.rtols.end());
@@ -273,7 +273,7 @@ const Columns& csv_column_specs() {
 void write_csv(const std::vector<Row>& rows, const std::filesystem::path& path, const std::string& scene) {
   CsvWriter w(path, csv_column_specs(), scene);
   for (const auto& r : rows)
-    w.cells({csv_quote(r.engine), csv_quote(r.precision), csv_number(r.rtol), csv_number(r.error),
+    w.cells({csv_quote(r.engine), csv_quote(to_string(r.precision)), csv_number(r.rtol), csv_number(r.error),
              std::to_string(r.nfcn), std::to_string(r.naccpt), std::to_string(r.nrejct), csv_number(r.wall_s),
              csv_number(r.rhs_s), csv_number(r.overhead_ns_per_rhs), std::to_string(r.repeats),
              std::to_string(r.status), csv_number(r.wall_spread), csv_number(r.own_ns_per_rhs)});
@@ -298,7 +298,7 @@ std::string gp_text(const std::string& s) {
 
 void plot_work_precision(const std::vector<Row>& rows, const std::filesystem::path& csv,
                          const std::filesystem::path& png, const std::string& title) {
-  std::vector<std::pair<std::string, std::string>> lines;
+  std::vector<std::pair<std::string, Precision>> lines;
   for (const auto& r : rows)
     if (std::find(lines.begin(), lines.end(), std::make_pair(r.engine, r.precision)) == lines.end())
       lines.emplace_back(r.engine, r.precision);
@@ -321,11 +321,12 @@ void plot_work_precision(const std::vector<Row>& rows, const std::filesystem::pa
   static const char* points[] = {"5", "7", "9", "11", "13", "4", "6", "8", "10", "12", "2", "3", "1", "14"};
   std::size_t i = 0;
   for (const auto& [eng, prec] : lines) {
-    const std::string filt = "(strcol(1) eq '" + eng + "' && strcol(2) eq '" + prec + "' && $12 == 0 && $4 > 0 ? ";
+    const std::string filt =
+        "(strcol(1) eq '" + eng + "' && strcol(2) eq '" + to_string(prec) + "' && $12 == 0 && $4 > 0 ? ";
     const std::string y = filt + "$4 : 1/0)";
-    const std::string label = prec == "double" ? eng : eng + " (" + prec + ")";
+    const std::string label = prec == Precision::double_ ? eng : eng + " (" + to_string(prec) + ")";
     const std::string style = std::string("linespoints lw 1.5 pt ") + points[i % 14] + " ps 0.8 lc rgb '" +
-                              kColours[i % kColours.size()] + "'" + (prec == "double" ? "" : " dt 2");
+                              kColours[i % kColours.size()] + "'" + (prec == Precision::double_ ? "" : " dt 2");
     work.series.push_back({csv, "5", y, label, style});
     wall.series.push_back({csv, "($8*1e3)", y, label, style});
     ++i;
@@ -339,7 +340,7 @@ void plot_overhead(const std::vector<Row>& rows, const std::filesystem::path& cs
   std::vector<std::string> engines;
   bool alone = false;
   for (const auto& r : rows)
-    if (r.precision == "double") {
+    if (r.precision == Precision::double_) {
       if (std::find(engines.begin(), engines.end(), r.engine) == engines.end()) engines.push_back(r.engine);
       alone = alone || std::isfinite(r.own_ns_per_rhs);
     }
@@ -351,7 +352,7 @@ void plot_overhead(const std::vector<Row>& rows, const std::filesystem::path& cs
   double lo = target_ns, hi = target_ns;
   double rlo = std::numeric_limits<double>::infinity(), rhi = 0;
   for (const auto& r : rows) {
-    if (r.precision != "double") continue;
+    if (r.precision != Precision::double_) continue;
     if (r.rtol > 0) {
       rlo = std::min(rlo, r.rtol);
       rhi = std::max(rhi, r.rtol);
@@ -393,7 +394,7 @@ void plot_overhead(const std::vector<Row>& rows, const std::filesystem::path& cs
     const std::string style = std::string("linespoints lw 1.5 pt 7 ps 0.6 lc rgb '") + kColours[i % kColours.size()] + "'";
     sub.series.push_back({csv, "3", filt + "$10 > 0 ? $10 : 1/0)", gp_text(eng), style});
     const bool has_own = std::any_of(rows.begin(), rows.end(), [&eng](const Row& r) {
-      return r.engine == eng && r.precision == "double" && std::isfinite(r.own_ns_per_rhs);
+      return r.engine == eng && r.precision == Precision::double_ && std::isfinite(r.own_ns_per_rhs);
     });
     if (alone && has_own) own.series.push_back({csv, "3", filt + "$14 > 0 ? $14 : 1/0)", gp_text(eng), style});
     ++i;

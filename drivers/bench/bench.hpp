@@ -26,6 +26,7 @@
 
 #include "nanopush/numerics/scalar.hpp"
 #include "nanopush/outputs/io.hpp"
+#include "nanopush/scenes/choices.hpp"
 
 namespace nanopush::bench {
 
@@ -57,7 +58,7 @@ struct Solve {
 
 struct Engine {
   std::string name;                  ///< e.g. "cxx-faithful", "cvode-adams"
-  std::string precision = "double";  ///< scalar of the integration: double | long | quad
+  Precision precision = Precision::double_;  ///< scalar of the integration
   std::string note;                  ///< how outputs are produced (clipped steps or interpolation), settings
   double rtol_min = 1e-13;           ///< tightest tolerance that is meaningful in this precision
   std::function<Solve(double rtol)> solve;
@@ -71,7 +72,9 @@ struct Engine {
   /// Empty (no replay) for extended scalars and RHS the engine calls outside C++; the
   /// returned timer is empty when the replayed solve does not reproduce `first` exactly.
   std::function<std::function<double()>(double rtol, const Solve& first)> replay;
-  [[nodiscard]] std::string label() const { return precision == "double" ? name : name + " (" + precision + ")"; }
+  [[nodiscard]] std::string label() const {
+    return precision == Precision::double_ ? name : name + " (" + to_string(precision) + ")";
+  }
 };
 
 /// The trajectory errors are measured against.
@@ -116,7 +119,8 @@ std::vector<double> tolerance_sweep(int kmin, int kmax, int kstep, double rtol_m
 
 /// One line of the benchmark CSV.
 struct Row {
-  std::string engine, precision;
+  std::string engine;
+  Precision precision = Precision::double_;
   double rtol = 0;
   double error = 0;  ///< weighted max-abs error (NaN when the solve failed)
   std::int64_t nfcn = 0, naccpt = 0, nrejct = 0;
@@ -151,7 +155,7 @@ int mark_below_reference(const Reference& ref, std::vector<Row>& rows);
 /// a NaN counts as above). Empty when the tightest such row is already above the bound,
 /// or there is no such row. Throws InputError for a bound that is not finite.
 std::optional<double> overhead_within_from(const std::vector<Row>& rows, const std::string& engine,
-                                           const std::string& precision, double bound_ns,
+                                           Precision precision, double bound_ns,
                                            double Row::*field = &Row::overhead_ns_per_rhs);
 
 /// CSV header of the benchmark (docs/performance.md documents every column).

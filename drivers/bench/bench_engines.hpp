@@ -55,7 +55,7 @@ namespace nanopush::bench {
 
 /// Which engines to build. Empty `only` = all.
 struct EngineConfig {
-  std::vector<std::string> precisions = {"double"};  ///< of the C++ BS: double, long, quad
+  std::vector<Precision> precisions = {Precision::double_};  ///< of the C++ BS
   std::vector<std::string> only;                     ///< engine names to keep
   /// Stick-slip scene: RHS evaluations allowed per solve to the engines without event
   /// location (0 = only their step budgets); past it the RHS fails and so does the solve.
@@ -67,7 +67,7 @@ struct EngineConfig {
   [[nodiscard]] bool wants_named(const std::string& name) const {
     return std::find(only.begin(), only.end(), name) != only.end();
   }
-  [[nodiscard]] bool wants_precision(const std::string& p) const {
+  [[nodiscard]] bool wants_precision(Precision p) const {
     return std::find(precisions.begin(), precisions.end(), p) != precisions.end();
   }
 };

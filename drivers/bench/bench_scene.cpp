@@ -315,7 +315,7 @@ Bench make_bench(const Scene& sc, const EngineConfig& cfg) {
       b.engines.push_back(std::move(e));
     }
     EngineConfig dcfg = cfg;
-    dcfg.precisions = {"double"};
+    dcfg.precisions = {Precision::double_};
     for (auto& e : generic_engines<kRoughStateSize>(p, rhs, smp, dcfg)) {
       e.note = "no event location (thesis-law ODE): " + e.note;
       if (cfg.rhs_budget > 0) {
@@ -351,7 +351,7 @@ Bench make_bench(const Scene& sc, const EngineConfig& cfg) {
                                      "fortran/prog_nanobar.f built with -freal-8-real-16 (nanobar_quad): rtol 1e-20 vs "
                                      "1e-18, F77 friction and integrator in REAL(16)");
     EngineConfig dcfg = cfg;
-    dcfg.precisions = {"double"};  // the friction closed form is double: no long/quad engines here
+    dcfg.precisions = {Precision::double_};  // the friction closed form is double: no long/quad engines here
     b.engines = generic_engines<kRoughStateSize>(p, rhs, samples_from(p, b.reference), dcfg);
   } else {
     throw InputError("surface.kind", sc.model, "the benchmark supports: smooth, rough");

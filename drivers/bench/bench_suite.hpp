@@ -16,6 +16,17 @@ namespace nanopush::bench {
 /// the state). Double goes one half-decade further (1e-14) than the other engines (1e-13,
 /// Engine::rtol_min): the dense-output engine's global error is 4-60 x rtol, and the
 /// sweep must reach an achieved error of 1e-12 (issue 7's range).
+/// The precision whose scalar is S.
+template <class S>
+constexpr Precision precision_of() {
+  if constexpr (std::is_same_v<S, quad>)
+    return Precision::quad;
+  else if constexpr (std::is_same_v<S, long double>)
+    return Precision::long_;
+  else
+    return Precision::double_;
+}
+
 template <class S>
 constexpr double rtol_floor() {
   if constexpr (std::is_same_v<S, quad>)
@@ -46,14 +57,14 @@ namespace detail {
 template <class S, int N, class Rhs>
 void add_cxx_bs(std::vector<Engine>& v, const Problem& p, const std::shared_ptr<const Rhs>& rhs,
                 const RhsSamples& smp, const EngineConfig& cfg) {
-  if (!cfg.wants_precision(num::name<S>())) return;
+  if (!cfg.wants_precision(precision_of<S>())) return;
   for (const int variant : {0, 1, 2}) {  // faithful, modern, modern with ODEX's acceptance
     const bool modern = variant > 0;
     const double dense_accept = variant == 2 ? 10.0 : 1.0;
     Engine e;
     e.name = variant == 2 ? "cxx-modern-odex" : modern ? "cxx-modern" : "cxx-faithful";
     if (variant == 2 ? !cfg.wants_named(e.name) : !cfg.wants(e.name)) continue;
-    e.precision = num::name<S>();
+    e.precision = precision_of<S>();
     e.rtol_min = rtol_floor<S>();
     e.note = variant == 2 ? "cxx-modern with ODEX's interpolation acceptance (err_int <= 10, dense_accept = 10)"
              : modern     ? "C++ BS, polynomial extrapolation, kmax 10, step numbers 4j-2, dense output (outputs interpolated)"
@@ -94,7 +105,7 @@ std::vector<Engine> generic_engines(const Problem& p, std::shared_ptr<const Rhs>
     v.push_back(std::move(e));
   };
   detail::add_cxx_bs<double, N>(v, p, rhs, smp, cfg);
-  if (cfg.wants_precision("double")) {
+  if (cfg.wants_precision(Precision::double_)) {
     add("cxx-dop853", "C++ Dormand-Prince 8(5,3) (the method of Hairer's DOP853), dense output of order 7",
         [p](const auto& r, double rtol) {
           return timed([&](double* sec) { return solve_cxx_dop853<N>(p, r, rtol, sec); });
