@@ -17,6 +17,7 @@
 #include "nanopush/outputs/plot.hpp"
 #include "nanopush/models/rolling.hpp"
 #include "nanopush/models/surface_forces.hpp"
+#include "cli_checks.hpp"
 #include "columns.hpp"
 #include "registry.hpp"
 
@@ -53,16 +54,17 @@ toml::table options_to_tables(const Options& o, toml::table& body) {
   if (!o.substrate.empty()) env.insert("substrate", o.substrate);
   body.insert("shape", o.shape);
   body.insert("material", o.material);
-  if (o.shape == "bar") {
+  const Shape shape = parse_choice<Shape>("--shape", o.shape);
+  if (shape == Shape::bar) {
     body.insert("length", o.length);
     body.insert("width", o.width);
     body.insert("height", o.height);
-  } else if (o.shape == "sphere") {
+  } else if (shape == Shape::sphere) {
     body.insert("radius", o.radius);
   } else {
     body.insert("radius", o.radius);
     body.insert("length", o.length);
-    if (o.shape == "tube" && o.inner_radius >= 0.0) body.insert("inner_radius", o.inner_radius);
+    if (shape == Shape::tube && o.inner_radius >= 0.0) body.insert("inner_radius", o.inner_radius);
   }
   return env;
 }
@@ -158,7 +160,7 @@ RegisterCommand reg_forces{
        app.add_flag("--no-adhesion", o.no_adhesion, "ideal non-adhesive contact: no adhesion model is evaluated");
        app.add_option("--gap", o.gap, "body-substrate separation at contact z0 (m)")->capture_default_str();
        app.add_option("--substrate", o.substrate, "substrate material (default: the body's material)");
-       app.add_option("--shape", o.shape, "bar | rod | tube | sphere")->capture_default_str();
+       app.add_option("--shape", o.shape, "bar | rod | tube | sphere")->check(is_choice<Shape>())->capture_default_str();
        app.add_option("--material", o.material, "body material: graphite, silicon, silica, mica, gold")
            ->capture_default_str();
        app.add_option("--length", o.length, "length (m): bar, rod, tube")->capture_default_str();

@@ -451,11 +451,8 @@ PrintedReading read_printed_reading(const toml::table& t) {
   r.fy_sign = opt_bool(t, "surface.printed", "fy_sign").value_or(r.fy_sign);
   r.omega_sign = opt_bool(t, "surface.printed", "omega_sign").value_or(r.omega_sign);
   r.eq3_50 = opt_bool(t, "surface.printed", "eq3_50").value_or(r.eq3_50);
-  if (auto c4 = opt_string(t, "surface.printed", "c4")) {
-    if (*c4 != "squares_nm" && *c4 != "cubes")
-      throw InputError("surface.printed.c4", "\"" + *c4 + "\"", "must be one of: squares_nm, cubes");
-    r.c4_squares = *c4 == "squares_nm";
-  }
+  if (auto c4 = opt_string(t, "surface.printed", "c4"))
+    r.c4_squares = scene_choice<PrintedC4>("surface.printed.c4", *c4) == PrintedC4::squares_nm;
   return r;
 }
 

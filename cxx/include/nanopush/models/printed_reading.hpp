@@ -7,6 +7,8 @@
 #include <string_view>
 #include <utility>
 
+#include "nanopush/numerics/names.hpp"
+
 namespace nanopush {
 
 /// A reading of the four slips of eqs (3.45)-(3.50) (docs/rough.md, errata F1-F3 and erratum 3):
@@ -20,6 +22,11 @@ struct PrintedReading {
   bool eq3_50 = false;     ///< erratum 3: fy = fx' sin(theta) - fy' cos(theta) as printed (false: +)
   friend bool operator==(const PrintedReading&, const PrintedReading&) = default;
 };
+/// How eq 3.48's C4 is read (surface.printed.c4): with squares, lengths in nm, as printed (F2),
+/// or with cubes, dimensionally consistent.
+enum class PrintedC4 { squares_nm, cubes };
+NANOPUSH_NAMES(PrintedC4, {PrintedC4::squares_nm, "squares_nm"}, {PrintedC4::cubes, "cubes"});
+
 /// The 16 readings in a fixed order: index bit 0 corrects F1, bit 1 F3, bit 2 takes cubes in C4,
 /// bit 3 prints eq 3.50; index 0 is the literal reading (PrintedReading{}).
 PrintedReading printed_reading(int index);
