@@ -105,12 +105,13 @@ int sweep_cmd(SweepOptions o) {
   }
   std::unique_ptr<sweep::Task> task;
   std::string default_out;
-  if (o.task == "run") {
+  const sweep::TaskKind kind = parse_choice<sweep::TaskKind>("--task", o.task);
+  if (kind == sweep::TaskKind::run) {
     if (o.scene.empty()) throw InputError("SCENE", "(missing)", "--task run sweeps a scene: give a file or preset");
     Scene sc = load_scene(resolve_scene(o.scene));
     read_sweep_table(sc, o);
   }
-  if (o.task == "run") {
+  if (kind == sweep::TaskKind::run) {
     Scene sc = load_scene_arg(o.scene, o.sets);
     set_provenance_scene(o.scene);
     RunSettings rs;
@@ -135,7 +136,7 @@ int sweep_cmd(SweepOptions o) {
       if (axis.values.size() != 1) throw InputError("--set", s, "one value (use --vary for several)");
       fixed.emplace_back(axis.key, axis.values.front());
     }
-    task = sweep::make_task(o.task, fixed);
+    task = sweep::make_task(kind, fixed);
     default_out = o.task + "_sweep.csv";
   }
   sweep::Plan plan;
@@ -215,7 +216,7 @@ RegisterCommand reg{
        app.add_option("--vary-log", o->vary_log, "KEY=FROM:TO:N: N geometrically spaced values")->type_name("KEY=RANGE");
        app.add_option("--points", o->points, "CSV file of points instead of a grid: header = keys, a row per point");
        app.add_option("--task", o->task, "what each point evaluates: run (default), friction, icor, estimate-mu")
-           ->check(CLI::IsMember({"run", "friction", "icor", "estimate-mu"}));
+           ->check(is_choice<sweep::TaskKind>());
        app.add_option("--engine", o->engine, "task run: cxx or f77 (default: the scene's)")
            ->check(is_choice<Engine>());
        app.add_option("--method", o->method, "task run: faithful, modern, dop853, cvode or auto (default: the scene's)")

@@ -427,11 +427,14 @@ std::unique_ptr<Task> make_icor_task(const std::vector<SceneSetting>& fixed) { r
 std::unique_ptr<Task> make_estimate_mu_task(const std::vector<SceneSetting>& fixed) {
   return std::make_unique<EstimateMuTask>(fixed);
 }
-std::unique_ptr<Task> make_task(const std::string& name, const std::vector<SceneSetting>& fixed) {
-  if (name == "friction") return make_friction_task(fixed);
-  if (name == "icor") return make_icor_task(fixed);
-  if (name == "estimate-mu") return make_estimate_mu_task(fixed);
-  throw InputError("--task", name, "must be one of: run, friction, icor, estimate-mu");
+std::unique_ptr<Task> make_task(TaskKind kind, const std::vector<SceneSetting>& fixed) {
+  switch (kind) {
+    case TaskKind::friction: return make_friction_task(fixed);
+    case TaskKind::icor: return make_icor_task(fixed);
+    case TaskKind::estimate_mu: return make_estimate_mu_task(fixed);
+    case TaskKind::run: break;
+  }
+  throw std::logic_error("make_task: a run sweep needs a scene (make_run_task)");
 }
 
 // ---- rows --------------------------------------------------------------------------------

@@ -165,7 +165,8 @@ py::tuple run_sweep(const std::string& task_name, const py::object& scene_obj, c
                     const std::string& method, const std::string& law, const py::object& accuracy,
                     const py::object& error_estimate, const py::object& progress, const py::object& out) {
   std::unique_ptr<sweep::Task> task;
-  if (task_name == "run") {
+  const sweep::TaskKind kind = parse_choice<sweep::TaskKind>("task", task_name);
+  if (kind == sweep::TaskKind::run) {
     if (scene_obj.is_none()) throw InputError("task", "run", "a run sweep needs a scene");
     if (!py::isinstance<Scene>(scene_obj))
       throw InputError("scene", py::repr(scene_obj).cast<std::string>(), "must be a nanopush.Scene");
@@ -199,7 +200,7 @@ py::tuple run_sweep(const std::string& task_name, const py::object& scene_obj, c
       const auto key = item.first.cast<std::string>();
       s.emplace_back(key, plan_value(key, item.second));
     }
-    task = sweep::make_task(task_name, s);
+    task = sweep::make_task(kind, s);
   }
   sweep::Plan plan;
   if (!points.is_none()) {

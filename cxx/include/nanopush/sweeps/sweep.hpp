@@ -142,8 +142,10 @@ std::unique_ptr<Task> make_friction_task(const std::vector<SceneSetting>& fixed)
 std::unique_ptr<Task> make_icor_task(const std::vector<SceneSetting>& fixed);
 /// mu and its uncertainty from a push force and yn, or from a force and an observed iCOR R.
 std::unique_ptr<Task> make_estimate_mu_task(const std::vector<SceneSetting>& fixed);
-/// The task named (run needs a scene: use make_run_task).
-std::unique_ptr<Task> make_task(const std::string& name, const std::vector<SceneSetting>& fixed);
+/// The kinds of sweep task: runs of a scene, or one of the closed-form tasks.
+enum class TaskKind { run, friction, icor, estimate_mu };
+/// The closed-form task of that kind (run needs a scene: use make_run_task).
+std::unique_ptr<Task> make_task(TaskKind kind, const std::vector<SceneSetting>& fixed);
 
 /// The table's columns: point, the varied keys, the task's outputs, status, message. With
 /// `check`, checks every varied key and every distinct value with the task (InputError before
@@ -312,3 +314,9 @@ std::string plan_identity(const Plan& plan, const Task& task);
 std::size_t merge_tables(const std::vector<std::filesystem::path>& shards, const std::filesystem::path& out);
 
 }  // namespace nanopush::sweep
+
+namespace nanopush {
+NANOPUSH_NAMES(sweep::TaskKind, {sweep::TaskKind::run, "run"}, {sweep::TaskKind::friction, "friction"},
+               {sweep::TaskKind::icor, "icor"}, {sweep::TaskKind::estimate_mu, "estimate-mu"});
+}  // namespace nanopush
+
