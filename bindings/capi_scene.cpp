@@ -17,12 +17,13 @@ void require_capacity(int capacity, std::size_t rows) {
                                                      std::to_string(rows) + " rows (query nanopush_trajectory_get_size)");
 }
 // A string of the trajectory into buffer[size]: its full length, or -1 on failure.
-int trajectory_string(nanopush_error error, nanopush_trajectory trajectory,
-                      std::string nanopush::Trajectory::*field, char* buffer, int size) {
+/// A text of the trajectory (`text` of it) into the caller's buffer: the length, or -1.
+template <class Text>
+int trajectory_string(nanopush_error error, nanopush_trajectory trajectory, Text text, char* buffer, int size) {
   int n = -1;
   guarded(error, [&] {
     require_handle(trajectory, "trajectory");
-    n = copy_string(trajectory->trajectory.*field, buffer, size);
+    n = copy_string(text(trajectory->trajectory), buffer, size);
     return NANOPUSH_OK;
   });
   return n;
@@ -228,7 +229,8 @@ int nanopush_trajectory_get_counts(nanopush_error error, nanopush_trajectory tra
 
 int nanopush_trajectory_get_engine(nanopush_error error, nanopush_trajectory trajectory, char* buffer,
                                    int size) {
-  return trajectory_string(error, trajectory, &nanopush::Trajectory::engine_label, buffer, size);
+  return trajectory_string(
+      error, trajectory, [](const nanopush::Trajectory& t) { return t.engine_label; }, buffer, size);
 }
 
 int nanopush_trajectory_get_error(nanopush_error error, nanopush_trajectory trajectory, double* estimate) {
@@ -256,7 +258,8 @@ int nanopush_trajectory_get_outcome(nanopush_error error, nanopush_trajectory tr
 
 int nanopush_trajectory_get_precision(nanopush_error error, nanopush_trajectory trajectory, char* buffer,
                                       int size) {
-  return trajectory_string(error, trajectory, &nanopush::Trajectory::precision, buffer, size);
+  return trajectory_string(
+      error, trajectory, [](const nanopush::Trajectory& t) { return nanopush::to_string(t.precision); }, buffer, size);
 }
 
 int nanopush_trajectory_get_state_extended(nanopush_error error, nanopush_trajectory trajectory, int capacity,

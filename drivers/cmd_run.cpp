@@ -58,7 +58,7 @@ void add_common(CLI::App& app, RunOptions& o) {
 void print_summary(const Scene& sc, const Trajectory& tr, double seconds, std::ostream& os) {
   const auto& last = tr.rows.back();
   os << std::setprecision(10) << sc.name << " [" << tr.engine_label << "] rtol = " << tr.rtol << ", precision "
-     << tr.precision << (tr.precision == "double" ? "" : " (CSV values rounded to double)") << "\n"
+     << to_string(tr.precision) << (tr.precision == Precision::double_ ? "" : " (CSV values rounded to double)") << "\n"
      << "  t_end = " << last[col::t] << " s: x = " << last[col::x] << " m, y = " << last[col::y] << " m, theta = " << last[col::theta]
      << " rad, omega = " << last[col::omega] << " rad/s\n"
      << "  RHS evaluations " << tr.stats.nfcn << ", accepted steps " << tr.stats.naccpt << ", rejected steps "

@@ -53,7 +53,7 @@ RunSettings settings(const char* precision, const char* method, double rtol) {
 
 /// The rows are the extended states rounded to double, and the labels say the precision.
 void check_rows_are_rounded(const Trajectory& tr, const std::string& precision) {
-  CHECK(tr.precision == precision);
+  CHECK(to_string(tr.precision) == precision);
   CHECK(tr.engine_label.ends_with("-" + precision));
   REQUIRE(tr.extended.size() == tr.rows.size());
   for (std::size_t i = 0; i < tr.rows.size(); ++i)
@@ -96,7 +96,7 @@ TEST_CASE("precision long: rtol 1e-17 beats the floor of double", "[precision][n
       if (std::string(method) == "modern" && rtol < 1e-15) continue;
       const Trajectory tr = run_engine(sc, settings("double", method, rtol));
       CHECK(tr.extended.empty());
-      CHECK(tr.precision == "double");
+      CHECK(tr.precision == Precision::double_);
       floor_double = std::min(floor_double, theta_error(sc, tr));
     }
   INFO("double floor " << floor_double);
@@ -146,7 +146,7 @@ TEST_CASE("precision double is the default, and extended precision takes the sam
   const Trajectory a = run_engine(sc, def);
   const Trajectory b = run_engine(sc, settings("double", "faithful", 0));
   CHECK(a.engine_label == "cxx-faithful");
-  CHECK(a.precision == "double");
+  CHECK(a.precision == Precision::double_);
   CHECK(a.extended.empty());
   REQUIRE(a.rows.size() == b.rows.size());
   for (std::size_t i = 0; i < a.rows.size(); ++i) CHECK(a.rows[i] == b.rows[i]);
@@ -223,12 +223,12 @@ samples = 5
   RunSettings from_scene;
   from_scene.precision = std::nullopt;
   const Trajectory tl = run_engine(sc, from_scene);
-  CHECK(tl.precision == "long");
+  CHECK(tl.precision == Precision::long_);
   CHECK(tl.engine_label == "cxx-modern-long");
-  CHECK(run_engine(sc, RunSettings{}).precision == "long");
+  CHECK(run_engine(sc, RunSettings{}).precision == Precision::long_);
   RunSettings in_double;
   in_double.precision = Precision::double_;
-  CHECK(run_engine(sc, in_double).precision == "double");
+  CHECK(run_engine(sc, in_double).precision == Precision::double_);
   // A scene's extended precision with the F77 engine asked on the command line: the error
   // names the scene's key.
   from_scene.engine = nanopush::Engine::f77;

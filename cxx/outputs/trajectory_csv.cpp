@@ -33,7 +33,7 @@ const Columns& trajectory_column_specs() {
 
 RunInfo trajectory_run_info(const Trajectory& tr) {
   RunInfo info{{"engine", tr.engine_label},
-               {"precision", tr.precision},
+               {"precision", to_string(tr.precision)},
                {"outcome", to_string(tr.outcome)},
                {"rtol", tr.rtol},
                {"nfcn", tr.stats.nfcn},

@@ -148,8 +148,8 @@ Trajectory run_cxx_smooth(const Scene& sc, const ResolvedSettings& s) {
   constexpr bool extended = !std::is_same_v<S, double>;
   Trajectory tr;
   tr.engine_label = "cxx-" + to_string(s.method);
-  tr.precision = num::name<S>();
-  if constexpr (extended) tr.engine_label += "-" + tr.precision;
+  tr.precision = precision_of<S>();
+  if constexpr (extended) tr.engine_label += "-" + to_string(tr.precision);
   tr.rtol = s.rtol;
   tr.atol = sc.atol_vector(s.rtol, s.atol);
   const std::vector<S> atol(tr.atol.begin(), tr.atol.end());
@@ -341,8 +341,8 @@ Trajectory run_cxx_rough(const Scene& sc, const ResolvedSettings& s) {
   constexpr bool extended = !std::is_same_v<S, double>;
   Trajectory tr;
   tr.engine_label = "cxx-" + to_string(s.method) + "-" + to_string(s.law);
-  tr.precision = num::name<S>();
-  if constexpr (extended) tr.engine_label += "-" + tr.precision;
+  tr.precision = precision_of<S>();
+  if constexpr (extended) tr.engine_label += "-" + to_string(tr.precision);
   tr.rtol = s.rtol;
   tr.atol = sc.atol_vector(s.rtol, s.atol, kRoughStateSize);
   const std::vector<S> atol(tr.atol.begin(), tr.atol.end());

@@ -16,17 +16,6 @@ namespace nanopush::bench {
 /// the state). Double goes one half-decade further (1e-14) than the other engines (1e-13,
 /// Engine::rtol_min): the dense-output engine's global error is 4-60 x rtol, and the
 /// sweep must reach an achieved error of 1e-12 (issue 7's range).
-/// The precision whose scalar is S.
-template <class S>
-constexpr Precision precision_of() {
-  if constexpr (std::is_same_v<S, quad>)
-    return Precision::quad;
-  else if constexpr (std::is_same_v<S, long double>)
-    return Precision::long_;
-  else
-    return Precision::double_;
-}
-
 template <class S>
 constexpr double rtol_floor() {
   if constexpr (std::is_same_v<S, quad>)

@@ -284,7 +284,7 @@ dict of arrays (pandas.DataFrame(result.to_dict())); to_csv(path) writes the CSV
       .def_property_readonly("engine", [](const RunResult& r) { return r.tr.engine_label; },
                              "The engine and configuration that ran, e.g. 'cxx-faithful', 'f77', "
                              "'cxx-faithful-coulomb'.")
-      .def_property_readonly("precision", [](const RunResult& r) { return r.tr.precision; },
+      .def_property_readonly("precision", [](const RunResult& r) { return to_string(r.tr.precision); },
                              "Scalar of the integration: double, long or quad (columns always hold doubles).")
       .def_property_readonly("rtol", [](const RunResult& r) { return r.tr.rtol; }, "Relative tolerance used.")
       .def_property_readonly("atol", [](const RunResult& r) { return copy_vector(r.tr.atol); },

@@ -1,8 +1,8 @@
 // Enumerations named as users write them: one table per enum (NameTable<E>, specialised
 // beside the enum) gives every value its name, in the order messages list them; reading a name
 // (parse_choice), writing one (name_of, to_string) and listing them (choice_names) go through
-// it, so no code compares such a choice as text. The scene choices are in scenes/choices.hpp,
-// the force models' (medium, shape) in models/environment.hpp.
+// it, so no code compares such a choice as text. Each table stands beside its enum (the scene
+// choices in scenes/choices.hpp; `git grep NANOPUSH_NAMES` lists them all).
 #pragma once
 #include <array>
 #include <optional>

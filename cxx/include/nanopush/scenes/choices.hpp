@@ -6,9 +6,11 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <utility>
 
 #include "nanopush/numerics/names.hpp"
+#include "nanopush/numerics/scalar.hpp"
 
 namespace nanopush {
 
@@ -42,4 +44,15 @@ NANOPUSH_NAMES(SurfaceKind, {SurfaceKind::smooth, "smooth"}, {SurfaceKind::rough
 NANOPUSH_NAMES(PushMode, {PushMode::force, "force"}, {PushMode::tip, "tip"});
 NANOPUSH_NAMES(TipModel, {TipModel::quasi_static, "quasi_static"}, {TipModel::dynamic, "dynamic"},
                {TipModel::automatic, "auto"});
+/// The precision whose scalar is S (double, long double, quad).
+template <class S>
+constexpr Precision precision_of() {
+  if constexpr (std::is_same_v<S, __float128>)
+    return Precision::quad;
+  else if constexpr (std::is_same_v<S, long double>)
+    return Precision::long_;
+  else
+    return Precision::double_;
+}
+
 }  // namespace nanopush

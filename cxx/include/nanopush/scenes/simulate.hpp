@@ -141,7 +141,7 @@ struct TipSample {
 
 struct Trajectory {
   std::string engine_label;  ///< e.g. "cxx-faithful", "f77", "cxx-faithful-coulomb", "cxx-modern-quad"
-  std::string precision = "double";  ///< scalar of the integration: double | long | quad
+  Precision precision = Precision::double_;  ///< scalar of the integration
   std::vector<TrajectoryRow> rows;   ///< always double (extended-precision states rounded)
   /// Extended-precision runs (precision long or quad): the state x, y, theta, vx, vy, omega
   /// at each output in the scalar of the integration, widened exactly to __float128 (rows
