@@ -138,10 +138,8 @@ class Dop853 : public IntegratorBase<Dop853<Scalar, N>, Scalar, Dop853Result, Do
 
   /// Integrate; y holds the initial state on entry and, on return, the state at t_reached
   /// (the last output time on success; the end of the last accepted step on a failure).
-  /// One loop (~190 lines) on purpose: the 12 stages, the two error estimators and the
-  /// dense-output stages share the stage vectors k1..k10 and the step state, and the loop is
-  /// written as dop853.f's so a reader can follow the book; Bulirsch-Stoer's integrate (cut into
-  /// steps) shows the shape a split would take.
+  /// The loop follows dop853.f's: a step's stages (stages), its error (error_norm), the step
+  /// size control, and the outputs in the step (dense output built on demand).
   /// A step hook, hook(t_old, y_old, t_new, y_new), is called after each accepted
   /// step before its outputs are given (integration.hpp): kHookStopBefore returns at the
   /// step's start (y = y_old, t_reached = t_old, t_event_end = t_new, `stopped_by_hook`) with
@@ -150,7 +148,6 @@ class Dop853 : public IntegratorBase<Dop853<Scalar, N>, Scalar, Dop853Result, Do
   template <class Rhs, class Observer, class Hook>
   Dop853Result integrate(Rhs&& rhs, Scalar t0, Scalar* y, std::span<const Scalar> tout, Observer&& observer,
                          Hook&& hook) {
-    using Tb = dop853_tableau::T<Scalar>;
     Dop853Result res;
     res.t_reached = static_cast<double>(t0);
     if (std::string why = validate(t0, y, tout); !why.empty()) {
@@ -213,59 +210,9 @@ class Dop853 : public IntegratorBase<Dop853<Scalar, N>, Scalar, Dop853Result, Do
         break;
       }
       ++res.nstep;
-      // Stages 2..12 (11 RHS evaluations).
-      auto eval = [&](Scalar c, Vec& k) { return eval_at(rhs, t + c * h, ys, k, res); };
-      for (int i = 0; i < n; ++i) ys_[i] = y_[i] + h * (Tb::a21 * k1[i]);
-      if (!eval(Tb::c2, k2)) break;
-      for (int i = 0; i < n; ++i) ys_[i] = y_[i] + h * (Tb::a31 * k1[i] + Tb::a32 * k2[i]);
-      if (!eval(Tb::c3, k3)) break;
-      for (int i = 0; i < n; ++i) ys_[i] = y_[i] + h * (Tb::a41 * k1[i] + Tb::a43 * k3[i]);
-      if (!eval(Tb::c4, k4)) break;
-      for (int i = 0; i < n; ++i) ys_[i] = y_[i] + h * (Tb::a51 * k1[i] + Tb::a53 * k3[i] + Tb::a54 * k4[i]);
-      if (!eval(Tb::c5, k5)) break;
-      for (int i = 0; i < n; ++i) ys_[i] = y_[i] + h * (Tb::a61 * k1[i] + Tb::a64 * k4[i] + Tb::a65 * k5[i]);
-      if (!eval(Tb::c6, k6)) break;
-      for (int i = 0; i < n; ++i)
-        ys_[i] = y_[i] + h * (Tb::a71 * k1[i] + Tb::a74 * k4[i] + Tb::a75 * k5[i] + Tb::a76 * k6[i]);
-      if (!eval(Tb::c7, k7)) break;
-      for (int i = 0; i < n; ++i)
-        ys_[i] = y_[i] + h * (Tb::a81 * k1[i] + Tb::a84 * k4[i] + Tb::a85 * k5[i] + Tb::a86 * k6[i] + Tb::a87 * k7[i]);
-      if (!eval(Tb::c8, k8)) break;
-      for (int i = 0; i < n; ++i)
-        ys_[i] = y_[i] + h * (Tb::a91 * k1[i] + Tb::a94 * k4[i] + Tb::a95 * k5[i] + Tb::a96 * k6[i] +
-                              Tb::a97 * k7[i] + Tb::a98 * k8[i]);
-      if (!eval(Tb::c9, k9)) break;
-      for (int i = 0; i < n; ++i)
-        ys_[i] = y_[i] + h * (Tb::a101 * k1[i] + Tb::a104 * k4[i] + Tb::a105 * k5[i] + Tb::a106 * k6[i] +
-                              Tb::a107 * k7[i] + Tb::a108 * k8[i] + Tb::a109 * k9[i]);
-      if (!eval(Tb::c10, k10)) break;
-      for (int i = 0; i < n; ++i)
-        ys_[i] = y_[i] + h * (Tb::a111 * k1[i] + Tb::a114 * k4[i] + Tb::a115 * k5[i] + Tb::a116 * k6[i] +
-                              Tb::a117 * k7[i] + Tb::a118 * k8[i] + Tb::a119 * k9[i] + Tb::a1110 * k10[i]);
-      if (!eval(Tb::c11, k11)) break;
-      for (int i = 0; i < n; ++i)
-        ys_[i] = y_[i] + h * (Tb::a121 * k1[i] + Tb::a124 * k4[i] + Tb::a125 * k5[i] + Tb::a126 * k6[i] +
-                              Tb::a127 * k7[i] + Tb::a128 * k8[i] + Tb::a129 * k9[i] + Tb::a1210 * k10[i] +
-                              Tb::a1211 * k11[i]);
       const Scalar tph = last ? tend : t + h;
-      if (!eval_at(rhs, tph, ys, k12, res)) break;  // c12 = 1
-      // The order-8 solution and the two error estimators (HNW §II.5, eq. (10.17) of §II.10:
-      // err = h err5² / sqrt(n (err5² + 0.01 err3²)), both weighted by sk below).
-      Scalar err5 = 0, err3 = 0;
-      for (int i = 0; i < n; ++i) {
-        const Scalar bk = Tb::b1 * k1[i] + Tb::b6 * k6[i] + Tb::b7 * k7[i] + Tb::b8 * k8[i] + Tb::b9 * k9[i] +
-                          Tb::b10 * k10[i] + Tb::b11 * k11[i] + Tb::b12 * k12[i];
-        ynew_[i] = y_[i] + h * bk;
-        const Scalar sk = atol_[i] + rtol * std::max(num::abs(y_[i]), num::abs(ynew_[i]));
-        const Scalar e3 = bk - Tb::bhh1 * k1[i] - Tb::bhh2 * k9[i] - Tb::bhh3 * k12[i];
-        const Scalar e5 = Tb::er1 * k1[i] + Tb::er6 * k6[i] + Tb::er7 * k7[i] + Tb::er8 * k8[i] + Tb::er9 * k9[i] +
-                          Tb::er10 * k10[i] + Tb::er11 * k11[i] + Tb::er12 * k12[i];
-        err3 = err3 + (e3 / sk) * (e3 / sk);
-        err5 = err5 + (e5 / sk) * (e5 / sk);
-      }
-      Scalar deno = err5 + Scalar(0.01) * err3;
-      if (deno <= 0) deno = 1;
-      const double err = static_cast<double>(h * err5 * num::sqrt(Scalar(1) / (Scalar(n) * deno)));
+      if (!stages(rhs, t, h, tph, n, res)) break;
+      const double err = error_norm(h, rtol, n);
       if (!std::isfinite(err)) {
         // A non-finite state or RHS value: quarter the step, as the Bulirsch-Stoer engine does.
         ++res.nrejct;
@@ -340,6 +287,73 @@ class Dop853 : public IntegratorBase<Dop853<Scalar, N>, Scalar, Dop853Result, Do
 
  private:
   static constexpr int kMaxNonFinite = 10;
+
+  /// Stages 2..12 of the step (t, h) from k1 = f(t, y) (11 RHS evaluations; c12 = 1, taken
+  /// at tph, the step's end): false when the RHS fails (res says why).
+  template <class Rhs>
+  bool stages(Rhs& rhs, Scalar t, Scalar h, Scalar tph, int n, Dop853Result& res) {
+    using Tb = dop853_tableau::T<Scalar>;
+    auto& [k1, k2, k3, k4, k5, k6, k7, k8, k9, k10, k11, k12, k13, k14, k15, k16] = k_;
+    const Scalar* ys = &ys_[0];
+    auto eval = [&](Scalar c, Vec& k) { return eval_at(rhs, t + c * h, ys, k, res); };
+    for (int i = 0; i < n; ++i) ys_[i] = y_[i] + h * (Tb::a21 * k1[i]);
+    if (!eval(Tb::c2, k2)) return false;
+    for (int i = 0; i < n; ++i) ys_[i] = y_[i] + h * (Tb::a31 * k1[i] + Tb::a32 * k2[i]);
+    if (!eval(Tb::c3, k3)) return false;
+    for (int i = 0; i < n; ++i) ys_[i] = y_[i] + h * (Tb::a41 * k1[i] + Tb::a43 * k3[i]);
+    if (!eval(Tb::c4, k4)) return false;
+    for (int i = 0; i < n; ++i) ys_[i] = y_[i] + h * (Tb::a51 * k1[i] + Tb::a53 * k3[i] + Tb::a54 * k4[i]);
+    if (!eval(Tb::c5, k5)) return false;
+    for (int i = 0; i < n; ++i) ys_[i] = y_[i] + h * (Tb::a61 * k1[i] + Tb::a64 * k4[i] + Tb::a65 * k5[i]);
+    if (!eval(Tb::c6, k6)) return false;
+    for (int i = 0; i < n; ++i)
+      ys_[i] = y_[i] + h * (Tb::a71 * k1[i] + Tb::a74 * k4[i] + Tb::a75 * k5[i] + Tb::a76 * k6[i]);
+    if (!eval(Tb::c7, k7)) return false;
+    for (int i = 0; i < n; ++i)
+      ys_[i] = y_[i] + h * (Tb::a81 * k1[i] + Tb::a84 * k4[i] + Tb::a85 * k5[i] + Tb::a86 * k6[i] + Tb::a87 * k7[i]);
+    if (!eval(Tb::c8, k8)) return false;
+    for (int i = 0; i < n; ++i)
+      ys_[i] = y_[i] + h * (Tb::a91 * k1[i] + Tb::a94 * k4[i] + Tb::a95 * k5[i] + Tb::a96 * k6[i] +
+                            Tb::a97 * k7[i] + Tb::a98 * k8[i]);
+    if (!eval(Tb::c9, k9)) return false;
+    for (int i = 0; i < n; ++i)
+      ys_[i] = y_[i] + h * (Tb::a101 * k1[i] + Tb::a104 * k4[i] + Tb::a105 * k5[i] + Tb::a106 * k6[i] +
+                            Tb::a107 * k7[i] + Tb::a108 * k8[i] + Tb::a109 * k9[i]);
+    if (!eval(Tb::c10, k10)) return false;
+    for (int i = 0; i < n; ++i)
+      ys_[i] = y_[i] + h * (Tb::a111 * k1[i] + Tb::a114 * k4[i] + Tb::a115 * k5[i] + Tb::a116 * k6[i] +
+                            Tb::a117 * k7[i] + Tb::a118 * k8[i] + Tb::a119 * k9[i] + Tb::a1110 * k10[i]);
+    if (!eval(Tb::c11, k11)) return false;
+    for (int i = 0; i < n; ++i)
+      ys_[i] = y_[i] + h * (Tb::a121 * k1[i] + Tb::a124 * k4[i] + Tb::a125 * k5[i] + Tb::a126 * k6[i] +
+                            Tb::a127 * k7[i] + Tb::a128 * k8[i] + Tb::a129 * k9[i] + Tb::a1210 * k10[i] +
+                            Tb::a1211 * k11[i]);
+    return eval_at(rhs, tph, ys, k12, res);  // c12 = 1
+  }
+
+  /// The order-8 solution into ynew_ and the step's weighted error (HNW's err; > 1: reject).
+  double error_norm(Scalar h, Scalar rtol, int n) {
+    using Tb = dop853_tableau::T<Scalar>;
+    auto& [k1, k2, k3, k4, k5, k6, k7, k8, k9, k10, k11, k12, k13, k14, k15, k16] = k_;
+    // The order-8 solution and the two error estimators (HNW §II.5, eq. (10.17) of §II.10:
+    // err = h err5² / sqrt(n (err5² + 0.01 err3²)), both weighted by sk below).
+    Scalar err5 = 0, err3 = 0;
+    for (int i = 0; i < n; ++i) {
+      const Scalar bk = Tb::b1 * k1[i] + Tb::b6 * k6[i] + Tb::b7 * k7[i] + Tb::b8 * k8[i] + Tb::b9 * k9[i] +
+                        Tb::b10 * k10[i] + Tb::b11 * k11[i] + Tb::b12 * k12[i];
+      ynew_[i] = y_[i] + h * bk;
+      const Scalar sk = atol_[i] + rtol * std::max(num::abs(y_[i]), num::abs(ynew_[i]));
+      const Scalar e3 = bk - Tb::bhh1 * k1[i] - Tb::bhh2 * k9[i] - Tb::bhh3 * k12[i];
+      const Scalar e5 = Tb::er1 * k1[i] + Tb::er6 * k6[i] + Tb::er7 * k7[i] + Tb::er8 * k8[i] + Tb::er9 * k9[i] +
+                        Tb::er10 * k10[i] + Tb::er11 * k11[i] + Tb::er12 * k12[i];
+      err3 = err3 + (e3 / sk) * (e3 / sk);
+      err5 = err5 + (e5 / sk) * (e5 / sk);
+    }
+    Scalar deno = err5 + Scalar(0.01) * err3;
+    if (deno <= 0) deno = 1;
+    return static_cast<double>(h * err5 * num::sqrt(Scalar(1) / (Scalar(n) * deno)));
+  }
+
 
   using Base::opt_, Base::n_;
   std::array<Vec, 16> k_{};   // stages 1..16 (k_[s-1])
