@@ -88,14 +88,20 @@ CHILD = textwrap.dedent("""
 
 @pytest.mark.parametrize("to_file", [True, False])
 def test_ctrl_c_stops_and_keeps_the_journal(tmp_path, to_file):
-    n = 3000
+    # Enough points that the sweep runs for seconds on a fast idle host (3000 took 0.4 s here,
+    # ending before its next look at the signal), interrupted once some are done.
+    n = 30000
     out = tmp_path / "t.csv"
     script = tmp_path / "child.py"
     script.write_text(CHILD % n)
     p = subprocess.Popen([sys.executable, str(script), str(out) if to_file else "-"], stdout=subprocess.PIPE,
                          text=True, env=os.environ)
-    first = p.stdout.readline()  # the sweep runs: its first progress report
-    assert first.startswith("P "), first
+    report = p.stdout.readline()  # the sweep runs: its progress reports, the first at the start
+    assert report.startswith("P "), report
+    while int(report.split()[1]) == 0:
+        report = p.stdout.readline()
+        assert report.startswith("P "), report
+    assert int(report.split()[1]) < n, "the sweep ended before it could be interrupted"
     sent = time.monotonic()
     p.send_signal(signal.SIGINT)
     rest, _ = p.communicate(timeout=60)
