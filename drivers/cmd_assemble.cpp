@@ -70,7 +70,7 @@ void write_outputs(const Scene& sc, const std::vector<plan::Pose>& objects, cons
     CsvWriter w(dir / "assembly.csv",
                 columns("assemble"),
                 sc.name);
-    w.run_info({{"status", r.status}, {"assignment_cost_m", r.assignment_cost}, {"planning_seconds", r.planning_seconds}});
+    w.run_info({{"status", to_string(r.status)}, {"assignment_cost_m", r.assignment_cost}, {"planning_seconds", r.planning_seconds}});
     for (const auto& m : r.moves) {
       int k = 1;
       for (const auto& p : m.plan.pushes)
@@ -94,7 +94,7 @@ void write_outputs(const Scene& sc, const std::vector<plan::Pose>& objects, cons
   }
   json order = json::array();
   for (const auto& m : r.moves) order.push_back(m.object + 1);
-  const json doc = {{"scene", sc.name}, {"status", r.status}, {"message", r.message}, {"order", order},
+  const json doc = {{"scene", sc.name}, {"status", to_string(r.status)}, {"message", r.message}, {"order", order},
                     {"assignment_cost_m", json_number(r.assignment_cost)},
                     {"planning_seconds", json_number(r.planning_seconds)}, {"bars", bars}};
   write_file_atomic(dir / "assembly.json", json_text(doc));
@@ -150,7 +150,7 @@ int assemble_cmd(const AssembleOptions& o) {
   const fs::path dir = o.out.empty() ? sc.name + ".assembly" : o.out;
   write_outputs(sc, objects, slots, r, dir);
   if (!o.quiet) {
-    std::cerr << std::setprecision(6) << sc.name << ": " << r.status << ", " << objects.size() << " bars, "
+    std::cerr << std::setprecision(6) << sc.name << ": " << to_string(r.status) << ", " << objects.size() << " bars, "
               << r.moves.size() << " moved, planning " << r.planning_seconds << " s\n";
     for (const auto& m : r.moves)
       std::cerr << "  bar " << m.object + 1 << " -> slot " << m.slot + 1 << ": " << m.plan.pushes.size() << " push(es), "

@@ -48,7 +48,7 @@ void write_outputs(const Scene& sc, const plan::PlanResult& r, const std::filesy
   std::filesystem::create_directories(dir);
   {
     CsvWriter w(dir / "plan.csv", plan_columns(), sc.name);
-    w.run_info({{"status", r.status},
+    w.run_info({{"status", to_string(r.status)},
                 {"verified", r.verified},
                 {"goal_x_m", r.goal.x},
                 {"goal_y_m", r.goal.y},
@@ -109,7 +109,7 @@ void write_outputs(const Scene& sc, const plan::PlanResult& r, const std::filesy
                       {"error", json::array({json_number(w.final_distance), json_number(w.final_angle)})},
                       {"reached", w.reached}});
   json doc = {{"scene", sc.name},
-                    {"status", r.status},
+                    {"status", to_string(r.status)},
                     {"verified", r.verified},
                     {"message", r.message},
                     {"start", pose(r.start)},
@@ -181,7 +181,7 @@ int closed_loop_cmd(const PlanCliOptions& o, const Scene& sc, const plan::Pose& 
   CsvWriter w(dir / "closed_loop.csv",
               columns("plan_closed_loop"),
               sc.name);
-  w.run_info({{"status", r.status}, {"final_distance_m", r.final_distance},
+  w.run_info({{"status", to_string(r.status)}, {"final_distance_m", r.final_distance},
               {"final_angle_rad", r.final_angle}, {"seed", o.seed}, {"pushes_not_made", r.unsimulated},
               {"tip_mu_final", r.tip_mu < 0 ? std::nan("") : r.tip_mu}, {"refit", !o.no_refit}});
   int k = 1;
@@ -190,7 +190,7 @@ int closed_loop_cmd(const PlanCliOptions& o, const Scene& sc, const plan::Pose& 
            s.push.start_y, s.push.direction, s.push.travel, double(s.plan_pushes), s.tip_mu < 0 ? std::nan("") : s.tip_mu});
   w.commit();
   if (!o.quiet) {
-    std::cerr << std::setprecision(6) << sc.name << " closed loop: " << r.status << ", " << r.steps.size()
+    std::cerr << std::setprecision(6) << sc.name << " closed loop: " << to_string(r.status) << ", " << r.steps.size()
               << " push(es), tip travel " << r.tip_travel << " m, time " << r.time << " s, planning " << r.planning_seconds
               << " s\n  true final pose " << r.final_truth.x << " m, " << r.final_truth.y << " m, " << r.final_truth.theta
               << " rad: " << r.final_distance << " m and " << r.final_angle << " rad from the goal\n"
@@ -209,7 +209,7 @@ int closed_loop_cmd(const PlanCliOptions& o, const Scene& sc, const plan::Pose& 
 
 /// The plan's summary on standard error: status, pushes, and each robust world's end.
 void print_plan_summary(const Scene& sc, const plan::PlanResult& r) {
-  std::cerr << std::setprecision(6) << sc.name << ": " << r.status << (r.verified ? " (verified)" : "") << ", "
+  std::cerr << std::setprecision(6) << sc.name << ": " << to_string(r.status) << (r.verified ? " (verified)" : "") << ", "
             << r.pushes.size() << " push(es), tip travel " << r.tip_travel << " m, time " << r.time << " s\n"
             << "  final pose " << r.final_pose.x << " m, " << r.final_pose.y << " m, " << r.final_pose.theta
             << " rad: " << r.final_distance << " m and " << r.final_angle << " rad from the goal\n"
@@ -349,7 +349,7 @@ void reproduce_plan(ReproduceContext& ctx) {
     << "The thesis' nanorod (590 nm x 27 nm) at the origin, an AFM tip (radius 10 nm, 1 um/s); goal: centre at "
        "(60, 40) nm, theta = 0.3 rad, within 2 nm and 0.02 rad (`nanopush plan tip_push_nanorod --goal "
        "60e-9,40e-9,0.3 --tolerance 2e-9,0.02`; docs/planning.md).\n\n"
-    << "Status: **" << r.status << "**" << (r.verified ? ", verified by forward runs" : ", NOT verified") << "; "
+    << "Status: **" << to_string(r.status) << "**" << (r.verified ? ", verified by forward runs" : ", NOT verified") << "; "
     << r.pushes.size() << " pushes, tip travel " << r.tip_travel * 1e9 << " nm, final error " << r.final_distance * 1e9
     << " nm and " << r.final_angle << " rad; " << r.forward_runs << " model runs.\n\n"
     << "| push | face | offset | tip start (nm) | direction (rad) | travel (nm) | pose after (nm, nm, rad) |\n|---|---|---|---|---|---|---|\n";

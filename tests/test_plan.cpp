@@ -118,7 +118,7 @@ TEST_CASE("Planning: an unreachable goal ends in not_found with the best plan; b
   plan::PlanOptions o;
   o.max_pushes = 1;
   const auto r = plan::plan_pushes(sc, {300e-9, 200e-9, 1.0}, o);
-  CHECK(r.status == "not_found");
+  CHECK(r.status == plan::PlanStatus::not_found);
   CHECK(r.pushes.size() == 1);
   CHECK(r.message.find("1 pushes") != std::string::npos);
   o.tolerance_distance = 1e-18;

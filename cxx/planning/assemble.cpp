@@ -207,7 +207,7 @@ AssemblyResult assemble(const Scene& scene, const std::vector<Pose>& objects, co
     }
   }
   res.final_poses = poses;
-  res.status = std::all_of(placed.begin(), placed.end(), [](bool p) { return p; }) ? "assembled" : "not_found";
+  res.status = std::all_of(placed.begin(), placed.end(), [](bool p) { return p; }) ? AssemblyStatus::assembled : AssemblyStatus::not_found;
   res.planning_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return res;
 }

@@ -152,7 +152,7 @@ ClosedLoopResult closed_loop(const Scene& model_in, const Scene& truth, const Po
   res.final_observed = seen;
   res.final_distance = std::hypot(true_pose.x - goal.x, true_pose.y - goal.y);
   res.final_angle = std::fabs(angle_error(true_pose.theta, goal.theta, o.half_turn_symmetric));
-  res.status = within(true_pose) ? "reached" : "not_reached";
+  res.status = within(true_pose) ? LoopStatus::reached : LoopStatus::not_reached;
   if (!res.reached() && res.message.empty())
     res.message = "after " + std::to_string(res.steps.size()) + " pushes the bar is " + std::to_string(res.final_distance) +
                   " m and " + std::to_string(res.final_angle) + " rad from the goal (the image " +

@@ -116,7 +116,7 @@ void verify_worlds(const std::vector<World>& worlds, PlanResult& res, const Plan
   res.verified = res.verified && all;
   if (all || !res.found()) return;
   const PlanResult::World& m = res.worlds[first_miss];
-  res.status = "not_found";
+  res.status = PlanStatus::not_found;
   res.message = "no plan within " + std::to_string(o.max_pushes) + " pushes reaches the goal in every world: with tip.mu = " +
                 fmt(m.tip_mu) + " from (" + fmt(m.start.x) + ", " + fmt(m.start.y) + ", " + fmt(m.start.theta) +
                 ") the best leaves the bar " + fmt(m.final_distance) + " m and " + fmt(m.final_angle) + " rad from the goal";
@@ -227,7 +227,7 @@ void verify(const Scene& scene, PlanResult& res, const PlanOptions& o) {
   res.final_angle = std::fabs(angle_error(at.theta, goal.theta, sym));
   chain_ok = chain_ok && within(at, goal, o);
   res.verified = each_ok && chain_ok;
-  res.status = planned_reach ? "found" : "not_found";
+  res.status = planned_reach ? PlanStatus::found : PlanStatus::not_found;
   if (!planned_reach && res.message.empty())
     res.message = "no plan within " + std::to_string(o.max_pushes) + " pushes: the best leaves the bar " +
                   fmt(res.final_distance) + " m and " + fmt(res.final_angle) + " rad from the goal";

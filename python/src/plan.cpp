@@ -182,7 +182,7 @@ py::tuple assemble_bars(const Scene& scene, const py::object& objects, const py:
     order.append(m.object);
     plans.append(py::cast(m.plan));
   }
-  return py::make_tuple(r.status, r.message, py::cast(r.slot_of), order, final_poses, plans, r.assignment_cost);
+  return py::make_tuple(to_string(r.status), r.message, py::cast(r.slot_of), order, final_poses, plans, r.assignment_cost);
 }
 
 }  // namespace
@@ -201,7 +201,7 @@ table           the pushes as an (n, 8) array: start_x, start_y, direction, spee
 tip_travel [m], time [s], forward_runs, planning_seconds
 worlds          robust plans: one dict per world planned for (tip_mu, start, final_pose,
                 final_distance, final_angle, reached), the model's first; [] otherwise)doc")
-      .def_property_readonly("status", [](const plan::PlanResult& r) { return r.status; })
+      .def_property_readonly("status", [](const plan::PlanResult& r) { return to_string(r.status); })
       .def_property_readonly("found", &plan::PlanResult::found)
       .def_property_readonly("message", [](const plan::PlanResult& r) { return r.message; })
       .def_property_readonly("verified", [](const plan::PlanResult& r) { return r.verified; })
@@ -252,7 +252,7 @@ worlds          robust plans: one dict per world planned for (tip_mu, start, fin
       .def("_check", &check_plan, py::arg("scene"), py::arg("trials"), py::arg("noise"), py::arg("mu_range"),
            py::arg("tip_mu_range"), py::arg("seed"), py::arg("jobs"), py::arg("progress"))
       .def("__repr__", [](const plan::PlanResult& r) {
-        return "<nanopush.PlanResult " + r.status + (r.verified ? " (verified)" : "") + ", " +
+        return "<nanopush.PlanResult " + to_string(r.status) + (r.verified ? " (verified)" : "") + ", " +
                std::to_string(r.pushes.size()) + " pushes, final distance " + py::repr(py::float_(r.final_distance)).cast<std::string>() +
                " m, angle " + py::repr(py::float_(r.final_angle)).cast<std::string>() + " rad>";
       });

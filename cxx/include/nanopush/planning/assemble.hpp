@@ -23,15 +23,18 @@ struct BarMove {
   PlanResult plan;
 };
 
+/// An assembly's outcome: assembled, or not_found (the moves made so far are kept).
+enum class AssemblyStatus { assembled, not_found };
+
 struct AssemblyResult {
-  std::string status;  ///< "assembled", or "not_found" (the moves made so far are kept)
+  AssemblyStatus status = AssemblyStatus::not_found;
   std::string message;
   std::vector<int> slot_of;   ///< per object, its slot
   std::vector<BarMove> moves; ///< in the order they are made
   std::vector<Pose> final_poses;  ///< per object, where it ends
   double assignment_cost = 0; ///< summed |dr| + (L/2)|dtheta| of the assignment [m]
   double planning_seconds = 0;
-  [[nodiscard]] bool assembled() const { return status == "assembled"; }
+  [[nodiscard]] bool assembled() const { return status == AssemblyStatus::assembled; }
 };
 
 /// The slot of each object minimising the summed pose_cost: exact (every permutation) up to 8
@@ -55,3 +58,8 @@ AssemblyResult assemble(const Scene& scene, const std::vector<Pose>& objects, co
                         const AssemblyOptions& options);
 
 }  // namespace nanopush::plan
+
+namespace nanopush {
+NANOPUSH_NAMES(plan::AssemblyStatus, {plan::AssemblyStatus::assembled, "assembled"},
+               {plan::AssemblyStatus::not_found, "not_found"});
+}  // namespace nanopush

@@ -53,8 +53,14 @@ struct PlannedPush {
   double verified_deviation = -1;  ///< forward run's end pose vs the plan, in the goal norm (< 0: not run)
 };
 
+/// A plan's outcome: found (the plan reaches the goal within the tolerance), or not_found
+/// (the best plan found is kept).
+enum class PlanStatus { found, not_found };
+/// A closed loop's outcome: reached (the true pose within tolerance), or not_reached.
+enum class LoopStatus { reached, not_reached };
+
 struct PlanResult {
-  std::string status;  ///< "found" or "not_found" (the best plan found is kept)
+  PlanStatus status = PlanStatus::not_found;
   std::string message;
   Pose start, goal;
   std::vector<PlannedPush> pushes;
@@ -76,7 +82,7 @@ struct PlanResult {
   std::vector<World> worlds;
   PlanOptions options;        ///< what the plan was asked for (tolerance, symmetry, ...)
   double planning_seconds = 0;
-  [[nodiscard]] bool found() const { return status == "found"; }
+  [[nodiscard]] bool found() const { return status == PlanStatus::found; }
 };
 
 /// The angle error theta - goal wrapped to (-pi, pi], or to (-pi/2, pi/2] when half-turn symmetric.
@@ -114,7 +120,7 @@ struct LoopStep {
 };
 
 struct ClosedLoopResult {
-  std::string status;  ///< "reached" (the true pose within tolerance), or "not_reached"
+  LoopStatus status = LoopStatus::not_reached;
   std::string message;
   std::vector<LoopStep> steps;
   Pose final_truth, final_observed;
@@ -124,7 +130,7 @@ struct ClosedLoopResult {
   /// follow the push on it (a solver failure); the bar was imaged again instead.
   int unsimulated = 0;
   double tip_mu = -1;  ///< the model's tip friction at the end (the last fit; < 0: not a tip scene)
-  [[nodiscard]] bool reached() const { return status == "reached"; }
+  [[nodiscard]] bool reached() const { return status == LoopStatus::reached; }
 };
 
 /// How the closed loop learns what the model does not know. The quasi-static path depends on the
@@ -185,3 +191,8 @@ PlanCheck check_plan(const Scene& scene, const PlanResult& plan, const PlanOptio
 Scene push_scene(const Scene& scene, const Pose& from, const PlannedPush& p);
 
 }  // namespace nanopush::plan
+
+namespace nanopush {
+NANOPUSH_NAMES(plan::PlanStatus, {plan::PlanStatus::found, "found"}, {plan::PlanStatus::not_found, "not_found"});
+NANOPUSH_NAMES(plan::LoopStatus, {plan::LoopStatus::reached, "reached"}, {plan::LoopStatus::not_reached, "not_reached"});
+}  // namespace nanopush
