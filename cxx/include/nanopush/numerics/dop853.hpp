@@ -464,9 +464,12 @@ class Dop853 : public IntegratorBase<Dop853<Scalar, N>, Scalar, Dop853Result, Do
     if (!eval_at(rhs, t + Tb::c16 * h, ys, k16, res)) return false;
     ++res.ndense;
     // h times a row d_r of the dense-output coefficients on stages 1, 6..16, at component i.
-    auto dense_row = [&](int i, const std::array<Scalar, 12>& d) {
-      return h * (d[0] * k1[i] + d[1] * k6[i] + d[2] * k7[i] + d[3] * k8[i] + d[4] * k9[i] + d[5] * k10[i] +
-                  d[6] * k11[i] + d[7] * k12[i] + d[8] * k13[i] + d[9] * k14[i] + d[10] * k15[i] + d[11] * k16[i]);
+    // (k_[s - 1] is stage s: a lambda may not capture the bindings k1..k16 in clang 14.)
+    auto dense_row = [this, h](int i, const std::array<Scalar, 12>& d) {
+      const auto& k = k_;
+      return h * (d[0] * k[0][i] + d[1] * k[5][i] + d[2] * k[6][i] + d[3] * k[7][i] + d[4] * k[8][i] +
+                  d[5] * k[9][i] + d[6] * k[10][i] + d[7] * k[11][i] + d[8] * k[12][i] + d[9] * k[13][i] +
+                  d[10] * k[14][i] + d[11] * k[15][i]);
     };
     for (int i = 0; i < n; ++i) {
       const Scalar ydiff = ynew_[i] - y_[i];
