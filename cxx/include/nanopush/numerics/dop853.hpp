@@ -136,18 +136,12 @@ class Dop853 : public IntegratorBase<Dop853<Scalar, N>, Scalar, Dop853Result, Do
   /// Integrate without a step hook, or to one output time (integration.hpp).
   using Base::integrate;
 
-  /// Integrate; y holds the initial state on entry and, on return, the state at t_reached
-  /// (the last output time on success; the end of the last accepted step on a failure).
-  /// The loop follows dop853.f's: a step's stages (stages), its error (error_norm), the step
-  /// size control, and the outputs in the step (dense output built on demand).
-  /// A step hook, hook(t_old, y_old, t_new, y_new), is called after each accepted
-  /// step before its outputs are given (integration.hpp): kHookStopBefore returns at the
-  /// step's start (y = y_old, t_reached = t_old, t_event_end = t_new, `stopped_by_hook`) with
-  /// no output of the step given, so the caller can locate an event inside it and restart
-  /// there; kHookStopAfter commits the step and its outputs, then returns.
+  /// Integrate as integration.hpp's contract says (y, t_reached, the step hook), in dop853.f's
+  /// loop: stages, error_norm, the step size control, the outputs (dense output on demand).
   template <class Rhs, class Observer, class Hook>
   Dop853Result integrate(Rhs&& rhs, Scalar t0, Scalar* y, std::span<const Scalar> tout, Observer&& observer,
                          Hook&& hook) {
+    const int n = (N == Dynamic) ? n_ : N;  // a compile-time bound lets the loops unroll
     Dop853Result res;
     res.t_reached = static_cast<double>(t0);
     if (std::string why = validate(t0, y, tout); !why.empty()) {
@@ -155,7 +149,6 @@ class Dop853 : public IntegratorBase<Dop853<Scalar, N>, Scalar, Dop853Result, Do
       res.message = std::move(why);
       return res;
     }
-    const int n = (N == Dynamic) ? n_ : N;  // a compile-time bound lets the loops unroll
     for (int i = 0; i < n; ++i)
       atol_[i] = opt_.atol.size() == 1 ? opt_.atol[0] : opt_.atol[static_cast<std::size_t>(i)];
     for (int i = 0; i < n; ++i) y_[i] = y[i];
