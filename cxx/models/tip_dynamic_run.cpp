@@ -46,8 +46,6 @@ using detail::fmt;
 
 constexpr int kMaxEvents = 100000;
 
-double cross(double ax, double ay, double bx, double by) { return ax * by - ay * bx; }
-
 /// N = kRoughStateSize (a frictionless tip) or kFricStateSize (tip friction: the tip
 /// friction's work as a ninth component).
 constexpr int kFricStateSize = kRoughStateSize + 1, kWorkTipFric = kRoughStateSize;
@@ -236,7 +234,7 @@ class DynamicTipRun {
     const auto bd = bdot(e, s);
     const double dx = -e.sc.nx + mu * sigma * e.tx, dy = -e.sc.ny + mu * sigma * e.ty;
     const double den = e.corner ? 1 - e.lambda * (1 + mu * mu) / r : 1.0;
-    return cross(bd[0], bd[1], dx, dy) / den + s[kOmega] * r;
+    return (bd[0] * dy - bd[1] * dx) / den + s[kOmega] * r;  // bd x (dx, dy)
   }
   double spring_energy(const Eval& e) const { return (e.sc.fx * e.sc.fx + e.sc.fy * e.sc.fy) / (2 * k); }
   int rhs(double t, const double* s, double* d) {
