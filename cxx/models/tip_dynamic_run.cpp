@@ -45,6 +45,7 @@ namespace {
 using detail::fmt;
 
 constexpr int kMaxEvents = 100000;
+constexpr double kEps = std::numeric_limits<double>::epsilon();
 
 /// N = kRoughStateSize (a frictionless tip) or kFricStateSize (tip friction: the tip
 /// friction's work as a ninth component).
@@ -55,8 +56,8 @@ template <int N>
 class DynamicTipRun {
  public:
   DynamicTipRun(const BarGeometry& geometry, double mu_n, const DynamicBar& dbar, const TipPath& path, double x0,
-                double y0, double theta0, double end, int samples, double rtol)
-      : g(geometry), muN(mu_n), bar(dbar), tip(path), t_end(end), tout(static_cast<std::size_t>(samples)),
+                double y0, double theta0, double end, int samples, double rtol, std::int64_t steps)
+      : max_steps(steps), g(geometry), muN(mu_n), bar(dbar), tip(path), t_end(end), tout(static_cast<std::size_t>(samples)),
         L(std::max(g.a, g.b)), v(tip.speed), k(bar.stiffness), r(tip.radius), t_stop(tip.t_stop()),
         t_base_end(std::min(t_stop, t_end)), mu(tip.mu) {
     for (int i = 0; i < samples; ++i) tout[static_cast<std::size_t>(i)] = t_end * i / (samples - 1);
@@ -83,11 +84,13 @@ class DynamicTipRun {
     M0 = std::fabs(rectangle_friction_from_velocity(g.a, g.b, muN, 0.0, 0.0, 1.0).mf);
     lever = std::hypot(g.a, g.b) + r;
     sm = std::sqrt(bar.mass);
+    // The spring's fastest mode with the bar free: k over the mass, and over the inertia at
+    // the longest lever.
+    w_max = std::sqrt(k * (1 / bar.mass + lever * lever / bar.inertia));
     si = std::sqrt(bar.inertia);
     opt.rtol = rtol;
     opt.atol = {rtol * L, rtol * L, rtol, rtol * v, rtol * v, rtol * v / L, rtol * muN * L, rtol * muN * L};
     if constexpr (kFric) opt.atol.push_back(rtol * muN * L);
-    opt.maxstp = 10000000;
   }
   DynamicTipRun(const DynamicTipRun&) = delete;
   DynamicTipRun& operator=(const DynamicTipRun&) = delete;
@@ -153,6 +156,8 @@ class DynamicTipRun {
     double tiny;
   };
 
+  const std::int64_t max_steps;  // the run's budget of attempted steps (solver.max_steps)
+  std::int64_t attempted = 0;
   const BarGeometry& g;
   const double muN;
   const DynamicBar& bar;
@@ -174,7 +179,7 @@ class DynamicTipRun {
   // friction takes, integrated (Gauss-Kronrod) from the last time booked.
   double w_bar_rest = 0, t_booked = 0;
   std::size_t next = 0;  // the next row to fill
-  double M0 = 0, lever = 0, sm = 0, si = 0;
+  double M0 = 0, lever = 0, sm = 0, si = 0, w_max = 0;
   Dop853Options<double> opt;
 
   // ---- the spring and the equations of motion --------------------------------------------
@@ -263,6 +268,37 @@ class DynamicTipRun {
   }
   auto rhs_fn() {
     return [this](double t, const double* s, double* d) { return rhs(t, s, d); };
+  }
+
+  // ---- the step budget -----------------------------------------------------------------
+  // An integrator whose step limit is what is left of the run's budget.
+  Dop853<double, N> integrator() {
+    opt.maxstp = std::max<std::int64_t>(1, max_steps - attempted);
+    return Dop853<double, N>(opt);
+  }
+  // Books an integration's steps against the budget; if it failed and must succeed, throws
+  // with the reason: the budget spent, a slide too slow for double's steps, or the integrator's.
+  void spend(const IntegrationResult& ir, bool must_succeed) {
+    res.steps += ir.naccpt;
+    attempted += ir.naccpt + ir.nrejct;
+    if (ir.ok() || !must_succeed) return;
+    const double ratio = inertia_ratio(bar.mass, v, muN, tip.travel);
+    const std::string advice =
+        ratio <= kAutoInertiaRatio ? "; inertia is negligible at this tip speed (m v^2/(mu N L) = " + fmt(ratio) +
+                                         " <= " + fmt(kAutoInertiaRatio) + "): use tip.model = quasi_static or auto"
+                                   : "";
+    if (ir.status == IntegrationStatus::too_many_steps && attempted >= max_steps)
+      throw SolverError("dynamic tip push: solver.max_steps = " + std::to_string(max_steps) + " steps spent by t = " +
+                        fmt(ir.t_reached) + " s of " + fmt(t_end) + " s; the dynamic model follows every period of the "
+                        "spring (" + fmt(2 * M_PI / w_max) + " s at its fastest) and every slide's start" +
+                        (advice.empty() ? ": raise solver.max_steps" : advice + ", or raise solver.max_steps"));
+    const double speed = std::sqrt(y[kVx] * y[kVx] + y[kVy] * y[kVy] + y[kOmega] * y[kOmega] * L * L);
+    if (ir.status == IntegrationStatus::step_underflow && bar.mass * speed / muN < 1e6 * kEps * ir.t_reached)
+      throw SolverError("dynamic tip push: step size underflow at t = " + fmt(ir.t_reached) +
+                        " s: the bar slides so slowly (|V| = " + fmt(speed) + " m/s) that the friction across its "
+                        "direction relaxes in m |V|/(mu N) = " + fmt(bar.mass * speed / muN) +
+                        " s, below the steps double precision can take at that time" + advice);
+    throw SolverError("dynamic tip push: " + ir.message);
   }
 
   // ---- rows and events -------------------------------------------------------------------
@@ -471,9 +507,11 @@ class DynamicTipRun {
   // (the steps over [t, t + tau] add up as 1/tau). Over tau0 = 1e-3 of the time the spring's
   // force takes to change by mu N, the acceleration is linear between its values at t and
   // t + tau0 (the bar held there), which gives V and the displacement to leading order; the
-  // work done is booked as the kinetic energy gained plus the friction's share.
+  // work done is booked as the kinetic energy gained plus the friction's share. Holding the
+  // bar neglects the spring's relaxation as it moves, a relative (w tau0)^2/6 at the spring's
+  // frequency w: tau0 is also at most 1e-2/w_max (1.7e-5), which slow tips reach first.
   double start_slide(double t, const RestAnalysis& ra) {
-    const double tau0 = std::min(1e-3 * muN / (k * v), std::max(t_base_end - t, 0.0));
+    const double tau0 = std::min({1e-3 * muN / (k * v), 1e-2 / w_max, std::max(t_base_end - t, 0.0)});
     std::array<double, 3> A0 = ra.accel, A1 = ra.accel;
     if (tau0 > 0) {
       const RestAnalysis r1 = analyse(t + tau0);
@@ -677,10 +715,9 @@ class DynamicTipRun {
       }
       return kHookContinue;
     };
-    Dop853<double, N> integ(opt);
+    Dop853<double, N> integ = integrator();
     const auto rr = integ.integrate(rhs_fn(), t, y.data(), std::span<const double>(pending), observer_fn(), hook);
-    res.steps += rr.naccpt;
-    if (!rr.ok()) throw SolverError("dynamic tip push: " + rr.message);
+    spend(rr, true);
     t = rr.t_reached;
     if (!rr.stopped_by_hook) return t;
     if (ran_down) {
@@ -696,11 +733,11 @@ class DynamicTipRun {
     if (kFric && tc > st.t && tc - st.t <= st.tiny) {
       euler(st.t, yc, tc);
     } else if (tc > st.t) {
-      Dop853<double, N> sub(opt);
+      Dop853<double, N> sub = integrator();
       const double one[1] = {tc};
       const auto sr = sub.integrate(rhs_fn(), st.t, yc.data(), std::span<const double>(one, 1),
                                     [](std::size_t, double, const double*) {});
-      res.steps += sr.naccpt;
+      spend(sr, false);
     }
     return yc;
   }
@@ -781,25 +818,25 @@ class DynamicTipRun {
       for (double tl : last)
         if (next < tout.size() && tout[next] == tl) observe(tl, y.data());
     } else {
-      Dop853<double, N> fin(opt);
+      Dop853<double, N> fin = integrator();
       const auto fr = fin.integrate(rhs_fn(), st.t, y.data(), std::span<const double>(last), observer_fn());
-      res.steps += fr.naccpt;
-      if (!fr.ok()) throw SolverError("dynamic tip push: " + fr.message);
+      spend(fr, true);
     }
   }
 };
 
 template <int N>
 DynamicRunResult run_impl(const BarGeometry& g, double muN, const DynamicBar& bar, const TipPath& tip, double x0,
-                          double y0, double theta0, double t_end, int samples, double rtol) {
-  DynamicTipRun<N> run(g, muN, bar, tip, x0, y0, theta0, t_end, samples, rtol);
+                          double y0, double theta0, double t_end, int samples, double rtol, std::int64_t max_steps) {
+  DynamicTipRun<N> run(g, muN, bar, tip, x0, y0, theta0, t_end, samples, rtol, max_steps);
   return run.run();
 }
 
 }  // namespace
 
 DynamicRunResult run_dynamic(const BarGeometry& g, double muN, const DynamicBar& bar, const TipPath& tip, double x0,
-                             double y0, double theta0, double t_end, int samples, double rtol) {
+                             double y0, double theta0, double t_end, int samples, double rtol,
+                             std::int64_t max_steps) {
   tip.validate();
   if (!(std::isfinite(bar.stiffness) && bar.stiffness > 0))
     throw InputError("tip.stiffness", fmt(bar.stiffness), "must be > 0 and finite (N/m)");
@@ -815,8 +852,9 @@ DynamicRunResult run_dynamic(const BarGeometry& g, double muN, const DynamicBar&
     throw InputError("solver.rtol", fmt(rtol),
                      "must be in [" + fmt(rtol_in_eps<double>(kDop853RtolEps)) + ", 1e-2] for the dynamic tip push");
 
-  return tip.mu > 0 ? run_impl<kFricStateSize>(g, muN, bar, tip, x0, y0, theta0, t_end, samples, rtol)
-                    : run_impl<kRoughStateSize>(g, muN, bar, tip, x0, y0, theta0, t_end, samples, rtol);
+  if (max_steps < 1) throw InputError("solver.max_steps", std::to_string(max_steps), "must be >= 1");
+  return tip.mu > 0 ? run_impl<kFricStateSize>(g, muN, bar, tip, x0, y0, theta0, t_end, samples, rtol, max_steps)
+                    : run_impl<kRoughStateSize>(g, muN, bar, tip, x0, y0, theta0, t_end, samples, rtol, max_steps);
 }
 
 }  // namespace nanopush::tip

@@ -36,7 +36,7 @@ Trajectory run_cxx_tip(const Scene& sc, const ResolvedSettings& s) {
     const auto& in = sc.initial;
     const tip::DynamicRunResult run =
         tip::run_dynamic(sc.geometry, sc.friction_limit(), {sc.mass, sc.inertia, sc.tip_stiffness}, sc.tip, in[kX],
-                         in[kY], in[kTheta], sc.solver.t_end, sc.solver.samples, s.rtol);
+                         in[kY], in[kTheta], sc.solver.t_end, sc.solver.samples, s.rtol, sc.solver.max_steps);
     add_rows(tr, run.run);
     tr.stats.t_reached = sc.solver.t_end;
     return tr;

@@ -96,12 +96,14 @@ struct DynamicRunResult {
 
 /// The dynamic tip-driven push of a bar at rest from pose (x0, y0, theta0), friction load muN:
 /// output at `samples` evenly spaced times over [0, t_end] (t_end <= 0: dynamic_t_end).
-/// Dormand-Prince 8(5,3) at rtol between events. Throws InputError naming the key for bad input
+/// Dormand-Prince 8(5,3) at rtol between events, at most max_steps attempted steps over the whole
+/// run (solver.max_steps; its default). Throws InputError naming the key for bad input
 /// (tip.stiffness, tip.mu outside [0, 10], a tip starting inside the bar) and SolverError when
-/// the integration fails. With tip.mu > 0 the rows' work_tip is the contact force's work on the
+/// the integration fails or the budget is spent, saying why. With tip.mu > 0 the rows' work_tip is the contact force's work on the
 /// bar and work_tip_fric the tip friction's (<= 0): the base's work less the spring's energy,
 /// W_tip = work_tip - work_tip_fric, closes W_tip + W_fric + W_tip_fric = the kinetic energy.
 DynamicRunResult run_dynamic(const BarGeometry& g, double muN, const DynamicBar& bar, const TipPath& tip, double x0,
-                             double y0, double theta0, double t_end, int samples, double rtol);
+                             double y0, double theta0, double t_end, int samples, double rtol,
+                             std::int64_t max_steps = 100000);
 
 }  // namespace nanopush::tip
