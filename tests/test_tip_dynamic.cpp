@@ -384,9 +384,25 @@ TEST_CASE("Dynamic tip: the offset surface's points and the sliding contact", "[
           CHECK(by - sp.at.qy == Approx(sp.lambda * dy).margin(1e-22));
           CHECK((sp.lambda > 0) == (depth > 0));
           CHECK(std::fabs(sp.lambda) <= 2 * std::fabs(depth));
+          CHECK(sp.at.joint == Approx(tip::offset_point(g, r, sp.at.s).joint).margin(1e-12 * P));
         }
       }
     }
+  }
+  // The distance to the nearest joint of a face and an arc: positive on the faces, negative on
+  // the arcs, zero at the eight joints, and continuous (slope 1 in arc length) in between.
+  const double arc = 0.5 * M_PI * r;
+  double s_joint = 0;
+  for (int side = 0; side < 4; ++side) {
+    const double len = side % 2 == 0 ? 2 * kB : 2 * kA;  // the faces in order x' = a, y' = b, ...
+    for (const double u : {0.25 * len, 0.5 * len}) CHECK(tip::offset_point(g, r, s_joint + u).joint == Approx(u).epsilon(1e-12));
+    for (const double u : {0.25 * arc, 0.5 * arc})
+      CHECK(tip::offset_point(g, r, s_joint + len + u).joint == Approx(-u).epsilon(1e-9));
+    for (const double sj : {s_joint + len, s_joint + len + arc}) {
+      CHECK((tip::offset_point(g, r, sj - 1e-12).joint > 0) == (sj == s_joint + len));
+      CHECK(std::fabs(tip::offset_point(g, r, sj + 1e-12).joint) <= 1.0001e-12);
+    }
+    s_joint += len + arc;
   }
 }
 

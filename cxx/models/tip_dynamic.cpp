@@ -87,12 +87,14 @@ OffsetPoint offset_point(const BarGeometry& g, double radius, double s) {
       o.ny = f.ny;
       o.px = f.x0 + u * tx;
       o.py = f.y0 + u * ty;
+      o.joint = std::min(u, f.len - u);
       break;
     }
     u -= f.len;
     if (u <= arc || i == 3) {
       const double phi = i * 0.5 * M_PI + std::min(u, arc) / radius;
       o.corner = true;
+      o.joint = -std::min(std::min(u, arc), arc - std::min(u, arc));
       o.nx = std::cos(phi);
       o.ny = std::sin(phi);
       o.px = f.x0 + f.len * tx;
@@ -156,7 +158,8 @@ SlipPoint slip_point(const BarGeometry& g, double radius, double mu, double sigm
         best_abs = std::fabs(lambda);
         const double uc = std::clamp(u, 0.0, f.len);
         best.lambda = lambda;
-        best.at = OffsetPoint{s0 + uc, cx + uc * tx, cy + uc * ty, f.x0 + uc * tx, f.y0 + uc * ty, f.nx, f.ny, false};
+        best.at = OffsetPoint{s0 + uc,        cx + uc * tx, cy + uc * ty, f.x0 + uc * tx, f.y0 + uc * ty,
+                              f.nx,           f.ny,         false,        std::min(uc, f.len - uc)};
       }
     }
     s0 += f.len;
@@ -174,7 +177,8 @@ SlipPoint slip_point(const BarGeometry& g, double radius, double mu, double sigm
           const double dc = std::clamp(d, 0.0, 0.5 * M_PI), phi = i * 0.5 * M_PI + dc;
           const double nx = std::cos(phi), ny = std::sin(phi);
           best.lambda = lambda;
-          best.at = OffsetPoint{s0 + radius * dc, cx + radius * nx, cy + radius * ny, cx, cy, nx, ny, true};
+          best.at = OffsetPoint{s0 + radius * dc, cx + radius * nx, cy + radius * ny, cx, cy, nx, ny, true,
+                                -std::min(radius * dc, arc - radius * dc)};
         }
       }
     }

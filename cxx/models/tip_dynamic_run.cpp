@@ -143,6 +143,7 @@ class DynamicTipRun {
     // and tangential parts, lambda ((q - b).n stuck; slip_point's sliding), the arc length
     double bx = 0, by = 0, tx = 0, ty = 0, Fn = 0, Ft = 0, lambda = 0, arc = 0;
     bool corner = false;
+    double joint = 0;  // the contact's arc length to the nearest joint of a face and an arc (> 0 on a face)
   };
   /// Bounds on how fast the spring's wrench changes while the bar rests, and its size.
   struct WrenchRates {
@@ -223,6 +224,7 @@ class DynamicTipRun {
       c.delta = e.lambda;
       e.arc = op.s;
       e.corner = op.corner;
+      e.joint = op.joint;
     }
     return e;
   }
@@ -700,7 +702,7 @@ class DynamicTipRun {
     if constexpr (kFric) set_base_velocity(t);  // the base moves on the whole segment or not at all
     const std::vector<double> pending = outputs_until(seg_end);
     bool ran_down = false;
-    auto hook = [&](double, const double*, double tn, const double* sn) {
+    auto hook = [&](double t0, const double* s0, double tn, const double* sn) {
       if (along(sn) <= 0) return kHookStopBefore;
       if constexpr (!kFric) {
         if ((spring_at(tn, sn).sc.delta > 0) != touching) return kHookStopBefore;
@@ -708,6 +710,7 @@ class DynamicTipRun {
         const Eval e = spring_at(tn, sn);
         for (int w = 0; w < tip_fns(); ++w)
           if (!(tip_fn(w, e, sn) > 0)) return kHookStopBefore;
+        if (tstate != kFree && (e.joint > 0) != (spring_at(t0, s0).joint > 0)) return kHookStopBefore;
       }
       if (run_down(tn, sn)) {
         ran_down = true;
@@ -789,14 +792,20 @@ class DynamicTipRun {
     const StepStart st{t, y, 1e4 * std::numeric_limits<double>::epsilon() * std::max(t_stop, std::fabs(t))};
     const State yb = state_at(st, tb);
     const double t_rest = locate(st, tb, yb, [&](double, const double* s) { return along(s); }, true);
-    double t_touch = tb + 1;
+    double t_touch = tb + 1, t_joint = tb + 1;
     int which = kNone;  // with tip friction: the function of the tip's state that reached zero first
     if constexpr (!kFric) {
       t_touch = locate(st, tb, yb, [&](double tc, const double* s) { return spring_at(tc, s).sc.delta; }, touching);
     } else {
       t_touch = first_tip_change(st, tb, yb, which);
+      // The contact passes a joint of a face and a corner's arc: the tip's sliding rate jumps
+      // there (the curvature does), and a step across it loses its order. Restart there.
+      if (tstate != kFree) {
+        auto joint = [&](double tc, const double* s) { return spring_at(tc, s).joint; };
+        t_joint = locate(st, tb, yb, joint, joint(st.t, st.ys.data()) > 0);
+      }
     }
-    const double t_ev = std::min({t_rest, t_touch, tb});
+    const double t_ev = std::min({t_rest, t_touch, t_joint, tb});
     finish_slide(st, t_ev);
     if (t_ev == t_rest) come_to_rest(t_ev);
     if (t_ev == t_touch) {  // the located side: after the crossing

@@ -46,6 +46,9 @@ struct OffsetPoint {
   double s = 0;
   double qx = 0, qy = 0, px = 0, py = 0, nx = 0, ny = 0;
   bool corner = false;  ///< on a corner's arc (p the corner), else on a face
+  /// Arc length to the nearest joint of a face and an arc, > 0 on a face and < 0 on an arc:
+  /// the curvature, and with it the tip's sliding rate, jumps where it changes sign.
+  double joint = 0;
 };
 /// Length of the offset surface: 4 (a + b) + 2 pi r.
 double offset_perimeter(const BarGeometry& g, double radius);
