@@ -52,7 +52,9 @@ void print_error_estimate(const Trajectory& tr, std::ostream& os) {
     os << "  accuracy asked " << tr.accuracy.requested << ": " << (tr.accuracy.reached ? "reached" : "NOT reached")
        << " with rtol " << tr.accuracy.rtol_used << " (" << tr.accuracy.runs << " runs, " << tr.nfcn_total()
        << " RHS evaluations in all)\n";
-  if (e.available) {
+  if (e.available && e.basis == "exact") {
+    os << "  error of the final pose 0: " << e.note << "\n";
+  } else if (e.available) {
     os << "  error estimate of the final pose " << e.norm << " (|dx| " << e.x << " m, |dy| " << e.y
        << " m, |dtheta| " << e.theta << " rad; lengths over " << e.length_scale << " m), over the trajectory "
        << e.trajectory << (e.basis == "looser" ? "; the difference from the looser run [" : "; from a companion run [")

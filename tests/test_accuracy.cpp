@@ -194,6 +194,33 @@ TEST_CASE("Thesis law: with its kinks located the achieved error falls with rtol
   }
 }
 
+TEST_CASE("An at_rest answer is exact: no companion run, and --accuracy takes it at once",
+          "[accuracy][rough][coulomb][unit]") {
+  // A push inside the limit surface (fig3_18 at 1e-7 N): the rest analysis holds the bar at its
+  // initial pose before any step, whatever the tolerance, so the error is zero and a second
+  // run would only repeat the first.
+  Scene sc = thesis_preset("fig3_18");
+  sc.set("push.force", 1e-7);
+  RunSettings s;
+  s.law = Law::coulomb;
+  const Trajectory tr = run_engine(sc, s);
+  REQUIRE(tr.outcome == Outcome::at_rest);
+  REQUIRE(tr.error.available);
+  CHECK(tr.error.basis == "exact");
+  CHECK(tr.error.norm == 0.0);
+  CHECK(tr.error.trajectory == 0.0);
+  CHECK(tr.error.nfcn == 0);
+  CHECK(tr.nfcn_total() == tr.stats.nfcn);
+  for (const auto& r : tr.rows) CHECK(pose_error_norm(r, tr.rows.front(), sc.length) == 0.0);
+  s.accuracy = 1e-10;
+  const Trajectory acc = run_engine(sc, s);
+  CHECK(acc.outcome == Outcome::at_rest);
+  CHECK(acc.accuracy.reached);
+  CHECK(acc.accuracy.runs == 1);
+  CHECK(acc.error.norm == 0.0);
+  CHECK(acc.nfcn_total() == tr.stats.nfcn);
+}
+
 TEST_CASE("Coulomb law, method auto: a stiff start just outside the limit surface is handed over to CVODE",
           "[accuracy][rough][coulomb][regression]") {
   Scene sc = stiff_start_scene();

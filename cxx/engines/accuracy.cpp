@@ -43,6 +43,19 @@ double first_stick(const Trajectory& tr) {
   return std::numeric_limits<double>::quiet_NaN();
 }
 
+/// The estimate of an at_rest answer: static friction holds the object from t = 0, found by
+/// the rest analysis before any step, so the pose is the initial one whatever the tolerance:
+/// exact, and a companion run would only repeat it.
+ErrorEstimate exact_at_rest(const Scene& scene) {
+  ErrorEstimate e;
+  e.available = true;
+  e.norm = e.x = e.y = e.theta = e.trajectory = 0;
+  e.length_scale = scene.length;
+  e.basis = "exact";
+  e.note = "at rest from t = 0 (no step taken): the initial pose is exact";
+  return e;
+}
+
 }  // namespace
 
 double pose_error_norm(const TrajectoryRow& a, const TrajectoryRow& b, double length_scale) {
@@ -121,6 +134,10 @@ ResolvedSettings companion_settings(const Scene& scene, const ResolvedSettings& 
 Trajectory run_estimated(const Scene& scene, const ResolvedSettings& s) {
   Trajectory tr = run_resolved(scene, s);
   if (!s.error_estimate || !is_answer(tr.outcome)) return tr;
+  if (tr.outcome == Outcome::at_rest) {
+    tr.error = exact_at_rest(scene);
+    return tr;
+  }
   std::string note;
   ResolvedSettings used = s;
   if (!tr.handed_over.empty()) handed_over_settings(used);
@@ -146,7 +163,11 @@ Trajectory run_to_accuracy(const Scene& scene, const RunSettings& settings) {
   int runs = 1;
   ErrorEstimate best_error;
   bool reached = false;
-  while (is_answer(best.outcome)) {
+  if (best.outcome == Outcome::at_rest) {
+    best_error = exact_at_rest(scene);
+    reached = true;
+  }
+  while (is_answer(best.outcome) && !reached) {
     std::string note;
     const ResolvedSettings next_s = companion_settings(scene, cur_s, note);
     if (!(next_s.rtol < cur_s.rtol) && next_s.precision == cur_s.precision) {

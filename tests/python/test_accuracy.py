@@ -40,6 +40,7 @@ def test_outcomes_at_rest_and_no_static_friction():
     scene.set("push.force", 1e-7)
     r = nanopush.run(scene, law="coulomb")
     assert r.outcome == "at_rest" and np.all(r.x == 0) and np.all(r.theta == 0)
+    assert r.error_estimate == 0 and r.error["basis"] == "exact" and r.nfcn_total == r.nfcn
     with pytest.raises(nanopush.SolverError) as e:
         nanopush.run(scene, law="thesis")
     assert e.value.outcome == "no_static_friction" and "--law coulomb" in str(e.value)

@@ -112,7 +112,8 @@ struct ErrorEstimate {
   double length_scale = 0;   ///< [m] max(object length, distance travelled)
   double companion_rtol = 0;  ///< the tolerance of the companion run
   /// The run compared with: "companion" (a run rtol/100 tighter than the answer) or "looser"
-  /// (--accuracy: the answer is the tighter run; the estimate bounds the looser one's error).
+  /// (--accuracy: the answer is the tighter run; the estimate bounds the looser one's error);
+  /// "exact" where no run is needed (at_rest: the initial pose, whatever the tolerance).
   std::string basis = "companion";
   std::string companion;      ///< its engine label
   std::int64_t nfcn = 0;      ///< RHS evaluations the estimate cost (companion runs)
