@@ -447,7 +447,12 @@ TipRunResult run_quasi_static(const BarGeometry& g, double muN, const TipPath& t
     ++res.nfcn;
     try {
       const Instant in = instant(g, muN, tip, t, s, true);
-      if (in.c.inside) return 1;
+      if (in.c.inside) {  // a trial stage past the release (the tip's centre inside the bar): the
+        // model does not hold there; NaN makes the integrator shrink the step (the hook then
+        // locates the release inside the smaller one)
+        for (int i = 0; i < kQsSize; ++i) d[i] = std::numeric_limits<double>::quiet_NaN();
+        return 0;
+      }
       const double c = in.cth, sn = in.sth;
       d[0] = c * in.q.vx - sn * in.q.vy;
       d[1] = sn * in.q.vx + c * in.q.vy;
