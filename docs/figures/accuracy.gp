@@ -15,8 +15,6 @@ set logscale x
 set format x '10^{%L}'
 set logscale y
 set format y '10^{%L}'
-set key top left
-
 plot "accuracy_honesty.csv" skip 1 using 5:(strcol(1) eq 'coulomb' ? $6 : 1/0) with points pt 7 ps 0.6 title "coulomb" noenhanced, \
      "accuracy_honesty.csv" skip 1 using 5:(strcol(1) eq 'thesis' ? $6 : 1/0) with points pt 6 ps 0.6 title "thesis" noenhanced, \
      "accuracy_honesty.csv" skip 1 using 5:($5*10) with lines dt 2 lc rgb 'black' title "true = 10 x estimate" noenhanced
@@ -29,8 +27,6 @@ set xlabel "accuracy asked E" noenhanced
 set ylabel "cost ratio" noenhanced
 set logscale x
 set format x '10^{%L}'
-set key top left
-
 plot "accuracy_cost.csv" skip 1 using 1:9 with points pt 7 ps 0.6 title "scenes" noenhanced
 unset multiplot
 
