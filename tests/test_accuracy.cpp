@@ -194,6 +194,37 @@ TEST_CASE("Thesis law: with its kinks located the achieved error falls with rtol
   }
 }
 
+TEST_CASE("A bar that turns through the step budget says how fast it turned", "[accuracy][smooth][unit]") {
+  // Found by a Latin hypercube of smooth scenes: a 173 x 7 nm bar (2e-20 kg) pushed with 1e-4 N
+  // off its centre on a frictionless surface swings about the push's line at up to 3e11 rad/s;
+  // dop853 spends its 100,000 steps before t_end. The failure says how fast it turns and what
+  // to change.
+  Scene sc = thesis_preset("fig3_6a");
+  sc.set({{"object.length", 1.7266233248090568e-07},
+          {"object.width", 7.380579510680217e-09},
+          {"object.height", 6.034645767086362e-09},
+          {"object.density", 3031.9963037354105},
+          {"push.force", 0.00011342185526188642},
+          {"push.xn", -1.2773863439979218e-09},
+          {"push.yn", -4.3862272196893596e-08},
+          {"push.direction", -2.4521544013068417},
+          {"solver.t_end", 3.9370905600382834e-07},
+          {"solver.samples", 51}});
+  RunSettings s = measured(Method::dop853, 3e-7);
+  CHECK_THROWS_WITH(run_engine(sc, s), Catch::Contains("too many steps") && Catch::Contains("the object turns at up to") &&
+                                           Catch::Contains("raise solver.max_steps"));
+  s.allow_partial = true;
+  const Trajectory tr = run_engine(sc, s);
+  CHECK(tr.outcome == Outcome::solver_failure);
+  double w = 0;
+  for (const auto& r : tr.rows) w = std::max(w, std::fabs(r[col::omega]));
+  CHECK(w * sc.solver.t_end / (2 * M_PI) > 1000);
+  // A budget large enough for its turns gives the answer.
+  sc.set("solver.max_steps", 10000000);
+  s.allow_partial = false;
+  CHECK(run_engine(sc, s).outcome == Outcome::ok);
+}
+
 TEST_CASE("An at_rest answer is exact: no companion run, and --accuracy takes it at once",
           "[accuracy][rough][coulomb][unit]") {
   // A push inside the limit surface (fig3_18 at 1e-7 N): the rest analysis holds the bar at its

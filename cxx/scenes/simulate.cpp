@@ -519,6 +519,22 @@ Trajectory finish_run(const Scene& scene, const ResolvedSettings& s, Trajectory 
       }
     }
   }
+  if (tr.outcome == Outcome::solver_failure && tr.stats.status == BsStatus::too_many_steps && tr.rows.size() > 1 &&
+      tr.outcome_message.empty()) {
+    // A bar pushed hard turns (or swings about the push's line) faster and faster: each turn
+    // costs some tens of steps, so say how fast it turns rather than only that the budget is
+    // spent. The samples are too sparse to count turns; the largest |omega| bounds them.
+    double w = 0;
+    for (const auto& r : tr.rows) w = std::max(w, std::fabs(r[col::omega]));
+    const double turns = w * scene.solver.t_end / (2 * M_PI);
+    if (turns >= 1000)
+      tr.outcome_message = std::string(to_string(tr.stats.status)) + ": " + tr.stats.message + " by t = " +
+                           fmt_short(tr.stats.t_reached) + " s of " + fmt_short(scene.solver.t_end) +
+                           " s; the object turns at up to |omega| = " + fmt_short(w) + " rad/s, a turn in " +
+                           fmt_short(2 * M_PI / w) + " s, some " + fmt_short(std::round(turns)) +
+                           " turns or swings over t_end at tens of steps each: shorten solver.t_end or raise "
+                           "solver.max_steps";
+  }
   if (!is_answer(tr.outcome)) {
     tr.complete = false;
     if (tr.outcome_message.empty())
