@@ -19,6 +19,20 @@ using namespace nanopush;
 
 namespace NANOPUSH_UNITY_ID {
 
+/// The physical ranges the rough hypercube draws from (scenes/lhs.hpp): the bar's size, the
+/// push, mu, f_vdw and rtol are drawn from the same ranges here.
+const RoughLhsRanges kSpace;
+
+struct BarSize {
+  double length, width, height;
+};
+/// The bar's size at a hypercube point's first three coordinates.
+template <std::size_t D>
+BarSize bar_size(const std::array<double, D>& u) {
+  const double length = kSpace.length.at(u[0]);
+  return {length, length * kSpace.aspect.at(u[1]), kSpace.height.at(u[2])};
+}
+
 /// n tip scenes: the example nanorod's scene with the bar, the tip, its path and the surface
 /// drawn from a seeded hypercube: length 10 nm - 10 um, width/length 0.01 - 1, height
 /// 1 nm - 1 um, tip radius 1 - 50 nm, a gap of 0.1 - 50 nm before contact, the path's offset
@@ -27,16 +41,16 @@ namespace NANOPUSH_UNITY_ID {
 /// stiffness 0.1 - 100 N/m, mu 1e-3 - 2, f_vdw 1e-12 - 1e-3 N.
 std::vector<Scene> tip_lhs_scenes(std::size_t n, std::uint64_t seed, const std::string& model) {
   const Scene base = load_scene(std::string(NANOPUSH_SOURCE_DIR) + "/drivers/scenes/examples/tip_push_nanorod.toml");
-  const LhsRange length{10e-9, 10e-6}, aspect{0.01, 1.0}, height{1e-9, 1e-6}, radius{1e-9, 50e-9}, gap{1e-10, 50e-9},
-      offset{-0.7, 0.7, false}, direction{-1.2, 1.2, false}, speed{1e-7, 10.0}, travel{1e-9 / 10e-6, 2.0},
-      tip_mu{1e-3, 1.0}, stiffness{0.1, 100.0}, mu{1e-3, 2.0}, f_vdw{1e-12, 1e-3};
+  const LhsRange radius{1e-9, 50e-9}, gap{1e-10, 50e-9}, offset{-0.7, 0.7, false}, direction{-1.2, 1.2, false},
+      speed{1e-7, 10.0}, travel{1e-9 / 10e-6, 2.0}, tip_mu{1e-3, 1.0}, stiffness{0.1, 100.0};
   std::vector<Scene> out;
   for (const auto& u : latin_hypercube<13>(n, seed)) {
-    const double L = length.at(u[0]), W = L * aspect.at(u[1]), R = radius.at(u[3]);
+    const auto [L, W, H] = bar_size(u);
+    const double R = radius.at(u[3]);
     Scene sc = base;
     sc.set({{"object.length", L},
             {"object.width", W},
-            {"object.height", height.at(u[2])},
+            {"object.height", H},
             {"tip.radius", R},
             {"tip.start_x", -(W / 2 + R + gap.at(u[4]))},
             {"tip.start_y", offset.at(u[5]) * L},
@@ -44,8 +58,8 @@ std::vector<Scene> tip_lhs_scenes(std::size_t n, std::uint64_t seed, const std::
             {"tip.speed", speed.at(u[7])},
             {"tip.travel", std::max(1e-9, travel.at(u[8]) * L)},
             {"tip.mu", u[9] < 0.5 ? 0.0 : tip_mu.at(2 * u[9] - 1)},
-            {"surface.mu", mu.at(u[11])},
-            {"surface.f_vdw", f_vdw.at(u[12])},
+            {"surface.mu", kSpace.mu.at(u[11])},
+            {"surface.f_vdw", kSpace.f_vdw.at(u[12])},
             {"solver.samples", 51}});
     if (model != "quasi_static") sc.set("tip.stiffness", stiffness.at(u[10]));
     sc.set("tip.model", model);
@@ -101,21 +115,20 @@ TEST_CASE("Tip scenes of the physical space: the dynamic model answers or says w
 /// 1 ps - 1 us, rtol 1e-13 - 1e-4; the engine and method cycle through F77 and the C++ methods.
 std::vector<Scene> smooth_lhs_scenes(std::size_t n, std::uint64_t seed) {
   const Scene base = load_scene(std::string(NANOPUSH_SOURCE_DIR) + "/drivers/scenes/thesis/fig3_6a.toml");
-  const LhsRange length{10e-9, 10e-6}, aspect{0.01, 1.0}, height{1e-9, 1e-6}, density{1e3, 2e4}, force{1e-12, 1e-3},
-      xn{-0.5, 0.5, false}, yn{-0.5, 0.5, false}, direction{-3.0, 3.0, false}, t_end{1e-12, 1e-6}, rtol{1e-13, 1e-4};
+  const LhsRange half{-0.5, 0.5, false}, direction{-3.0, 3.0, false}, t_end{1e-12, 1e-6}, rtol{1e-13, 1e-4};
   const char* methods[] = {"auto", "faithful", "modern", "dop853"};
   std::vector<Scene> out;
   std::size_t i = 0;
   for (const auto& u : latin_hypercube<10>(n, seed)) {
-    const double L = length.at(u[0]), W = L * aspect.at(u[1]);
+    const auto [L, W, H] = bar_size(u);
     Scene sc = base;
     sc.set({{"object.length", L},
             {"object.width", W},
-            {"object.height", height.at(u[2])},
-            {"object.density", density.at(u[3])},
-            {"push.force", force.at(u[4])},
-            {"push.xn", xn.at(u[5]) * W},
-            {"push.yn", yn.at(u[6]) * L},
+            {"object.height", H},
+            {"object.density", kSpace.density.at(u[3])},
+            {"push.force", kSpace.force.at(u[4])},
+            {"push.xn", half.at(u[5]) * W},
+            {"push.yn", half.at(u[6]) * L},
             {"push.direction", direction.at(u[7])},
             {"solver.t_end", t_end.at(u[8])},
             {"solver.rtol", rtol.at(u[9])},
@@ -162,13 +175,10 @@ std::vector<Scene> environment_lhs_scenes(std::size_t n, std::uint64_t seed) {
   while (std::getline(in, line))
     if (line.rfind("humidity", 0) != 0) text += (line == "medium = \"humid_air\"" ? "medium = \"vacuum\"" : line) + "\n";
   const Scene base = parse_scene(text, "nanobar_humid_air.toml");
-  const LhsRange length{10e-9, 10e-6}, aspect{0.01, 1.0}, height{1e-9, 1e-6}, force{1e-12, 1e-3},
-      xn{-0.5, 0.5, false}, yn{-0.5, 0.5, false}, mu{1e-3, 2.0}, temperature{200, 400}, gap{1e-11, 1e-8},
-      rtol{1e-12, 1e-4};
+  const LhsRange half{-0.5, 0.5, false}, temperature{200, 400}, gap{1e-11, 1e-8};
   std::vector<Scene> out;
-  std::size_t i = 0;
   for (const auto& u : latin_hypercube<12>(n, seed)) {
-    const double L = length.at(u[0]), W = L * aspect.at(u[1]), H = height.at(u[2]);
+    const auto [L, W, H] = bar_size(u);
     Scene sc = base;
     sc.set({{"object.length", L},
             {"object.width", W},
@@ -176,13 +186,13 @@ std::vector<Scene> environment_lhs_scenes(std::size_t n, std::uint64_t seed) {
             {"body.length", L},
             {"body.width", W},
             {"body.height", H},
-            {"push.force", force.at(u[3])},
-            {"push.xn", xn.at(u[4]) * W},
-            {"push.yn", yn.at(u[5]) * L},
-            {"surface.mu", mu.at(u[6])},
+            {"push.force", kSpace.force.at(u[3])},
+            {"push.xn", half.at(u[4]) * W},
+            {"push.yn", half.at(u[5]) * L},
+            {"surface.mu", kSpace.mu.at(u[6])},
             {"environment.temperature", temperature.at(u[7])},
             {"environment.gap", gap.at(u[8])},
-            {"solver.rtol", rtol.at(u[9])},
+            {"solver.rtol", kSpace.rtol.at(u[9])},
             {"solver.samples", 51}});
     sc.set("surface.law", u[10] < 0.5 ? "coulomb" : "thesis");
     if (u[11] < 0.25) {
@@ -192,7 +202,6 @@ std::vector<Scene> environment_lhs_scenes(std::size_t n, std::uint64_t seed) {
       sc.set({{"environment.medium", std::string("humid_air")}, {"environment.humidity", (u[11] - 0.5) * 2}});
     }
     out.push_back(std::move(sc));
-    ++i;
   }
   return out;
 }
