@@ -37,7 +37,11 @@ double DynamicTipRun<N>::slide_phase(double t, double seg_end) {
   if constexpr (kFric) set_base_velocity(t);  // the base moves on the whole segment or not at all
   const std::vector<double> pending = outputs_until(seg_end);
   bool ran_down = false;
-  auto hook = [&](double t0, const double* s0, double tn, const double* sn) {
+  // With tip friction, whether the contact is on a face at the step's start (the last accepted
+  // step's end): a step that ends on the other side of a joint is stopped, and the joint located.
+  bool on_face = false;
+  if constexpr (kFric) on_face = tstate != kFree && spring_at(t, y.data()).joint > 0;
+  auto hook = [&](double, const double*, double tn, const double* sn) {
     if (along(sn) <= 0) return kHookStopBefore;
     if constexpr (!kFric) {
       if ((spring_at(tn, sn).sc.delta > 0) != touching) return kHookStopBefore;
@@ -45,7 +49,8 @@ double DynamicTipRun<N>::slide_phase(double t, double seg_end) {
       const Eval e = spring_at(tn, sn);
       for (int w = 0; w < tip_fns(); ++w)
         if (!(tip_fn(w, e, sn) > 0)) return kHookStopBefore;
-      if (tstate != kFree && (e.joint > 0) != (spring_at(t0, s0).joint > 0)) return kHookStopBefore;
+      if (tstate != kFree && (e.joint > 0) != on_face) return kHookStopBefore;
+      on_face = e.joint > 0;
     }
     if (run_down(tn, sn)) {
       ran_down = true;
