@@ -99,8 +99,9 @@ int main(int argc, char** argv) {
   } catch (const InputError& e) {
     std::cerr << "nanopush: error: " << e.what() << "\n";
     return 2;
-  } catch (const SolverError& e) {
-    std::cerr << "nanopush: solver failure: " << e.what() << "\n";
+  } catch (const SolverError& e) {  // a classified outcome names itself (docs/errors.md)
+    std::cerr << "nanopush: " << (e.outcome() == "solver_failure" ? std::string("solver failure") : e.outcome()) << ": "
+              << e.what() << "\n";
     return 3;
   } catch (const std::logic_error& e) {
     std::cerr << "nanopush: internal error (a bug: please report it with the command line): " << e.what() << "\n";

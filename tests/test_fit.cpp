@@ -229,6 +229,32 @@ void check_undetermined(const FitResult& r, const std::vector<std::string>& unde
   CHECK(id.determined[0].name == combination);
 }
 
+TEST_CASE("fit: a model that starts where the thesis law has no static friction says so at once", "[fit][unit]") {
+  // Found by a hypercube of fits: a 34 nm bar under 1e-10 N with mu N = 2e-9 N. A run says
+  // no_static_friction at once; the fit's forward solve chattered through fig3_18's 20,000
+  // steps and reported a bare "too many steps" (and --synthesize with it).
+  Scene s = short_scene("thesis/fig3_18.toml", 1.6e-9, 41);
+  s.set({{"object.length", 3.418347483686828e-08},
+         {"object.width", 2.089977841493339e-08},
+         {"object.height", 3.668631917456952e-08},
+         {"surface.mu", 0.3346263720527797},
+         {"push.force", 1.0245431800604229e-10},
+         {"surface.f_vdw", 6.047122636090708e-09},
+         {"push.yn", 2.804347036495063e-09},
+         {"push.xn", -1.0449889207466695e-08}});
+  REQUIRE(s.friction_limit() > s.push.force);
+  try {
+    (void)synthesize(s, {1e-11, 1e-11, 1e-3}, 1, Law::thesis);
+    FAIL("no error");
+  } catch (const SolverError& e) {
+    CHECK(e.outcome() == "no_static_friction");
+    CHECK_THAT(e.what(), Catch::Contains("cannot break static friction") && Catch::Contains("--law coulomb"));
+  }
+  // Under the coulomb law the same model is an answer: the object stays where it is.
+  const Observations obs = synthesize(s, {1e-11, 1e-11, 1e-3}, 1, Law::coulomb);
+  CHECK(obs.t.size() == 41);
+}
+
 TEST_CASE("fit identifiability: mu and the adhesion load enter only as mu*N", "[fit][numeric]") {
   const Scene s = short_scene("thesis/fig3_20.toml", 0.8e-9, 41);
   const Observations obs = synthesize(s, {1e-9, 1e-9, 0.01}, 21, Law::thesis);

@@ -280,7 +280,14 @@ ModelPoses model_poses(const Scene& scene, const std::vector<std::string>& free,
   require_range("rtol", rtol, 1e-14, 1e-3);
   if (p.size() != free.size()) throw InputError("parameters", std::to_string(p.size()), "one value per free key");
   Scene sc = free.empty() ? scene : detail::scene_at(scene, free, p);
-  const bool coulomb = sc.rough() && detail::fit_law(scene, law_in) == Law::coulomb;
+  const Law law = detail::fit_law(scene, law_in);
+  const bool coulomb = sc.rough() && law == Law::coulomb;
+  // The thesis and printed laws have no static friction: an object that starts where the push
+  // cannot break it would chatter through the whole step budget. Say so at once, as a run does.
+  if (sc.rough() && !coulomb && starts_stuck(sc))
+    throw SolverError(sc.name + " (" + to_string(law) + " law): " +
+                          no_static_friction_message(sc, law, 0.0, sc.initial[kX], sc.initial[kY], sc.initial[kTheta]),
+                      to_string(Outcome::no_static_friction));
   if (coulomb && gradients == Gradients::sensitivities)
     throw InputError("gradients", "sensitivities",
                      "the coulomb law's right-hand side jumps at its rest events: use differences (or auto)");

@@ -9,6 +9,14 @@ add_test(NAME cli.fit.synthesize
                  --sigma x=1e-9 --sigma y=1e-9 --sigma theta=0.01 --seed 3)
 set_tests_properties(cli.fit.synthesize PROPERTIES FIXTURES_SETUP fit_data)
 
+# A model the thesis law cannot start (mu N > F): the classified outcome at once, exit 3,
+# stderr named by the outcome as for `run`, no data written.
+add_test(NAME cli.fit.no_static_friction
+         COMMAND bash -c "\"$0\" fit fig3_20 --law thesis --set push.force=1e-12 --synthesize \"$1/stuck.csv\" --sigma x=1e-9 2> \"$1/stuck.err\"; \
+r=$?; grep -q '^nanopush: no_static_friction: fig3_20 (thesis law): the object starts at rest' \"$1/stuck.err\" && m=yes || m=no; \
+test -e \"$1/stuck.csv\" && f=yes || f=no; echo \"exit $r message $m file $f\"" $<TARGET_FILE:nanopush> ${_fit_dir})
+set_tests_properties(cli.fit.no_static_friction PROPERTIES PASS_REGULAR_EXPRESSION "exit 3 message yes file no")
+
 add_test(NAME cli.fit.json
          COMMAND $<TARGET_FILE:nanopush> fit fig3_20 ${_fit_dir}/data.csv ${_fit_span} --set surface.mu=0.1 --free surface.mu
                  --json - --out ${_fit_dir}/out)
