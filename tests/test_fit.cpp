@@ -253,6 +253,15 @@ TEST_CASE("fit: a model that starts where the thesis law has no static friction 
   // Under the coulomb law the same model is an answer: the object stays where it is.
   const Observations obs = synthesize(s, {1e-11, 1e-11, 1e-3}, 1, Law::coulomb);
   CHECK(obs.t.size() == 41);
+  // fig3_27 slides, then comes to rest where the push cannot break static friction: the forward
+  // model's rest watch stops there, as the run's does, instead of chattering to the budget.
+  try {
+    (void)synthesize(preset("thesis/fig3_27.toml"), {1e-9, 1e-9, 1e-2}, 1, Law::thesis);
+    FAIL("no error");
+  } catch (const SolverError& e) {
+    CHECK(e.outcome() == "no_static_friction");
+    CHECK_THAT(e.what(), Catch::Contains("came to rest at t = "));
+  }
 }
 
 TEST_CASE("fit identifiability: mu and the adhesion load enter only as mu*N", "[fit][numeric]") {

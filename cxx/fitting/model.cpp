@@ -26,6 +26,7 @@
 #include "nanopush/models/stick_slip.hpp"
 #include "nanopush/numerics/dop853.hpp"
 #include "nanopush/numerics/error.hpp"
+#include "nanopush/scenes/rest_watch.hpp"
 #include "nanopush/scenes/scene_keys.hpp"
 #include "nanopush/scenes/simulate.hpp"
 
@@ -236,7 +237,19 @@ ModelPoses smooth_poses(const Scene& scene, const std::vector<std::string>& free
       out.jac[i][k] = {s[kX] / scale[k], s[kY] / scale[k], s[kTheta] / scale[k]};  // d/dp = d/dq / c
     }
   };
-  const auto res = dp.integrate(rhs, 0.0, y.data(), std::span<const double>(times), observer);
+  // A rough body that comes to rest where the thesis law cannot hold it: stop there, as a run does.
+  std::optional<RestWatch> watch;
+  if (scene.rough()) watch.emplace(rough_model(scene));
+  auto hook = [&](double t0, const double* y0, double t1, const double* y1) {
+    return watch ? (*watch)(t0, y0, t1, y1) : kHookContinue;
+  };
+  const auto res = dp.integrate(rhs, 0.0, y.data(), std::span<const double>(times), observer, hook);
+  if (watch && watch->came_to_rest) {
+    const Law law = rough_model(scene).printed ? Law::printed : Law::thesis;
+    throw SolverError(scene.name + " (" + to_string(law) + " law): " +
+                          no_static_friction_message(scene, law, watch->t_rest, y[kX], y[kY], y[kTheta]),
+                      to_string(Outcome::no_static_friction));
+  }
   if (!res.ok()) solver_failed(scene, derivatives ? "dop853 with sensitivities" : "dop853", res);
   return out;
 }
