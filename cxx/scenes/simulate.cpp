@@ -490,7 +490,7 @@ Trajectory finish_run(const Scene& scene, const ResolvedSettings& s, Trajectory 
       tr.outcome_message = std::string(to_string(tr.stats.status)) + ": " + tr.stats.message + " by t = " +
                            fmt_short(tr.stats.t_reached) + " s of " + fmt_short(scene.solver.t_end) +
                            " s; the object turns at up to |omega| = " + fmt_short(w) + " rad/s, a turn in " +
-                           fmt_short(2 * M_PI / w) + " s, some " + fmt_short(std::round(turns)) +
+                           fmt_short(2 * M_PI / w) + " s, some " + std::to_string(std::llround(turns)) +
                            " turns or swings over t_end at tens of steps each: shorten solver.t_end or raise "
                            "solver.max_steps";
   }
