@@ -225,14 +225,12 @@ py::object make_result(const Trajectory& tr) {
   return py::cast(std::move(r));
 }
 
-void register_run(py::module_& m) {
-  auto cls = py::class_<RunResult>(m, "Result", R"doc(A trajectory: one row per output time, SI, world axes, centre of mass.
+namespace {
 
-Columns (read-only NumPy arrays): t [s], x, y [m], theta [rad], vx, vy [m/s], omega [rad/s],
-fx, fy [N] (friction force), mf [N m] (friction moment); `array` is the n x 10 table.
-Counts: nfcn (right-hand-side evaluations), steps (accepted), rejected. to_dict() gives a
-dict of arrays (pandas.DataFrame(result.to_dict())); to_csv(path) writes the CSV of
-`nanopush run --out` (and its Table Schema sidecar).)doc");
+using ResultClass = py::class_<RunResult>;
+
+/// The table: one read-only view per column, the whole array, names and units, to_dict, to_csv.
+void add_table(ResultClass& cls) {
   const auto& cols = trajectory_columns();
   const auto& units = trajectory_units();
   for (std::size_t k = 0; k < cols.size(); ++k) {
@@ -277,7 +275,12 @@ dict of arrays (pandas.DataFrame(result.to_dict())); to_csv(path) writes the CSV
           },
           py::arg("path"),
           "Write the CSV of `nanopush run --out PATH` (shortest round-trip numbers) with its sidecar "
-          "PATH.schema.json; atomic (a temporary name renamed when complete).")
+          "PATH.schema.json; atomic (a temporary name renamed when complete).");
+}
+
+/// How the run went: counts, engine, precision, tolerances, completeness.
+void add_counts(ResultClass& cls) {
+  cls
       .def_property_readonly("nfcn", [](const RunResult& r) { return r.tr.stats.nfcn; }, "Right-hand-side evaluations.")
       .def_property_readonly("steps", [](const RunResult& r) { return r.tr.stats.naccpt; }, "Accepted steps.")
       .def_property_readonly("rejected", [](const RunResult& r) { return r.tr.stats.nrejct; }, "Rejected steps.")
@@ -290,7 +293,12 @@ dict of arrays (pandas.DataFrame(result.to_dict())); to_csv(path) writes the CSV
       .def_property_readonly("atol", [](const RunResult& r) { return copy_vector(r.tr.atol); },
                              "Absolute tolerance of each state component (SI).")
       .def_property_readonly("complete", [](const RunResult& r) { return r.tr.complete; },
-                             "False only for the partial result a SolverError carries.")
+                             "False only for the partial result a SolverError carries.");
+}
+
+/// scipy.integrate.solve_ivp's names: success, status, message, nfev, states (its `y`).
+void add_solve_ivp(ResultClass& cls) {
+  cls
       .def_property_readonly("integrator_status", [](const RunResult& r) { return status_name(r.tr.stats.status); },
                              "The integrator's status as a word: success, or why it stopped (too_many_steps, "
                              "step_underflow, rhs_failed, not_finite).")
@@ -329,7 +337,12 @@ dict of arrays (pandas.DataFrame(result.to_dict())); to_csv(path) writes the CSV
           "solve_ivp calls `y` (here `y` is the y coordinate). A read-only view.")
       .def_property_readonly_static(
           "state_names", [](const py::object&) { return std::vector<std::string>{"x", "y", "theta", "vx", "vy", "omega"}; },
-          "The rows of `states`, in order.")
+          "The rows of `states`, in order.");
+}
+
+/// What the answer is worth: its outcome, error estimate, accuracy, cost, works and events.
+void add_outcome(ResultClass& cls) {
+  cls
       .def_property_readonly("outcome", [](const RunResult& r) { return to_string(r.tr.outcome); },
                              "How the run ended (docs/errors.md): ok or at_rest for an answer; no_static_friction, "
                              "law_blowup, accuracy_not_reached, solver_failure on a SolverError's partial result.")
@@ -375,6 +388,22 @@ dict of arrays (pandas.DataFrame(result.to_dict())); to_csv(path) writes the CSV
         return "<nanopush.Result " + r.scene + " [" + r.tr.engine_label + "]: " + std::to_string(r.tr.rows.size()) +
                " samples, " + std::to_string(r.tr.stats.nfcn) + " RHS evaluations>";
       });
+}
+
+}  // namespace
+
+void register_run(py::module_& m) {
+  auto cls = py::class_<RunResult>(m, "Result", R"doc(A trajectory: one row per output time, SI, world axes, centre of mass.
+
+Columns (read-only NumPy arrays): t [s], x, y [m], theta [rad], vx, vy [m/s], omega [rad/s],
+fx, fy [N] (friction force), mf [N m] (friction moment); `array` is the n x 10 table.
+Counts: nfcn (right-hand-side evaluations), steps (accepted), rejected. to_dict() gives a
+dict of arrays (pandas.DataFrame(result.to_dict())); to_csv(path) writes the CSV of
+`nanopush run --out` (and its Table Schema sidecar).)doc");
+  add_table(cls);
+  add_counts(cls);
+  add_solve_ivp(cls);
+  add_outcome(cls);
 
   m.def("_run", &run, py::arg("scene"), py::arg("engine") = "", py::arg("method") = "", py::arg("law") = "",
         py::arg("rtol") = py::none(), py::arg("atol") = py::none(), py::arg("precision") = "",
