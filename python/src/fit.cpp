@@ -107,21 +107,13 @@ py::array_t<double> matrix(const std::vector<std::array<double, 3>>& rows) {
 
 }  // namespace
 
-void register_fit(py::module_& m) {
-  py::class_<PyFit>(m, "FitResult", R"doc(A trajectory fit (nanopush.fit; docs/fitting.md).
+namespace {
 
-parameters   dict key -> {'value', 'stderr' (NaN when the data do not determine the key
-             separately, or not converged), 'start', 'lower', 'upper', 'at_bound', 'unit'}
-correlation  NumPy (k, k) correlation matrix of the estimates (NaN for undetermined keys)
-chi2, chi2_dof, dof, converged, status, iterations, n_forward_solves, gradients, law
-accuracy     with fit(accuracy=E): dict requested, rtol_used, estimate, reached; else None
-identifiable, identifiability_message, determined (list of (name, value, stderr_relative))
-t, fitted    observation times [s] and the model's pose (x, y, theta) there, NumPy (n, 3)
-residuals    (observed - model) / sigma, NumPy (n, 3), NaN where not observed
-json         the JSON summary of `nanopush fit --json`
-SciPy/lmfit names: names, x, stderr, covariance, success (= converged), nfev
-             (= n_forward_solves), message (= status), ndata, initial; observed and sigma
-             (n, 3) the data fitted; report() and plot() (nanopush.fit's docs))doc")
+using FitClass = py::class_<PyFit>;
+
+/// The estimates and the fit's quality: parameters, correlation, chi2, convergence, cost, accuracy.
+void add_estimates(FitClass& cls) {
+  cls
       .def_property_readonly("parameters",
                              [](const PyFit& f) {
                                py::dict d;
@@ -166,7 +158,12 @@ SciPy/lmfit names: names, x, stderr, covariance, success (= converged), nfev
                                d["estimate"] = f.r.accuracy.estimate;
                                d["reached"] = f.r.accuracy.reached;
                                return d;
-                             })
+                             });
+}
+
+/// What the data determine: identifiability, and the combinations that are determined.
+void add_identifiability(FitClass& cls) {
+  cls
       .def_property_readonly("identifiable", [](const PyFit& f) { return f.r.identifiability.identifiable; })
       .def_property_readonly("identifiability_message",
                              [](const PyFit& f) { return f.r.identifiability.message; })
@@ -176,7 +173,12 @@ SciPy/lmfit names: names, x, stderr, covariance, success (= converged), nfev
                                for (const auto& c : f.r.identifiability.determined)
                                  l.append(py::make_tuple(c.name, c.value, c.stderr_relative));
                                return l;
-                             })
+                             });
+}
+
+/// The data and the model there: t, fitted, residuals, and the JSON summary.
+void add_data(FitClass& cls) {
+  cls
       .def_property_readonly("t",
                              [](const PyFit& f) {
                                py::array_t<double> a(static_cast<py::ssize_t>(f.r.t.size()));
@@ -185,7 +187,12 @@ SciPy/lmfit names: names, x, stderr, covariance, success (= converged), nfev
                              })
       .def_property_readonly("fitted", [](const PyFit& f) { return matrix(f.r.fitted); })
       .def_property_readonly("residuals", [](const PyFit& f) { return matrix(f.r.residuals); })
-      .def_property_readonly("json", [](const PyFit& f) { return fit::fit_json(f.r); })
+      .def_property_readonly("json", [](const PyFit& f) { return fit::fit_json(f.r); });
+}
+
+/// SciPy's and lmfit's names (names, x, stderr, covariance, success, nfev, message, ...).
+void add_scipy_names(FitClass& cls) {
+  cls
       .def_property_readonly("names",
                              [](const PyFit& f) {
                                std::vector<std::string> v;
@@ -221,6 +228,29 @@ SciPy/lmfit names: names, x, stderr, covariance, success (= converged), nfev
         for (const auto& p : f.r.parameters) s += " " + p.key + "=" + fmt(p.value) + " +- " + fmt(p.stderr_);
         return s + ", chi2/dof=" + fmt(f.r.chi2_dof) + (f.r.converged ? "" : ", NOT converged") + ">";
       });
+}
+
+}  // namespace
+
+void register_fit(py::module_& m) {
+  FitClass cls(m, "FitResult", R"doc(A trajectory fit (nanopush.fit; docs/fitting.md).
+
+parameters   dict key -> {'value', 'stderr' (NaN when the data do not determine the key
+             separately, or not converged), 'start', 'lower', 'upper', 'at_bound', 'unit'}
+correlation  NumPy (k, k) correlation matrix of the estimates (NaN for undetermined keys)
+chi2, chi2_dof, dof, converged, status, iterations, n_forward_solves, gradients, law
+accuracy     with fit(accuracy=E): dict requested, rtol_used, estimate, reached; else None
+identifiable, identifiability_message, determined (list of (name, value, stderr_relative))
+t, fitted    observation times [s] and the model's pose (x, y, theta) there, NumPy (n, 3)
+residuals    (observed - model) / sigma, NumPy (n, 3), NaN where not observed
+json         the JSON summary of `nanopush fit --json`
+SciPy/lmfit names: names, x, stderr, covariance, success (= converged), nfev
+             (= n_forward_solves), message (= status), ndata, initial; observed and sigma
+             (n, 3) the data fitted; report() and plot() (nanopush.fit's docs))doc");
+  add_estimates(cls);
+  add_identifiability(cls);
+  add_data(cls);
+  add_scipy_names(cls);
 
   m.def("_fit", &fit_scene, py::arg("scene"), py::arg("data"), py::arg("free"), py::kw_only(), py::arg("law") = "",
         py::arg("sigma") = py::none(), py::arg("gradients") = "auto", py::arg("rtol") = 1e-10,
