@@ -91,20 +91,12 @@ ShardRecord read_shard_sidecar(const std::filesystem::path& table) {
   return r;
 }
 
-}  // namespace
-
-// Long (~150 lines) on purpose: the checks (sidecars, shard set, pass 1's row checks) and the
-// join (pass 2) share the shard records and the order they establish; each section is marked,
-// and every refusal names the file and line where the check sits.
-std::size_t merge_tables(const std::vector<std::filesystem::path>& shards, const std::filesystem::path& out) {
-  if (shards.empty()) throw InputError("--merge", "(none)", "give the shard tables to join");
-  // Each table a regular file (a FIFO or a device refused before anything is read), then the
-  // sidecars: every table a shard of one sweep (one plan), each shard once.
-  for (const auto& path : shards) InputFile check(path, "--merge", kMaxTableBytes);
-  std::vector<ShardRecord> rec;
-  for (const auto& path : shards) rec.push_back(read_shard_sidecar(path));
-  const ShardRecord& first = rec.front();
+/// Every table a shard of one sweep (one plan, one split), each shard once and none missing:
+/// shard index -> position in `shards`.
+std::map<std::uint64_t, std::size_t> shard_set(const std::vector<std::filesystem::path>& shards,
+                                               const std::vector<ShardRecord>& rec) {
   std::map<std::uint64_t, std::size_t> shard_of;  // shard index -> position in `shards`
+  const ShardRecord& first = rec.front();
   for (std::size_t k = 0; k < shards.size(); ++k) {
     const ShardRecord& r = rec[k];
     const std::string diff =
@@ -129,8 +121,20 @@ std::size_t merge_tables(const std::vector<std::filesystem::path>& shards, const
       throw InputError("--merge", "shard " + std::to_string(i) + "/" + std::to_string(first.count),
                        "is missing: give every shard's table (the plan has " + std::to_string(first.plan_points) +
                            " points)");
-  // Pass 1, each shard alone, one row at a time: the header, every row whole with a known
-  // status, its points those of its shard in increasing order, as many as its sidecar says.
+  return shard_of;
+}
+
+/// What pass 1 learnt: the header every shard shares, and how many rows failed.
+struct Checked {
+  std::string header;
+  std::size_t failed = 0;
+};
+
+/// Pass 1, each shard alone, one row at a time: the header, every row whole with a known
+/// status, its points those of its shard in increasing order, as many as its sidecar says;
+/// and every point of the plan in some shard.
+Checked check_rows(const std::vector<std::filesystem::path>& shards, const std::vector<ShardRecord>& rec) {
+  const ShardRecord& first = rec.front();
   std::string header;
   std::size_t columns = 0, status_col = 0;
   std::size_t failed = 0;
@@ -204,7 +208,17 @@ std::size_t merge_tables(const std::vector<std::filesystem::path>& shards, const
     throw InputError("--merge", "point " + std::to_string(missing),
                      "is in no shard: the plan has " + std::to_string(first.plan_points) +
                          " points; give every shard's complete table");
-  // Pass 2: the rows in point order, point i from shard i mod n, each shard read once through.
+  return {header, failed};
+}
+
+/// Pass 2: the rows in point order, point i from shard i mod n, each shard read once through,
+/// into `out`; beside it the first shard's sidecar with the run record of the whole.
+void join_rows(const std::vector<std::filesystem::path>& shards, const std::vector<ShardRecord>& rec,
+               const std::map<std::uint64_t, std::size_t>& shard_of, const Checked& checked,
+               const std::filesystem::path& out) {
+  const ShardRecord& first = rec.front();
+  const std::string& header = checked.header;
+  const std::size_t failed = checked.failed;
   std::vector<std::unique_ptr<InputFile>> in;
   std::vector<std::size_t> lineno(first.count, 1);
   for (std::uint64_t s = 0; s < first.count; ++s) {
@@ -245,7 +259,21 @@ std::size_t merge_tables(const std::vector<std::filesystem::path>& shards, const
   const bool through = table.write_through();
   table.commit();
   if (!through) write_file_atomic(schema_path(out), schema);
-  return failed;
+}
+
+}  // namespace
+
+std::size_t merge_tables(const std::vector<std::filesystem::path>& shards, const std::filesystem::path& out) {
+  if (shards.empty()) throw InputError("--merge", "(none)", "give the shard tables to join");
+  // Each table a regular file (a FIFO or a device refused before anything is read), then the
+  // sidecars.
+  for (const auto& path : shards) InputFile check(path, "--merge", kMaxTableBytes);
+  std::vector<ShardRecord> rec;
+  for (const auto& path : shards) rec.push_back(read_shard_sidecar(path));
+  const auto shard_of = shard_set(shards, rec);
+  const Checked checked = check_rows(shards, rec);
+  join_rows(shards, rec, shard_of, checked, out);
+  return checked.failed;
 }
 
 }  // namespace nanopush::sweep
