@@ -51,10 +51,12 @@ add_test(NAME cli.accuracy.sweep_outcomes
          COMMAND ${CMAKE_COMMAND} -DNP=${_np} -DOUT=${_dir}/outcomes.csv -P ${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/accuracy_sweep.cmake)
 set_tests_properties(cli.accuracy.sweep_outcomes PROPERTIES ENVIRONMENT "${_env}")
 
-# The benchmark runs on a few scenes and writes its files (structure only, never timings).
+# The benchmark runs on a few scenes and writes its files (structure only, never timings); its
+# cost bounds never exceed the cost of --accuracy's own answer, whose pairs lie on their grid.
 add_test(NAME cli.accuracy.bench COMMAND ${_np} bench-accuracy --scenes 4 --out ${_dir}/bench)
 set_tests_properties(cli.accuracy.bench PROPERTIES ENVIRONMENT "${_env}"
-  PASS_REGULAR_EXPRESSION "accuracy.md, accuracy_honesty.csv, accuracy_cost.csv")
+  PASS_REGULAR_EXPRESSION "accuracy.md, accuracy_honesty.csv, accuracy_cost.csv"
+  FAIL_REGULAR_EXPRESSION "costs more than --accuracy's answer|a cost bound above")
 
 # The stability atlas runs on a 2 x 2 grid per map and writes its files (structure only).
 add_test(NAME cli.accuracy.atlas COMMAND ${_np} bench-atlas --points 2 --out ${_dir}/atlas)
