@@ -307,6 +307,12 @@ TEST_CASE("Bad input is rejected with a clear error (C++ and F77)", "[icor][unit
   CHECK_THAT(message([] { icor::solve_constrained_cubic(std::nan(""), kL, kK2, CubicMethod::Eigen); }),
              Catch::Matchers::Contains("finite"));
   CHECK_THROWS_AS(icor::falvo(kL, kL), InputError);  // push beyond the rod end
+  // Inputs that overflow a double give no mu, from every front end (they all call these).
+  const auto rod = icor::nanorod();
+  CHECK_THAT(message([&] { icor::estimate_mu_from_force(rod, {1e308, 0}, {2e-7, 0}); }),
+             Catch::Matchers::StartsWith("F = 1e+308, yn = 2e-07: mu or its uncertainty is not a finite number"));
+  CHECK_THAT(message([&] { icor::estimate_mu_from_icor(rod, {1e308, 1e306}, {1e-300, 0}); }),
+             Catch::Matchers::StartsWith("F = 1e+308, R = 1e-300: mu or its uncertainty is not a finite number"));
   CHECK_THROWS_AS(f77::icor_cubic(-1e-9, kL, kK2, f77::IcorCubicMethod::Lapack), InputError);
   CHECK_THROWS_AS(f77::icor_cubic(1e-9, 0.0, kK2, f77::IcorCubicMethod::Brent), InputError);
   CHECK_THROWS_AS(f77::icor_formula(NP_F77_ICOR_EQ_4_13, -1e-9, kL), InputError);

@@ -3,6 +3,9 @@
 // and an independent cubature-based solve.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <cstdio>
+#include <string>
+#include <unistd.h>
 #include <vector>
 
 #include "nanopush/numerics/error.hpp"
@@ -123,6 +126,10 @@ TEST_CASE("Finite-rectangle quasi-static iCOR: bad input is rejected", "[icor][r
   CHECK_THROWS_AS(icor::rectangle_quasi_static(0.0, kB, 1e-8), InputError);
   CHECK_THROWS_AS(icor::rectangle_quasi_static(1e-9, -kB, 1e-8), InputError);
   CHECK_THROWS_AS(icor::rectangle_quasi_static(1e-9, kB, -1e-8), InputError);
+  // A push line beyond the end (yn > b) misses the rectangle: no iCOR, not an unconverged one.
+  CHECK_THROWS_WITH(icor::rectangle_quasi_static(0.55 * kB, kB, 1.0),
+                    Catch::Matchers::StartsWith("yn = 1: must be in [0, " + fmt(kB) + "]"));
+  CHECK(icor::rectangle_quasi_static(0.55 * kB, kB, kB).converged);  // at the corner: still on the face
   // Aspect ratio below the friction closed form's limit (kFrictionMinAspect = 1e-12).
   CHECK_THROWS_AS(icor::rectangle_quasi_static(1e-13 * kB, kB, 1e-8), InputError);
 }
@@ -277,6 +284,32 @@ TEST_CASE("Dynamic iCOR: bad input is rejected", "[icor][dynamic][unit]") {
   CHECK_THROWS_AS(run(1e-7, muW, {}), InputError);
   CHECK_THROWS_AS(run(1e-7, muW, {2e-10, 1e-10}), InputError);
   CHECK_THROWS_AS(run(1e-7, muW, {0.0}), InputError);
+}
+
+TEST_CASE("Dynamic iCOR: a run that cannot reach its last output says which, and prints nothing",
+          "[icor][dynamic][unit]") {
+  // 1e10 s of a push at 1e-6 N: CVODE spends its step budget. Its own message goes into the
+  // error (the library prints nothing: Python, C and Fortran callers see only the exception).
+  std::fflush(stderr);
+  const int saved = dup(2);
+  std::FILE* sink = std::tmpfile();
+  REQUIRE(sink);
+  dup2(fileno(sink), 2);
+  std::string what;
+  try {
+    run(1e-7, 1e-6, {1e10});
+  } catch (const SolverError& e) {
+    what = e.what();
+  }
+  std::fflush(stderr);
+  dup2(saved, 2);
+  close(saved);
+  std::fseek(sink, 0, SEEK_END);
+  const long printed = std::ftell(sink);
+  std::fclose(sink);
+  CHECK(printed == 0);
+  CHECK_THAT(what, Catch::Matchers::StartsWith("the dynamic iCOR (F = 1e-06 N at yn = 1e-07 m, outputs to t = 1e+10 s)"));
+  CHECK_THAT(what, Catch::Matchers::Contains("mxstep steps taken before reaching tout"));
 }
 
 }  // namespace NANOPUSH_UNITY_ID

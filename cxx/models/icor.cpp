@@ -435,13 +435,19 @@ void check_measured(const std::string& name, const Measured& m, const std::strin
   else require_nonnegative(name, m.value, unit);
   require_nonnegative(name + " uncertainty", m.sigma, unit);
 }
-MuEstimate finish(MuEstimate e) {
+}  // namespace
+
+MuEstimate propagate_uncertainty(MuEstimate e) {
   double var = 0.0;
   for (const auto& c : e.contributions) var += (c.derivative * c.sigma) * (c.derivative * c.sigma);
   e.sigma = std::sqrt(var);
+  if (!std::isfinite(e.mu) || !std::isfinite(e.sigma))
+    throw InputError(e.contributions[0].input + " = " + fmt(e.contributions[0].value) + ", " + e.contributions[1].input +
+                     " = " + fmt(e.contributions[1].value) +
+                     ": mu or its uncertainty is not a finite number: these values overflow a double (forces in N, "
+                     "lengths in m; a push force is of the order of the load " + fmt(e.load) + " N)");
   return e;
 }
-}  // namespace
 
 MuEstimate estimate_mu_from_force(const Rod& rod, Measured F, Measured yn, double sigma_L, double sigma_H) {
   rod.validate();
@@ -461,7 +467,7 @@ MuEstimate estimate_mu_from_force(const Rod& rod, Measured F, Measured yn, doubl
       {"L", rod.length, sigma_L, -e.mu * (yn.value / (2.0 * b * s) + 1.0 / rod.length)},
       {"H", rod.hamaker, sigma_H, -e.mu * rod.vdw_force() / (rod.hamaker * W)},
   };
-  return finish(e);
+  return propagate_uncertainty(e);
 }
 
 MuEstimate estimate_mu_from_icor(const Rod& rod, Measured F, Measured R, double sigma_L, double sigma_H) {
@@ -480,7 +486,7 @@ MuEstimate estimate_mu_from_icor(const Rod& rod, Measured F, Measured R, double 
       {"L", rod.length, sigma_L, 0.0},
       {"H", rod.hamaker, sigma_H, -e.mu * rod.vdw_force() / (rod.hamaker * W)},
   };
-  return finish(e);
+  return propagate_uncertainty(e);
 }
 
 double round_significant(double x, int digits) {

@@ -41,10 +41,7 @@ MuEstimate estimate_mu_unknown_pressure(const Rod& rod, Measured F, Measured R, 
       {"L", rod.length, sigma_L, -e.mu * b / q},
       {"H", rod.hamaker, sigma_H, -e.mu * rod.vdw_force() / (rod.hamaker * W)},
   };
-  double var = 0.0;
-  for (const auto& c : e.contributions) var += (c.derivative * c.sigma) * (c.derivative * c.sigma);
-  e.sigma = std::sqrt(var);
-  return e;
+  return propagate_uncertainty(e);
 }
 
 RowEstimate estimate_row(const Rod& rod, const Observation& obs, Pressure pressure) {
@@ -100,17 +97,7 @@ BatchEstimate estimate_mu_batch(const Rod& rod, const std::vector<Observation>& 
     } catch (const InputError& e) {
       throw InputError(where + e.what());
     }
-    const MuEstimate& e = b.rows.back().estimate;
-    if (!std::isfinite(e.sigma) || !std::isfinite(e.mu)) {
-      // F = 1e308 gave "sigma of mu = -nan": say what was written and why it is no answer.
-      const Observation& ob = observations[i];
-      std::string given = "F = " + fmt(ob.force.value);
-      if (ob.yn) given += ", yn = " + fmt(ob.yn->value);
-      if (ob.R) given += ", R = " + fmt(ob.R->value);
-      throw InputError(where + given +
-                       ": mu or its uncertainty is not a finite number: these values overflow a double (forces in "
-                       "N, lengths in m; a push force is of the order of the load " + fmt(b.load) + " N)");
-    }
+    const MuEstimate& e = b.rows.back().estimate;  // finite: estimate_mu_from_* refuse overflow
     if (!(e.sigma > 0.0))
       throw InputError(where + "sigma of mu = " + fmt(e.sigma) +
                        ": must be > 0 (give F, yn or R a standard uncertainty > 0)");

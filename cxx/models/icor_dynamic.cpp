@@ -30,7 +30,7 @@ std::string to_string(DynamicIntegrator i) { return std::string(name_of(i)); }
 QuasiStaticIcor rectangle_quasi_static(double a, double b, double yn) {
   require_positive("a", a, "m");
   require_positive("b", b, "m");
-  require_nonnegative("yn", yn, "m");
+  require_range("yn", yn, 0.0, b, "m; the push line crosses the rectangle: at most b");
   if (a < kFrictionMinAspect * b || b < kFrictionMinAspect * a)
     throw InputError("a/b", fmt(a / b), "aspect ratio must lie within [1e-6, 1e6]");
   if (yn == 0.0) {  // a push through the CM translates the rectangle: R = infinity
@@ -51,6 +51,35 @@ QuasiStaticIcor rectangle_quasi_static(double a, double b, double yn) {
   const double R0 = unknown_pressure(yn, 2.0 * b);
   return quasi_static_icor(wrench, 0.0, yn, 1.0, 0.0, R0, M_PI / 2, std::max(a, b));
 }
+
+namespace {
+/// `integrate` with the integrator asked, or under automatic the one suited to the push and
+/// the other if it fails: CVODE near the minimum force (the slow start is stiff), else
+/// Bulirsch-Stoer.
+template <class Integrate>
+StickSlipResult integrate_either(const Integrate& integrate, const DynamicIcorSetup& s, double minimum_force) {
+  if (s.integrator != DynamicIntegrator::automatic) return integrate(s.integrator);
+#ifdef NANOPUSH_HAVE_SUNDIALS
+  const bool near_min = s.force < 1.09 * minimum_force;
+#else
+  const bool near_min = false;
+  (void)minimum_force;
+#endif
+  const DynamicIntegrator first = near_min ? DynamicIntegrator::cvode : DynamicIntegrator::bulirsch_stoer;
+  const DynamicIntegrator second = near_min ? DynamicIntegrator::bulirsch_stoer : DynamicIntegrator::cvode;
+  try {
+    return integrate(first);
+  } catch (const SolverError&) {
+#ifdef NANOPUSH_HAVE_SUNDIALS
+    return integrate(second);
+#else
+    (void)second;
+    throw;
+#endif
+  }
+}
+
+}  // namespace
 
 DynamicIcorRun dynamic_icor(const DynamicIcorSetup& s) {
   s.rod.validate();
@@ -124,26 +153,12 @@ DynamicIcorRun dynamic_icor(const DynamicIcorSetup& s) {
     return integrate_coulomb(model, options, y0.data(), s.times, observe);
   };
   StickSlipResult r;
-  if (s.integrator != DynamicIntegrator::automatic) {
-    r = integrate(s.integrator);
-  } else {
-#ifdef NANOPUSH_HAVE_SUNDIALS
-    const bool near_min = s.force < 1.09 * run.minimum_force;
-#else
-    const bool near_min = false;
-#endif
-    const DynamicIntegrator first = near_min ? DynamicIntegrator::cvode : DynamicIntegrator::bulirsch_stoer;
-    const DynamicIntegrator second = near_min ? DynamicIntegrator::bulirsch_stoer : DynamicIntegrator::cvode;
-    try {
-      r = integrate(first);
-    } catch (const SolverError&) {
-#ifdef NANOPUSH_HAVE_SUNDIALS
-      r = integrate(second);
-#else
-      (void)second;
-      throw;
-#endif
-    }
+  try {
+    r = integrate_either(integrate, s, run.minimum_force);
+  } catch (const SolverError& e) {  // say which run failed: the caller's times and push
+    throw SolverError("the dynamic iCOR (F = " + fmt(s.force) + " N at yn = " + fmt(s.yn) + " m, outputs to t = " +
+                          fmt(s.times.empty() ? 0.0 : s.times.back()) + " s): " + e.what(),
+                      e.outcome());
   }
   run.stuck = !r.events.empty() && r.events.front().t == 0.0 && r.events.front().stuck;
   run.rhs_evaluations = r.stats.nfcn;

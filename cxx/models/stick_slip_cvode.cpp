@@ -4,6 +4,7 @@
 // analysis.
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/models/stick_slip.hpp"
@@ -46,6 +47,7 @@ struct Cvode {
   N_Vector y = nullptr, atol = nullptr;
   SUNMatrix A = nullptr;
   SUNLinearSolver ls = nullptr;
+  std::string message;  ///< CVODE's last error message (kept, not printed: see on_error)
   ~Cvode() {
     if (mem) CVodeFree(&mem);
     if (ls) SUNLinSolFree(ls);
@@ -56,8 +58,14 @@ struct Cvode {
   }
 };
 
-void check(int flag, const char* what) {
-  if (flag < 0) throw SolverError(std::string("CVODE ") + what + " failed with flag " + std::to_string(flag));
+/// CVODE's error messages go into the SolverError that reports the failure, not to stderr: a
+/// library prints nothing of its own (the Python, C and Fortran callers see the message).
+void on_error(int, const char*, const char*, char* msg, void* user) { *static_cast<std::string*>(user) = msg; }
+
+void check(int flag, const char* what, const std::string& message = {}) {
+  if (flag < 0)
+    throw SolverError(std::string("CVODE ") + what + " failed with flag " + std::to_string(flag) +
+                      (message.empty() ? "" : ": " + message));
 }
 
 }  // namespace
@@ -105,13 +113,14 @@ StickSlipResult integrate_coulomb_cvode(const RoughBarModel& model, double rtol,
   // that phase by the tolerance criterion of integrate_coulomb instead.
   cv.mem = CVodeCreate(CV_BDF, cv.ctx);
   if (!cv.mem) throw SolverError("CVodeCreate failed");
-  check(CVodeInit(cv.mem, cv_rhs, t, cv.y), "CVodeInit");
-  check(CVodeSVtolerances(cv.mem, rtol, cv.atol), "CVodeSVtolerances");
-  check(CVodeSetUserData(cv.mem, &data), "CVodeSetUserData");
+  check(CVodeSetErrHandlerFn(cv.mem, on_error, &cv.message), "CVodeSetErrHandlerFn");
+  check(CVodeInit(cv.mem, cv_rhs, t, cv.y), "CVodeInit", cv.message);
+  check(CVodeSVtolerances(cv.mem, rtol, cv.atol), "CVodeSVtolerances", cv.message);
+  check(CVodeSetUserData(cv.mem, &data), "CVodeSetUserData", cv.message);
   cv.A = SUNDenseMatrix(kRoughStateSize, kRoughStateSize, cv.ctx);
   cv.ls = SUNLinSol_Dense(cv.y, cv.A, cv.ctx);
-  check(CVodeSetLinearSolver(cv.mem, cv.ls, cv.A), "CVodeSetLinearSolver");
-  check(CVodeSetMaxNumSteps(cv.mem, 1000000), "CVodeSetMaxNumSteps");
+  check(CVodeSetLinearSolver(cv.mem, cv.ls, cv.A), "CVodeSetLinearSolver", cv.message);
+  check(CVodeSetMaxNumSteps(cv.mem, 1000000), "CVodeSetMaxNumSteps", cv.message);
   // A fresh Jacobian at every step while a slide leaves rest (until the first output after
   // the rest), CVODE's defaults after that. By default CVODE keeps a Jacobian for up to 51
   // steps and its Newton matrix for 20; leaving rest the Jacobian scales as mu N/(m |V|), so
@@ -122,11 +131,11 @@ StickSlipResult integrate_coulomb_cvode(const RoughBarModel& model, double rtol,
   // one ulp larger: a result chosen by rounding. Refreshed, every rtol 1e-11...1e-14 and every
   // ulp tried lands within 5e-10 (tests/test_rough.cpp).
   const auto fresh_jacobian = [&](bool fresh) {
-    check(CVodeSetLSetupFrequency(cv.mem, fresh ? 1 : 0), "CVodeSetLSetupFrequency");
-    check(CVodeSetJacEvalFrequency(cv.mem, fresh ? 1 : 0), "CVodeSetJacEvalFrequency");
+    check(CVodeSetLSetupFrequency(cv.mem, fresh ? 1 : 0), "CVodeSetLSetupFrequency", cv.message);
+    check(CVodeSetJacEvalFrequency(cv.mem, fresh ? 1 : 0), "CVodeSetJacEvalFrequency", cv.message);
   };
   fresh_jacobian(true);
-  check(CVodeRootInit(cv.mem, 1, cv_root), "CVodeRootInit");
+  check(CVodeRootInit(cv.mem, 1, cv_root), "CVodeRootInit", cv.message);
 
   auto add_counts = [&] {
     long nfe = 0, nst = 0, netf = 0, nfels = 0;
@@ -154,10 +163,10 @@ StickSlipResult integrate_coulomb_cvode(const RoughBarModel& model, double rtol,
       for (; iout < tout.size(); ++iout) observer(tout[iout], y, sf);
       break;
     }
-    check(CVodeSetStopTime(cv.mem, tout[iout]), "CVodeSetStopTime");
+    check(CVodeSetStopTime(cv.mem, tout[iout]), "CVodeSetStopTime", cv.message);
     double tret = t;
     const int flag = CVode(cv.mem, tout[iout], cv.y, &tret, CV_NORMAL);
-    check(flag, "CVode");
+    check(flag, "CVode", cv.message);
     t = tret;
     peak = std::max(peak, speed());
     if (flag == CV_ROOT_RETURN) {
@@ -169,7 +178,7 @@ StickSlipResult integrate_coulomb_cvode(const RoughBarModel& model, double rtol,
       add_counts();
       at_rest(t);
       if (!stuck) {
-        check(CVodeReInit(cv.mem, t, cv.y), "CVodeReInit");
+        check(CVodeReInit(cv.mem, t, cv.y), "CVodeReInit", cv.message);
         fresh_jacobian(true);
       }
       while (iout < tout.size() && tout[iout] <= t) {

@@ -201,6 +201,11 @@ struct MuEstimate {
   std::vector<Contribution> contributions;
 };
 
+/// e.sigma from e.contributions (first order, inputs uncorrelated). A mu or sigma that is not
+/// finite is no answer: the measured inputs (the first two contributions) overflow a double,
+/// and it throws InputError naming them, whichever front end gave them.
+MuEstimate propagate_uncertainty(MuEstimate e);
+
 /// Fig 4.4 / eq 4.8 inverted: mu = F (sqrt(yn^2 + b^2) + yn) / (W b) from a measured
 /// minimum push force F at yn. Uncertainty from F, yn, the rod length L and the Hamaker
 /// constant H (sigma_L, sigma_H); W = W(L, H) is recomputed, never frozen.

@@ -34,7 +34,7 @@ double rod_contact_half_width(const Rod& rod);
 /// (0, yn): the closed-form friction wrench (friction.hpp) in quasi_static_icor. R is the
 /// distance CM -> iCOR, alpha its direction (c = -R (cos alpha, sin alpha)), force the
 /// minimum push |F|/(mu W). yn = 0 is pure translation: R = +inf, force = 1, converged.
-/// a, b > 0 with a/b >= 1e-6; 0 <= yn (finite).
+/// a, b > 0 with a/b >= 1e-6; 0 <= yn <= b (the push line crosses the rectangle).
 QuasiStaticIcor rectangle_quasi_static(double a, double b, double yn);
 
 enum class DynamicIntegrator { automatic, bulirsch_stoer, cvode };
