@@ -229,8 +229,11 @@ std::pair<double, double> parse_range(const char* flag, const std::string& text)
   if (text.empty()) return {-1, -1};
   const auto colon = text.find(':');
   if (colon == std::string::npos) throw InputError(flag, text, "must be LO:HI");
-  return {number_list(flag, text.substr(0, colon), 1, "LO:HI, two numbers")[0],
-          number_list(flag, text.substr(colon + 1), 1, "LO:HI, two numbers")[0]};
+  const double lo = number_list(flag, text.substr(0, colon), 1, "LO:HI, two numbers")[0],
+               hi = number_list(flag, text.substr(colon + 1), 1, "LO:HI, two numbers")[0];
+  if (!(lo >= 0 && lo <= hi && std::isfinite(hi)))  // both ranges are of friction coefficients
+    throw InputError(flag, text, "must be LO:HI with 0 <= LO <= HI (friction coefficients)");
+  return {lo, hi};
 }
 
 /// --check N: the plan made open loop in N worlds, as a sweep of trials (planning/check.hpp) on

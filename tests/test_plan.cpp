@@ -110,6 +110,17 @@ TEST_CASE("Planning: a robust plan reaches the goal across the tip friction rang
   bad.robust_tip_mu_lo = 0.3;
   bad.robust_tip_mu_hi = 0.1;
   CHECK_THROWS_AS(plan::plan_pushes(sc, goal, bad), InputError);
+  // A negative end or a NaN shift is refused, not read as "no robust worlds" (a plan for the
+  // model alone would come back as if robust).
+  bad.robust_tip_mu_lo = -0.1;
+  bad.robust_tip_mu_hi = 0.1;
+  CHECK_THROWS_WITH(plan::plan_pushes(sc, goal, bad),
+                    Catch::Matchers::StartsWith("robust tip mu range = -0.1:0.1: must be LO:HI with 0 <= LO <= HI"));
+  bad = o;
+  bad.robust_start_x = -1e-9;
+  CHECK_THROWS_WITH(plan::plan_pushes(sc, goal, bad), Catch::Matchers::StartsWith("robust start shift = -1e-09,"));
+  bad.robust_start_x = std::nan("");
+  CHECK_THROWS_WITH(plan::plan_pushes(sc, goal, bad), Catch::Matchers::Contains("must be three finite numbers >= 0"));
 }
 
 TEST_CASE("Planning: an unreachable goal ends in not_found with the best plan; bad input names the option",

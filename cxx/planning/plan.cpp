@@ -167,6 +167,16 @@ void check_task(const Scene& scene, const Pose& goal, const PlanOptions& o) {
   if (!(o.tolerance_angle >= 1e-6)) throw InputError("--tolerance", fmt(o.tolerance_angle) + " rad", "must be >= 1e-6 rad");
   if (o.max_pushes < 1 || o.max_pushes > 1000) throw InputError("--max-pushes", std::to_string(o.max_pushes), "must be in [1, 1000]");
   if (!(o.clearance > 0)) throw InputError("clearance", fmt(o.clearance), "must be > 0 (m)");
+  // Robust worlds (-1, -1: the model's tip friction only). A range that is not one, or a
+  // negative or NaN shift, would otherwise read as "not robust" and give a plan for the
+  // model alone.
+  const double lo = o.robust_tip_mu_lo, hi = o.robust_tip_mu_hi;
+  if (!(lo == -1 && hi == -1) && !(lo >= 0 && lo <= hi && std::isfinite(hi)))
+    throw InputError("robust tip mu range", fmt(lo) + ":" + fmt(hi), "must be LO:HI with 0 <= LO <= HI");
+  for (double v : {o.robust_start_x, o.robust_start_y, o.robust_start_theta})
+    if (!(v >= 0 && std::isfinite(v)))
+      throw InputError("robust start shift", fmt(o.robust_start_x) + "," + fmt(o.robust_start_y) + "," + fmt(o.robust_start_theta),
+                       "must be three finite numbers >= 0 (m, m, rad)");
 
 }
 

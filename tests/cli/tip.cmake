@@ -55,6 +55,12 @@ grep -q '\"status\": \"not_found\"' \"$d/plan.json\" && s=written || s=missing; 
 echo \"codes $a $b $s $w\"" ${_np} ${CMAKE_CURRENT_BINARY_DIR}/cli_plan_nf)
 set_tests_properties(cli.plan.not_found_and_bad_goal PROPERTIES ENVIRONMENT "NANOPUSH_SCENES=${NANOPUSH_SCENES}"
                      PASS_REGULAR_EXPRESSION "codes 3 2 written no")
+# A robust range with a negative end is bad input naming it (it read as "no range" and gave an
+# unrelated message about --noise).
+add_test(NAME cli.plan.robust_bad_range
+         COMMAND ${_np} plan tip_push_nanorod --goal 2e-7,0,0 --robust --tip-mu-range=-0.1:0.1 --out ${CMAKE_CURRENT_BINARY_DIR}/cli_plan_rb)
+set_tests_properties(cli.plan.robust_bad_range PROPERTIES ENVIRONMENT "NANOPUSH_SCENES=${NANOPUSH_SCENES}"
+                     PASS_REGULAR_EXPRESSION "--tip-mu-range = -0.1:0.1: must be LO:HI with 0 <= LO <= HI")
 # The closed loop: a truth with tip friction the model does not know, noisy images; reached.
 add_test(NAME cli.plan.closed_loop
          COMMAND bash -c "set -e; d=\"$1\"; rm -rf \"$d\"; \"$0\" plan tip_push_nanorod --goal 60e-9,40e-9,0.3 --tolerance 3e-9,0.03 \
