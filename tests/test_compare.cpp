@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "nanopush/engines/compare.hpp"
@@ -84,4 +85,14 @@ TEST_CASE("compare: the coulomb law and methods without an F77 peer are refused"
   bool from_coulomb = true;
   CHECK(compare_law(sc, std::nullopt, &from_coulomb) == sc.surface.law);
   CHECK_FALSE(from_coulomb);
+}
+
+TEST_CASE("compare: a tolerance that is no bound is refused (Python and C pass it through)", "[compare][unit]") {
+  const Scene sc = thesis_preset(17);
+  for (const double t : {-1.0, std::nan(""), std::numeric_limits<double>::infinity()}) {
+    CompareSettings cs;
+    cs.tolerance = t;
+    INFO("tolerance = " << t);
+    CHECK_THROWS_WITH(compare_engines(sc, cs), Catch::StartsWith("tolerance = " + fmt(t) + ": must be a finite number > 0"));
+  }
 }

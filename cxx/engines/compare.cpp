@@ -136,6 +136,12 @@ EngineComparison compare_engines(const Scene& scene, const CompareSettings& cs) 
   if (cs.method != Method::faithful && cs.method != Method::modern && cs.method != Method::dop853)
     throw InputError("method", to_string(cs.method),
                      "must be faithful, modern or dop853 (the C++ configuration compared)");
+  // 0 is "judge by the method"; anything else must be a bound (a negative or NaN one read as
+  // 0, an infinite one made every comparison agree).
+  if (!(cs.tolerance >= 0 && std::isfinite(cs.tolerance)))
+    throw InputError("tolerance", fmt(cs.tolerance),
+                     "must be a finite number > 0 (largest max|diff|/max|value| per column), or 0 for the method's "
+                     "default");
   EngineComparison r;
   r.law = compare_law(scene, cs.law, &r.law_from_coulomb);
   RunSettings a, b;
