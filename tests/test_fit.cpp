@@ -317,6 +317,11 @@ TEST_CASE("fit options: bad keys and settings are named", "[fit][unit]") {
   CHECK_THAT(input_error_of([&] { (void)fit_trajectory(s, obs, o); }), Catch::Contains("numeric key"));
   o.free = {"push.force", "push.force"};
   CHECK_THAT(input_error_of([&] { (void)fit_trajectory(s, obs, o); }), Catch::Contains("named twice"));
+  // Synthetic data: a negative sigma is refused (it read as "not observed"), and so is data
+  // with no column observed (a table of times only).
+  CHECK_THAT(input_error_of([&] { (void)synthesize(s, {-1, 0, 0}, 1); }), Catch::StartsWith("sigma_x = -1: must be >= 0"));
+  CHECK_THAT(input_error_of([&] { (void)synthesize(s, {0, 0, 0}, 1); }),
+             Catch::StartsWith("sigma = 0,0,0: observe at least one column"));
 }
 
 TEST_CASE("fit non-convergence: reported with the last state, never silent", "[fit][unit]") {

@@ -159,15 +159,16 @@ Observations synthesize(const Scene& scene, const std::array<double, 3>& sigma, 
   Observations obs;
   obs.source = "synthetic";
   obs.t = times_in.empty() ? scene.output_times() : times_in;
+  // NaN or a negative sigma is bad input, never a column silently left out; 0: not observed.
+  // Data with no column observed is no data.
+  for (std::size_t c = 0; c < 3; ++c) {
+    require_nonnegative(std::string("sigma_") + kPoseColumns[c], sigma[c], c == 2 ? "rad; 0: not observed" : "m; 0: not observed");
+    obs.has[c] = sigma[c] > 0;
+  }
+  if (!obs.has[0] && !obs.has[1] && !obs.has[2])
+    throw InputError("sigma", "0,0,0", "observe at least one column: give x, y or theta a sigma > 0 (m, m, rad)");
   const ModelPoses m = model_poses(scene, {}, {}, obs.t, law, rtol, false);
   num::PortableNormal normal(seed);  // the same data for a seed on every platform
-  for (int c = 0; c < 3; ++c) {
-    const auto cu = static_cast<std::size_t>(c);
-    // NaN is bad input, never a column silently left out (issue 34, item 11); <= 0: not observed.
-    require_finite(std::string("sigma_") + kPoseColumns[cu], sigma[cu]);
-    obs.has[cu] = sigma[cu] > 0;
-    if (!obs.has[cu]) continue;
-  }
   for (std::size_t i = 0; i < obs.t.size(); ++i)
     for (int c = 0; c < 3; ++c) {
       const auto cu = static_cast<std::size_t>(c);

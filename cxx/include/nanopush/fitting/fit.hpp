@@ -165,8 +165,8 @@ ModelPoses model_poses(const Scene& scene, const std::vector<std::string>& free,
                        Gradients gradients = Gradients::automatic, std::int64_t* solves = nullptr);
 
 /// Synthetic data: the scene's forward model at `times` (default: its output times) with
-/// seeded Gaussian noise of the given sigma per column (x, y, theta; a column with sigma
-/// <= 0 is not observed).
+/// seeded Gaussian noise of the given sigma per column (x, y, theta; a column with sigma 0 is
+/// not observed; a negative or NaN sigma, or all three 0, is InputError).
 Observations synthesize(const Scene& scene, const std::array<double, 3>& sigma, std::uint64_t seed,
                         std::optional<Law> law = std::nullopt, const std::vector<double>& times = {},
                         double rtol = 1e-10);
