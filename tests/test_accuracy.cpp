@@ -252,6 +252,38 @@ TEST_CASE("An at_rest answer is exact: no companion run, and --accuracy takes it
   CHECK(acc.nfcn_total() == tr.stats.nfcn);
 }
 
+TEST_CASE("--accuracy answers from the engine and method asked; their companions only check",
+          "[accuracy][unit]") {
+  // The F77 engine's and faithful's companion is modern (their steps are clipped at the
+  // outputs). It used to become the answer: engine f77 at 1e-14 came back as cxx-modern-long.
+  const Scene smooth = thesis_preset("fig3_6a");
+  RunSettings f77;
+  f77.engine = Engine::f77;
+  f77.accuracy = 1e-8;
+  const Trajectory a = run_engine(smooth, f77);
+  CHECK(a.outcome == Outcome::ok);
+  CHECK(a.engine_label == "f77");
+  CHECK(a.accuracy.reached);
+  CHECK(a.error.basis == "companion");
+  CHECK(a.error.norm <= 1e-8);
+  f77.accuracy = 1e-14;  // below the F77 engine's floor in double (100 eps): not reached, said so
+  f77.allow_partial = true;  // the best answer comes back with its outcome instead of an exception
+  const Trajectory b = run_engine(smooth, f77);
+  CHECK(b.outcome == Outcome::accuracy_not_reached);
+  CHECK(b.engine_label == "f77");
+  CHECK_THAT(b.outcome_message, Catch::Contains("in the configuration asked (the F77 engine in double)"));
+  // faithful on fig3_17 (thesis law): tightened in kind until a modern companion agrees.
+  RunSettings faithful;
+  faithful.method = Method::faithful;
+  faithful.accuracy = 1e-9;
+  const Trajectory c = run_engine(thesis_preset("fig3_17"), faithful);
+  CHECK(c.outcome == Outcome::ok);
+  CHECK_THAT(c.engine_label, Catch::StartsWith("cxx-faithful"));
+  CHECK(c.accuracy.reached);
+  CHECK(c.error.norm <= 1e-9);
+  CHECK(c.rtol < 1e-9);
+}
+
 TEST_CASE("Coulomb law, method auto: a stiff start just outside the limit surface is handed over to CVODE",
           "[accuracy][rough][coulomb][regression]") {
   Scene sc = stiff_start_scene();

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "nanopush/engines/engines.hpp"
 #include "nanopush/numerics/bulirsch_stoer.hpp"
@@ -148,6 +149,34 @@ Trajectory run_estimated(const Scene& scene, const ResolvedSettings& s) {
   return tr;
 }
 
+namespace {
+
+/// Whether a run resolved as `n` may be the answer to one asked as `asked`: the engine is the
+/// one asked; the method too, unless auto chose it; the precision may rise only where none was
+/// asked for. (The companion of the F77 engine and of faithful is modern: it checks their
+/// answers, it cannot replace them.)
+bool may_answer(const ResolvedSettings& n, const ResolvedSettings& asked, const RunSettings& settings) {
+  return n.engine == asked.engine && (asked.method_automatic || n.method == asked.method) &&
+         (!settings.precision || n.precision == asked.precision);
+}
+
+/// The asked configuration `s` at the next rtol, kCompanionFactor tighter, in more digits where
+/// none were asked for and the model runs in them; nullopt below the floor of what may answer.
+std::optional<ResolvedSettings> tighter_in_kind(const Scene& scene, const ResolvedSettings& s, const RunSettings& settings) {
+  ResolvedSettings t = s;
+  t.rtol = s.rtol / kCompanionFactor;
+  if (s.atol > 0) t.atol = s.atol / kCompanionFactor;
+  if (t.rtol < rtol_floor(t) && !settings.precision && t.precision != Precision::quad && t.engine == Engine::cxx &&
+      extended_precision_obstacle(scene.rough(), t.law, t.engine, t.method).empty()) {
+    t.precision = t.precision == Precision::double_ ? Precision::long_ : Precision::quad;
+    if (t.rtol < rtol_floor(t)) t.precision = Precision::quad;
+  }
+  if (t.rtol < rtol_floor(t)) return std::nullopt;
+  return t;
+}
+
+}  // namespace
+
 Trajectory run_to_accuracy(const Scene& scene, const RunSettings& settings) {
   RunSettings at = settings;
   at.accuracy = 0;
@@ -179,9 +208,6 @@ Trajectory run_to_accuracy(const Scene& scene, const RunSettings& settings) {
     spent += next.stats.nfcn;
     ++runs;
     ErrorEstimate e = estimate_from(scene, best, next);
-    e.basis = "looser";  // the answer will be `next`: the run it is compared with is `best`
-    e.companion = best.engine_label;
-    e.companion_rtol = best.rtol;
     if (!e.available) {  // keep the estimate of the last pair that finished
       if (best_error.available)
         best_error.note = e.note;
@@ -189,6 +215,34 @@ Trajectory run_to_accuracy(const Scene& scene, const RunSettings& settings) {
         best_error = e;
       break;
     }
+    if (!may_answer(next_s, first, settings)) {
+      // The companion is another configuration (the F77 engine's and faithful's is modern; an
+      // asked dop853 or precision is kept): it checks `best`, the answer stays `best`, with the
+      // companion's estimate, and the next try is the asked configuration, tighter.
+      if (!note.empty()) e.note = note;
+      best_error = e;
+      if (e.norm <= wanted) {
+        reached = true;
+        break;
+      }
+      const std::optional<ResolvedSettings> t = tighter_in_kind(scene, cur_s, settings);
+      if (!t) {
+        best_error.note = "rtol cannot go below " + fmt(cur_s.rtol) + " in the configuration asked (" +
+                          (first.engine == Engine::f77 ? std::string("the F77 engine") : to_string(cur_s.method)) +
+                          " in " + to_string(cur_s.precision) + ")";
+        break;
+      }
+      Trajectory again = run_resolved(scene, *t);
+      spent += again.stats.nfcn;
+      ++runs;
+      best = std::move(again);
+      cur_s = *t;
+      if (!best.handed_over.empty()) handed_over_settings(cur_s);
+      continue;
+    }
+    e.basis = "looser";  // the answer will be `next`: the run it is compared with is `best`
+    e.companion = best.engine_label;
+    e.companion_rtol = best.rtol;
     best = std::move(next);
     best_error = e;
     cur_s = next_s;
