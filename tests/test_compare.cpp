@@ -87,6 +87,11 @@ TEST_CASE("compare: the coulomb law and methods without an F77 peer are refused"
   CHECK_FALSE(from_coulomb);
 }
 
+TEST_CASE("compare: a tip push has no F77 peer, and says so (not a method the user never gave)", "[compare][unit]") {
+  const Scene tip = load_scene(std::string(NANOPUSH_SOURCE_DIR) + "/drivers/scenes/examples/tip_push_nanorod.toml");
+  CHECK_THROWS_WITH(compare_engines(tip, CompareSettings{}), Catch::StartsWith("scene = tip_push_nanorod: a tip push: the F77 engine"));
+}
+
 TEST_CASE("compare: a tolerance that is no bound is refused (Python and C pass it through)", "[compare][unit]") {
   const Scene sc = thesis_preset(17);
   for (const double t : {-1.0, std::nan(""), std::numeric_limits<double>::infinity()}) {

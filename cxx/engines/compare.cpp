@@ -133,6 +133,10 @@ Law compare_law(const Scene& scene, std::optional<Law> law, bool* from_coulomb) 
 }
 
 EngineComparison compare_engines(const Scene& scene, const CompareSettings& cs) {
+  if (scene.push_mode == PushMode::tip)
+    throw InputError("scene", scene.name,
+                     "a tip push: the F77 engine is the thesis' model and has no tip, so there is nothing to compare "
+                     "with; its checks are the energy balance and the closed forms (docs/tip.md)");
   if (cs.method != Method::faithful && cs.method != Method::modern && cs.method != Method::dop853)
     throw InputError("method", to_string(cs.method),
                      "must be faithful, modern or dop853 (the C++ configuration compared)");
