@@ -160,6 +160,8 @@ void check_task(const Scene& scene, const Pose& goal, const PlanOptions& o) {
   for (double v : {goal.x, goal.y, goal.theta})
     if (!std::isfinite(v)) throw InputError("--goal", fmt(goal.x) + "," + fmt(goal.y) + "," + fmt(goal.theta), "must be three finite numbers X,Y,THETA (m, m, rad)");
   const double L = 2 * std::max(scene.geometry.a, scene.geometry.b);
+  require_finite("--tolerance", o.tolerance_distance, "m");
+  require_finite("--tolerance", o.tolerance_angle, "rad");
   // The model resolves poses to ~rtol of the bar's size; a tolerance below 1e-6 of it is noise.
   if (!(o.tolerance_distance >= 1e-6 * L))
     throw InputError("--tolerance", fmt(o.tolerance_distance) + " m",
