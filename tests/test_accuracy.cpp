@@ -252,7 +252,7 @@ TEST_CASE("An at_rest answer is exact: no companion run, and --accuracy takes it
   CHECK(acc.nfcn_total() == tr.stats.nfcn);
 }
 
-TEST_CASE("--accuracy answers from the engine and method asked; their companions only check",
+TEST_CASE("An accuracy asked for is answered by the engine and method asked; their companions only check",
           "[accuracy][unit]") {
   // The F77 engine's and faithful's companion is modern (their steps are clipped at the
   // outputs). It used to become the answer: engine f77 at 1e-14 came back as cxx-modern-long.

@@ -115,7 +115,7 @@ TEST_CASE("Planning: a robust plan reaches the goal across the tip friction rang
   bad.robust_tip_mu_lo = -0.1;
   bad.robust_tip_mu_hi = 0.1;
   CHECK_THROWS_WITH(plan::plan_pushes(sc, goal, bad),
-                    Catch::Matchers::StartsWith("robust tip mu range = -0.1:0.1: must be LO:HI with 0 <= LO <= HI"));
+                    Catch::Matchers::StartsWith("--tip-mu-range = -0.1:0.1: must be LO:HI with 0 <= LO <= HI <= 10"));
   bad = o;
   bad.robust_start_x = -1e-9;
   CHECK_THROWS_WITH(plan::plan_pushes(sc, goal, bad), Catch::Matchers::StartsWith("robust start shift = -1e-09,"));

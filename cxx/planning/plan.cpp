@@ -56,10 +56,7 @@ std::vector<World> make_worlds(const Scene& scene, const Pose& start, const Plan
   const double mu0 = scene.push_mode == PushMode::tip ? scene.tip.mu : 0.0;
   std::vector<World> ws{{mu0, scene, start, start}};
   if (!o.robust()) return ws;
-  if (o.robust_tip_mu_lo >= 0) {
-    if (!(o.robust_tip_mu_hi >= o.robust_tip_mu_lo && o.robust_tip_mu_hi <= 10))
-      throw InputError("--tip-mu-range", fmt(o.robust_tip_mu_lo) + ":" + fmt(o.robust_tip_mu_hi),
-                       "must be LO:HI with 0 <= LO <= HI <= 10");
+  if (o.robust_tip_mu_lo >= 0) {  // a valid range (check_task)
     if (scene.push_mode != PushMode::tip)
       throw InputError("--tip-mu-range", scene.name, "plans over tip friction need a tip scene (push.mode = \"tip\")");
     for (double mu : {o.robust_tip_mu_lo, o.robust_tip_mu_hi}) {
@@ -173,8 +170,8 @@ void check_task(const Scene& scene, const Pose& goal, const PlanOptions& o) {
   // negative or NaN shift, would otherwise read as "not robust" and give a plan for the
   // model alone.
   const double lo = o.robust_tip_mu_lo, hi = o.robust_tip_mu_hi;
-  if (!(lo == -1 && hi == -1) && !(lo >= 0 && lo <= hi && std::isfinite(hi)))
-    throw InputError("robust tip mu range", fmt(lo) + ":" + fmt(hi), "must be LO:HI with 0 <= LO <= HI");
+  if (!(lo == -1 && hi == -1) && !(lo >= 0 && lo <= hi && hi <= 10))
+    throw InputError("--tip-mu-range", fmt(lo) + ":" + fmt(hi), "must be LO:HI with 0 <= LO <= HI <= 10");
   for (double v : {o.robust_start_x, o.robust_start_y, o.robust_start_theta})
     if (!(v >= 0 && std::isfinite(v)))
       throw InputError("robust start shift", fmt(o.robust_start_x) + "," + fmt(o.robust_start_y) + "," + fmt(o.robust_start_theta),
