@@ -37,6 +37,7 @@
 #include "registry.hpp"
 #include "scene_args.hpp"
 #include "sweep_mpi.hpp"
+#include "sweep_output.hpp"
 
 namespace nanopush::cli {
 namespace {
@@ -382,8 +383,8 @@ int bench_sweep(const BenchSweepOptions& o) {
         // Open MPI's ranks are reaped by its launcher daemon, not always by mpirun (this
         // process's RUSAGE_CHILDREN may miss them): the sweep records every rank's CPU time
         // (process start to its last row) in its sidecar.
-        // The sweep's exit status: 0, or 64 + the number of failed points (at most 127).
-        const int expected = failed_points ? 64 + static_cast<int>(std::min<std::size_t>(failed_points, 63)) : 0;
+        // The sweep's exit status: 0, or 64 + the number of failed points (sweep_exit_status).
+        const int expected = sweep_exit_status(failed_points);
         std::error_code ec;
         if (rc != expected || !fs::exists(table, ec)) {
           tmp.keep = true;

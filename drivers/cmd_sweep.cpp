@@ -101,7 +101,7 @@ int sweep_cmd(SweepOptions o) {
     const auto failed = sweep::merge_tables({o.merge.begin(), o.merge.end()}, output.table());
     const std::string where = output.finish({});
     if (!o.quiet) std::cerr << "sweep: joined " << o.merge.size() << " shards into " << where << "\n";
-    return failed ? 64 + static_cast<int>(std::min<std::size_t>(failed, 63)) : 0;
+    return sweep_exit_status(failed);
   }
   std::unique_ptr<sweep::Task> task;
   std::string default_out;
@@ -198,13 +198,13 @@ int sweep_cmd(SweepOptions o) {
     std::cerr << "sweep: " << r.points << " points (" << r.resumed << " from the journal), " << r.failed
               << " failed: " << where << "\n";
   }
-  return r.failed ? 64 + static_cast<int>(std::min<std::size_t>(r.failed, 63)) : 0;
+  return sweep_exit_status(r.failed);
 }
 
 RegisterCommand reg{
     {"sweep",
      "Many scenes at once: a grid (--vary) or list (--points) of points, on every core, in shards or over MPI "
-     "ranks; one table ordered by point (docs/sweeps.md). Exit 0, or 64 + the number of failed points (at most 127)",
+     "ranks; one table ordered by point (docs/sweeps.md). Exit 0, or 64 + the number of failed points (65 + it from 6 on: 70 is an internal error; at most 127)",
      15, [](CLI::App& app) -> std::function<int()> {
        auto o = std::make_shared<SweepOptions>();
        app.add_option("SCENE", o->scene, "scene file or preset (task run); a [sweep] table in it adds axes");

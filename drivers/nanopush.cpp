@@ -25,8 +25,9 @@ int main(int argc, char** argv) {
   app.footer(
       "Exit status: 0 ok; 1 a comparison past its tolerance (compare, legacy); 2 bad input (nothing written);\n"
       "3 solver failure; 4 a check against the thesis failed (reproduce, bench); 5 system error (a file or a\n"
-      "program); 64+k sweep with k failed points (127: 63 or more); 70 internal error; 128+N ended by\n"
-      "signal N (130 SIGINT, 143 SIGTERM, 129 SIGHUP, 141 SIGPIPE, ...). docs/errors.md has the details.\n"
+      "program); 64+k sweep with k <= 5 failed points (65+k from 6 on, 127: 62 or more); 70 internal error;\n"
+      "128+N ended by signal N (130 SIGINT, 143 SIGTERM, 129 SIGHUP, 141 SIGPIPE, ...). docs/errors.md has\n"
+      "the details.\n"
       "Tables are CSV with a Table Schema sidecar; a table file named FILE.nc is netCDF-4, and `nanopush\n"
       "convert` turns the tables of an output directory into netCDF-4 (docs/data.md).");
   auto& cmds = cli::commands();

@@ -1,5 +1,6 @@
 #include "sweep_mpi.hpp"
 #include "registry.hpp"  // executable_dir(): nanopush-mpi beside nanopush
+#include "sweep_output.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -604,7 +605,7 @@ class Coordinator {
     if (!quiet)
       std::cerr << "sweep: " << table_.positions() << " points (" << resumed_ << " from the journal) over " << size_
                 << " MPI ranks x " << jobs_ << " threads, " << failed << " failed: " << o_.out.string() << "\n";
-    return failed ? 64 + static_cast<int>(std::min<std::size_t>(failed, 63)) : 0;
+    return sweep_exit_status(failed);
   }
 
   const sweep::Plan& plan_;

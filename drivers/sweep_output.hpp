@@ -19,6 +19,14 @@
 
 namespace nanopush::cli {
 
+/// A sweep's exit status (docs/errors.md): 0, or 64 + k for k = 1..5 failed points and
+/// 65 + k for k = 6..61, so that 70 stays the internal error's; 127 for 62 or more.
+inline int sweep_exit_status(std::size_t failed) {
+  if (failed == 0) return 0;
+  if (failed <= 5) return 64 + static_cast<int>(failed);
+  return failed >= 62 ? 127 : 65 + static_cast<int>(failed);
+}
+
 class TableOutput {
  public:
   enum class Kind { csv, netcdf, standard_output };

@@ -80,7 +80,10 @@ failing)  # a failing point is a row; the exit status counts the failures (64 + 
   rc=$(status "$np" sweep fig3_6a --vary solver.max_steps=1,100000 --out f.csv --quiet)
   [ "$rc" = 65 ] || fail "exit status $rc, expected 65 (one failed point)"
   grep -q '^0,1,.*,solver_failure,' f.csv || fail "no failure row: $(cat f.csv)"
-  grep -q '^1,100000,.*,ok,$' f.csv || fail "the good point is missing" ;;
+  grep -q '^1,100000,.*,ok,$' f.csv || fail "the good point is missing"
+  # six failures: 65 + 6, never 70 (the internal error's status)
+  rc=$(status "$np" sweep fig3_6a --vary solver.max_steps=1,2,3,4,5,6 --out f6.csv --quiet)
+  [ "$rc" = 71 ] || fail "exit status $rc, expected 71 (six failed points)" ;;
 set)  # --set changes exactly what an edited scene file changes (bit for bit)
   sed -e 's/^mu = 0.06/mu = 0.1/' -e 's/^yn = 45e-9 /yn = 20e-9 /' "$5" > edited.toml
   grep -q '^mu = 0.1$' edited.toml && grep -q '^yn = 20e-9 ' edited.toml || fail "sed did not edit the scene"
