@@ -284,6 +284,40 @@ TEST_CASE("An accuracy asked for is answered by the engine and method asked; the
   CHECK(c.rtol < 1e-9);
 }
 
+TEST_CASE("Thesis law, modern: kinks located along an edge line spend the run's step budget, not one per restart",
+          "[accuracy][rough][unit]") {
+  // fig3_27 launched at 6.7 m/s: as the bar slows, the iCOR rides an edge line of the contact
+  // and a kink comes every few steps. With a budget per integration the run located 13,128
+  // kinks in 290,000 steps (12.5 million RHS evaluations, 1.3 s; 20 s in long double) before
+  // the rest watch stopped it; the budget now bounds the whole run.
+  Scene sc = thesis_preset("fig3_27");
+  sc.set({{"initial.vy", 6.7}, {"push.yn", -1.435e-08}});
+  RunSettings s;
+  s.method = Method::modern;
+  s.rtol = 1e-8;
+  s.error_estimate = false;
+  s.allow_partial = true;
+  const Trajectory tr = run_engine(sc, s);
+  CHECK(tr.outcome == Outcome::no_static_friction);
+  CHECK(tr.stats.naccpt + tr.stats.nrejct <= sc.solver.max_steps);
+  CHECK(tr.kinks_located > 0);
+}
+
+TEST_CASE("A failure a setting causes names the setting: one atol below the state's rounding, more outputs than steps",
+          "[accuracy][unit]") {
+  Scene sc = thesis_preset("fig3_18");
+  sc.set("solver.atol", 1e-20);
+  RunSettings s;
+  s.method = Method::faithful;
+  s.error_estimate = false;
+  CHECK_THROWS_WITH(run_engine(sc, s), Catch::Contains("solver.atol = 1e-20 (one value for every component) is below "
+                                                       "the rounding of theta"));
+  Scene many = thesis_preset("fig3_6a");
+  many.set({{"solver.samples", 2001}, {"solver.max_steps", 1000}});
+  CHECK_THROWS_WITH(run_engine(many, s), Catch::Contains("the run steps to each of its 2001 output times") &&
+                                             Catch::Contains("lower solver.samples or raise solver.max_steps"));
+}
+
 TEST_CASE("Coulomb law, method auto: a stiff start just outside the limit surface is handed over to CVODE",
           "[accuracy][rough][coulomb][regression]") {
   Scene sc = stiff_start_scene();

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "nanopush/numerics/regula_falsi.hpp"
@@ -26,8 +27,16 @@ void add_counts(IntegrationResult& into, const IntegrationResult& r) {
 template <typename S>
 KinkResult integrate_across_kinks(const KinkIntegrateT<S>& run, const KinkFunctionsT<S>& kinks, int nk, S* y, int n,
                                   std::span<const double> tout, const KinkObserverT<S>& observer,
-                                  const KinkHookT<S>& hook) {
+                                  const KinkHookT<S>& hook, std::int64_t max_steps) {
   KinkResult out;
+  // The steps left of the run's budget; none left: the run ends as an integrator's would.
+  const auto left = [&] { return max_steps - (out.stats.naccpt + out.stats.nrejct); };
+  const auto spent = [&] {
+    out.stats.status = IntegrationStatus::too_many_steps;
+    out.stats.message = "more than " + std::to_string(max_steps) + " steps (the run's budget, " +
+                        std::to_string(out.located) + " kinks of the wrench located within it)";
+    return out;
+  };
   nk = std::min(nk, kMaxKinks);
   double t = 0.0;
   std::size_t iout = 0;
@@ -60,7 +69,8 @@ KinkResult integrate_across_kinks(const KinkIntegrateT<S>& run, const KinkFuncti
       }
       return hook ? hook(ta, ya, tb, yb) : static_cast<int>(kHookContinue);
     };
-    const IntegrationResult r = run(t, y, tout.subspan(iout), count, step, h_next);
+    if (left() < 1) return spent();
+    const IntegrationResult r = run(t, y, tout.subspan(iout), count, step, h_next, left());
     add_counts(out.stats, r);
     iout += emitted;
     out.stats.status = r.status;
@@ -80,7 +90,8 @@ KinkResult integrate_across_kinks(const KinkIntegrateT<S>& run, const KinkFuncti
     auto g_at = [&](double tc) {
       std::copy(ystart.begin(), ystart.end(), yt.begin());
       const double end[1] = {tc};
-      const IntegrationResult s = run(t0, yt.data(), std::span<const double>(end, 1), quiet, no_hook, tc - t0);
+      if (left() < 1) return std::nan("");
+      const IntegrationResult s = run(t0, yt.data(), std::span<const double>(end, 1), quiet, no_hook, tc - t0, left());
       add_counts(out.stats, s);
       if (!s.ok()) return std::nan("");
       S g[kMaxKinks];
@@ -110,7 +121,12 @@ KinkResult integrate_across_kinks(const KinkIntegrateT<S>& run, const KinkFuncti
     const KinkObserverT<S> to_b = [&](double tt, const S* yy) {
       if (given++ < span_out.size() - 1) observer(tt, yy);
     };
-    const IntegrationResult s = run(t0, y, span_out, to_b, no_hook, b - t0);
+    if (left() < 1) {
+      std::copy(ystart.begin(), ystart.end(), y);  // the state at the last committed step
+      out.stats.t_reached = t0;
+      return spent();
+    }
+    const IntegrationResult s = run(t0, y, span_out, to_b, no_hook, b - t0, left());
     add_counts(out.stats, s);
     if (!s.ok()) {
       out.stats.status = s.status;
@@ -128,14 +144,14 @@ KinkResult integrate_across_kinks(const KinkIntegrateT<S>& run, const KinkFuncti
 
 template KinkResult integrate_across_kinks<double>(const KinkIntegrateT<double>&, const KinkFunctionsT<double>&, int,
                                                    double*, int, std::span<const double>, const KinkObserverT<double>&,
-                                                   const KinkHookT<double>&);
+                                                   const KinkHookT<double>&, std::int64_t);
 template KinkResult integrate_across_kinks<long double>(const KinkIntegrateT<long double>&,
                                                         const KinkFunctionsT<long double>&, int, long double*, int,
                                                         std::span<const double>, const KinkObserverT<long double>&,
-                                                        const KinkHookT<long double>&);
+                                                        const KinkHookT<long double>&, std::int64_t);
 template KinkResult integrate_across_kinks<num::quad>(const KinkIntegrateT<num::quad>&,
                                                       const KinkFunctionsT<num::quad>&, int, num::quad*, int,
                                                       std::span<const double>, const KinkObserverT<num::quad>&,
-                                                      const KinkHookT<num::quad>&);
+                                                      const KinkHookT<num::quad>&, std::int64_t);
 
 }  // namespace nanopush::detail

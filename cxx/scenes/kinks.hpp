@@ -20,12 +20,12 @@ using KinkObserverT = std::function<void(double t, const S* y)>;
 template <typename S>
 using KinkHookT = std::function<int(double t0, const S* y0, double t1, const S* y1)>;
 /// One integration from (t0, y) over the output times `tout` with an observer and a step hook,
-/// by a fresh integrator (the method's own options, its first step h0 when h0 > 0); y is left
-/// at the last time reached.
+/// by a fresh integrator (the method's own options, its first step h0 when h0 > 0, at most
+/// max_steps steps); y is left at the last time reached.
 template <typename S>
 using KinkIntegrateT = std::function<IntegrationResult(double t0, S* y, std::span<const double> tout,
                                                        const KinkObserverT<S>& observer, const KinkHookT<S>& hook,
-                                                       double h0)>;
+                                                       double h0, std::int64_t max_steps)>;
 /// The event functions at a state: g[0..nk).
 template <typename S>
 using KinkFunctionsT = std::function<void(const S* y, S* g)>;
@@ -42,10 +42,14 @@ struct KinkResult {
 
 /// Integrate the state y (n components) from 0 over `tout` as `run` does, locating the sign
 /// changes of the `nk` functions `kinks` and restarting at each. `hook` (optional) sees every
-/// committed step and may stop the run after it. Instantiated for double, long double and quad.
+/// committed step and may stop the run after it. `max_steps` bounds the steps of the whole run,
+/// the restarts and the location's sub-integrations included (status too_many_steps beyond):
+/// where a kink function hovers at zero (the iCOR riding an edge line as the body slows) the
+/// kinks come every few steps, and a budget per integration let the run go on for millions.
+/// Instantiated for double, long double and quad.
 template <typename S>
 KinkResult integrate_across_kinks(const KinkIntegrateT<S>& run, const KinkFunctionsT<S>& kinks, int nk, S* y, int n,
                                   std::span<const double> tout, const KinkObserverT<S>& observer,
-                                  const KinkHookT<S>& hook);
+                                  const KinkHookT<S>& hook, std::int64_t max_steps);
 
 }  // namespace nanopush::detail

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <cstdio>
 #include <functional>
 #include <type_traits>
@@ -361,20 +362,21 @@ Trajectory run_cxx_rough(const Scene& sc, const ResolvedSettings& s) {
       // engine's steps).
       const detail::KinkIntegrateT<S> run = [&](double t0, S* yy, std::span<const double> to,
                                                 const detail::KinkObserverT<S>& obs, const detail::KinkHookT<S>& hook,
-                                                double h0) {
+                                                double h0, std::int64_t max_steps) {
         auto o = [&](std::size_t, S t, const S* v) { obs(static_cast<double>(t), v); };
         if constexpr (!extended) {
           if (s.method == Method::dop853) {
             auto opt = Dop853Options<double>::make(s.rtol, tr.atol);
             opt.h0 = h0 > 0 ? h0 : sc.solver.h0;
             opt.hmax = sc.solver.hmax;
-            opt.maxstp = sc.solver.max_steps;
+            opt.maxstp = max_steps;
             Dop853<double, kRoughStateSize> dp(std::move(opt));
             return static_cast<IntegrationResult>(dp.integrate(rhs, t0, yy, to, o, std::cref(hook)));
           }
         }
         auto opt = options_for<S>(sc, s, atol);
         if (h0 > 0) opt.h0 = S(h0);
+        opt.maxstp = max_steps;
         BulirschStoer<S, kRoughStateSize> bs(opt);
         if constexpr (!extended) {
           return static_cast<IntegrationResult>(bs.integrate(rhs, t0, yy, to, o, std::cref(hook)));
@@ -388,7 +390,7 @@ Trajectory run_cxx_rough(const Scene& sc, const ResolvedSettings& s) {
       };
       const detail::KinkResult kr = detail::integrate_across_kinks<S>(
           run, [&m](const S* v, S* g) { thesis_kinks(m, v, g); }, 2, y.data(), kRoughStateSize,
-          std::span<const double>(tout), observer, watch_hook(watch));
+          std::span<const double>(tout), observer, watch_hook(watch), sc.solver.max_steps);
       tr.stats = kr.stats;
       tr.kinks_located = kr.located;
     } else if constexpr (extended) {
@@ -493,6 +495,33 @@ Trajectory finish_run(const Scene& scene, const ResolvedSettings& s, Trajectory 
                            fmt_short(2 * M_PI / w) + " s, some " + std::to_string(std::llround(turns)) +
                            " turns or swings over t_end at tens of steps each: shorten solver.t_end or raise "
                            "solver.max_steps";
+  }
+  if (tr.outcome == Outcome::solver_failure && tr.outcome_message.empty()) {
+    const std::string what = to_string(tr.stats.status) + (tr.stats.message.empty() ? "" : ": " + tr.stats.message);
+    const auto outputs = static_cast<std::int64_t>(scene.output_times().size());
+    // The faithful method and the F77 engine step to every output time (they clip their steps
+    // there), so more outputs than the budget cannot be done.
+    if (tr.stats.status == BsStatus::too_many_steps && (s.method == Method::faithful || s.engine == Engine::f77) &&
+        outputs >= scene.solver.max_steps)
+      tr.outcome_message = what + ": the run steps to each of its " + std::to_string(outputs) +
+                           " output times (solver.samples; " + (s.engine == Engine::f77 ? "the F77 engine" : "faithful") +
+                           " clips its steps there), more than solver.max_steps = " +
+                           std::to_string(scene.solver.max_steps) + ": lower solver.samples or raise solver.max_steps";
+    // One atol for every component: where it is below the rounding of a component's size, no
+    // step can meet it.
+    if (tr.stats.status == BsStatus::step_underflow && s.atol > 0) {
+      static constexpr const char* kNames[8] = {"x", "y", "theta", "vx", "vy", "omega", "work", "work"};
+      const auto sc = scene.state_scales();
+      for (std::size_t i = 0; i < 6; ++i)
+        if (s.atol < 4 * std::numeric_limits<double>::epsilon() * sc[i]) {
+          tr.outcome_message = what + ": solver.atol = " + fmt_short(s.atol) +
+                               " (one value for every component) is below the rounding of " + kNames[i] +
+                               " (its scale " + fmt_short(sc[i]) + " in SI: 4 eps of it is " +
+                               fmt_short(4 * std::numeric_limits<double>::epsilon() * sc[i]) +
+                               "): raise solver.atol, or leave it out (each component's then follows rtol)";
+          break;
+        }
+    }
   }
   if (!is_answer(tr.outcome)) {
     tr.complete = false;
