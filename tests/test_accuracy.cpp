@@ -318,6 +318,24 @@ TEST_CASE("A failure a setting causes names the setting: one atol below the stat
                                              Catch::Contains("lower solver.samples or raise solver.max_steps"));
 }
 
+TEST_CASE("Below 1e-12, --accuracy stops where its estimate stops falling", "[accuracy][rough][unit]") {
+  // fig3_13 with a light, strongly held bar: the estimate stays at ~1.5e-13 from rtol 1e-13 to
+  // 1e-17 (what stays in double bounds it); tightening on would go into quad precision for
+  // seconds a run (a probe's run at 1e-14 was still going after 20 s).
+  Scene sc = thesis_preset("fig3_13");
+  sc.set({{"surface.f_vdw", 2.3886656919316975e-06}, {"object.inertia", 9.730618872815254e-36},
+          {"initial.x", 7.047805882910277e-09}});
+  RunSettings s;
+  s.accuracy = 1e-13;
+  s.allow_partial = true;
+  const Trajectory tr = run_engine(sc, s);
+  CHECK(tr.outcome == Outcome::accuracy_not_reached);
+  CHECK(tr.accuracy.runs == 3);
+  CHECK(tr.error.norm > 1e-13);
+  CHECK(tr.error.norm <= 1e-12);
+  CHECK_THAT(tr.outcome_message, Catch::Contains("the estimate stopped falling with rtol"));
+}
+
 TEST_CASE("Coulomb law, method auto: a stiff start just outside the limit surface is handed over to CVODE",
           "[accuracy][rough][coulomb][regression]") {
   Scene sc = stiff_start_scene();
