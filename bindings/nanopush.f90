@@ -1448,7 +1448,8 @@ contains
   !> Several bars of the scene's kind from objects(3, n) into slots(3, n) (columns x, y, theta),
   !> as `nanopush assemble` (docs/planning.md): pushes(k, 1:10) the pushes in the order made
   !> (bar, slot, then nanopush_plan's eight columns), slot_of(n) each bar's slot, final(3, n)
-  !> where each bar ends, assembled every bar in its slot.
+  !> where each bar ends, assembled every bar in its slot. slot_of and final, when given, must
+  !> have exactly those shapes (n = size(objects, 2)): another size is NANOPUSH_BAD_INPUT naming it.
   subroutine nanopush_assemble(scene, objects, slots, pushes, slot_of, final, assembled, tolerance, max_pushes, &
                                gap, stat, errmsg)
     type(nanopush_scene), intent(in) :: scene
@@ -1480,10 +1481,22 @@ contains
     slots_c = 0
     k = 0
     done = 0
+    msg = ""
+    ! Shapes are Fortran's to check (C reads 3 n values of each and writes n of slot_of and
+    ! final): a mismatch is bad input, nothing read or written beyond an array.
     if (size(objects, 1) /= 3 .or. size(slots, 1) /= 3 .or. size(slots, 2) /= n) then
-      ! Shapes are Fortran's to check (C reads 3 n values of each): a mismatch is bad input.
-      st = NANOPUSH_BAD_INPUT
       msg = "objects, slots: must be (3, n) arrays of the same n (columns x, y, theta)"
+    else if (present(slot_of)) then
+      if (size(slot_of) /= n) msg = "size(slot_of) = " // shape_text([size(slot_of)]) // &
+                                    ": must be n = " // shape_text([int(n)]) // " (one slot per bar)"
+    end if
+    if (len(msg) == 0 .and. present(final)) then
+      if (size(final, 1) /= 3 .or. size(final, 2) /= n) &
+        msg = "shape(final) = " // shape_text(shape(final)) // ": must be (3, n) = " // shape_text([3, int(n)]) // &
+              " (x, y, theta of each bar)"
+    end if
+    if (len(msg) > 0) then
+      st = NANOPUSH_BAD_INPUT
       if (present(stat)) then
         stat = st
       else
@@ -1505,13 +1518,28 @@ contains
     else
       allocate (pushes(0, 10))
     end if
-    if (present(slot_of) .and. st == NANOPUSH_OK) slot_of = int(slots_c(1:size(slot_of)))
-    if (present(final) .and. st == NANOPUSH_OK) final = ends(:, 1:size(final, 2))
+    if (present(slot_of) .and. st == NANOPUSH_OK) slot_of = int(slots_c(1:n))
+    if (present(final) .and. st == NANOPUSH_OK) final = ends(:, 1:n)
     if (present(assembled)) assembled = st == NANOPUSH_OK .and. done == 1
     if (present(errmsg)) errmsg = msg
   end subroutine nanopush_assemble
 
   ! ---- helpers --------------------------------------------------------------------------
+
+  !> The extents of an array shape as text: "5" or "(3, 5)".
+  function shape_text(extents) result(s)
+    integer, intent(in) :: extents(:)
+    character(len=:), allocatable :: s
+    character(len=24) :: buf
+    integer :: k
+    s = ""
+    do k = 1, size(extents)
+      write (buf, '(i0)') extents(k)
+      if (k > 1) s = s // ", "
+      s = s // trim(buf)
+    end do
+    if (size(extents) > 1) s = "(" // s // ")"
+  end function shape_text
 
   !> Quiet NaN: the value of an output that a failed call did not produce.
   real(dp) function nan()
