@@ -664,7 +664,10 @@ contains
   !>   the integration (to about 1e-32 relative for quad; exact for long and double).
   !>   accuracy: the error asked for of the final pose, in [1e-14, 0.1] (0: none; default: the
   !>   scene's solver.accuracy); error_estimate: estimate the error (default: the scene's);
-  !>   error(NANOPUSH_ERROR_SIZE): the estimate (docs/accuracy.md); outcome: "ok" or "at_rest".
+  !>   error(NANOPUSH_ERROR_SIZE): the estimate (docs/accuracy.md); outcome: "ok" or "at_rest";
+  !>   for a failed run the outcome its stat stands for (docs/errors.md): "no_static_friction",
+  !>   "law_blowup", "accuracy_not_reached" (stat 13-15) or "solver_failure" (stat 2-6), and ""
+  !>   when no run was made (bad input, a null scene).
   !> On failure traj (and state_ext) are allocated with zero columns.
   subroutine nanopush_run(scene, traj, engine, method, rtol, atol, counts, stat, errmsg, law, &
                           precision, state_ext, accuracy, error_estimate, error, outcome)
@@ -730,7 +733,9 @@ contains
     if (present(counts)) counts = cnt
     if (present(error)) error = est
     if (present(outcome)) then
-      if (.not. allocated(outcome)) outcome = ""
+      ! A failed run: the outcome its status stands for, as C's status and Python's
+      ! SolverError.outcome give it (docs/errors.md); "" when no run was made (bad input).
+      if (.not. allocated(outcome)) outcome = failed_outcome(err)
     end if
     call finish(err, "nanopush_run", msg, stat)
     if (present(errmsg)) errmsg = msg
@@ -1525,6 +1530,30 @@ contains
   end subroutine nanopush_assemble
 
   ! ---- helpers --------------------------------------------------------------------------
+
+  !> The outcome of a run that failed with the status held by err (docs/errors.md, "Outcomes
+  !> of a run"): no_static_friction, law_blowup, accuracy_not_reached (13-15), solver_failure
+  !> (2-6); "" for any other status (the run was not made).
+  function failed_outcome(err) result(name)
+    type(c_ptr), intent(in) :: err
+    character(len=:), allocatable :: name
+    integer :: st
+    st = NANOPUSH_OUT_OF_MEMORY
+    if (c_associated(err)) st = int(c_check_error(err))
+    select case (st)
+    case (NANOPUSH_NO_STATIC_FRICTION)
+      name = "no_static_friction"
+    case (NANOPUSH_LAW_BLOWUP)
+      name = "law_blowup"
+    case (NANOPUSH_ACCURACY_NOT_REACHED)
+      name = "accuracy_not_reached"
+    case (NANOPUSH_TOO_MANY_STEPS, NANOPUSH_STEP_UNDERFLOW, NANOPUSH_RHS_FAILED, NANOPUSH_NOT_FINITE, &
+          NANOPUSH_SOLVER_FAILED)
+      name = "solver_failure"
+    case default
+      name = ""
+    end select
+  end function failed_outcome
 
   !> The extents of an array shape as text: "5" or "(3, 5)".
   function shape_text(extents) result(s)
