@@ -52,6 +52,9 @@ int nanopush_get_api_version(void);
 #define NANOPUSH_NO_STATIC_FRICTION 13  /* thesis/printed law: the object is at rest inside the limit surface */
 #define NANOPUSH_LAW_BLOWUP 14          /* printed law: its friction injected energy and the run blew up */
 #define NANOPUSH_ACCURACY_NOT_REACHED 15 /* the accuracy asked for could not be met (message: best estimate) */
+/* Any other failed run returns the integrator's status, 2..5 (a model's step budget spent, as
+ * the dynamic tip model's, is NANOPUSH_TOO_MANY_STEPS), else NANOPUSH_SOLVER_FAILED; Python's
+ * SolverError.status_code is the same number for the same run. */
 
 /* Short fixed description of a status code ("bad input", ...); never NULL, static storage. */
 const char* nanopush_status_name(int status);

@@ -466,9 +466,9 @@ def sweep(task, vary=None, *, vary_log=None, points=None, set=None, jobs=0, engi
               e.g. {"a": 27.5e-9, "b": 50e-9}, otherwise)
     jobs      threads (0: every core); the table is the same for any number
     engine, method, law, accuracy, error_estimate   the run task's, as for nanopush.run
-    check     raise nanopush.SolverError if any point failed, with .status the first failed
-              point's and .partial the whole table (default: keep the status and message
-              of each point in the table)
+    check     raise nanopush.SolverError if any point failed, with .outcome, .status and
+              .status_code the first failed point's (as for nanopush.run) and .partial the
+              whole table (default: keep the status and message of each point in the table)
     progress  a callable progress(done, total), called about twice a second and at the end
               (from the calling thread); an exception it raises stops the sweep
     out       a path: the table goes to that CSV file (and its sidecar) as ``nanopush sweep
@@ -503,8 +503,11 @@ def sweep(task, vary=None, *, vary_log=None, points=None, set=None, jobs=0, engi
     res = SweepResult(names, units, data)
     if check and res.failed:
         bad = [i for i, ok in enumerate(res.ok) if not ok]
+        outcome, message = str(res.status[bad[0]]), str(res.message[bad[0]])
         e = SolverError(f"sweep: {res.failed} of {len(res)} points failed; first, point {bad[0]}: "
-                        f"{res.status[bad[0]]}: {res.message[bad[0]]}")
-        e.status, e.status_code, e.t_reached, e.partial = str(res.status[bad[0]]), None, None, res
+                        f"{outcome}: {message}")
+        # the first failed point's status as the C API gives it for the same run
+        e.status_code, e.status = _nanopush._status_code(outcome, message)
+        e.outcome, e.t_reached, e.partial = outcome, None, res
         raise e
     return res

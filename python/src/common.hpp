@@ -15,6 +15,8 @@
 
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/scenes/simulate.hpp"
+// The statuses the C API returns, shared (bindings/binding_errors.hpp).
+#include "binding_errors.hpp"
 
 namespace nanopush::python {
 

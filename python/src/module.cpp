@@ -111,11 +111,13 @@ void register_errors(py::module_& m) {
   g_solver_error = PyErr_NewExceptionWithDoc("nanopush.SolverError",
                                 "A numerical failure (too many steps, step size underflow, non-finite state, a "
                                 "root finder that did not converge).\n\n"
-                                "Attributes: status (str: too_many_steps, step_underflow, rhs_failed, not_finite, "
-                                "bad_input, or solver_failure when the failure has no integrator status), "
+                                "Attributes: status_code (int: the status the C API returns for the same call, "
+                                "nanopush.h: 2-5 the integrator's, 6 another numerical failure, 13 no static "
+                                "friction, 14 law blowup, 15 accuracy not reached), status (str: its name, "
+                                "too_many_steps, step_underflow, rhs_failed, not_finite, solver_failure, "
+                                "no_static_friction, law_blowup, accuracy_not_reached), "
                                 "outcome (str: how the run ended, docs/errors.md: solver_failure, no_static_friction, "
                                 "law_blowup, accuracy_not_reached), "
-                                "status_code (int, the integrator's status as in the C API; None without one), "
                                 "t_reached (float [s] or None), partial (the Result of the samples computed "
                                 "before the failure, or None).",
                                 PyExc_RuntimeError, nullptr);
@@ -138,11 +140,14 @@ void register_errors(py::module_& m) {
       ex.attr("index") = py::none();
       PyErr_SetObject(g_input_error, ex.ptr());
     } catch (const RunFailure& e) {
+      // The C API's status for the same run (binding_errors.hpp): the outcome's (13-15), else
+      // the integrator's (2-5), else 6.
       py::object ex = py::handle(g_solver_error)(e.what());
       const auto& st = e.partial().stats;
-      ex.attr("status") = status_name(st.status);
+      const int code = bindings::run_status_code(e.partial());
+      ex.attr("status") = bindings::status_identifier(code);
       ex.attr("outcome") = to_string(e.partial().outcome);
-      ex.attr("status_code") = static_cast<int>(st.status);
+      ex.attr("status_code") = code;
       ex.attr("t_reached") = st.t_reached;
       ex.attr("partial") = make_result(e.partial());
       PyErr_SetObject(g_solver_error, ex.ptr());
@@ -157,15 +162,28 @@ void register_errors(py::module_& m) {
       // a system error, as exit 5 is on the command line.
       PyErr_SetString(PyExc_OSError, e.what());
     } catch (const SolverError& e) {
+      // No trajectory (a model that threw, a root finder): the status the C API gives.
       py::object ex = py::handle(g_solver_error)(e.what());
-      ex.attr("status") = "solver_failure";
+      const int code = bindings::solver_status_code(e);
+      ex.attr("status") = bindings::status_identifier(code);
       ex.attr("outcome") = e.outcome();
-      ex.attr("status_code") = py::none();
+      ex.attr("status_code") = code;
       ex.attr("t_reached") = py::none();
       ex.attr("partial") = py::none();
       PyErr_SetObject(g_solver_error, ex.ptr());
     }
   });
+  // The status a sweep's failed row stands for (nanopush.sweep(check=True)): its outcome
+  // (the row's status column) and message, as a SolverError of the C API would give it.
+  m.def(
+      "_status_code",
+      [](const std::string& outcome, const std::string& message) {
+        const int code = outcome == "bad_input" ? NANOPUSH_BAD_INPUT
+                         : outcome == "error"   ? NANOPUSH_INTERNAL
+                                                : bindings::solver_status_code(SolverError(message, outcome));
+        return py::make_tuple(code, bindings::status_identifier(code));
+      },
+      py::arg("outcome"), py::arg("message"));
 }
 
 }  // namespace nanopush::python
