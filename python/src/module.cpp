@@ -127,6 +127,13 @@ void register_errors(py::module_& m) {
 
   py::register_exception_translator([](std::exception_ptr p) {
     if (!p) return;
+    // Ctrl-C during the call (the GIL released, the C++ code running on): the interrupt wins
+    // over whatever the call then threw, as it does over a call that returns (the handler runs
+    // at the next bytecode). PyErr_CheckSignals runs Python's handler now, which sets
+    // KeyboardInterrupt: that is the error the call raises, and the C++ exception is dropped.
+    // Setting a second exception over a pending interrupt broke exception handling (an
+    // unraisable SolverError, "lost sys.stderr", exit 1).
+    if (PyErr_CheckSignals() != 0) return;
     try {
       std::rethrow_exception(p);
     } catch (const IndexedInputError& e) {
