@@ -240,7 +240,8 @@ int nanopush_trajectory_get_precision(nanopush_error error, nanopush_trajectory 
  *                   < 0 = the scene's solver.accuracy. Not reached: NANOPUSH_ACCURACY_NOT_REACHED
  *                   with the best estimate in the message.
  *   error_estimate: 1 estimate the error of the answer (a companion run at rtol/100), 0 do not,
- *                   < 0 the scene's solver.error_estimate (the other run functions use the scene's). */
+ *                   < 0 the scene's solver.error_estimate (the other run functions use the scene's);
+ *                   any other value is NANOPUSH_BAD_INPUT naming error_estimate. */
 nanopush_trajectory nanopush_run_scene_accuracy(nanopush_error error, nanopush_scene scene, const char* engine,
                                                 const char* method, const char* law, const char* precision,
                                                 double rtol, double atol, double accuracy, int error_estimate);

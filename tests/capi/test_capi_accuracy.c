@@ -1,7 +1,7 @@
 /* The error estimate, --accuracy and the outcomes from C (docs/accuracy.md, docs/errors.md):
  * nanopush_run_scene_accuracy, nanopush_trajectory_get_error, nanopush_trajectory_get_outcome
  * and the statuses NANOPUSH_NO_STATIC_FRICTION / NANOPUSH_LAW_BLOWUP / NANOPUSH_ACCURACY_NOT_REACHED /
- * NANOPUSH_TOO_MANY_STEPS (a model's step budget).
+ * NANOPUSH_TOO_MANY_STEPS (a model's step budget), error_estimate's range.
  * Usage: test_capi_accuracy ROUGH_SCENE.toml (fig3_18) */
 #include <math.h>
 #include <stdio.h>
@@ -59,6 +59,20 @@ int main(int argc, char** argv) {
   t = nanopush_run_scene_ex(err, scene, "f77", NULL, "thesis", 0.0, -1.0);
   CHECK(t == NULL && nanopush_check_error(err) == NANOPUSH_NO_STATIC_FRICTION);
   nanopush_clear_error(err);
+
+  /* error_estimate takes 1, 0 or < 0 (nanopush.h): any other value is bad input naming it,
+   * never read as "estimate". */
+  CHECK(nanopush_scene_set_real(err, scene, "push.force", 5e-6) == NANOPUSH_OK);
+  for (int v = 2; v <= 5; v += 3) {
+    t = nanopush_run_scene_accuracy(err, scene, NULL, NULL, "coulomb", NULL, 0.0, -1.0, 0.0, v);
+    CHECK(t == NULL && nanopush_check_error(err) == NANOPUSH_BAD_INPUT);
+    CHECK(nanopush_get_error(err, msg, sizeof msg) > 0 && strstr(msg, "error_estimate = ") == msg &&
+          strstr(msg, ": must be 1 (estimate the error), 0 (do not) or < 0") != NULL);
+    nanopush_clear_error(err);
+  }
+  t = nanopush_run_scene_accuracy(err, scene, NULL, NULL, "coulomb", NULL, 0.0, -1.0, 0.0, -7);
+  CHECK(t != NULL && nanopush_check_error(err) == NANOPUSH_OK); /* < 0: the scene's */
+  nanopush_delete_trajectory(&t);
 
   /* The printed law's blowup: NANOPUSH_LAW_BLOWUP (a point of fig3_18's mu x yn grid where
    * its friction injects energy, tests/test_accuracy.cpp). */
