@@ -49,13 +49,18 @@ from . import _scenes
 from . import _signatures
 from . import icor  # noqa: F401
 
-# Every compiled callable with a signature inspect.signature reads (help(), IDEs).
-estimate_mu = _signatures.function(_nanopush.estimate_mu)
-estimate_mu_batch = _signatures.function(_nanopush.estimate_mu_batch)
-friction_from_velocity = _signatures.function(_nanopush.friction_from_velocity)
-friction_wrench = _signatures.function(_nanopush.friction_wrench)
-scene_keys = _signatures.function(_nanopush.scene_keys)
-synthesize = _signatures.function(_nanopush.synthesize)
+# Every compiled callable with a signature inspect.signature reads (help(), IDEs), and
+# pybind11's argument conversion failures raised as InputError naming the argument: the
+# module's functions (the package's own calls to _nanopush._run, ... included), methods and
+# constructors (_signatures).
+_signatures.module(_nanopush)
+_signatures.module(_nanopush.icor)
+estimate_mu = _nanopush.estimate_mu
+estimate_mu_batch = _nanopush.estimate_mu_batch
+friction_from_velocity = _nanopush.friction_from_velocity
+friction_wrench = _nanopush.friction_wrench
+scene_keys = _nanopush.scene_keys
+synthesize = _nanopush.synthesize
 for _cls in (FitResult, MuBatch, MuEstimate, MuEstimates, PlanResult, Result, Scene, Wrench):
     _signatures.methods(_cls)
 FitResult.report = _fitting.report
@@ -113,15 +118,27 @@ def _count(name, value):
     return v
 
 
-def _resolve_preset(name):
+def _mapping(name, value, form):
+    """A dict argument (None: empty); InputError naming `name` for anything else."""
+    if value is None:
+        return {}
+    if not isinstance(value, dict):
+        raise _input_error(f"{name} = {value!r:.80}: must be a dict {form}", name)
+    return dict(value)
+
+
+def _resolve_preset(name, field="name"):
     """The file of a preset name, found by the rule of ``nanopush run`` (the library's
     find_preset: NAME.toml or NAME under scenes_dir(), then its thesis/, bench/ and examples/
-    folders)."""
+    folders); InputError naming the argument `field` otherwise."""
+    if not isinstance(name, (str, _os.PathLike)):
+        raise _input_error(f"{field} = {name!r:.80}: must be a preset name (text; nanopush.presets() lists them)",
+                           field)
     d = scenes_dir()
-    found = _nanopush._find_preset(str(d), name)
+    found = _nanopush._find_preset(str(d), _os.fspath(name))
     if found is None:
-        raise _input_error(f"SCENE = {name}: no preset of that name under {d} (nanopush.presets() lists them)",
-                           "SCENE")
+        raise _input_error(f"{field} = {name}: no preset of that name under {d} (nanopush.presets() lists them)",
+                           field)
     return _pathlib.Path(found)
 
 
@@ -149,7 +166,7 @@ def _as_scene(scene):
         p = _pathlib.Path(scene)
         if p.is_file():
             return Scene.from_file(str(p))
-        return _preset(str(scene))
+        return Scene.from_file(str(_resolve_preset(str(scene), "scene")))
     raise _input_error(f"scene = {scene!r:.80}: must be a nanopush.Scene, a preset name or a scene file", "scene")
 
 
@@ -489,15 +506,17 @@ def sweep(task, vary=None, *, vary_log=None, points=None, set=None, jobs=0, engi
         raise _input_error("task = run: a run sweep takes a scene (nanopush.Scene, a preset name or a file)", "task")
     else:
         scene, name = _as_scene(task), "run"
-    axes = [(k, v, False) for k, v in (vary or {}).items()]
-    axes += [(k, v, True) for k, v in (vary_log or {}).items()]
+    axes = [(k, v, False) for k, v in _mapping("vary", vary, "{key: values}").items()]
+    axes += [(k, v, True) for k, v in _mapping("vary_log", vary_log, "{key: 'FROM:TO:N'}").items()]
+    if points is not None:
+        points = _mapping("points", points, "{key: values} of equal lengths")
     if out is not None:
         if check:
             raise _input_error("check = True: give it without out (read the failed rows from the file)", "check")
         out = _os.fspath(out)
-    names, units, data = _nanopush._sweep(name, scene, axes, points, dict(set or {}), _count("jobs", jobs),
-                                         engine or "", method or "", law or "", accuracy, error_estimate,
-                                         progress, out)
+    names, units, data = _nanopush._sweep(name, scene, axes, points, _mapping("set", set, "{key: value}"),
+                                         _count("jobs", jobs), engine or "", method or "", law or "", accuracy,
+                                         error_estimate, progress, out)
     if out is not None:
         return SweepFile(data)
     res = SweepResult(names, units, data)

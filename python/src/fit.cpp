@@ -79,7 +79,7 @@ py::array_t<double> covariance(const fit::FitResult& r) {
 /// `data` is a path (str or path-like), or CSV text when `text` is true (the Python package
 /// writes a dict, a structured array or a DataFrame as CSV, shortest round-trip numbers).
 PyFit fit_scene(const Scene& scene, const py::object& data, const py::object& free, const std::string& law,
-                const py::object& sigma, const std::string& gradients, double rtol, int max_evaluations,
+                const py::object& sigma, const std::string& gradients, double rtol, const Whole& max_evaluations,
                 double accuracy, bool text) {
   fit::FitOptions o;
   o.accuracy = accuracy;
@@ -87,7 +87,7 @@ PyFit fit_scene(const Scene& scene, const py::object& data, const py::object& fr
   o.law = parse_optional_choice<Law>("--law", law);
   o.gradients = parse_choice<fit::Gradients>("gradients", gradients);
   o.rtol = rtol;
-  o.max_evaluations = max_evaluations;
+  o.max_evaluations = static_cast<int>(arg_integer(max_evaluations.value, "max_evaluations", 1, 100000));
   const auto overrides = sigma_of(sigma);
   const std::string arg = arg_text(data, "data");
   py::gil_scoped_release release;
@@ -276,8 +276,10 @@ raise. Bad data or keys raise nanopush.InputError naming the row and column or t
 
   m.def(
       "synthesize",
-      [](const Scene& scene, const std::array<double, 3>& sigma, std::uint64_t seed, const std::string& law,
+      [](const Scene& scene, const std::array<double, 3>& sigma, const Whole& seed_arg, const std::string& law,
          const py::object& path) {
+        // The range of `nanopush fit --synthesize --seed`.
+        const auto seed = static_cast<std::uint64_t>(arg_integer(seed_arg.value, "seed", 0, 1LL << 62));
         std::string text;
         {
           py::gil_scoped_release release;

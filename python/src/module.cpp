@@ -9,8 +9,27 @@
 
 namespace nanopush::python {
 
+namespace {
+std::string shown(const py::handle& v) {
+  std::string r = py::repr(v).cast<std::string>();
+  if (r.size() > 80) r = r.substr(0, 77) + "...";
+  return r;
+}
+}  // namespace
+
+void refuse_complex(const py::handle& obj, const std::string& name) {
+  // forcecast would cast it to its real part, silently: refused as a complex Python number is.
+  if (!py::hasattr(obj, "dtype") || !py::hasattr(obj, "shape") || !py::hasattr(obj, "ndim")) return;
+  const py::object dtype = obj.attr("dtype");
+  if (!py::hasattr(dtype, "kind") || dtype.attr("kind").cast<std::string>() != "c") return;
+  const bool one = obj.attr("ndim").cast<long>() == 0;
+  throw InputError(name, one ? shown(obj) : "a complex array of shape " + py::str(obj.attr("shape")).cast<std::string>(),
+                   "must be real numbers (a complex value is refused, never cut to its real part)");
+}
+
 DArray as_double_array(const py::handle& obj, const char* name) {
   if (obj.is_none()) throw InputError(name, "None", "must be a real number or an array of real numbers");
+  refuse_complex(obj, name);
   auto a = DArray::ensure(obj);
   if (!a) {
     PyErr_Clear();
@@ -32,13 +51,6 @@ py::object plain_value(const py::handle& v, const std::string& name) {
   return py::reinterpret_borrow<py::object>(v);
 }
 
-namespace {
-std::string shown(const py::handle& v) {
-  std::string r = py::repr(v).cast<std::string>();
-  if (r.size() > 80) r = r.substr(0, 77) + "...";
-  return r;
-}
-}  // namespace
 
 double arg_double(const py::handle& obj, const std::string& name) {
   const py::object v = plain_value(obj, name);
@@ -66,6 +78,28 @@ std::string arg_text(const py::handle& obj, const std::string& name) {
   if (py::isinstance(obj, py::module_::import("os").attr("PathLike")))
     return py::module_::import("os").attr("fspath")(obj).cast<std::string>();
   throw InputError(name, shown(obj), "must be text");
+}
+
+long long arg_integer(const py::handle& obj, const std::string& name, long long lo, long long hi) {
+  const py::object v = plain_value(obj, name);
+  const std::string range = "must be a whole number in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+  if (v.is_none()) throw InputError(name, "None", range);
+  if (PyBool_Check(v.ptr())) throw InputError(name, shown(v), range + " (not a flag)");
+  if (PyUnicode_Check(v.ptr()) || PyBytes_Check(v.ptr())) throw InputError(name, shown(v), range + " (not text)");
+  PyObject* index = PyNumber_Index(v.ptr());  // int, NumPy integers; not float
+  if (!index) {
+    PyErr_Clear();
+    throw InputError(name, shown(v), range);
+  }
+  int overflow = 0;
+  const long long n = PyLong_AsLongLongAndOverflow(index, &overflow);
+  const std::string text = py::str(py::handle(index)).cast<std::string>();
+  Py_DECREF(index);
+  if (overflow != 0 || (n == -1 && PyErr_Occurred()) || n < lo || n > hi) {
+    PyErr_Clear();
+    throw InputError(name, text, range);
+  }
+  return n;
 }
 
 std::string status_name(BsStatus s) {

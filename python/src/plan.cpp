@@ -138,6 +138,7 @@ py::tuple check_plan(const plan::PlanResult& r, const Scene& scene, const py::ob
 /// Poses from an (n, 3) array-like of (x, y, theta).
 std::vector<plan::Pose> poses_arg(const py::object& v, const std::string& name) {
   py::array_t<double> a;
+  refuse_complex(v, name);
   try {
     a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(v);
   } catch (const py::error_already_set&) {
