@@ -1,10 +1,15 @@
 // Shared by the C API (bindings/capi_*.cpp) and the Python bindings (python/src/*.cpp), so that
-// both report a failure the same way: the status of a failed run, as nanopush.h's table and
-// docs/errors.md ("Outcomes of a run") give it: the outcome's own status (13-15), else the
-// integrator's (2-5), else NANOPUSH_SOLVER_FAILED (6); Python's SolverError.status_code is this
-// number and .status its identifier.
+// both report a failure the same way:
+//  - the status of a failed run, as nanopush.h's table and docs/errors.md ("Outcomes of a
+//    run") give it: the outcome's own status (13-15), else the integrator's (2-5), else
+//    NANOPUSH_SOLVER_FAILED (6); Python's SolverError.status_code is this number and .status
+//    its identifier;
+//  - the argument names of bad input: the library names some inputs by the command line's
+//    flags (--goal, --free, ...); a binding that knows the caller's name for them reports that
+//    name instead (with_argument_names).
 #pragma once
 #include <cstring>
+#include <initializer_list>
 #include <string>
 #include <string_view>
 
@@ -83,6 +88,45 @@ inline const char* status_identifier(int status) noexcept {
     case NANOPUSH_LAW_BLOWUP: return "law_blowup";
     case NANOPUSH_ACCURACY_NOT_REACHED: return "accuracy_not_reached";
     default: return "unknown";
+  }
+}
+
+/// A command-line flag of the library's messages and the binding's name for the same input.
+struct ArgumentName {
+  const char* flag;  ///< "--goal"; also matches a field that starts with it and a blank ("--vary surface.mu")
+  const char* name;  ///< "goal"
+};
+
+/// The value and the requirement of `e`'s message "FIELD = VALUE: REQUIREMENT", to throw it
+/// again under another field ("goal = nan,0,0: ..." for "--goal = nan,0,0: ..."); false (value
+/// and requirement unchanged) if the message does not read so.
+inline bool renamed_parts(const InputError& e, std::string& value, std::string& requirement) {
+  const std::string what = e.what();
+  const std::string head = e.field() + " = ";
+  const std::size_t colon = what.find(": ", head.size());
+  if (e.field().empty() || what.compare(0, head.size(), head) != 0 || colon == std::string::npos) return false;
+  // Any ": " splits value and requirement back into the same text.
+  value = what.substr(head.size(), colon - head.size());
+  requirement = what.substr(colon + 2);
+  return true;
+}
+
+/// f(), with an InputError that names a flag of `names` thrown again under the binding's name
+/// for it (with_argument_names({{"--goal", "goal"}}, ...)). Other exceptions pass unchanged.
+template <class F>
+decltype(auto) with_argument_names(std::initializer_list<ArgumentName> names, F&& f) {
+  try {
+    return f();
+  } catch (const InputError& e) {
+    const std::string& field = e.field();
+    for (const ArgumentName& n : names) {
+      const std::size_t len = std::strlen(n.flag);
+      std::string value, requirement;
+      if (field.compare(0, len, n.flag) == 0 && (field.size() == len || field[len] == ' ') &&
+          renamed_parts(e, value, requirement))
+        throw InputError(n.name + field.substr(len), value, requirement);
+    }
+    throw;
   }
 }
 

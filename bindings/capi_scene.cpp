@@ -37,7 +37,8 @@ nanopush_scene nanopush_load_scene(nanopush_error error, const char* path) {
   guarded(error, [&] {
     require_handle(path, "path");
     auto s = std::make_unique<nanopush_scene_s>();
-    s->scene = nanopush::load_scene(path);
+    // The library names the file SCENE (the command line's argument): here it is path.
+    s->scene = nanopush::bindings::with_argument_names({{"SCENE", "path"}}, [&] { return nanopush::load_scene(path); });
     out = s.release();
     return NANOPUSH_OK;
   });

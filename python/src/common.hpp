@@ -15,7 +15,7 @@
 
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/scenes/simulate.hpp"
-// The statuses the C API returns, shared (bindings/binding_errors.hpp).
+// Statuses and argument names shared with the C API (bindings/binding_errors.hpp).
 #include "binding_errors.hpp"
 
 namespace nanopush::python {

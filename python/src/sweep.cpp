@@ -163,10 +163,10 @@ std::vector<std::vector<std::string>> evaluate_polled(const sweep::Plan& plan, c
   return rows;
 }
 
-py::tuple run_sweep(const std::string& task_name, const py::object& scene_obj, const py::list& axes,
-                    const py::object& points, const py::dict& fixed, unsigned jobs, const std::string& engine,
-                    const std::string& method, const std::string& law, const py::object& accuracy,
-                    const py::object& error_estimate, const py::object& progress, const py::object& out) {
+py::tuple run_sweep_named(const std::string& task_name, const py::object& scene_obj, const py::list& axes,
+                          const py::object& points, const py::dict& fixed, unsigned jobs, const std::string& engine,
+                          const std::string& method, const std::string& law, const py::object& accuracy,
+                          const py::object& error_estimate, const py::object& progress, const py::object& out) {
   std::unique_ptr<sweep::Task> task;
   const sweep::TaskKind kind = parse_choice<sweep::TaskKind>("task", task_name);
   if (kind == sweep::TaskKind::run) {
@@ -279,6 +279,21 @@ py::tuple run_sweep(const std::string& task_name, const py::object& scene_obj, c
     return py::make_tuple(py::none(), py::none(), d);
   }
   return sweep_in_memory(plan, *task, jobs, progress);
+}
+
+/// nanopush.sweep: the library names some inputs as `nanopush sweep` does (--vary, --vary-log,
+/// --set, --engine); here they are nanopush.sweep's arguments.
+py::tuple run_sweep(const std::string& task_name, const py::object& scene_obj, const py::list& axes,
+                    const py::object& points, const py::dict& fixed, unsigned jobs, const std::string& engine,
+                    const std::string& method, const std::string& law, const py::object& accuracy,
+                    const py::object& error_estimate, const py::object& progress, const py::object& out) {
+  return bindings::with_argument_names(
+      {{"--vary-log", "vary_log"}, {"--vary", points.is_none() ? "vary" : "points"}, {"--set", "set"},
+       {"--engine", "engine"}},
+      [&] {
+        return run_sweep_named(task_name, scene_obj, axes, points, fixed, jobs, engine, method, law, accuracy,
+                               error_estimate, progress, out);
+      });
 }
 
 }  // namespace

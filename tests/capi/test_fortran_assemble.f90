@@ -74,6 +74,9 @@ program test_fortran_assemble
   call check(stat == NANOPUSH_BAD_INPUT .and. index(msg, "same n") > 0 .and. size(pushes, 1) == 0, "bad shape: " // msg)
   call nanopush_assemble(scene, objects, objects, pushes, max_pushes=0, stat=stat, errmsg=msg)
   call check(stat == NANOPUSH_BAD_INPUT .and. index(msg, "max_pushes") > 0, "bad max_pushes: " // msg)
+  ! The library's --gap named as the argument, gap.
+  call nanopush_assemble(scene, objects, slots, pushes, gap=-1.0_dp, stat=stat, errmsg=msg)
+  call check(stat == NANOPUSH_BAD_INPUT .and. msg == "gap = -1: must be >= 0 (m)", "bad gap: " // msg)
 
   call nanopush_destroy(scene)
   if (allocated(pushes)) deallocate(pushes)

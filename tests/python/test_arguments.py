@@ -229,3 +229,25 @@ def test_right_types_still_convert():
     s = fresh()
     s.set({"solver.samples": 5, "solver.t_end": 1e-9})
     assert nanopush.synthesize(s, (1e-9, 0, 0), np.int64(3)) == nanopush.synthesize(s, (1e-9, 0, 0), 3)
+
+
+def test_the_command_lines_names_are_the_arguments_names(tmp_path):
+    # The library names some inputs by `nanopush fit`'s flags (--free, --law, --sigma, DATA);
+    # nanopush.fit and synthesize report their own argument names (message and .field).
+    s = nanopush.Scene.preset("fig3_18")
+    data = tmp_path / "d.csv"
+    data.write_text("t,x\n0,0\n4e-12,1e-10\n")
+    for kwargs, field, says in [
+            (dict(free=["surface.mu", "surface.mu"]), "free", "free = surface.mu: named twice"),
+            (dict(free="surface.muu"), "free", "free = surface.muu: not a scene key"),
+            (dict(law="printed"), "law", "law = printed: must be thesis or coulomb"),
+            (dict(sigma={"q": 1e-9}), "sigma", "sigma = q=1e-09: the column must be x, y or theta"),
+            (dict(data=tmp_path / "absent.csv"), "data", f"data = {tmp_path / 'absent.csv'}: no such file")]:
+        args = dict(data=data, free="surface.mu", sigma={"x": 1e-9})
+        args.update(kwargs)
+        with pytest.raises(nanopush.InputError) as e:
+            nanopush.fit(s, args.pop("data"), args.pop("free"), **args)
+        assert str(e.value).startswith(says) and e.value.field == field, str(e.value)
+    with pytest.raises(nanopush.InputError, match=r"^law = printed: must be thesis or coulomb") as e:
+        nanopush.synthesize(s, (1e-9, 0.0, 0.0), 1, law="printed")
+    assert e.value.field == "law"

@@ -139,7 +139,10 @@ def test_bad_settings_are_input_errors(cli):
     own.set("solver.method", "modern")
     with pytest.raises(nanopush.InputError) as e:
         nanopush.run(own, engine="f77")
-    assert str(e.value) == msg and "conflicts with the scene's solver.method" in msg
+    # the command line's message under the argument's Python name, engine (not --engine)
+    assert msg.startswith("--engine = f77: ")
+    assert str(e.value) == msg.replace("--engine = ", "engine = ", 1) and e.value.field == "engine"
+    assert "conflicts with the scene's solver.method" in msg
     with pytest.raises(nanopush.InputError, match="rtol"):
         nanopush.run(scene, rtol=-1.0)
     with pytest.raises(nanopush.InputError, match="no preset"):

@@ -129,6 +129,15 @@ def test_an_axis_without_values_is_refused(kwargs, field):
     assert e.value.field == field and str(e.value).startswith(field + " = ")
 
 
+def test_the_command_lines_flags_are_named_as_sweeps_arguments():
+    with pytest.raises(nanopush.InputError, match=r"^vary = surface\.mu=0\.1:0\.2:0: N = 0 must be") as e:
+        nanopush.sweep("fig3_18", vary={"surface.mu": "0.1:0.2:0"}, jobs=1)
+    assert e.value.field == "vary"
+    with pytest.raises(nanopush.InputError, match=r"^vary_log = surface\.mu=0:0\.2:3: a logarithmic range") as e:
+        nanopush.sweep("fig3_18", vary_log={"surface.mu": "0:0.2:3"}, jobs=1)
+    assert e.value.field == "vary_log"
+
+
 def test_gil_released():
     res = assert_runs_without_the_gil(
         lambda: nanopush.sweep("friction", vary={"R": "0:1e-6:400", "alpha": "0:6.28:100"}, jobs=1))
