@@ -658,7 +658,9 @@ contains
   !>   rtol (default or 0: the scene's); atol (default or < 0: the scene's; 0 = automatic);
   !>   counts(3) = (RHS evaluations, accepted steps, rejected steps);
   !>   precision "double", "long" (x87 80-bit) or "quad" (__float128) (default: the scene's
-  !>   [solver] precision; long and quad need engine "cxx" and a smooth scene): traj holds the
+  !>   [solver] precision; long and quad need engine "cxx" and, on a smooth scene, method
+  !>   "faithful", "modern" or "auto", on a rough scene the thesis or coulomb law with method
+  !>   "modern" or "auto" (docs/accuracy.md, "References with more digits")): traj holds the
   !>   values rounded to double, and state_ext(6, nrows), if present, the state
   !>   (x, y, theta, vx, vy, omega) at each output time in kind nanopush_qp, with the digits of
   !>   the integration (to about 1e-32 relative for quad; exact for long and double).

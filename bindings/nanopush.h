@@ -222,8 +222,10 @@ nanopush_trajectory nanopush_run_scene_ex(nanopush_error error, nanopush_scene s
 /* nanopush_run_scene_ex plus
  *   precision: scalar of the integration: "double", "long" (x87 80-bit long double) or "quad"
  *              (__float128, 113-bit); NULL or "" = the scene's [solver] precision (which the
- *              other run functions use too). long and quad: engine "cxx", method "faithful" or
- *              "modern", smooth scenes; otherwise NANOPUSH_BAD_INPUT naming the field. Each
+ *              other run functions use too). long and quad: engine "cxx", and on a smooth
+ *              scene method "faithful", "modern" or "auto", on a rough scene the thesis or
+ *              coulomb law with method "modern" or "auto" (docs/accuracy.md, "References with
+ *              more digits"); otherwise NANOPUSH_BAD_INPUT naming the field. Each
  *              costs more per RHS evaluation (docs/performance.md: ~15x long, ~120x quad).
  * nanopush_trajectory_get_data then returns the values rounded to double; the extended
  * digits come from nanopush_trajectory_get_state_extended. */

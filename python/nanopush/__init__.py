@@ -185,13 +185,16 @@ def run(scene, engine=None, method=None, law=None, rtol=None, atol=None, precisi
                ``"cvode"`` (rough scenes under the coulomb law) or ``"auto"`` (by rtol);
                default: the scene's (``"auto"`` unless it states one; the thesis
                presets state ``"faithful"``)
-    law        rough scenes: ``"thesis"`` (eq 3.40 sign law) or ``"coulomb"`` (event-located
-               stick-slip); default: the scene's surface.law
+    law        rough scenes: ``"thesis"`` (eq 3.40 sign law), ``"printed"`` (the same with eqs
+               3.45-3.48 as printed) or ``"coulomb"`` (event-located stick-slip;
+               docs/rough.md); default: the scene's surface.law
     rtol       relative tolerance (> 0); default: the scene's solver.rtol
     atol       absolute tolerance [SI of each state] (>= 0; 0 = rtol times each component's
                natural scale); default: the scene's
-    precision  ``"double"``, ``"long"`` or ``"quad"`` (C++ engine, smooth scenes); default:
-               the scene's
+    precision  ``"double"``, ``"long"`` or ``"quad"``; long and quad need the C++ engine and
+               either a smooth scene (method faithful, modern or auto) or a rough scene under
+               the thesis or coulomb law with method modern or auto (docs/accuracy.md,
+               "References with more digits"); default: the scene's
     accuracy   the error asked for of the final pose (docs/accuracy.md), in [1e-14, 0.1]:
                rtol (and under method auto the method) is chosen to reach it; 0 = none
                (run at rtol); default: the scene's solver.accuracy. Not reached: SolverError

@@ -1,7 +1,8 @@
 /* The error estimate, --accuracy and the outcomes from C (docs/accuracy.md, docs/errors.md):
  * nanopush_run_scene_accuracy, nanopush_trajectory_get_error, nanopush_trajectory_get_outcome
  * and the statuses NANOPUSH_NO_STATIC_FRICTION / NANOPUSH_LAW_BLOWUP / NANOPUSH_ACCURACY_NOT_REACHED /
- * NANOPUSH_TOO_MANY_STEPS (a model's step budget), error_estimate's range.
+ * NANOPUSH_TOO_MANY_STEPS (a model's step budget), error_estimate's range, extended precision on
+ * a rough scene.
  * Usage: test_capi_accuracy ROUGH_SCENE.toml (fig3_18) */
 #include <math.h>
 #include <stdio.h>
@@ -73,6 +74,15 @@ int main(int argc, char** argv) {
   t = nanopush_run_scene_accuracy(err, scene, NULL, NULL, "coulomb", NULL, 0.0, -1.0, 0.0, -7);
   CHECK(t != NULL && nanopush_check_error(err) == NANOPUSH_OK); /* < 0: the scene's */
   nanopush_delete_trajectory(&t);
+
+  /* Extended precision on a rough scene (thesis or coulomb law, method modern): as the header
+   * says (docs/accuracy.md, "References with more digits"). */
+  char precision[16];
+  t = nanopush_run_scene_accuracy(err, scene, NULL, "modern", "coulomb", "long", 0.0, -1.0, 0.0, 0);
+  CHECK(t != NULL && nanopush_trajectory_get_precision(err, t, precision, sizeof precision) == 4 &&
+        strcmp(precision, "long") == 0);
+  nanopush_delete_trajectory(&t);
+  nanopush_clear_error(err);
 
   /* The printed law's blowup: NANOPUSH_LAW_BLOWUP (a point of fig3_18's mu x yn grid where
    * its friction injects energy, tests/test_accuracy.cpp). */

@@ -30,6 +30,9 @@ program test_fortran_accuracy
   call check(stat == NANOPUSH_ACCURACY_NOT_REACHED, "accuracy 1e-14 not reached: " // msg)
   ! a failed run names its outcome, as C's status and Python's SolverError.outcome do (it was "")
   call check(outcome == "accuracy_not_reached", "outcome accuracy_not_reached: '" // outcome // "'")
+  call nanopush_run(scene, traj, law="coulomb", method="modern", outcome=outcome, &
+                    precision="long", error_estimate=.false., stat=stat, errmsg=msg)
+  call check(stat == 0 .and. outcome == "ok", "a rough scene in long double (coulomb law, modern): " // msg)
   call nanopush_run(scene, traj, engine="gpu", outcome=outcome, stat=stat, errmsg=msg)
   call check(stat == NANOPUSH_BAD_INPUT .and. outcome == "", "no run made, no outcome: '" // outcome // "'")
   call nanopush_scene_set(scene, "push.force", 1d-7, stat=stat, errmsg=msg)

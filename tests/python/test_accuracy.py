@@ -97,3 +97,17 @@ def test_a_failed_sweep_point_reports_the_c_apis_status():
         nanopush.sweep("fig3_18", vary={"push.force": [1e-7]}, law="thesis", check=True, jobs=1)
     assert (e.value.outcome, e.value.status, e.value.status_code) == ("no_static_friction", "no_static_friction", 13)
     assert len(e.value.partial) == 1
+
+
+def test_extended_precision_runs_rough_scenes_as_documented():
+    # long and quad are not for smooth scenes only: a rough scene under the thesis or coulomb
+    # law runs in them with the modern method, or auto, which picks it (docs/accuracy.md,
+    # "References with more digits"); run's docstring says so, and names the printed law.
+    for law, method in [("coulomb", "modern"), ("thesis", "auto")]:
+        r = nanopush.run("fig3_18", law=law, method=method, precision="long", error_estimate=False)
+        assert r.precision == "long" and r.engine == f"cxx-modern-{law}-long" and r.complete
+    with pytest.raises(nanopush.InputError, match=r"^precision = long: long and quad need .* \(the printed law's"):
+        nanopush.run("fig3_18", law="printed", method="modern", precision="long")
+    doc = nanopush.run.__doc__
+    assert "smooth scenes)" not in doc and "rough scene under\n               the thesis or coulomb law" in doc
+    assert '``"printed"``' in doc
