@@ -53,39 +53,44 @@ extern "C" {
 int nanopush_fit_trajectory(nanopush_error error, nanopush_scene scene, const char* data_path, const char* free_keys,
                             const char* law, const char* sigma, int nfree, double* values, double* stderrs,
                             double* summary, int* converged, char* json, int json_size, int* json_length) {
+  // The library names some inputs as `nanopush fit` does (--free, --law, --sigma, DATA): here
+  // they are this function's arguments.
   return guarded(error, [&] {
-    require_handle(scene, "scene");
-    require_handle(data_path, "data_path");
-    require_handle(free_keys, "free_keys");
-    if (json_size < 0) throw nanopush::InputError("json_size", std::to_string(json_size), "must be >= 0");
-    if (json_size > 0) require_handle(json, "json");
-    fit::FitOptions o;
-    o.free = split_list(free_keys, "free_keys");
-    o.law = nanopush::parse_optional_choice<nanopush::Law>("--law", opt_string(law));
-    if (nfree < static_cast<int>(o.free.size()))
-      throw StatusError(NANOPUSH_BUFFER_TOO_SMALL, "nfree = " + std::to_string(nfree) + ": values and stderrs hold " +
-                                                       "fewer than the " + std::to_string(o.free.size()) + " free keys");
-    const fit::Observations obs = fit::read_observations(data_path, sigma_overrides(sigma));
-    const fit::FitResult r = fit::fit_trajectory(scene->scene, obs, o);
-    const std::string text = fit::fit_json(r);
-    // everything computed: store
-    for (std::size_t k = 0; k < r.parameters.size(); ++k) {
-      if (values) values[k] = r.parameters[k].value;
-      if (stderrs) stderrs[k] = r.parameters[k].stderr_;
-    }
-    if (summary) {
-      const double s[NANOPUSH_FIT_SUMMARY_SIZE] = {r.chi2,
-                                                   r.chi2_dof,
-                                                   static_cast<double>(r.dof),
-                                                   static_cast<double>(r.iterations),
-                                                   static_cast<double>(r.n_forward_solves),
-                                                   r.identifiability.identifiable ? 1.0 : 0.0};
-      std::copy(s, s + NANOPUSH_FIT_SUMMARY_SIZE, summary);
-    }
-    if (converged) *converged = r.converged ? 1 : 0;
-    const int len = copy_string(text, json, json_size);
-    if (json_length) *json_length = len;
-    return NANOPUSH_OK;
+    return nanopush::bindings::with_argument_names(
+        {{"--free", "free_keys"}, {"--law", "law"}, {"--sigma", "sigma"}, {"DATA", "data_path"}}, [&] {
+      require_handle(scene, "scene");
+      require_handle(data_path, "data_path");
+      require_handle(free_keys, "free_keys");
+      if (json_size < 0) throw nanopush::InputError("json_size", std::to_string(json_size), "must be >= 0");
+      if (json_size > 0) require_handle(json, "json");
+      fit::FitOptions o;
+      o.free = split_list(free_keys, "free_keys");
+      o.law = nanopush::parse_optional_choice<nanopush::Law>("law", opt_string(law));
+      if (nfree < static_cast<int>(o.free.size()))
+        throw StatusError(NANOPUSH_BUFFER_TOO_SMALL, "nfree = " + std::to_string(nfree) + ": values and stderrs hold " +
+                                                         "fewer than the " + std::to_string(o.free.size()) + " free keys");
+      const fit::Observations obs = fit::read_observations(data_path, sigma_overrides(sigma));
+      const fit::FitResult r = fit::fit_trajectory(scene->scene, obs, o);
+      const std::string text = fit::fit_json(r);
+      // everything computed: store
+      for (std::size_t k = 0; k < r.parameters.size(); ++k) {
+        if (values) values[k] = r.parameters[k].value;
+        if (stderrs) stderrs[k] = r.parameters[k].stderr_;
+      }
+      if (summary) {
+        const double s[NANOPUSH_FIT_SUMMARY_SIZE] = {r.chi2,
+                                                     r.chi2_dof,
+                                                     static_cast<double>(r.dof),
+                                                     static_cast<double>(r.iterations),
+                                                     static_cast<double>(r.n_forward_solves),
+                                                     r.identifiability.identifiable ? 1.0 : 0.0};
+        std::copy(s, s + NANOPUSH_FIT_SUMMARY_SIZE, summary);
+      }
+      if (converged) *converged = r.converged ? 1 : 0;
+      const int len = copy_string(text, json, json_size);
+      if (json_length) *json_length = len;
+      return NANOPUSH_OK;
+    });
   });
 }
 

@@ -17,6 +17,7 @@
 #include "nanopush/scenes/scene.hpp"
 #include "nanopush/engines/engines.hpp"
 #include "nanopush/models/icor.hpp"
+#include "binding_errors.hpp"
 
 struct nanopush_error_s {
   int status = NANOPUSH_OK;
@@ -62,14 +63,6 @@ inline int record(nanopush_error err, int status, const char* message) noexcept 
   return status;
 }
 
-/// Status code for a SolverError from run_scene: its message quotes to_string(BsStatus).
-inline int solver_status(const char* what) noexcept {
-  for (const BsStatus s : {BsStatus::too_many_steps, BsStatus::step_underflow, BsStatus::rhs_failed,
-                           BsStatus::not_finite})
-    if (std::strstr(what, to_string(s))) return static_cast<int>(s);
-  return NANOPUSH_SOLVER_FAILED;
-}
-
 /// Run f() (returning a status) and translate any exception into a status + message.
 template <class F>
 int guarded(nanopush_error err, F&& f) noexcept {
@@ -80,10 +73,9 @@ int guarded(nanopush_error err, F&& f) noexcept {
   } catch (const InputError& e) {
     return record(err, NANOPUSH_BAD_INPUT, e.what());
   } catch (const SolverError& e) {
-    if (e.outcome() == "no_static_friction") return record(err, NANOPUSH_NO_STATIC_FRICTION, e.what());
-    if (e.outcome() == "law_blowup") return record(err, NANOPUSH_LAW_BLOWUP, e.what());
-    if (e.outcome() == "accuracy_not_reached") return record(err, NANOPUSH_ACCURACY_NOT_REACHED, e.what());
-    return record(err, solver_status(e.what()), e.what());
+    // The outcome's status (13-15), else the integrator's (2-5), else 6: as Python's
+    // SolverError.status_code (binding_errors.hpp).
+    return record(err, nanopush::bindings::solver_status_code(e), e.what());
   } catch (const std::bad_alloc&) {
     return record(err, NANOPUSH_OUT_OF_MEMORY, "out of memory");
   } catch (const std::exception& e) {

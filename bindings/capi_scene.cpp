@@ -37,7 +37,8 @@ nanopush_scene nanopush_load_scene(nanopush_error error, const char* path) {
   guarded(error, [&] {
     require_handle(path, "path");
     auto s = std::make_unique<nanopush_scene_s>();
-    s->scene = nanopush::load_scene(path);
+    // The library names the file SCENE (the command line's argument): here it is path.
+    s->scene = nanopush::bindings::with_argument_names({{"SCENE", "path"}}, [&] { return nanopush::load_scene(path); });
     out = s.release();
     return NANOPUSH_OK;
   });
@@ -148,7 +149,11 @@ nanopush_trajectory nanopush_run_scene_accuracy(nanopush_error error, nanopush_s
     nanopush::require_finite("accuracy", accuracy);
     if (accuracy > 0) nanopush::require_range("accuracy", accuracy, nanopush::kAccuracyMin, nanopush::kAccuracyMax);
     rs.accuracy = accuracy < 0 ? -1.0 : accuracy;
-    if (error_estimate >= 0) rs.error_estimate = error_estimate != 0;
+    if (error_estimate > 1)
+      throw nanopush::InputError("error_estimate", std::to_string(error_estimate),
+                                 "must be 1 (estimate the error), 0 (do not) or < 0 (the scene's "
+                                 "solver.error_estimate)");
+    if (error_estimate >= 0) rs.error_estimate = error_estimate == 1;
     auto t = std::make_unique<nanopush_trajectory_s>();
     t->trajectory = nanopush::run_engine(scene->scene, rs);
     out = t.release();

@@ -658,13 +658,18 @@ contains
   !>   rtol (default or 0: the scene's); atol (default or < 0: the scene's; 0 = automatic);
   !>   counts(3) = (RHS evaluations, accepted steps, rejected steps);
   !>   precision "double", "long" (x87 80-bit) or "quad" (__float128) (default: the scene's
-  !>   [solver] precision; long and quad need engine "cxx" and a smooth scene): traj holds the
+  !>   [solver] precision; long and quad need engine "cxx" and, on a smooth scene, method
+  !>   "faithful", "modern" or "auto", on a rough scene the thesis or coulomb law with method
+  !>   "modern" or "auto" (docs/accuracy.md, "References with more digits")): traj holds the
   !>   values rounded to double, and state_ext(6, nrows), if present, the state
   !>   (x, y, theta, vx, vy, omega) at each output time in kind nanopush_qp, with the digits of
   !>   the integration (to about 1e-32 relative for quad; exact for long and double).
   !>   accuracy: the error asked for of the final pose, in [1e-14, 0.1] (0: none; default: the
   !>   scene's solver.accuracy); error_estimate: estimate the error (default: the scene's);
-  !>   error(NANOPUSH_ERROR_SIZE): the estimate (docs/accuracy.md); outcome: "ok" or "at_rest".
+  !>   error(NANOPUSH_ERROR_SIZE): the estimate (docs/accuracy.md); outcome: "ok" or "at_rest";
+  !>   for a failed run the outcome its stat stands for (docs/errors.md): "no_static_friction",
+  !>   "law_blowup", "accuracy_not_reached" (stat 13-15) or "solver_failure" (stat 2-6), and ""
+  !>   when no run was made (bad input, a null scene).
   !> On failure traj (and state_ext) are allocated with zero columns.
   subroutine nanopush_run(scene, traj, engine, method, rtol, atol, counts, stat, errmsg, law, &
                           precision, state_ext, accuracy, error_estimate, error, outcome)
@@ -730,7 +735,9 @@ contains
     if (present(counts)) counts = cnt
     if (present(error)) error = est
     if (present(outcome)) then
-      if (.not. allocated(outcome)) outcome = ""
+      ! A failed run: the outcome its status stands for, as C's status and Python's
+      ! SolverError.outcome give it (docs/errors.md); "" when no run was made (bad input).
+      if (.not. allocated(outcome)) outcome = failed_outcome(err)
     end if
     call finish(err, "nanopush_run", msg, stat)
     if (present(errmsg)) errmsg = msg
@@ -1448,7 +1455,8 @@ contains
   !> Several bars of the scene's kind from objects(3, n) into slots(3, n) (columns x, y, theta),
   !> as `nanopush assemble` (docs/planning.md): pushes(k, 1:10) the pushes in the order made
   !> (bar, slot, then nanopush_plan's eight columns), slot_of(n) each bar's slot, final(3, n)
-  !> where each bar ends, assembled every bar in its slot.
+  !> where each bar ends, assembled every bar in its slot. slot_of and final, when given, must
+  !> have exactly those shapes (n = size(objects, 2)): another size is NANOPUSH_BAD_INPUT naming it.
   subroutine nanopush_assemble(scene, objects, slots, pushes, slot_of, final, assembled, tolerance, max_pushes, &
                                gap, stat, errmsg)
     type(nanopush_scene), intent(in) :: scene
@@ -1480,10 +1488,22 @@ contains
     slots_c = 0
     k = 0
     done = 0
+    msg = ""
+    ! Shapes are Fortran's to check (C reads 3 n values of each and writes n of slot_of and
+    ! final): a mismatch is bad input, nothing read or written beyond an array.
     if (size(objects, 1) /= 3 .or. size(slots, 1) /= 3 .or. size(slots, 2) /= n) then
-      ! Shapes are Fortran's to check (C reads 3 n values of each): a mismatch is bad input.
-      st = NANOPUSH_BAD_INPUT
       msg = "objects, slots: must be (3, n) arrays of the same n (columns x, y, theta)"
+    else if (present(slot_of)) then
+      if (size(slot_of) /= n) msg = "size(slot_of) = " // shape_text([size(slot_of)]) // &
+                                    ": must be n = " // shape_text([int(n)]) // " (one slot per bar)"
+    end if
+    if (len(msg) == 0 .and. present(final)) then
+      if (size(final, 1) /= 3 .or. size(final, 2) /= n) &
+        msg = "shape(final) = " // shape_text(shape(final)) // ": must be (3, n) = " // shape_text([3, int(n)]) // &
+              " (x, y, theta of each bar)"
+    end if
+    if (len(msg) > 0) then
+      st = NANOPUSH_BAD_INPUT
       if (present(stat)) then
         stat = st
       else
@@ -1505,13 +1525,52 @@ contains
     else
       allocate (pushes(0, 10))
     end if
-    if (present(slot_of) .and. st == NANOPUSH_OK) slot_of = int(slots_c(1:size(slot_of)))
-    if (present(final) .and. st == NANOPUSH_OK) final = ends(:, 1:size(final, 2))
+    if (present(slot_of) .and. st == NANOPUSH_OK) slot_of = int(slots_c(1:n))
+    if (present(final) .and. st == NANOPUSH_OK) final = ends(:, 1:n)
     if (present(assembled)) assembled = st == NANOPUSH_OK .and. done == 1
     if (present(errmsg)) errmsg = msg
   end subroutine nanopush_assemble
 
   ! ---- helpers --------------------------------------------------------------------------
+
+  !> The outcome of a run that failed with the status held by err (docs/errors.md, "Outcomes
+  !> of a run"): no_static_friction, law_blowup, accuracy_not_reached (13-15), solver_failure
+  !> (2-6); "" for any other status (the run was not made).
+  function failed_outcome(err) result(name)
+    type(c_ptr), intent(in) :: err
+    character(len=:), allocatable :: name
+    integer :: st
+    st = NANOPUSH_OUT_OF_MEMORY
+    if (c_associated(err)) st = int(c_check_error(err))
+    select case (st)
+    case (NANOPUSH_NO_STATIC_FRICTION)
+      name = "no_static_friction"
+    case (NANOPUSH_LAW_BLOWUP)
+      name = "law_blowup"
+    case (NANOPUSH_ACCURACY_NOT_REACHED)
+      name = "accuracy_not_reached"
+    case (NANOPUSH_TOO_MANY_STEPS, NANOPUSH_STEP_UNDERFLOW, NANOPUSH_RHS_FAILED, NANOPUSH_NOT_FINITE, &
+          NANOPUSH_SOLVER_FAILED)
+      name = "solver_failure"
+    case default
+      name = ""
+    end select
+  end function failed_outcome
+
+  !> The extents of an array shape as text: "5" or "(3, 5)".
+  function shape_text(extents) result(s)
+    integer, intent(in) :: extents(:)
+    character(len=:), allocatable :: s
+    character(len=24) :: buf
+    integer :: k
+    s = ""
+    do k = 1, size(extents)
+      write (buf, '(i0)') extents(k)
+      if (k > 1) s = s // ", "
+      s = s // trim(buf)
+    end do
+    if (size(extents) > 1) s = "(" // s // ")"
+  end function shape_text
 
   !> Quiet NaN: the value of an output that a failed call did not produce.
   real(dp) function nan()

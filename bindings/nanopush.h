@@ -52,6 +52,9 @@ int nanopush_get_api_version(void);
 #define NANOPUSH_NO_STATIC_FRICTION 13  /* thesis/printed law: the object is at rest inside the limit surface */
 #define NANOPUSH_LAW_BLOWUP 14          /* printed law: its friction injected energy and the run blew up */
 #define NANOPUSH_ACCURACY_NOT_REACHED 15 /* the accuracy asked for could not be met (message: best estimate) */
+/* Any other failed run returns the integrator's status, 2..5 (a model's step budget spent, as
+ * the dynamic tip model's, is NANOPUSH_TOO_MANY_STEPS), else NANOPUSH_SOLVER_FAILED; Python's
+ * SolverError.status_code is the same number for the same run. */
 
 /* Short fixed description of a status code ("bad input", ...); never NULL, static storage. */
 const char* nanopush_status_name(int status);
@@ -219,8 +222,10 @@ nanopush_trajectory nanopush_run_scene_ex(nanopush_error error, nanopush_scene s
 /* nanopush_run_scene_ex plus
  *   precision: scalar of the integration: "double", "long" (x87 80-bit long double) or "quad"
  *              (__float128, 113-bit); NULL or "" = the scene's [solver] precision (which the
- *              other run functions use too). long and quad: engine "cxx", method "faithful" or
- *              "modern", smooth scenes; otherwise NANOPUSH_BAD_INPUT naming the field. Each
+ *              other run functions use too). long and quad: engine "cxx", and on a smooth
+ *              scene method "faithful", "modern" or "auto", on a rough scene the thesis or
+ *              coulomb law with method "modern" or "auto" (docs/accuracy.md, "References with
+ *              more digits"); otherwise NANOPUSH_BAD_INPUT naming the field. Each
  *              costs more per RHS evaluation (docs/performance.md: ~15x long, ~120x quad).
  * nanopush_trajectory_get_data then returns the values rounded to double; the extended
  * digits come from nanopush_trajectory_get_state_extended. */
@@ -237,7 +242,8 @@ int nanopush_trajectory_get_precision(nanopush_error error, nanopush_trajectory 
  *                   < 0 = the scene's solver.accuracy. Not reached: NANOPUSH_ACCURACY_NOT_REACHED
  *                   with the best estimate in the message.
  *   error_estimate: 1 estimate the error of the answer (a companion run at rtol/100), 0 do not,
- *                   < 0 the scene's solver.error_estimate (the other run functions use the scene's). */
+ *                   < 0 the scene's solver.error_estimate (the other run functions use the scene's);
+ *                   any other value is NANOPUSH_BAD_INPUT naming error_estimate. */
 nanopush_trajectory nanopush_run_scene_accuracy(nanopush_error error, nanopush_scene scene, const char* engine,
                                                 const char* method, const char* law, const char* precision,
                                                 double rtol, double atol, double accuracy, int error_estimate);

@@ -98,7 +98,7 @@ def module_stub(module, names, extra=""):
                 out.append(f"class {name}(ValueError):\n    field: str\n    index: Optional[Tuple[int, ...]]")
             elif issubclass(obj, BaseException):
                 out.append(f"class {name}(RuntimeError):\n    status: str\n    outcome: str\n"
-                           "    status_code: Optional[int]\n    t_reached: Optional[float]\n    partial: Optional[Result]")
+                           "    status_code: int\n    t_reached: Optional[float]\n    partial: Optional[Result]")
             else:
                 out.append(class_stub(name, obj))
         elif inspect.ismodule(obj):

@@ -49,13 +49,18 @@ from . import _scenes
 from . import _signatures
 from . import icor  # noqa: F401
 
-# Every compiled callable with a signature inspect.signature reads (help(), IDEs).
-estimate_mu = _signatures.function(_nanopush.estimate_mu)
-estimate_mu_batch = _signatures.function(_nanopush.estimate_mu_batch)
-friction_from_velocity = _signatures.function(_nanopush.friction_from_velocity)
-friction_wrench = _signatures.function(_nanopush.friction_wrench)
-scene_keys = _signatures.function(_nanopush.scene_keys)
-synthesize = _signatures.function(_nanopush.synthesize)
+# Every compiled callable with a signature inspect.signature reads (help(), IDEs), and
+# pybind11's argument conversion failures raised as InputError naming the argument: the
+# module's functions (the package's own calls to _nanopush._run, ... included), methods and
+# constructors (_signatures).
+_signatures.module(_nanopush)
+_signatures.module(_nanopush.icor)
+estimate_mu = _nanopush.estimate_mu
+estimate_mu_batch = _nanopush.estimate_mu_batch
+friction_from_velocity = _nanopush.friction_from_velocity
+friction_wrench = _nanopush.friction_wrench
+scene_keys = _nanopush.scene_keys
+synthesize = _nanopush.synthesize
 for _cls in (FitResult, MuBatch, MuEstimate, MuEstimates, PlanResult, Result, Scene, Wrench):
     _signatures.methods(_cls)
 FitResult.report = _fitting.report
@@ -113,15 +118,27 @@ def _count(name, value):
     return v
 
 
-def _resolve_preset(name):
+def _mapping(name, value, form):
+    """A dict argument (None: empty); InputError naming `name` for anything else."""
+    if value is None:
+        return {}
+    if not isinstance(value, dict):
+        raise _input_error(f"{name} = {value!r:.80}: must be a dict {form}", name)
+    return dict(value)
+
+
+def _resolve_preset(name, field="name"):
     """The file of a preset name, found by the rule of ``nanopush run`` (the library's
     find_preset: NAME.toml or NAME under scenes_dir(), then its thesis/, bench/ and examples/
-    folders)."""
+    folders); InputError naming the argument `field` otherwise."""
+    if not isinstance(name, (str, _os.PathLike)):
+        raise _input_error(f"{field} = {name!r:.80}: must be a preset name (text; nanopush.presets() lists them)",
+                           field)
     d = scenes_dir()
-    found = _nanopush._find_preset(str(d), name)
+    found = _nanopush._find_preset(str(d), _os.fspath(name))
     if found is None:
-        raise _input_error(f"SCENE = {name}: no preset of that name under {d} (nanopush.presets() lists them)",
-                           "SCENE")
+        raise _input_error(f"{field} = {name}: no preset of that name under {d} (nanopush.presets() lists them)",
+                           field)
     return _pathlib.Path(found)
 
 
@@ -149,7 +166,7 @@ def _as_scene(scene):
         p = _pathlib.Path(scene)
         if p.is_file():
             return Scene.from_file(str(p))
-        return _preset(str(scene))
+        return Scene.from_file(str(_resolve_preset(str(scene), "scene")))
     raise _input_error(f"scene = {scene!r:.80}: must be a nanopush.Scene, a preset name or a scene file", "scene")
 
 
@@ -168,13 +185,16 @@ def run(scene, engine=None, method=None, law=None, rtol=None, atol=None, precisi
                ``"cvode"`` (rough scenes under the coulomb law) or ``"auto"`` (by rtol);
                default: the scene's (``"auto"`` unless it states one; the thesis
                presets state ``"faithful"``)
-    law        rough scenes: ``"thesis"`` (eq 3.40 sign law) or ``"coulomb"`` (event-located
-               stick-slip); default: the scene's surface.law
+    law        rough scenes: ``"thesis"`` (eq 3.40 sign law), ``"printed"`` (the same with eqs
+               3.45-3.48 as printed) or ``"coulomb"`` (event-located stick-slip;
+               docs/rough.md); default: the scene's surface.law
     rtol       relative tolerance (> 0); default: the scene's solver.rtol
     atol       absolute tolerance [SI of each state] (>= 0; 0 = rtol times each component's
                natural scale); default: the scene's
-    precision  ``"double"``, ``"long"`` or ``"quad"`` (C++ engine, smooth scenes); default:
-               the scene's
+    precision  ``"double"``, ``"long"`` or ``"quad"``; long and quad need the C++ engine and
+               either a smooth scene (method faithful, modern or auto) or a rough scene under
+               the thesis or coulomb law with method modern or auto (docs/accuracy.md,
+               "References with more digits"); default: the scene's
     accuracy   the error asked for of the final pose (docs/accuracy.md), in [1e-14, 0.1]:
                rtol (and under method auto the method) is chosen to reach it; 0 = none
                (run at rtol); default: the scene's solver.accuracy. Not reached: SolverError
@@ -466,9 +486,9 @@ def sweep(task, vary=None, *, vary_log=None, points=None, set=None, jobs=0, engi
               e.g. {"a": 27.5e-9, "b": 50e-9}, otherwise)
     jobs      threads (0: every core); the table is the same for any number
     engine, method, law, accuracy, error_estimate   the run task's, as for nanopush.run
-    check     raise nanopush.SolverError if any point failed, with .status the first failed
-              point's and .partial the whole table (default: keep the status and message
-              of each point in the table)
+    check     raise nanopush.SolverError if any point failed, with .outcome, .status and
+              .status_code the first failed point's (as for nanopush.run) and .partial the
+              whole table (default: keep the status and message of each point in the table)
     progress  a callable progress(done, total), called about twice a second and at the end
               (from the calling thread); an exception it raises stops the sweep
     out       a path: the table goes to that CSV file (and its sidecar) as ``nanopush sweep
@@ -489,22 +509,27 @@ def sweep(task, vary=None, *, vary_log=None, points=None, set=None, jobs=0, engi
         raise _input_error("task = run: a run sweep takes a scene (nanopush.Scene, a preset name or a file)", "task")
     else:
         scene, name = _as_scene(task), "run"
-    axes = [(k, v, False) for k, v in (vary or {}).items()]
-    axes += [(k, v, True) for k, v in (vary_log or {}).items()]
+    axes = [(k, v, False) for k, v in _mapping("vary", vary, "{key: values}").items()]
+    axes += [(k, v, True) for k, v in _mapping("vary_log", vary_log, "{key: 'FROM:TO:N'}").items()]
+    if points is not None:
+        points = _mapping("points", points, "{key: values} of equal lengths")
     if out is not None:
         if check:
             raise _input_error("check = True: give it without out (read the failed rows from the file)", "check")
         out = _os.fspath(out)
-    names, units, data = _nanopush._sweep(name, scene, axes, points, dict(set or {}), _count("jobs", jobs),
-                                         engine or "", method or "", law or "", accuracy, error_estimate,
-                                         progress, out)
+    names, units, data = _nanopush._sweep(name, scene, axes, points, _mapping("set", set, "{key: value}"),
+                                         _count("jobs", jobs), engine or "", method or "", law or "", accuracy,
+                                         error_estimate, progress, out)
     if out is not None:
         return SweepFile(data)
     res = SweepResult(names, units, data)
     if check and res.failed:
         bad = [i for i, ok in enumerate(res.ok) if not ok]
+        outcome, message = str(res.status[bad[0]]), str(res.message[bad[0]])
         e = SolverError(f"sweep: {res.failed} of {len(res)} points failed; first, point {bad[0]}: "
-                        f"{res.status[bad[0]]}: {res.message[bad[0]]}")
-        e.status, e.status_code, e.t_reached, e.partial = str(res.status[bad[0]]), None, None, res
+                        f"{outcome}: {message}")
+        # the first failed point's status as the C API gives it for the same run
+        e.status_code, e.status = _nanopush._status_code(outcome, message)
+        e.outcome, e.t_reached, e.partial = outcome, None, res
         raise e
     return res

@@ -363,7 +363,7 @@ class InputError(ValueError):
 class SolverError(RuntimeError):
     status: str
     outcome: str
-    status_code: Optional[int]
+    status_code: int
     t_reached: Optional[float]
     partial: Optional[Result]
 

@@ -54,7 +54,10 @@ dynamic = _icor.dynamic
 error_analysis = _icor.error_analysis
 thesis_table_5_1 = _icor.thesis_table_5_1
 
-# Signatures inspect.signature reads (the compiled functions carry theirs in the docstring).
+# Signatures inspect.signature reads (the compiled functions carry theirs in the docstring)
+# and pybind11's argument conversion failures raised as InputError naming the argument
+# (_signatures): the functions, and the classes' methods and constructors
+# (inspect.signature(Rod) reads Rod.__init__'s).
 for _name, _f in list(globals().items()):
     if not _name.startswith("_") and type(_f).__name__ == "builtin_function_or_method":
         globals()[_name] = _signatures.function(_f, _name)

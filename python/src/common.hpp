@@ -15,6 +15,8 @@
 
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/scenes/simulate.hpp"
+// Statuses and argument names shared with the C API (bindings/binding_errors.hpp).
+#include "binding_errors.hpp"
 
 namespace nanopush::python {
 
@@ -51,8 +53,11 @@ std::string status_name(BsStatus s);
 /// Array-or-number argument, converted to float64 (no copy when it already is one).
 using DArray = py::array_t<double, py::array::forcecast>;
 
-/// `obj` as a float64 array; InputError naming `name` if it is not numeric.
+/// `obj` as a float64 array; InputError naming `name` if it is not numeric, or complex.
 DArray as_double_array(const py::handle& obj, const char* name);
+/// InputError naming `name` if `obj` is a complex NumPy array or scalar (forcecast would keep
+/// its real part alone).
+void refuse_complex(const py::handle& obj, const std::string& name);
 
 /// Arguments converted with checks, as every front end does (issue 34, item 5): a NumPy scalar
 /// or a 0-d array is its Python value; anything of the wrong type is an InputError naming the
@@ -66,6 +71,17 @@ double arg_double(const py::handle& v, const std::string& name);
 bool arg_bool(const py::handle& v, const std::string& name);
 /// Text (str, or a path-like object for paths).
 std::string arg_text(const py::handle& v, const std::string& name);
+/// A whole number in [lo, hi] (int, NumPy integer, 0-d integer array; not bool, not a float, not
+/// text): InputError naming `name` and the range otherwise, whatever its size.
+long long arg_integer(const py::handle& v, const std::string& name, long long lo, long long hi);
+
+/// An integer argument that pybind11 hands over unconverted (its signature still reads `int`),
+/// for the function to convert with its range by arg_integer: a float, a negative number for a
+/// count or one past 64 bits is then an InputError naming the argument and the range, not
+/// pybind11's TypeError "incompatible function arguments".
+struct Whole {
+  py::object value;
+};
 
 /// A NumPy scalar for a 0-d result, else the array itself.
 py::object scalar_or_array(const py::array_t<double>& a);
@@ -171,6 +187,19 @@ std::array<py::array_t<double>, NOut> broadcast_apply(const std::array<py::handl
 }
 
 }  // namespace nanopush::python
+
+namespace pybind11::detail {
+/// Any object loads as a nanopush::python::Whole (annotated `int`); arg_integer converts it.
+template <>
+struct type_caster<nanopush::python::Whole> {
+  PYBIND11_TYPE_CASTER(nanopush::python::Whole, const_name("int"));
+  bool load(handle src, bool) {
+    value.value = reinterpret_borrow<object>(src);
+    return true;
+  }
+  static handle cast(const nanopush::python::Whole& w, return_value_policy, handle) { return w.value.inc_ref(); }
+};
+}  // namespace pybind11::detail
 
 namespace nanopush::sweep {
 struct Plan;

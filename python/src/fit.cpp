@@ -79,22 +79,28 @@ py::array_t<double> covariance(const fit::FitResult& r) {
 /// `data` is a path (str or path-like), or CSV text when `text` is true (the Python package
 /// writes a dict, a structured array or a DataFrame as CSV, shortest round-trip numbers).
 PyFit fit_scene(const Scene& scene, const py::object& data, const py::object& free, const std::string& law,
-                const py::object& sigma, const std::string& gradients, double rtol, int max_evaluations,
+                const py::object& sigma, const std::string& gradients, double rtol, const Whole& max_evaluations,
                 double accuracy, bool text) {
-  fit::FitOptions o;
-  o.accuracy = accuracy;
-  o.free = keys_of(free);
-  o.law = parse_optional_choice<Law>("--law", law);
-  o.gradients = parse_choice<fit::Gradients>("gradients", gradients);
-  o.rtol = rtol;
-  o.max_evaluations = max_evaluations;
-  const auto overrides = sigma_of(sigma);
-  const std::string arg = arg_text(data, "data");
-  py::gil_scoped_release release;
-  PyFit out;
-  out.obs = text ? fit::parse_observations(arg, "data", overrides) : fit::read_observations(arg, overrides);
-  out.r = fit::fit_trajectory(scene, out.obs, o);
-  return out;
+  // The library names some inputs as `nanopush fit` does (--free, --law, --sigma, DATA): here
+  // they are nanopush.fit's arguments.
+  const std::initializer_list<bindings::ArgumentName> names = {
+      {"--free", "free"}, {"--law", "law"}, {"--sigma", "sigma"}, {"DATA", "data"}};
+  return bindings::with_argument_names(names, [&] {
+    fit::FitOptions o;
+    o.accuracy = accuracy;
+    o.free = keys_of(free);
+    o.law = parse_optional_choice<Law>("law", law);
+    o.gradients = parse_choice<fit::Gradients>("gradients", gradients);
+    o.rtol = rtol;
+    o.max_evaluations = static_cast<int>(arg_integer(max_evaluations.value, "max_evaluations", 1, 100000));
+    const auto overrides = sigma_of(sigma);
+    const std::string arg = arg_text(data, "data");
+    py::gil_scoped_release release;
+    PyFit out;
+    out.obs = text ? fit::parse_observations(arg, "data", overrides) : fit::read_observations(arg, overrides);
+    out.r = fit::fit_trajectory(scene, out.obs, o);
+    return out;
+  });
 }
 
 py::array_t<double> matrix(const std::vector<std::array<double, 3>>& rows) {
@@ -276,12 +282,16 @@ raise. Bad data or keys raise nanopush.InputError naming the row and column or t
 
   m.def(
       "synthesize",
-      [](const Scene& scene, const std::array<double, 3>& sigma, std::uint64_t seed, const std::string& law,
+      [](const Scene& scene, const std::array<double, 3>& sigma, const Whole& seed_arg, const std::string& law,
          const py::object& path) {
+        // The range of `nanopush fit --synthesize --seed`.
+        const auto seed = static_cast<std::uint64_t>(arg_integer(seed_arg.value, "seed", 0, 1LL << 62));
         std::string text;
         {
           py::gil_scoped_release release;
-          text = fit::observations_csv(fit::synthesize(scene, sigma, seed, parse_optional_choice<Law>("law", law)));
+          text = bindings::with_argument_names({{"--law", "law"}}, [&] {
+            return fit::observations_csv(fit::synthesize(scene, sigma, seed, parse_optional_choice<Law>("law", law)));
+          });
         }
         if (!path.is_none()) write_file_atomic(arg_text(path, "path"), text);  // as every output
         return text;

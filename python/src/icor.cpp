@@ -314,7 +314,8 @@ and stuck, load W [N], half_width [m], rhs_evaluations, integrator, minimum_forc
 void register_thesis_checks(py::module_& m) {
   m.def(
       "error_analysis",
-      [](double L, double k2, const std::string& solver, int n) {
+      [](double L, double k2, const std::string& solver, const Whole& n_arg) {
+        const int n = static_cast<int>(arg_integer(n_arg.value, "n", 2, 2147483647));
         const auto e = icor::error_analysis(L, k2, parse_choice<icor::CubicMethod>("solver", solver), n);
         py::dict d;
         d["n"] = e.n;

@@ -9,8 +9,27 @@
 
 namespace nanopush::python {
 
+namespace {
+std::string shown(const py::handle& v) {
+  std::string r = py::repr(v).cast<std::string>();
+  if (r.size() > 80) r = r.substr(0, 77) + "...";
+  return r;
+}
+}  // namespace
+
+void refuse_complex(const py::handle& obj, const std::string& name) {
+  // forcecast would cast it to its real part, silently: refused as a complex Python number is.
+  if (!py::hasattr(obj, "dtype") || !py::hasattr(obj, "shape") || !py::hasattr(obj, "ndim")) return;
+  const py::object dtype = obj.attr("dtype");
+  if (!py::hasattr(dtype, "kind") || dtype.attr("kind").cast<std::string>() != "c") return;
+  const bool one = obj.attr("ndim").cast<long>() == 0;
+  throw InputError(name, one ? shown(obj) : "a complex array of shape " + py::str(obj.attr("shape")).cast<std::string>(),
+                   "must be real numbers (a complex value is refused, never cut to its real part)");
+}
+
 DArray as_double_array(const py::handle& obj, const char* name) {
   if (obj.is_none()) throw InputError(name, "None", "must be a real number or an array of real numbers");
+  refuse_complex(obj, name);
   auto a = DArray::ensure(obj);
   if (!a) {
     PyErr_Clear();
@@ -32,13 +51,6 @@ py::object plain_value(const py::handle& v, const std::string& name) {
   return py::reinterpret_borrow<py::object>(v);
 }
 
-namespace {
-std::string shown(const py::handle& v) {
-  std::string r = py::repr(v).cast<std::string>();
-  if (r.size() > 80) r = r.substr(0, 77) + "...";
-  return r;
-}
-}  // namespace
 
 double arg_double(const py::handle& obj, const std::string& name) {
   const py::object v = plain_value(obj, name);
@@ -66,6 +78,28 @@ std::string arg_text(const py::handle& obj, const std::string& name) {
   if (py::isinstance(obj, py::module_::import("os").attr("PathLike")))
     return py::module_::import("os").attr("fspath")(obj).cast<std::string>();
   throw InputError(name, shown(obj), "must be text");
+}
+
+long long arg_integer(const py::handle& obj, const std::string& name, long long lo, long long hi) {
+  const py::object v = plain_value(obj, name);
+  const std::string range = "must be a whole number in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+  if (v.is_none()) throw InputError(name, "None", range);
+  if (PyBool_Check(v.ptr())) throw InputError(name, shown(v), range + " (not a flag)");
+  if (PyUnicode_Check(v.ptr()) || PyBytes_Check(v.ptr())) throw InputError(name, shown(v), range + " (not text)");
+  PyObject* index = PyNumber_Index(v.ptr());  // int, NumPy integers; not float
+  if (!index) {
+    PyErr_Clear();
+    throw InputError(name, shown(v), range);
+  }
+  int overflow = 0;
+  const long long n = PyLong_AsLongLongAndOverflow(index, &overflow);
+  const std::string text = py::str(py::handle(index)).cast<std::string>();
+  Py_DECREF(index);
+  if (overflow != 0 || (n == -1 && PyErr_Occurred()) || n < lo || n > hi) {
+    PyErr_Clear();
+    throw InputError(name, text, range);
+  }
+  return n;
 }
 
 std::string status_name(BsStatus s) {
@@ -111,11 +145,13 @@ void register_errors(py::module_& m) {
   g_solver_error = PyErr_NewExceptionWithDoc("nanopush.SolverError",
                                 "A numerical failure (too many steps, step size underflow, non-finite state, a "
                                 "root finder that did not converge).\n\n"
-                                "Attributes: status (str: too_many_steps, step_underflow, rhs_failed, not_finite, "
-                                "bad_input, or solver_failure when the failure has no integrator status), "
+                                "Attributes: status_code (int: the status the C API returns for the same call, "
+                                "nanopush.h: 2-5 the integrator's, 6 another numerical failure, 13 no static "
+                                "friction, 14 law blowup, 15 accuracy not reached), status (str: its name, "
+                                "too_many_steps, step_underflow, rhs_failed, not_finite, solver_failure, "
+                                "no_static_friction, law_blowup, accuracy_not_reached), "
                                 "outcome (str: how the run ended, docs/errors.md: solver_failure, no_static_friction, "
                                 "law_blowup, accuracy_not_reached), "
-                                "status_code (int, the integrator's status as in the C API; None without one), "
                                 "t_reached (float [s] or None), partial (the Result of the samples computed "
                                 "before the failure, or None).",
                                 PyExc_RuntimeError, nullptr);
@@ -125,6 +161,13 @@ void register_errors(py::module_& m) {
 
   py::register_exception_translator([](std::exception_ptr p) {
     if (!p) return;
+    // Ctrl-C during the call (the GIL released, the C++ code running on): the interrupt wins
+    // over whatever the call then threw, as it does over a call that returns (the handler runs
+    // at the next bytecode). PyErr_CheckSignals runs Python's handler now, which sets
+    // KeyboardInterrupt: that is the error the call raises, and the C++ exception is dropped.
+    // Setting a second exception over a pending interrupt broke exception handling (an
+    // unraisable SolverError, "lost sys.stderr", exit 1).
+    if (PyErr_CheckSignals() != 0) return;
     try {
       std::rethrow_exception(p);
     } catch (const IndexedInputError& e) {
@@ -138,11 +181,14 @@ void register_errors(py::module_& m) {
       ex.attr("index") = py::none();
       PyErr_SetObject(g_input_error, ex.ptr());
     } catch (const RunFailure& e) {
+      // The C API's status for the same run (binding_errors.hpp): the outcome's (13-15), else
+      // the integrator's (2-5), else 6.
       py::object ex = py::handle(g_solver_error)(e.what());
       const auto& st = e.partial().stats;
-      ex.attr("status") = status_name(st.status);
+      const int code = bindings::run_status_code(e.partial());
+      ex.attr("status") = bindings::status_identifier(code);
       ex.attr("outcome") = to_string(e.partial().outcome);
-      ex.attr("status_code") = static_cast<int>(st.status);
+      ex.attr("status_code") = code;
       ex.attr("t_reached") = st.t_reached;
       ex.attr("partial") = make_result(e.partial());
       PyErr_SetObject(g_solver_error, ex.ptr());
@@ -157,15 +203,28 @@ void register_errors(py::module_& m) {
       // a system error, as exit 5 is on the command line.
       PyErr_SetString(PyExc_OSError, e.what());
     } catch (const SolverError& e) {
+      // No trajectory (a model that threw, a root finder): the status the C API gives.
       py::object ex = py::handle(g_solver_error)(e.what());
-      ex.attr("status") = "solver_failure";
+      const int code = bindings::solver_status_code(e);
+      ex.attr("status") = bindings::status_identifier(code);
       ex.attr("outcome") = e.outcome();
-      ex.attr("status_code") = py::none();
+      ex.attr("status_code") = code;
       ex.attr("t_reached") = py::none();
       ex.attr("partial") = py::none();
       PyErr_SetObject(g_solver_error, ex.ptr());
     }
   });
+  // The status a sweep's failed row stands for (nanopush.sweep(check=True)): its outcome
+  // (the row's status column) and message, as a SolverError of the C API would give it.
+  m.def(
+      "_status_code",
+      [](const std::string& outcome, const std::string& message) {
+        const int code = outcome == "bad_input" ? NANOPUSH_BAD_INPUT
+                         : outcome == "error"   ? NANOPUSH_INTERNAL
+                                                : bindings::solver_status_code(SolverError(message, outcome));
+        return py::make_tuple(code, bindings::status_identifier(code));
+      },
+      py::arg("outcome"), py::arg("message"));
 }
 
 }  // namespace nanopush::python

@@ -61,9 +61,10 @@ std::pair<double, double> range_arg(const py::object& v, const std::string& name
   return {arg_double(m.cast<py::sequence>()[0], name + "[0]"), arg_double(m.cast<py::sequence>()[1], name + "[1]")};
 }
 
-plan::PlanResult plan_scene(const Scene& scene, const py::object& goal, const py::object& tolerance,
-                            const std::string& objective, const py::object& max_pushes, const py::object& half_turn,
-                            const py::object& baseline, const py::object& robust_tip_mu, const py::object& robust_start) {
+plan::PlanResult plan_scene_named(const Scene& scene, const py::object& goal, const py::object& tolerance,
+                                  const std::string& objective, const py::object& max_pushes,
+                                  const py::object& half_turn, const py::object& baseline,
+                                  const py::object& robust_tip_mu, const py::object& robust_start) {
   const plan::Pose g = pose_arg(goal, "goal");
   plan::PlanOptions o;
   const py::object tol = plain_value(tolerance, "tolerance");
@@ -91,11 +92,25 @@ plan::PlanResult plan_scene(const Scene& scene, const py::object& goal, const py
   return base ? plan::plan_baseline(scene, g, o) : plan::plan_pushes(scene, g, o);
 }
 
+/// nanopush.plan: the library names some inputs as `nanopush plan` does (--goal, --noise, ...);
+/// here they are nanopush.plan's arguments.
+plan::PlanResult plan_scene(const Scene& scene, const py::object& goal, const py::object& tolerance,
+                            const std::string& objective, const py::object& max_pushes, const py::object& half_turn,
+                            const py::object& baseline, const py::object& robust_tip_mu, const py::object& robust_start) {
+  return bindings::with_argument_names(
+      {{"--goal", "goal"}, {"--tolerance", "tolerance"}, {"--objective", "objective"}, {"--max-pushes", "max_pushes"},
+       {"--tip-mu-range", "robust_tip_mu"}, {"--noise", "robust_start"}},
+      [&] {
+        return plan_scene_named(scene, goal, tolerance, objective, max_pushes, half_turn, baseline, robust_tip_mu,
+                                robust_start);
+      });
+}
+
 /// PlanResult._check: plan --check in memory (planning/check.hpp): (names, units, columns,
 /// summary) with the summary's trials, successes, probability and Wilson interval.
-py::tuple check_plan(const plan::PlanResult& r, const Scene& scene, const py::object& trials, const py::object& noise,
-                     const py::object& mu_range, const py::object& tip_mu_range, const py::object& seed,
-                     const py::object& jobs, const py::object& progress) {
+py::tuple check_plan_named(const plan::PlanResult& r, const Scene& scene, const py::object& trials,
+                           const py::object& noise, const py::object& mu_range, const py::object& tip_mu_range,
+                           const py::object& seed, const py::object& jobs, const py::object& progress) {
   const double n = arg_double(trials, "trials");
   if (!(n >= 1 && n <= 1000000 && n == std::floor(n)))
     throw InputError("trials", py::repr(trials).cast<std::string>(), "must be a whole number in [1, 1000000]");
@@ -135,9 +150,19 @@ py::tuple check_plan(const plan::PlanResult& r, const Scene& scene, const py::ob
   return py::make_tuple(t[0], t[1], t[2], summary);
 }
 
+/// The same under nanopush.check_plan's names for the inputs `plan --check` names by its flags.
+py::tuple check_plan(const plan::PlanResult& r, const Scene& scene, const py::object& trials, const py::object& noise,
+                     const py::object& mu_range, const py::object& tip_mu_range, const py::object& seed,
+                     const py::object& jobs, const py::object& progress) {
+  return bindings::with_argument_names(
+      {{"--noise", "noise"}, {"--mu-range", "mu_range"}, {"--tip-mu-range", "tip_mu_range"}, {"--check", "trials"}},
+      [&] { return check_plan_named(r, scene, trials, noise, mu_range, tip_mu_range, seed, jobs, progress); });
+}
+
 /// Poses from an (n, 3) array-like of (x, y, theta).
 std::vector<plan::Pose> poses_arg(const py::object& v, const std::string& name) {
   py::array_t<double> a;
+  refuse_complex(v, name);
   try {
     a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(v);
   } catch (const py::error_already_set&) {
@@ -150,8 +175,9 @@ std::vector<plan::Pose> poses_arg(const py::object& v, const std::string& name) 
 }
 
 /// nanopush.assemble: (status, message, slot_of, order, final poses (n, 3), the moves' plans).
-py::tuple assemble_bars(const Scene& scene, const py::object& objects, const py::object& slots, const py::object& tolerance,
-                        const std::string& objective, const py::object& max_pushes, const py::object& gap) {
+py::tuple assemble_named(const Scene& scene, const py::object& objects, const py::object& slots,
+                         const py::object& tolerance, const std::string& objective, const py::object& max_pushes,
+                         const py::object& gap) {
   plan::AssemblyOptions o;
   const py::object tol = plain_value(tolerance, "tolerance");
   if (py::isinstance<py::str>(tol) || !py::isinstance<py::sequence>(tol) || py::len(tol) != 2)
@@ -183,6 +209,15 @@ py::tuple assemble_bars(const Scene& scene, const py::object& objects, const py:
     plans.append(py::cast(m.plan));
   }
   return py::make_tuple(to_string(r.status), r.message, py::cast(r.slot_of), order, final_poses, plans, r.assignment_cost);
+}
+
+/// The same under nanopush.assemble's names for the inputs `nanopush assemble` names its own way.
+py::tuple assemble_bars(const Scene& scene, const py::object& objects, const py::object& slots, const py::object& tolerance,
+                        const std::string& objective, const py::object& max_pushes, const py::object& gap) {
+  return bindings::with_argument_names(
+      {{"--gap", "gap"}, {"--tolerance", "tolerance"}, {"--objective", "objective"}, {"--max-pushes", "max_pushes"},
+       {"pattern", "slots"}},
+      [&] { return assemble_named(scene, objects, slots, tolerance, objective, max_pushes, gap); });
 }
 
 }  // namespace

@@ -135,7 +135,8 @@ RunResult run(const Scene& scene, const std::string& engine, const std::string& 
   rs.precision = parse_optional_choice<Precision>("precision", precision);
   read_tolerances(rtol, atol, rs.rtol, rs.atol);
   rs.allow_partial = true;  // a failure becomes nanopush.SolverError carrying the partial result
-  check_engine_method(scene, rs);  // engine="f77" with the scene's own method: as `nanopush run`
+  // engine="f77" with the scene's own method: as `nanopush run`, the argument named engine
+  bindings::with_argument_names({{"--engine", "engine"}}, [&] { check_engine_method(scene, rs); });
   RunResult r;
   r.scene = scene.name;
   Scene own = scene;  // another Python thread may set() the caller's scene meanwhile

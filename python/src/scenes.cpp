@@ -139,9 +139,15 @@ Build one with Scene.preset("fig3_6a"), Scene.from_file(path) or Scene.from_toml
 change it with scene.set("surface.mu", 0.1) (validated as the file is: a bad key or value
 raises nanopush.InputError and leaves the scene unchanged). Scenes are values: copy.copy(scene)
 or scene.copy() gives an independent one.)doc")
-      .def_static("from_file", [](const std::filesystem::path& path) { return load_scene(path); }, py::arg("path"),
-                  "Read a scene file (TOML, at most 1 MiB). Raises nanopush.InputError naming the key, value and "
-                  "allowed range.")
+      .def_static(
+          "from_file",
+          [](const std::filesystem::path& path) {
+            // The library names the file SCENE (the command line's argument): here it is path.
+            return bindings::with_argument_names({{"SCENE", "path"}}, [&] { return load_scene(path); });
+          },
+          py::arg("path"),
+          "Read a scene file (TOML, at most 1 MiB). Raises nanopush.InputError naming the key, value and "
+          "allowed range.")
       .def_static(
           "from_toml",
           [](const std::string& text, const std::string& name) {

@@ -29,7 +29,8 @@ SceneValue plan_value(const std::string& key, const py::handle& obj) {
   throw InputError(key, py::repr(v).cast<std::string>(), "must be a number, a flag or text");
 }
 
-std::vector<SceneValue> plan_values(const std::string& key, const py::handle& values) {
+/// The values of `key` in the argument `arg` (vary, points): one or more.
+std::vector<SceneValue> plan_values(const std::string& arg, const std::string& key, const py::handle& values) {
   std::vector<SceneValue> out;
   if (py::isinstance<py::str>(values)) {  // "FROM:TO:N" or "V1,V2,..." as on the command line
     return sweep::parse_axis(key + "=" + values.cast<std::string>(), false).values;
@@ -37,6 +38,8 @@ std::vector<SceneValue> plan_values(const std::string& key, const py::handle& va
   if (!py::isinstance<py::iterable>(values))
     throw InputError(key, py::repr(values).cast<std::string>(), "must be a sequence of values or 'FROM:TO:N'");
   for (auto v : values) out.push_back(plan_value(key, v));
+  if (out.empty())  // an axis without values is a plan of no points, never what was meant
+    throw InputError(arg + "." + key, py::repr(values).cast<std::string>(), "no values: give one or more");
   return out;
 }
 
@@ -160,10 +163,10 @@ std::vector<std::vector<std::string>> evaluate_polled(const sweep::Plan& plan, c
   return rows;
 }
 
-py::tuple run_sweep(const std::string& task_name, const py::object& scene_obj, const py::list& axes,
-                    const py::object& points, const py::dict& fixed, unsigned jobs, const std::string& engine,
-                    const std::string& method, const std::string& law, const py::object& accuracy,
-                    const py::object& error_estimate, const py::object& progress, const py::object& out) {
+py::tuple run_sweep_named(const std::string& task_name, const py::object& scene_obj, const py::list& axes,
+                          const py::object& points, const py::dict& fixed, unsigned jobs, const std::string& engine,
+                          const std::string& method, const std::string& law, const py::object& accuracy,
+                          const py::object& error_estimate, const py::object& progress, const py::object& out) {
   std::unique_ptr<sweep::Task> task;
   const sweep::TaskKind kind = parse_choice<sweep::TaskKind>("task", task_name);
   if (kind == sweep::TaskKind::run) {
@@ -212,7 +215,7 @@ py::tuple run_sweep(const std::string& task_name, const py::object& scene_obj, c
     for (auto item : d) {
       const auto key = item.first.cast<std::string>();
       plan.keys.push_back(key);
-      columns.push_back(plan_values(key, item.second));
+      columns.push_back(plan_values("points", key, item.second));
       if (!first && columns.back().size() != n)
         throw InputError("points." + key, std::to_string(columns.back().size()) + " values",
                          "every key needs the same number of values (" + std::to_string(n) + ")");
@@ -235,10 +238,20 @@ py::tuple run_sweep(const std::string& task_name, const py::object& scene_obj, c
           throw InputError("vary_log." + key, py::repr(t[1]).cast<std::string>(), "must be 'FROM:TO:N'");
         ax.push_back(sweep::parse_axis(key + "=" + t[1].cast<std::string>(), true));
       } else {
-        ax.push_back({key, plan_values(key, t[1])});
+        ax.push_back({key, plan_values("vary", key, t[1])});
       }
     }
     plan = sweep::cartesian(ax);
+  }
+  // A key is fixed (set) or varied, never both: the fixed value would be overwritten at every
+  // point (as `nanopush sweep --set` with --vary or --points).
+  for (auto item : fixed) {
+    const auto key = item.first.cast<std::string>();
+    for (const auto& k : plan.keys)
+      if (k == key)
+        throw InputError("set", key + "=" + py::str(item.second).cast<std::string>(),
+                         "conflicts with " + std::string(points.is_none() ? "vary" : "points") + ", which varies " +
+                             key + ": a key is either fixed or varied");
   }
   (void)sweep::table_columns(plan, *task);  // every key and value checked before any work
   if (!progress.is_none() && !PyCallable_Check(progress.ptr()))
@@ -266,6 +279,21 @@ py::tuple run_sweep(const std::string& task_name, const py::object& scene_obj, c
     return py::make_tuple(py::none(), py::none(), d);
   }
   return sweep_in_memory(plan, *task, jobs, progress);
+}
+
+/// nanopush.sweep: the library names some inputs as `nanopush sweep` does (--vary, --vary-log,
+/// --set, --engine); here they are nanopush.sweep's arguments.
+py::tuple run_sweep(const std::string& task_name, const py::object& scene_obj, const py::list& axes,
+                    const py::object& points, const py::dict& fixed, unsigned jobs, const std::string& engine,
+                    const std::string& method, const std::string& law, const py::object& accuracy,
+                    const py::object& error_estimate, const py::object& progress, const py::object& out) {
+  return bindings::with_argument_names(
+      {{"--vary-log", "vary_log"}, {"--vary", points.is_none() ? "vary" : "points"}, {"--set", "set"},
+       {"--engine", "engine"}},
+      [&] {
+        return run_sweep_named(task_name, scene_obj, axes, points, fixed, jobs, engine, method, law, accuracy,
+                               error_estimate, progress, out);
+      });
 }
 
 }  // namespace

@@ -114,6 +114,29 @@ int main(int argc, char** argv) {
   check(nanopush_fit_trajectory(err, scene, data.c_str(), "push.force,", nullptr, nullptr, 2, &v, &s, nullptr,
                                 nullptr, nullptr, 0, nullptr) == NANOPUSH_BAD_INPUT,
         "empty key in the list");
+  // What the library names by `nanopush fit`'s flags (--free, --law, --sigma, DATA) is named as
+  // this function's arguments.
+  nanopush_clear_error(err);
+  check(nanopush_fit_trajectory(err, scene, data.c_str(), "push.force,push.force", nullptr, nullptr, 2, &v, &s,
+                                nullptr, nullptr, nullptr, 0, nullptr) == NANOPUSH_BAD_INPUT &&
+            message(err).rfind("free_keys = push.force: named twice", 0) == 0,
+        "a key twice: " + message(err));
+  nanopush_clear_error(err);
+  check(nanopush_fit_trajectory(err, scene, data.c_str(), "push.force", "printed", nullptr, 1, &v, &s, nullptr,
+                                nullptr, nullptr, 0, nullptr) == NANOPUSH_BAD_INPUT &&
+            message(err).rfind("law = printed: must be thesis or coulomb", 0) == 0,
+        "the printed law: " + message(err));
+  nanopush_clear_error(err);
+  check(nanopush_fit_trajectory(err, scene, data.c_str(), "push.force", nullptr, "x=1e-9", 1, &v, &s, nullptr,
+                                nullptr, nullptr, 0, nullptr) == NANOPUSH_BAD_INPUT &&
+            message(err).rfind("sigma = x: the data already give sigma_x", 0) == 0,
+        "sigma named: " + message(err));
+  nanopush_clear_error(err);
+  check(nanopush_fit_trajectory(err, scene, (dir / "absent.csv").c_str(), "push.force", nullptr, nullptr, 1, &v, &s,
+                                nullptr, nullptr, nullptr, 0, nullptr) == NANOPUSH_BAD_INPUT &&
+            message(err).rfind("data_path = ", 0) == 0,
+        "data_path named: " + message(err));
+  nanopush_clear_error(err);
   check(nanopush_fit_trajectory(err, nullptr, data.c_str(), "push.force", nullptr, nullptr, 1, &v, &s, nullptr,
                                 nullptr, nullptr, 0, nullptr) == NANOPUSH_NULL_HANDLE,
         "NULL scene");

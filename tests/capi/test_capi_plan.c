@@ -65,7 +65,8 @@ int main(int argc, char** argv) {
     CHECK(nanopush_plan_robust(err, scene, goal, tol, NULL, kMax, reversed, NULL, kMax, rp, &untouched_rn, NULL) ==
           NANOPUSH_BAD_INPUT);
     nanopush_get_error(err, rmsg, sizeof rmsg);
-    CHECK(strstr(rmsg, "tip-mu-range") != NULL && untouched_rn == -7);
+    /* the library's --tip-mu-range named as this function's argument */
+    CHECK(strstr(rmsg, "tip_mu_range = 0.3:0.1: ") == rmsg && untouched_rn == -7);
     nanopush_clear_error(err);
   }
 
@@ -78,7 +79,19 @@ int main(int argc, char** argv) {
   nanopush_clear_error(err);
   CHECK(nanopush_plan(err, scene, goal, tol, "fastest", kMax, kMax, pushes, &untouched, NULL) == NANOPUSH_BAD_INPUT);
   nanopush_get_error(err, msg, sizeof msg);
-  CHECK(strstr(msg, "fastest") != NULL && untouched == -7);
+  CHECK(strstr(msg, "objective = fastest: ") == msg && untouched == -7);
+  nanopush_clear_error(err);
+  /* What the library names by `nanopush plan`'s flags (--goal, --tolerance) is named as this
+   * function's arguments. */
+  const double nan_goal[3] = {NAN, 0.0, 0.0};
+  CHECK(nanopush_plan(err, scene, nan_goal, tol, NULL, kMax, kMax, pushes, &untouched, NULL) == NANOPUSH_BAD_INPUT);
+  nanopush_get_error(err, msg, sizeof msg);
+  CHECK(strstr(msg, "goal = nan,0,0: must be three finite numbers") == msg && untouched == -7);
+  nanopush_clear_error(err);
+  const double bad_tol[2] = {-1.0, 0.01};
+  CHECK(nanopush_plan(err, scene, goal, bad_tol, NULL, kMax, kMax, pushes, &untouched, NULL) == NANOPUSH_BAD_INPUT);
+  nanopush_get_error(err, msg, sizeof msg);
+  CHECK(strstr(msg, "tolerance = -1 m: ") == msg && untouched == -7);
   nanopush_clear_error(err);
   CHECK(nanopush_plan(err, scene, goal, tol, NULL, kMax, kMax - 1, pushes, &untouched, NULL) == NANOPUSH_BUFFER_TOO_SMALL);
   CHECK(untouched == -7);

@@ -1,6 +1,7 @@
 !> nanopush_assemble through `use nanopush` (and so the C API's nanopush_assemble): two nanorods
 !> into a two-slot pattern, each to the other's side, equal to `nanopush assemble`'s
-!> assembly.csv row for row (given); bad shapes and counts as stat + errmsg, nothing written.
+!> assembly.csv row for row (given); bad shapes and counts as stat + errmsg, nothing written
+!> (slot_of and final of another size than n included).
 !> Usage: capi_test_assemble_fortran SCENE.toml ASSEMBLY.csv
 program test_fortran_assemble
   use nanopush
@@ -12,7 +13,8 @@ program test_fortran_assemble
   real(dp), parameter :: objects(3, 2) = reshape([0.0_dp, 0.0_dp, 0.0_dp, 100e-9_dp, 0.0_dp, 0.0_dp], [3, 2])
   real(dp), parameter :: slots(3, 2) = reshape([110e-9_dp, 20e-9_dp, 0.1_dp, 10e-9_dp, 20e-9_dp, 0.1_dp], [3, 2])
   real(dp), parameter :: tol(2) = [2e-9_dp, 0.02_dp]
-  integer :: slot_of(2), stat, k, u, ios
+  real(dp) :: big_final(3, 5)
+  integer :: slot_of(2), big_slot_of(5), small_slot_of(1), stat, k, u, ios
   logical :: assembled
   character(len=:), allocatable :: msg
   character(len=4096) :: arg
@@ -46,10 +48,35 @@ program test_fortran_assemble
   close (u)
   call check(k == size(pushes, 1), "assemble: as many rows as assembly.csv")
 
+  ! slot_of and final of another size than n = 2: refused before anything runs, nothing read or
+  ! written past either array (it was an out-of-bounds read when larger, a silent cut when smaller).
+  big_slot_of = -99
+  big_final = -99
+  call nanopush_assemble(scene, objects, slots, pushes, slot_of=big_slot_of, final=final, tolerance=tol, &
+                         stat=stat, errmsg=msg)
+  call check(stat == NANOPUSH_BAD_INPUT .and. msg == "size(slot_of) = 5: must be n = 2 (one slot per bar)" .and. &
+             size(pushes, 1) == 0 .and. all(big_slot_of == -99), "slot_of larger than n: " // msg)
+  call nanopush_assemble(scene, objects, slots, pushes, slot_of=small_slot_of, tolerance=tol, stat=stat, errmsg=msg)
+  call check(stat == NANOPUSH_BAD_INPUT .and. index(msg, "size(slot_of) = 1: must be n = 2") == 1, &
+             "slot_of smaller than n: " // msg)
+  call nanopush_assemble(scene, objects, slots, pushes, slot_of=slot_of, final=big_final, tolerance=tol, &
+                         stat=stat, errmsg=msg)
+  call check(stat == NANOPUSH_BAD_INPUT .and. &
+             msg == "shape(final) = (3, 5): must be (3, n) = (3, 2) (x, y, theta of each bar)" .and. &
+             all(big_final == -99), "final larger than n: " // msg)
+  call nanopush_assemble(scene, objects, slots, pushes, final=big_final(:, 1:1), tolerance=tol, stat=stat, errmsg=msg)
+  call check(stat == NANOPUSH_BAD_INPUT .and. index(msg, "shape(final) = (3, 1): must be (3, n) = (3, 2)") == 1, &
+             "final smaller than n: " // msg)
+  call nanopush_assemble(scene, objects, slots, pushes, final=big_final(1:2, 1:2), tolerance=tol, stat=stat, errmsg=msg)
+  call check(stat == NANOPUSH_BAD_INPUT .and. index(msg, "shape(final) = (2, 2)") == 1, "final of 2 rows: " // msg)
+
   call nanopush_assemble(scene, objects, slots(:, 1:1), pushes, stat=stat, errmsg=msg)
   call check(stat == NANOPUSH_BAD_INPUT .and. index(msg, "same n") > 0 .and. size(pushes, 1) == 0, "bad shape: " // msg)
   call nanopush_assemble(scene, objects, objects, pushes, max_pushes=0, stat=stat, errmsg=msg)
   call check(stat == NANOPUSH_BAD_INPUT .and. index(msg, "max_pushes") > 0, "bad max_pushes: " // msg)
+  ! The library's --gap named as the argument, gap.
+  call nanopush_assemble(scene, objects, slots, pushes, gap=-1.0_dp, stat=stat, errmsg=msg)
+  call check(stat == NANOPUSH_BAD_INPUT .and. msg == "gap = -1: must be >= 0 (m)", "bad gap: " // msg)
 
   call nanopush_destroy(scene)
   if (allocated(pushes)) deallocate(pushes)

@@ -35,7 +35,8 @@ program test_fortran_plan
                      tip_mu_range=[0.0_dp, 0.3_dp], start_shift=[0.6e-9_dp, 0.6e-9_dp, 0.004_dp])
   call check(stat == NANOPUSH_OK .and. found .and. verified .and. size(pushes, 1) >= 1, "robust plan: " // msg)
   call nanopush_plan(scene, goal, pushes, tip_mu_range=[0.3_dp, 0.1_dp], stat=stat, errmsg=msg)
-  call check(stat == NANOPUSH_BAD_INPUT .and. index(msg, "tip-mu-range") > 0, "reversed tip_mu_range: " // msg)
+  ! the library's --tip-mu-range named as the argument, tip_mu_range
+  call check(stat == NANOPUSH_BAD_INPUT .and. index(msg, "tip_mu_range = 0.3:0.1: ") == 1, "reversed tip_mu_range: " // msg)
 
   call nanopush_plan(scene, [400e-9_dp, -300e-9_dp, 1.2_dp], pushes, tolerance=tol, max_pushes=1, found=found, &
                      summary=summary, stat=stat)

@@ -53,3 +53,61 @@ def test_sweep_rows_carry_estimates_and_outcomes():
     assert 0 < res["error_estimate"][1] < 1e-6
     th = nanopush.sweep("fig3_18", vary={"push.force": [1e-7, 5e-6]}, law="thesis")
     assert list(th.status) == ["no_static_friction", "ok"] and th.failed == 1
+
+
+def _tip_dynamic(max_steps):
+    s = nanopush.Scene.preset("tip_push_nanorod")
+    s.set({"tip.model": "dynamic", "tip.stiffness": 10.0, "tip.speed": 1.0, "tip.travel": 400e-9, "tip.mu": 0.3,
+           "solver.max_steps": max_steps})
+    return s
+
+
+def _printed_blowup():
+    # A point of fig3_18's mu x yn grid where the printed law's friction injects energy
+    # (tests/test_accuracy.cpp, "The printed law's failures are classified").
+    s = nanopush.Scene.preset("fig3_18")
+    s.set({"surface.mu": 0.005, "push.yn": -21e-9})
+    return s
+
+
+@pytest.mark.parametrize("scene, kwargs, outcome, status, code", [
+    # the outcomes that are their own status in the C API (nanopush.h, docs/errors.md), whatever
+    # the integrator's status was (success for the C++ engine, too_many_steps for the F77's)
+    ("fig3_25", dict(error_estimate=False), "no_static_friction", "no_static_friction", 13),
+    ("fig3_25", dict(engine="f77", error_estimate=False), "no_static_friction", "no_static_friction", 13),
+    (_printed_blowup, dict(law="printed", error_estimate=False), "law_blowup", "law_blowup", 14),
+    ("fig3_17", dict(law="printed", accuracy=1e-14), "accuracy_not_reached", "accuracy_not_reached", 15),
+    # the integrator's own stop: its status (2-5)
+    (lambda: nanopush.Scene.preset("fig3_6a"), dict(), "solver_failure", "too_many_steps", 2),
+    # the dynamic tip model's step budget spent: too many steps, as C says (it said None, C 6)
+    (lambda: _tip_dynamic(2000), dict(error_estimate=False), "solver_failure", "too_many_steps", 2),
+])
+def test_solver_error_reports_the_c_apis_status(scene, kwargs, outcome, status, code):
+    if callable(scene):
+        scene = scene()
+        if scene.name == "fig3_6a":
+            scene.set("solver.max_steps", 5)
+    with pytest.raises(nanopush.SolverError) as e:
+        nanopush.run(scene, **kwargs)
+    assert (e.value.outcome, e.value.status, e.value.status_code) == (outcome, status, code), str(e.value)
+
+
+def test_a_failed_sweep_point_reports_the_c_apis_status():
+    with pytest.raises(nanopush.SolverError) as e:
+        nanopush.sweep("fig3_18", vary={"push.force": [1e-7]}, law="thesis", check=True, jobs=1)
+    assert (e.value.outcome, e.value.status, e.value.status_code) == ("no_static_friction", "no_static_friction", 13)
+    assert len(e.value.partial) == 1
+
+
+def test_extended_precision_runs_rough_scenes_as_documented():
+    # long and quad are not for smooth scenes only: a rough scene under the thesis or coulomb
+    # law runs in them with the modern method, or auto, which picks it (docs/accuracy.md,
+    # "References with more digits"); run's docstring says so, and names the printed law.
+    for law, method in [("coulomb", "modern"), ("thesis", "auto")]:
+        r = nanopush.run("fig3_18", law=law, method=method, precision="long", error_estimate=False)
+        assert r.precision == "long" and r.engine == f"cxx-modern-{law}-long" and r.complete
+    with pytest.raises(nanopush.InputError, match=r"^precision = long: long and quad need .* \(the printed law's"):
+        nanopush.run("fig3_18", law="printed", method="modern", precision="long")
+    doc = nanopush.run.__doc__
+    assert "smooth scenes)" not in doc and "rough scene under\n               the thesis or coulomb law" in doc
+    assert '``"printed"``' in doc

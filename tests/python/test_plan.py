@@ -63,6 +63,17 @@ def test_bad_input_names_the_argument():
         nanopush.plan(SCENE, GOAL, tolerance=1e-9)
     with pytest.raises(nanopush.InputError, match="goal"):
         nanopush.plan(SCENE, ("a", 0, 0))
+    # what the library names by `nanopush plan`'s flags is named as plan's arguments
+    for kwargs, field, says in [
+            (dict(goal=(float("nan"), 0.0, 0.0)), "goal", "goal = nan,0,0: must be three finite numbers"),
+            (dict(tolerance=(-1.0, 0.01)), "tolerance", "tolerance = -1 m: below what the model resolves"),
+            (dict(objective="fastest"), "objective", "objective = fastest: must be one of: pushes, travel"),
+            (dict(robust_start=(float("inf"), 0.0, 0.0)), "robust_start", "robust_start = inf: a robust plan's")]:
+        args = dict(goal=GOAL, tolerance=TOL)
+        args.update(kwargs)
+        with pytest.raises(nanopush.InputError) as e:
+            nanopush.plan(SCENE, args.pop("goal"), **args)
+        assert str(e.value).startswith(says) and e.value.field == field, str(e.value)
     r = nanopush.plan(SCENE, GOAL, tolerance=TOL)
     with pytest.raises(nanopush.InputError, match="k"):
         r.push_scene(nanopush.Scene.preset(SCENE), len(r.pushes))
@@ -82,8 +93,13 @@ def test_check_plan_equals_the_command_line(cli, tmp_path):
     assert c.interval[0] <= c.probability <= c.interval[1]
     with pytest.raises(nanopush.InputError, match="trials"):
         nanopush.check_plan(r, SCENE, 0)
-    with pytest.raises(nanopush.InputError, match="mu-range"):
+    # the library's --mu-range named as check_plan's argument, mu_range
+    with pytest.raises(nanopush.InputError, match=r"^mu_range = 0\.5:0\.1[0-9]*: must be LO:HI") as e:
         nanopush.check_plan(r, SCENE, 2, mu_range=(0.5, 0.1))
+    assert e.value.field == "mu_range"
+    with pytest.raises(nanopush.InputError, match=r"^noise = -1[0-9.]*e-09: standard deviations must be >= 0") as e:
+        nanopush.check_plan(r, SCENE, 2, noise=(-1e-9, 0.0, 0.0))
+    assert e.value.field == "noise"
 
 
 def test_robust_plan_equals_the_command_line_and_reaches_every_world(cli, tmp_path):
@@ -106,8 +122,10 @@ def test_robust_plan_equals_the_command_line_and_reaches_every_world(cli, tmp_pa
     assert np.all((c["tip_mu"] >= 0) & (c["tip_mu"] <= 0.3))
     with pytest.raises(nanopush.InputError, match="robust_tip_mu"):
         nanopush.plan(SCENE, GOAL, robust_tip_mu=0.3)
-    with pytest.raises(nanopush.InputError, match="tip-mu-range"):
+    # the library's --tip-mu-range named as plan's argument, robust_tip_mu
+    with pytest.raises(nanopush.InputError, match=r"^robust_tip_mu = 0\.3:0\.1: must be LO:HI") as e:
         nanopush.plan(SCENE, GOAL, robust_tip_mu=(0.3, 0.1))
+    assert e.value.field == "robust_tip_mu"
 
 
 def test_assemble_equals_the_command_line(cli, tmp_path):
@@ -130,5 +148,10 @@ def test_assemble_equals_the_command_line(cli, tmp_path):
         assert np.array_equal(a.final_poses[bar], np.array(end))
     with pytest.raises(nanopush.InputError, match="objects"):
         nanopush.assemble(SCENE, [[0, 0]], slots)
-    with pytest.raises(nanopush.InputError, match="one slot per bar"):
+    # the library's PATTERN and --gap named as assemble's arguments, slots and gap
+    with pytest.raises(nanopush.InputError, match=r"^slots = 1 slots: must have one slot per bar \(2\)$") as e:
         nanopush.assemble(SCENE, objects, slots[:1])
+    assert e.value.field == "slots"
+    with pytest.raises(nanopush.InputError, match=r"^gap = -1: must be >= 0 \(m\)$") as e:
+        nanopush.assemble(SCENE, objects, slots, gap=-1.0)
+    assert e.value.field == "gap"

@@ -188,6 +188,14 @@ def test_every_public_callable_has_a_signature():
     assert list(inspect.signature(nanopush.Scene.set).parameters)[:1] == ["self"]
 
 
+def test_classes_have_their_constructors_signature():
+    # python.md: inspect.signature works on every function; a class's is its constructor's.
+    sig = inspect.signature(nanopush.icor.Rod)
+    assert list(sig.parameters) == ["length", "radius", "density", "hamaker", "z0", "gravity"]
+    assert sig.parameters["length"].default == 5.9e-07
+    assert nanopush.icor.Rod(**{k: p.default for k, p in sig.parameters.items()}).length == 5.9e-07
+
+
 def stub_functions(path):
     """{qualified name: [parameter names]} of the functions a .pyi declares."""
     out = {}

@@ -103,6 +103,41 @@ def test_errors_before_any_work(cli, tmp_path):
         nanopush.sweep("friction", points={"R": [1e-9, 2e-9], "alpha": [0.0]})
 
 
+def test_a_key_fixed_and_varied_is_refused(cli, tmp_path):
+    # As `nanopush sweep --set K=V --vary K=...` (exit 2): the fixed value would be overwritten
+    # at every point. The message names the key.
+    out = tmp_path / "never_written.csv"
+    cli.error("sweep", "fig3_18", "--set", "surface.mu=0.2", "--vary", "surface.mu=0.1", "--out", str(out), "--quiet")
+    for kwargs, other in [(dict(vary={"surface.mu": [0.1]}), "vary"), (dict(points={"surface.mu": [0.1]}), "points")]:
+        with pytest.raises(nanopush.InputError) as e:
+            nanopush.sweep("fig3_18", set={"surface.mu": 0.2}, jobs=1, **kwargs)
+        assert str(e.value) == (f"set = surface.mu=0.2: conflicts with {other}, which varies surface.mu: a key is "
+                                "either fixed or varied") and e.value.field == "set"
+    with pytest.raises(nanopush.InputError, match=r"^set = R=1e-08: conflicts with vary, which varies R"):
+        nanopush.sweep("friction", vary={"R": [1e-9]}, set={"a": 27.5e-9, "b": 50e-9, "R": 1e-8})
+
+
+@pytest.mark.parametrize("kwargs, field", [
+    (dict(vary={"surface.mu": []}), "vary.surface.mu"),
+    (dict(vary={"push.force": [1e-6], "surface.mu": np.array([])}), "vary.surface.mu"),
+    (dict(points={"surface.mu": []}), "points.surface.mu"),
+])
+def test_an_axis_without_values_is_refused(kwargs, field):
+    # It gave a table of 0 points, as if the sweep had been asked for nothing.
+    with pytest.raises(nanopush.InputError, match=r": no values: give one or more$") as e:
+        nanopush.sweep("fig3_18", jobs=1, **kwargs)
+    assert e.value.field == field and str(e.value).startswith(field + " = ")
+
+
+def test_the_command_lines_flags_are_named_as_sweeps_arguments():
+    with pytest.raises(nanopush.InputError, match=r"^vary = surface\.mu=0\.1:0\.2:0: N = 0 must be") as e:
+        nanopush.sweep("fig3_18", vary={"surface.mu": "0.1:0.2:0"}, jobs=1)
+    assert e.value.field == "vary"
+    with pytest.raises(nanopush.InputError, match=r"^vary_log = surface\.mu=0:0\.2:3: a logarithmic range") as e:
+        nanopush.sweep("fig3_18", vary_log={"surface.mu": "0:0.2:3"}, jobs=1)
+    assert e.value.field == "vary_log"
+
+
 def test_gil_released():
     res = assert_runs_without_the_gil(
         lambda: nanopush.sweep("friction", vary={"R": "0:1e-6:400", "alpha": "0:6.28:100"}, jobs=1))
