@@ -118,9 +118,9 @@ TEST_CASE("Planning: a robust plan reaches the goal across the tip friction rang
                     Catch::Matchers::StartsWith("--tip-mu-range = -0.1:0.1: must be LO:HI with 0 <= LO <= HI <= 10"));
   bad = o;
   bad.robust_start_x = -1e-9;
-  CHECK_THROWS_WITH(plan::plan_pushes(sc, goal, bad), Catch::Matchers::StartsWith("robust start shift = -1e-09,"));
+  CHECK_THROWS_WITH(plan::plan_pushes(sc, goal, bad), Catch::Matchers::StartsWith("--noise = -1e-09: a robust plan's start shifts"));
   bad.robust_start_x = std::nan("");
-  CHECK_THROWS_WITH(plan::plan_pushes(sc, goal, bad), Catch::Matchers::Contains("must be three finite numbers >= 0"));
+  CHECK_THROWS_WITH(plan::plan_pushes(sc, goal, bad), Catch::Matchers::StartsWith("--noise = nan: a robust plan's start shifts"));
 }
 
 TEST_CASE("Planning: an unreachable goal ends in not_found with the best plan; bad input names the option",

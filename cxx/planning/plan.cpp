@@ -69,9 +69,7 @@ std::vector<World> make_worlds(const Scene& scene, const Pose& start, const Plan
     }
   }
   const double shifts[3] = {o.robust_start_x, o.robust_start_y, o.robust_start_theta};
-  for (int k = 0; k < 3; ++k) {
-    if (!(shifts[k] >= 0 && std::isfinite(shifts[k])))
-      throw InputError("--noise", fmt(shifts[k]), "a robust plan's start shifts must be finite and >= 0");
+  for (int k = 0; k < 3; ++k) {  // finite and >= 0 (check_task)
     if (shifts[k] == 0) continue;
     for (double sign : {-1.0, 1.0}) {
       Pose p = start;
@@ -174,8 +172,7 @@ void check_task(const Scene& scene, const Pose& goal, const PlanOptions& o) {
     throw InputError("--tip-mu-range", fmt(lo) + ":" + fmt(hi), "must be LO:HI with 0 <= LO <= HI <= 10");
   for (double v : {o.robust_start_x, o.robust_start_y, o.robust_start_theta})
     if (!(v >= 0 && std::isfinite(v)))
-      throw InputError("robust start shift", fmt(o.robust_start_x) + "," + fmt(o.robust_start_y) + "," + fmt(o.robust_start_theta),
-                       "must be three finite numbers >= 0 (m, m, rad)");
+      throw InputError("--noise", fmt(v), "a robust plan's start shifts must be finite and >= 0");
 
 }
 
