@@ -51,10 +51,9 @@ inline int run_status_code(const Trajectory& tr) noexcept {
 }
 
 /// The status of a SolverError: its outcome's; else the integrator status its message quotes
-/// (to_string(BsStatus): "too many steps", ...); else NANOPUSH_TOO_MANY_STEPS for the step
-/// budget a model spent without an integrator's status ("solver.max_steps = N steps spent",
-/// the dynamic tip model: docs/tip.md); else NANOPUSH_SOLVER_FAILED (a root finder, another
-/// numerical failure).
+/// (to_string(BsStatus): "too many steps", ...; the dynamic tip model's run-wide budget says
+/// "too many steps" too); else NANOPUSH_SOLVER_FAILED (a root finder, another numerical
+/// failure).
 inline int solver_status_code(const SolverError& e) noexcept {
   const int by_outcome = outcome_status_code(e.outcome());
   if (by_outcome != NANOPUSH_OK) return by_outcome;
@@ -62,7 +61,6 @@ inline int solver_status_code(const SolverError& e) noexcept {
   for (const BsStatus s : {BsStatus::too_many_steps, BsStatus::step_underflow, BsStatus::rhs_failed,
                            BsStatus::not_finite})
     if (std::strstr(what, to_string(s))) return integrator_status_code(s);
-  if (std::strstr(what, "solver.max_steps = ") && std::strstr(what, " steps spent")) return NANOPUSH_TOO_MANY_STEPS;
   return NANOPUSH_SOLVER_FAILED;
 }
 

@@ -291,9 +291,9 @@ class DynamicTipRun {
                                          " <= " + fmt(kAutoInertiaRatio) + "): use tip.model = quasi_static or auto"
                                    : "";
     if (ir.status == IntegrationStatus::too_many_steps && attempted >= max_steps)
-      throw SolverError("dynamic tip push: solver.max_steps = " + std::to_string(max_steps) + " steps spent by t = " +
-                        fmt(ir.t_reached) + " s of " + fmt(t_end) + " s; the dynamic model follows every period of the "
-                        "spring (" + fmt(2 * M_PI / w_max) + " s at its fastest) and every slide's start" +
+      throw SolverError("dynamic tip push: too many steps: solver.max_steps = " + std::to_string(max_steps) +
+                        " steps spent by t = " + fmt(ir.t_reached) + " s of " + fmt(t_end) +
+                        " s; the dynamic model follows every period of the spring (" + fmt(2 * M_PI / w_max) + " s at its fastest) and every slide's start" +
                         (advice.empty() ? ": raise solver.max_steps" : advice + ", or raise solver.max_steps"));
     const double speed = std::sqrt(y[kVx] * y[kVx] + y[kVy] * y[kVy] + y[kOmega] * y[kOmega] * L * L);
     if (ir.status == IntegrationStatus::step_underflow && bar.mass * speed / muN < 1e6 * kEps * ir.t_reached)
