@@ -244,6 +244,13 @@ ModelPoses smooth_poses(const Scene& scene, const std::vector<std::string>& free
     return watch ? (*watch)(t0, y0, t1, y1) : kHookContinue;
   };
   const auto res = dp.integrate(rhs, 0.0, y.data(), std::span<const double>(times), observer, hook);
+  // With sensitivities the error control follows them too, and they blow up as the sign law
+  // chatters at rest: the solve can give up before the watch sees a reversal. A failure there
+  // is the same rest, as finish_run judges a run's.
+  if (watch && !res.ok() && watch->gave_up_at_rest(y.data(), scene.solver.t_end)) {
+    watch->came_to_rest = true;
+    watch->t_rest = res.t_reached;
+  }
   if (watch && watch->came_to_rest) {
     const Law law = rough_model(scene).printed ? Law::printed : Law::thesis;
     throw SolverError(scene.name + " (" + to_string(law) + " law): " +

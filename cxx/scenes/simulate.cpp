@@ -466,15 +466,17 @@ Trajectory finish_run(const Scene& scene, const ResolvedSettings& s, Trajectory 
       const auto& r = tr.rows.back();
       const RoughBarModel m = rough_model(scene);
       const RestWatch watch(m);
-      const double scale = 1e-3 * (watch.accel * scene.solver.t_end);
+      std::array<double, kRoughStateSize> y{};
+      y[kTheta] = r[col::theta];
+      y[kVx] = r[col::vx];
+      y[kVy] = r[col::vy];
+      y[kOmega] = r[col::omega];
       if (s.law == Law::printed && !tr.work_fric.empty() &&
           *std::max_element(tr.work_fric.begin(), tr.work_fric.end()) > 0.0) {
         tr.outcome = Outcome::law_blowup;
         tr.outcome_message = printed_blowup_message(
             *std::max_element(tr.work_fric.begin(), tr.work_fric.end()), tr.stats.t_reached);
-      } else if (std::hypot(r[col::vx], r[col::vy]) < scale &&
-                 std::fabs(r[col::omega]) < 1e-3 * watch.spin * scene.solver.t_end &&
-                 analyse_rest(watch.coulomb, r[col::theta]).stuck) {
+      } else if (watch.gave_up_at_rest(y.data(), scene.solver.t_end)) {
         tr.outcome = Outcome::no_static_friction;
         tr.outcome_message = no_static_friction_message(scene, s.law, r[col::t], r[col::x], r[col::y], r[col::theta]);
       }

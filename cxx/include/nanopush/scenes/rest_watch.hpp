@@ -38,6 +38,13 @@ struct RestWatch {
     lever = std::max(m.geometry.a, m.geometry.b);
     spin = m.muN * lever / m.inertia;
   }
+  /// Whether a run that gave up at state y (speeds below 1e-3 of what friction removes over
+  /// t_end, and a pose where the push is inside the limit surface) gave up at rest: the sign
+  /// law chattering there, or an integration of its sensitivities that could not follow it.
+  [[nodiscard]] bool gave_up_at_rest(const double* y, double t_end) const {
+    return std::hypot(y[kVx], y[kVy]) < 1e-3 * accel * t_end && std::fabs(y[kOmega]) < 1e-3 * spin * t_end &&
+           analyse_rest(coulomb, y[kTheta]).stuck;
+  }
   int operator()(double t0, const double* y0, double t1, const double* y1) {
     positive_work += std::max(0.0, y1[kWorkFric] - y0[kWorkFric]);
     last_omega = y1[kOmega];
