@@ -117,15 +117,15 @@ forces)  # forces' flags: ranges named by the flag, each shape's own flags
   expect 2 '^nanopush: error: --inner-radius = -1: must be in \[0, 1.35e-08\) \(m; 0 <= inner radius < --radius\)' \
     "$np" forces --shape tube --inner-radius -1
   expect 2 '^nanopush: error: --inner-radius = 1: must be in \[0, 1.35e-08\)' "$np" forces --shape tube --inner-radius 1
-  expect 2 '^nanopush: error: --inner-radius = 1e-09: not used by --shape rod \(only a tube has an inner radius\)' \
+  expect 2 '^nanopush: error: --inner-radius = 1e-9: not used by --shape rod \(only a tube has an inner radius\)' \
     "$np" forces --shape rod --inner-radius 1e-9
   expect 2 '^nanopush: error: --push = -1: must be > 0 \(N\)' "$np" forces --shape rod --push -1
   expect 2 '^nanopush: error: --push = 0: must be > 0 \(N\)' "$np" forces --push 0
-  expect 2 '^nanopush: error: --height = \(not given\): a bar needs --length, --width and --height \(m\)' \
+  expect 2 '^nanopush: error: --height = \(not given\): a bar needs --width and --height \(m\)' \
     "$np" forces --shape bar --width 1e-7
-  expect 2 '^nanopush: error: --width = \(not given\): a bar needs --length, --width and --height \(m\)' \
+  expect 2 '^nanopush: error: --width = \(not given\): a bar needs --width and --height \(m\)' \
     "$np" forces --shape bar --height 1e-7
-  expect 2 '^nanopush: error: --width = 1e-07: not used by --shape rod' "$np" forces --width 1e-7
+  expect 2 '^nanopush: error: --width = 1e-7: not used by --shape rod' "$np" forces --width 1e-7
   expect 2 '^nanopush: error: --push-height = 1: must be in \[-1.35e-08, 1.35e-08\] \(m; \|h\| <= the radius\)' \
     "$np" forces --push 1e-6 --push-height 1
   expect 2 '^nanopush: error: --mu = -1: must be >= 0' "$np" forces --push 1e-6 --mu -1
