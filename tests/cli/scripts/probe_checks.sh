@@ -145,11 +145,11 @@ convert)  # a table cut short (no line end after its last row) is refused, namin
   rows=$(wc -l < t.csv)
   tail -c 7 t.csv | grep -q ',1e-09$' || fail "the table does not end in 1e-09: $(tail -1 t.csv)"
   truncate -s -2 t.csv  # the line end and the 9: the row has its cells and 1e-0 reads as a number
-  expect 2 "^nanopush: error: t.csv:$rows: the last row is cut short \\(no line end\\)" "$np" convert t.csv
+  expect 2 "^nanopush: error: table = t.csv:$rows: the last row is cut short \\(no line end\\)" "$np" convert t.csv
   first_line_is_error
   # cut in the middle of a row: the same, not a row of fewer cells
   head -c -15 ../whole.csv > t.csv
-  expect 2 "^nanopush: error: t.csv:$rows: the last row is cut short \\(no line end\\)" "$np" convert t.csv
+  expect 2 "^nanopush: error: table = t.csv:$rows: the last row is cut short \\(no line end\\)" "$np" convert t.csv
   # the whole table converts
   cp ../whole.csv t.csv
   "$np" convert t.csv --quiet || fail "convert of the whole table failed"
