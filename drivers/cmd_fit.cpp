@@ -163,6 +163,9 @@ int run_fit(const FitCliOptions& o) {
     if (!o.free.empty()) throw InputError("--free", o.free[0], "--synthesize fits nothing; drop --free");
     if (sigma.empty()) throw InputError("--sigma", "(none)", "--synthesize needs the noise of each column to write, e.g. --sigma x=1e-9");
     const TableOutput table(o.synthesize, "--synthesize", false);  // FILE.csv or FILE.nc, checked before the runs
+    std::vector<fs::path> targets = csv_with_sidecar(table.table());  // and the .nc it becomes
+    if (table.netcdf()) targets.emplace_back(o.synthesize);
+    check_outputs(targets);
     std::array<double, 3> s{0, 0, 0};
     for (std::size_t c = 0; c < 3; ++c)
       if (auto it = sigma.find(fit::kPoseColumns[c]); it != sigma.end()) s[c] = it->second;
@@ -199,6 +202,17 @@ int run_fit(const FitCliOptions& o) {
   fo.accuracy = o.accuracy;
   fo.gradients = parse_choice<fit::Gradients>("--gradients", o.gradients);
   fo.max_evaluations = o.max_evaluations;
+  // Every output checked where it goes before the fit (docs/errors.md, "Outputs"): a target
+  // that cannot be written costs no fit and leaves none of the others.
+  check_output_directory(o.out);
+  std::vector<fs::path> targets = csv_with_sidecar(fs::path(o.out) / (sc.name + ".fit.csv"));
+  if (!o.no_plot && plot::available()) {
+    const fs::path figure = plot::figure_path(fs::path(o.out) / (sc.name + ".fit.png"));
+    targets.push_back(figure);
+    targets.push_back(fs::path(figure).replace_extension(".gp"));
+  }
+  if (!o.json.empty() && o.json != "-") targets.emplace_back(o.json);
+  check_outputs(targets);
   const fit::FitResult r = fit::fit_trajectory(sc, obs, fo);
   std::vector<fs::path> produced;
   write_outputs(r, obs, o.out, sc.name, !o.no_plot, produced);

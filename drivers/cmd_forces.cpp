@@ -38,11 +38,99 @@ struct Options {
   std::string substrate;
   std::string shape = "rod";
   std::string material = "graphite";
-  double length = 590e-9, width = 0.0, height = 0.0, radius = 13.5e-9, inner_radius = -1.0;
+  double length = 590e-9, width = 0.0, height = 0.0, radius = 13.5e-9, inner_radius = 0.0;
   double rtol = 1e-10, drop_fraction = 0.1;
   bool no_drop = false;
-  double push = -1.0, push_height = 0.0, mu = 0.1;
+  double push = 0.0, push_height = 0.0, mu = 0.1;
+  const CLI::App* app = nullptr;  ///< what was given on the command line (count of an option)
+  [[nodiscard]] bool given(const char* flag) const { return app && app->count(flag) > 0; }
 };
+
+/// The flag of a scene key the options describe (environment.gap: --gap), "" for none.
+std::string flag_of(const std::string& field) {
+  static const std::pair<const char*, const char*> keys[] = {
+      {"environment.medium", "--medium"},   {"environment.humidity", "--humidity"},
+      {"environment.liquid", "--liquid"},   {"environment.adhesion", "--no-adhesion"},
+      {"environment.gap", "--gap"},         {"environment.substrate", "--substrate"},
+      {"body.shape", "--shape"},            {"body.material", "--material"},
+      {"body.length", "--length"},          {"body.width", "--width"},
+      {"body.height", "--height"},          {"body.radius", "--radius"},
+      {"body.inner_radius", "--inner-radius"}};
+  for (const auto& [key, flag] : keys)
+    if (field == key) return flag;
+  return "";
+}
+
+/// The flags that describe the scene without a SCENE file, and the shapes each belongs to.
+struct ShapeFlag {
+  const char* flag;
+  std::initializer_list<Shape> shapes;
+};
+const ShapeFlag kShapeFlags[] = {{"--length", {Shape::bar, Shape::rod, Shape::tube}},
+                                 {"--width", {Shape::bar}},
+                                 {"--height", {Shape::bar}},
+                                 {"--radius", {Shape::rod, Shape::tube, Shape::sphere}},
+                                 {"--inner-radius", {Shape::tube}}};
+const char* const kSceneFlags[] = {"--medium", "--humidity", "--liquid",   "--no-adhesion", "--gap",
+                                   "--substrate", "--shape", "--material", "--length",      "--width",
+                                   "--height",   "--radius",  "--inner-radius"};
+
+std::string flag_value(const Options& o, const std::string& flag) {
+  const CLI::Option* opt = o.app->get_option_no_throw(flag);
+  if (!opt || opt->get_items_expected_min() == 0) return "(given)";  // a flag: no value written
+  const auto& r = opt->results();
+  return r.empty() ? "(given)" : r.back();
+}
+
+/// The options checked before any output: each flag against its shape and range, named as
+/// written (docs/errors.md). The scene reader's own checks follow (check_flags names them).
+void check_options(const Options& o) {
+  require_positive("--rtol", o.rtol);
+  require_nonnegative("--drop-fraction", o.drop_fraction);
+  if (o.given("--push")) {
+    require_positive("--push", o.push, "N");
+    require_nonnegative("--mu", o.mu);
+    require_finite("--push-height", o.push_height, "m");
+  } else {
+    for (const char* f : {"--push-height", "--mu"})
+      if (o.given(f)) throw InputError(f, flag_value(o, f), "is for --push (the rolling-vs-sliding decision): add --push");
+  }
+  if (!o.scene.empty()) {
+    for (const char* f : kSceneFlags)
+      if (o.given(f))
+        throw InputError(f, flag_value(o, f),
+                         "the scene " + o.scene + " gives the environment and the body: drop " + f + " (or the scene)");
+    return;
+  }
+  const Shape shape = parse_choice<Shape>("--shape", o.shape);
+  for (const auto& sf : kShapeFlags)
+    if (o.given(sf.flag) && std::find(sf.shapes.begin(), sf.shapes.end(), shape) == sf.shapes.end())
+      throw InputError(sf.flag, flag_value(o, sf.flag),
+                       "not used by --shape " + o.shape +
+                           (std::string(sf.flag) == "--inner-radius" ? " (only a tube has an inner radius)" : ""));
+  if (shape == Shape::bar) {
+    for (const char* f : {"--width", "--height"})
+      if (!o.given(f)) throw InputError(f, "(not given)", "a bar needs --width and --height (m)");
+  }
+  if (shape == Shape::tube && o.given("--inner-radius")) {
+    require_positive("--radius", o.radius, "m");
+    if (!(o.inner_radius >= 0 && o.inner_radius < o.radius))
+      throw InputError("--inner-radius", fmt(o.inner_radius),
+                       "must be in [0, " + fmt(o.radius) + ") (m; 0 <= inner radius < --radius)");
+  }
+}
+
+/// A check of the scene reader run on the options: its message names the flag, not the key.
+template <class F>
+auto check_flags(F&& parse) -> decltype(parse()) {
+  try {
+    return parse();
+  } catch (const InputError& e) {
+    const std::string flag = flag_of(e.field());
+    if (flag.empty()) throw;
+    throw InputError(flag + std::string(e.what()).substr(e.field().size()));
+  }
+}
 
 toml::table options_to_tables(const Options& o, toml::table& body) {
   toml::table env;
@@ -64,12 +152,13 @@ toml::table options_to_tables(const Options& o, toml::table& body) {
   } else {
     body.insert("radius", o.radius);
     body.insert("length", o.length);
-    if (shape == Shape::tube && o.inner_radius >= 0.0) body.insert("inner_radius", o.inner_radius);
+    if (shape == Shape::tube && o.given("--inner-radius")) body.insert("inner_radius", o.inner_radius);
   }
   return env;
 }
 
 int run_forces(const Options& o) {
+  check_options(o);
   Environment env;
   std::vector<Body> bodies;
   std::string source;
@@ -91,16 +180,20 @@ int run_forces(const Options& o) {
   } else {
     toml::table bt;
     const toml::table et = options_to_tables(o, bt);
-    env = parse_environment(et);
-    bodies.push_back(parse_body(bt));
+    env = check_flags([&] { return parse_environment(et); });
+    bodies.push_back(check_flags([&] { return parse_body(bt); }));
     source = "command-line options";
   }
+  if (o.given("--push"))  // the push height on each rod or tube it is decided for
+    for (const auto& b : bodies)
+      if ((b.shape == Shape::rod || b.shape == Shape::tube) && !(std::fabs(o.push_height) <= b.radius))
+        throw InputError("--push-height", fmt(o.push_height),
+                         "must be in [" + fmt(-b.radius) + ", " + fmt(b.radius) + "] (m; |h| <= the radius" +
+                             (o.scene.empty() ? std::string(")") : " of body '" + b.name + "')"));
   LoadOptions lo;
   lo.rtol = o.rtol;
   lo.drop_fraction = o.drop_fraction;
   lo.drop_negligible = !o.no_drop;
-  require_positive("--rtol", o.rtol);
-  require_nonnegative("--drop-fraction", o.drop_fraction);
 
   std::cout << "nanopush forces: " << source << "\n";
   std::cout << "environment: " << medium_name(env.medium);
@@ -126,7 +219,7 @@ int run_forces(const Options& o) {
       }
     }
     std::cout << (any ? "" : " none") << "\n";
-    if (o.push >= 0.0 && (b.shape == Shape::rod || b.shape == Shape::tube)) {
+    if (o.given("--push") && (b.shape == Shape::rod || b.shape == Shape::tube)) {
       rolling::Push p;
       p.F = o.push;
       p.h = o.push_height;
@@ -140,7 +233,7 @@ int run_forces(const Options& o) {
                 << rolling::motion_name(d.motion) << " (rolling threshold W k/r = " << d.F_roll
                 << " N, sliding threshold mu N = " << d.F_slide << " N, static friction needed for pure rolling "
                 << d.fs_required << " N)\n";
-    } else if (o.push >= 0.0) {
+    } else if (o.given("--push")) {
       std::cout << "(--push: the rolling-vs-sliding decision applies to rods and tubes only)\n";
     }
   }
@@ -151,6 +244,7 @@ RegisterCommand reg_forces{
     {"forces",
      "Normal load of a scene: each force term (N), its share, which models ran; rolling vs sliding",
      40, options_then<Options>(run_forces, [](CLI::App& app, Options& o) {
+       o.app = &app;
        app.add_option("SCENE", o.scene,
                       "scene TOML file or preset name with [environment] and [body]/[[bodies]] tables "
                       "(see docs/forces.md); without it the options below describe the scene");
@@ -164,16 +258,16 @@ RegisterCommand reg_forces{
        app.add_option("--material", o.material, "body material: graphite, silicon, silica, mica, gold")
            ->capture_default_str();
        app.add_option("--length", o.length, "length (m): bar, rod, tube")->capture_default_str();
-       app.add_option("--width", o.width, "bar width (m)");
-       app.add_option("--height", o.height, "bar height (m)");
+       app.add_option("--width", o.width, "bar width (m; a bar needs it)");
+       app.add_option("--height", o.height, "bar height (m; a bar needs it)");
        app.add_option("--radius", o.radius, "radius (m): rod, tube (outer), sphere")->capture_default_str();
-       app.add_option("--inner-radius", o.inner_radius, "tube inner radius (m)");
+       app.add_option("--inner-radius", o.inner_radius, "tube inner radius in [0, --radius) (m; default: a solid tube)");
        app.add_option("--rtol", o.rtol, "relative tolerance of the integration the load feeds")->capture_default_str();
        app.add_option("--drop-fraction", o.drop_fraction,
                       "drop a term when |term| < drop-fraction x rtol x N")
            ->capture_default_str();
        app.add_flag("--no-drop", o.no_drop, "keep every evaluated term");
-       app.add_option("--push", o.push, "push force (N) on a rod/tube: print the rolling-vs-sliding decision");
+       app.add_option("--push", o.push, "push force > 0 (N) on a rod/tube: print the rolling-vs-sliding decision");
        app.add_option("--push-height", o.push_height, "push height above the tube axis (m), |h| <= r")
            ->capture_default_str();
        app.add_option("--mu", o.mu, "friction coefficient for the sliding threshold mu N")->capture_default_str();

@@ -228,9 +228,15 @@ void print_plan_summary(const Scene& sc, const plan::PlanResult& r) {
 std::pair<double, double> parse_range(const char* flag, const std::string& text) {
   if (text.empty()) return {-1, -1};
   const auto colon = text.find(':');
-  if (colon == std::string::npos) throw InputError(flag, text, "must be LO:HI");
-  const double lo = number_list(flag, text.substr(0, colon), 1, "LO:HI, two numbers")[0],
-               hi = number_list(flag, text.substr(colon + 1), 1, "LO:HI, two numbers")[0];
+  if (colon == std::string::npos || text.find(':', colon + 1) != std::string::npos)
+    throw InputError(flag, text, "must be LO:HI");
+  double lo = 0, hi = 0;
+  try {
+    lo = number_list(flag, text.substr(0, colon), 1, "LO:HI, two numbers")[0];
+    hi = number_list(flag, text.substr(colon + 1), 1, "LO:HI, two numbers")[0];
+  } catch (const InputError&) {  // named as written, not by the half that failed
+    throw InputError(flag, text, "must be LO:HI, two numbers");
+  }
   if (!(lo >= 0 && lo <= hi && std::isfinite(hi)))  // both ranges are of friction coefficients
     throw InputError(flag, text, "must be LO:HI with 0 <= LO <= HI (friction coefficients)");
   return {lo, hi};
@@ -241,12 +247,7 @@ std::pair<double, double> parse_range(const char* flag, const std::string& text)
 /// table with its sidecar; interrupted, it resumes from its journal) and DIR/check.json (the
 /// success probability and its 95 % Wilson interval). Returns 0, or the sweep's exit status.
 int check_cmd(const PlanCliOptions& o, const Scene& sc, const plan::PlanResult& r, const plan::PlanOptions& po,
-              const std::filesystem::path& dir) {
-  plan::CheckWorlds w;
-  w.noise = parse_noise(o.noise);
-  w.seed = o.seed;
-  if (!o.mu_range.empty()) std::tie(w.mu_lo, w.mu_hi) = parse_range("--mu-range", o.mu_range);
-  std::tie(w.tip_mu_lo, w.tip_mu_hi) = parse_range("--tip-mu-range", o.tip_mu_range);
+              const plan::CheckWorlds& w, const std::filesystem::path& dir) {
   const sweep::Plan trials = plan::check_points(o.check);
   const auto task = plan::make_check_task(sc, r, po, w);
   sweep::Options opt;
@@ -289,6 +290,42 @@ int check_cmd(const PlanCliOptions& o, const Scene& sc, const plan::PlanResult& 
   return 0;
 }
 
+/// --check's worlds from --noise, --seed, --mu-range and --tip-mu-range, checked against the
+/// scene (before planning: a bad range costs no plan and leaves no output).
+plan::CheckWorlds check_worlds(const PlanCliOptions& o, const Scene& sc) {
+  plan::CheckWorlds w;
+  w.noise = parse_noise(o.noise);
+  w.seed = o.seed;
+  if (!o.mu_range.empty()) std::tie(w.mu_lo, w.mu_hi) = parse_range("--mu-range", o.mu_range);
+  std::tie(w.tip_mu_lo, w.tip_mu_hi) = parse_range("--tip-mu-range", o.tip_mu_range);
+  plan::check_worlds(sc, w);
+  return w;
+}
+
+/// Every file plan writes into `dir` (--check's too; the closed loop's table alone), checked
+/// where it goes before planning (docs/errors.md, "Outputs").
+void check_plan_outputs(const PlanCliOptions& o, const std::filesystem::path& dir) {
+  check_output_directory(dir);
+  std::vector<std::filesystem::path> files;
+  const auto csv = [&](const char* name) {
+    for (auto& f : csv_with_sidecar(dir / name)) files.push_back(std::move(f));
+  };
+  if (o.closed_loop) {
+    csv("closed_loop.csv");
+  } else {
+    for (const char* name : {"plan.csv", "tip_path.csv", "poses.csv"}) csv(name);
+    files.push_back(dir / "plan.json");
+    const auto figure = plot::figure_path(dir / "plan.png");
+    files.push_back(figure);
+    files.push_back(std::filesystem::path(figure).replace_extension(".gp"));
+    if (o.check > 0) {
+      csv("check.csv");
+      files.push_back(dir / "check.json");
+    }
+  }
+  check_outputs(files);
+}
+
 int plan_cmd(const PlanCliOptions& o) {
   const Scene sc = load_scene_arg(o.scene, o.sets);
   set_provenance_scene(o.scene);
@@ -313,10 +350,23 @@ int plan_cmd(const PlanCliOptions& o) {
     if (!po.robust())
       throw InputError("--robust", "--noise " + o.noise, "plans for the worlds of --noise or --tip-mu-range: give either");
   }
-  if (o.closed_loop) return closed_loop_cmd(o, sc, {g[0], g[1], g[2]}, po);
-  if (!o.truth.empty()) throw InputError("--truth", o.truth, "is the closed loop's: add --closed-loop");
-  const plan::PlanResult r = plan::plan_pushes(sc, {g[0], g[1], g[2]}, po);
+  // Every option checked before planning: the options of --check (none is ignored), its worlds,
+  // the task (goal, tolerance) and where each output goes.
+  if (o.check > 0 && o.closed_loop)
+    throw InputError("--check", std::to_string(o.check), "the closed loop re-plans from each image: drop --check");
+  if (!o.mu_range.empty() && o.check == 0)
+    throw InputError("--mu-range", o.mu_range, "is for --check N (the surface mu of its worlds): add --check N");
+  if (!o.tip_mu_range.empty() && o.check == 0 && !o.robust)
+    throw InputError("--tip-mu-range", o.tip_mu_range,
+                     "is for --check N or --robust (the tip mu of their worlds): add either");
+  const plan::CheckWorlds worlds = o.check > 0 ? check_worlds(o, sc) : plan::CheckWorlds{};
+  const plan::Pose goal{g[0], g[1], g[2]};
+  plan::check_plan_task(sc, goal, po);
   const std::filesystem::path dir = o.out.empty() ? sc.name + ".plan" : o.out;
+  if (!o.closed_loop && !o.truth.empty()) throw InputError("--truth", o.truth, "is the closed loop's: add --closed-loop");
+  check_plan_outputs(o, dir);
+  if (o.closed_loop) return closed_loop_cmd(o, sc, goal, po);
+  const plan::PlanResult r = plan::plan_pushes(sc, goal, po);
   // Under mpirun every rank plans (the search is deterministic) for --check's sweep; rank 0
   // writes and speaks.
   const bool speaker = table_rank();
@@ -328,7 +378,7 @@ int plan_cmd(const PlanCliOptions& o) {
     if (!r.found()) std::cerr << "nanopush: not_found: " << r.message << "\n";
   }
   if (o.check > 0 && r.found()) {
-    const int rc = check_cmd(o, sc, r, po, dir);
+    const int rc = check_cmd(o, sc, r, po, worlds, dir);
     if (rc != 0) return rc;
   }
   return r.found() ? 0 : 3;

@@ -86,6 +86,12 @@ int run_cmd(const RunOptions& o) {
   check_engine_method(sc, rs);
   // An output name of unknown extension is refused before the run (docs/data.md).
   (void)TableOutput::kind_of(o.out);
+  // And where it goes (a directory, a FIFO, a path ending in '/'): refused before the run. (The
+  // default name holds the engine's label, known after the run; it goes to the working directory.)
+  if (!o.out.empty() && o.out != "-") {
+    if (std::filesystem::path(o.out).extension() == ".nc") check_outputs({o.out, o.out + ".csv"});
+    else check_outputs(csv_with_sidecar(o.out));
+  }
   const auto t0 = std::chrono::steady_clock::now();
   const Trajectory tr = run_engine(sc, rs);
   const double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

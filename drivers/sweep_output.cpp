@@ -103,6 +103,24 @@ std::string TableOutput::finish(const std::vector<NetcdfAxis>& axes, const std::
   return out_.string();
 }
 
+void check_outputs(const std::vector<fs::path>& files) {
+  for (const auto& f : files) (void)resolve_output(f);
+}
+
+std::vector<fs::path> csv_with_sidecar(const fs::path& csv) {
+  if (resolve_output(csv).write_through) return {csv};  // a device: no sidecar (docs/errors.md)
+  return {csv, schema_path(csv)};
+}
+
+void check_output_directory(const fs::path& dir) {
+  std::error_code ec;
+  const fs::file_status st = fs::status(dir, ec);  // a link followed
+  if (dir.empty() || !fs::exists(st) || fs::is_directory(st)) return;
+  throw OutputError("output = " + dir.string() + ": is not a directory (" +
+                    (fs::is_regular_file(st) ? std::string("a regular file") : std::string("not a directory")) +
+                    "): the outputs go into a directory; give one, or a path that does not exist yet");
+}
+
 bool table_rank() {
   for (const char* v : {"OMPI_COMM_WORLD_RANK", "PMI_RANK", "PMIX_RANK"})
     if (const char* r = std::getenv(v)) return std::string(r) == "0";

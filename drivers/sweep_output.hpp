@@ -59,6 +59,17 @@ class TableOutput {
   std::filesystem::path out_, table_, tmpdir_;
 };
 
+/// Every file a command will write, checked where it goes (resolve_output, docs/errors.md
+/// "Outputs") before the command's work: a directory, a FIFO, a path ending in '/', ... is
+/// refused (OutputError, exit 5) before anything is computed, made or written. A CSV's sidecar
+/// is checked with it (csv_with_sidecar). Makes nothing.
+void check_outputs(const std::vector<std::filesystem::path>& files);
+/// `csv` and its Table Schema sidecar (none for a device), for check_outputs.
+std::vector<std::filesystem::path> csv_with_sidecar(const std::filesystem::path& csv);
+/// An output directory (`--out DIR`): a directory, a link to one, or a path that does not exist
+/// yet (made with the first file). Anything else is refused (OutputError) before any work.
+void check_output_directory(const std::filesystem::path& dir);
+
 /// Progress of a sweep on stderr ("LABEL: done/total, rate, time left"), on a terminal only
 /// (an empty function when quiet or not a terminal). The rate is over the last ten seconds from
 /// the first report, which the runner makes when the work starts (sweep::ProgressRate), so

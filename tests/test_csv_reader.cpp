@@ -42,6 +42,19 @@ TEST_CASE("csv: CRLF, a lone CR, a byte order mark, no final newline", "[csv][un
   CHECK(r[1].fields == Fields{"1", "2"});
   CHECK(r[2].fields == Fields{"3", "4"});
   CHECK(r[2].line == 3);
+  // Each record says whether a line end closed it: only the last, without one, did not.
+  CHECK(r[0].ended);
+  CHECK(r[1].ended);
+  CHECK_FALSE(r[2].ended);
+  const auto whole = csv::parse("t,x\n1,2.5\n", "t");
+  REQUIRE(whole.size() == 2);
+  CHECK(whole[1].ended);
+  const auto cut = csv::parse("t,x\n1,2.5e", "t");  // cut mid-number: its cells still count
+  REQUIRE(cut.size() == 2);
+  CHECK(cut[1].fields == Fields{"1", "2.5e"});
+  CHECK_FALSE(cut[1].ended);
+  const auto quoted = csv::parse("t,x\n1,\"a\"", "t");
+  CHECK_FALSE(quoted[1].ended);
 }
 
 TEST_CASE("csv: '#' comment lines only where asked", "[csv][unit]") {

@@ -313,6 +313,20 @@ TEST_CASE("Bad input is rejected with a clear error (C++ and F77)", "[icor][unit
              Catch::Matchers::StartsWith("F = 1e+308, yn = 2e-07: mu or its uncertainty is not a finite number"));
   CHECK_THAT(message([&] { icor::estimate_mu_from_icor(rod, {1e308, 1e306}, {1e-300, 0}); }),
              Catch::Matchers::StartsWith("F = 1e+308, R = 1e-300: mu or its uncertainty is not a finite number"));
+  // A finite mu whose uncertainty overflows: named by the input whose contribution does, not
+  // by F and yn, which are fine.
+  const auto msg_L = message([&] { icor::estimate_mu_from_force(rod, {1e-7, 0}, {1e-7, 0}, 1e308); });
+  CHECK_THAT(msg_L, Catch::Matchers::StartsWith("L uncertainty = 1e+308: its contribution to the uncertainty of mu"));
+  CHECK_THAT(msg_L, !Catch::Matchers::Contains("F = "));
+  CHECK_THAT(message([&] { icor::estimate_mu_from_force(rod, {1e-7, 1e300}, {1e-7, 0}); }),
+             Catch::Matchers::StartsWith("F uncertainty = 1e+300: its contribution to the uncertainty of mu"));
+  CHECK_THAT(message([&] { icor::estimate_mu_from_icor(rod, {1e-7, 0}, {1e-7, 0}, 0, 1e308); }),
+             Catch::Matchers::StartsWith("H uncertainty = 1e+308: "));
+  icor::MuEstimate e;  // a derivative that is not finite names the value
+  e.mu = 1;
+  e.contributions = {{"F", 1, 0, 1}, {"yn", 0, 0, 1}, {"L", 1e-300, 1e-9, std::numeric_limits<double>::infinity()}};
+  CHECK_THAT(message([&] { icor::propagate_uncertainty(e); }), Catch::Matchers::StartsWith("L = 1e-300: mu or its uncertainty"));
+  CHECK(icor::estimate_mu_from_force(rod, {1e-7, 1e-9}, {1e-7, 1e-9}, 1e-9, 1e-21).sigma > 0);
   CHECK_THROWS_AS(f77::icor_cubic(-1e-9, kL, kK2, f77::IcorCubicMethod::Lapack), InputError);
   CHECK_THROWS_AS(f77::icor_cubic(1e-9, 0.0, kK2, f77::IcorCubicMethod::Brent), InputError);
   CHECK_THROWS_AS(f77::icor_formula(NP_F77_ICOR_EQ_4_13, -1e-9, kL), InputError);

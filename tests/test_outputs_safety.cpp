@@ -78,6 +78,22 @@ TEST_CASE("outputs: a FIFO or a directory is refused (OutputError) and left as i
   fs::remove_all(dir);
 }
 
+
+TEST_CASE("outputs: a path ending in '/' (or '.', '..') is refused before anything is made", "[outputs][unit]") {
+  const fs::path dir = output_scratch("trailing_slash");
+  for (const std::string name : {"new.csv/", "sub/new.csv/", "new.csv/.", "new.csv/.."}) {
+    const fs::path p = dir.string() + "/" + name;
+    CHECK_THROWS_AS(resolve_output(p), OutputError);
+    CHECK_THROWS_WITH(write_file_atomic(p, "x\n"), Catch::StartsWith("output = " + p.string() + ": ends in "));
+    CHECK_THROWS_WITH(CsvWriter(p, {{"x", "m", "x"}}), Catch::Contains("which names a directory"));
+  }
+  CHECK(fs::is_empty(dir));  // no directory made for any of them
+  // A directory that exists, named with its '/': refused the same way, left as it was.
+  fs::create_directories(dir / "d.csv");
+  CHECK_THROWS_WITH(write_file_atomic(dir.string() + "/d.csv/", "x\n"), Catch::Contains("ends in /"));
+  CHECK(fs::is_empty(dir / "d.csv"));
+  fs::remove_all(dir);
+}
 TEST_CASE("outputs: a symbolic link is followed, its target replaced in its own directory", "[outputs][unit]") {
   const fs::path dir = output_scratch("links");
   fs::create_directories(dir / "data");

@@ -140,6 +140,14 @@ TEST_CASE("Planning: an unreachable goal ends in not_found with the best plan; b
   o.max_pushes = 0;
   CHECK_THROWS_WITH(plan::plan_pushes(sc, {1e-8, 0, 0}, o), Catch::Contains("--max-pushes"));
   CHECK_THROWS_WITH(plan::parse_objective("speed"), Catch::Contains("--objective"));
+  // A goal beyond kGoalReach bar lengths is refused naming --goal, not the push it would give
+  // ("tip.travel / tip.speed = inf"); one within reach is a task.
+  o = {};
+  const double L = 2 * std::max(sc.geometry.a, sc.geometry.b);
+  CHECK_THROWS_WITH(plan::plan_pushes(sc, {1e308, 0, 0}, o),
+                    Catch::StartsWith("--goal = 1e+308,0,0: must be within 1e6 bar lengths of the bar's start"));
+  CHECK_THROWS_WITH(plan::check_plan_task(sc, {0, -1.01 * plan::kGoalReach * L, 0}, o), Catch::StartsWith("--goal = 0,"));
+  CHECK_NOTHROW(plan::check_plan_task(sc, {0, 0.99 * plan::kGoalReach * L, 0}, o));
 }
 
 }  // namespace NANOPUSH_UNITY_ID

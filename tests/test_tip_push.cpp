@@ -232,6 +232,29 @@ TEST_CASE("Tip scenes: the run is the quasi-static model, t_end defaults to the 
   CHECK(tr.tip_events.front().what == "contact");
 }
 
+TEST_CASE("Tip scenes: a speed outside the magnitudes the integrators represent is named as tip.speed", "[tip][unit]") {
+  auto speed = [](const std::string& v) {
+    std::string s = kTipScene;
+    s.replace(s.find("speed = 1e-6"), 12, "speed = " + v);
+    return s;
+  };
+  auto message = [](const std::string& text) {
+    try {
+      (void)parse_scene(text, "tip.toml");
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(accepted)");
+  };
+  // Not "the scene's scales = 1e-151": the key the user wrote.
+  CHECK_THAT(message(speed("1e-151")),
+             Catch::Matchers::StartsWith("tip.speed = 1e-151: outside the magnitudes the integrators represent"));
+  // A duration travel / speed out of range (t_end not given) names the tip's keys, not solver.t_end.
+  CHECK_THAT(message(speed("1e149")), Catch::Matchers::StartsWith("tip.travel, tip.speed = ") &&
+                                          Catch::Matchers::Contains("the run's duration"));
+  CHECK(message(speed("1e-100")) == "(accepted)");
+}
+
 TEST_CASE("Tip scenes: keys of the other push mode, a smooth surface and the F77 engine are refused", "[tip][unit]") {
   auto with = [](const std::string& extra_push, const std::string& tail) {
     std::string s = kTipScene;

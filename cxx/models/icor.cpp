@@ -438,14 +438,35 @@ void check_measured(const std::string& name, const Measured& m, const std::strin
 }  // namespace
 
 MuEstimate propagate_uncertainty(MuEstimate e) {
+  const auto overflow = [&](const std::string& named) {
+    return InputError(named + ": mu or its uncertainty is not a finite number: these values overflow a double (forces "
+                              "in N, lengths in m; a push force is of the order of the load " + fmt(e.load) + " N)");
+  };
+  // mu itself: from the measured values (the first two contributions).
+  if (!std::isfinite(e.mu))
+    throw overflow(e.contributions[0].input + " = " + fmt(e.contributions[0].value) + ", " + e.contributions[1].input +
+                   " = " + fmt(e.contributions[1].value));
+  // Its uncertainty: named by the input whose contribution (d mu / d input x its uncertainty)
+  // is not finite, or the largest when only their sum of squares overflows.
   double var = 0.0;
-  for (const auto& c : e.contributions) var += (c.derivative * c.sigma) * (c.derivative * c.sigma);
+  const Contribution* worst = nullptr;
+  for (const auto& c : e.contributions) {
+    const double term = c.derivative * c.sigma;
+    if (!std::isfinite(term)) {
+      if (!std::isfinite(c.derivative))  // the derivative at the value: the value is what overflows
+        throw overflow(c.input + " = " + fmt(c.value));
+      throw InputError(c.input + " uncertainty", fmt(c.sigma),
+                       "its contribution to the uncertainty of mu (|d mu / d " + c.input + "| = " +
+                           fmt(std::fabs(c.derivative)) + " times it) is not a finite number: it overflows a double");
+    }
+    if (!worst || std::fabs(term) > std::fabs(worst->derivative * worst->sigma)) worst = &c;
+    var += term * term;
+  }
   e.sigma = std::sqrt(var);
-  if (!std::isfinite(e.mu) || !std::isfinite(e.sigma))
-    throw InputError(e.contributions[0].input + " = " + fmt(e.contributions[0].value) + ", " + e.contributions[1].input +
-                     " = " + fmt(e.contributions[1].value) +
-                     ": mu or its uncertainty is not a finite number: these values overflow a double (forces in N, "
-                     "lengths in m; a push force is of the order of the load " + fmt(e.load) + " N)");
+  if (!std::isfinite(e.sigma))
+    throw InputError(worst->input + " uncertainty", fmt(worst->sigma),
+                     "its contribution to the uncertainty of mu (|d mu / d " + worst->input + "| = " +
+                         fmt(std::fabs(worst->derivative)) + " times it) squared is not a finite number: it overflows a double");
   return e;
 }
 

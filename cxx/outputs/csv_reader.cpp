@@ -49,6 +49,7 @@ bool Reader::next(Record& r) {
 
 bool Reader::read_record(Record& r) {
   r.fields.clear();
+  r.ended = true;
   int c = in_.get();
   if (c == std::char_traits<char>::eof()) return false;
   ++line_;
@@ -67,6 +68,7 @@ bool Reader::read_record(Record& r) {
         throw InputError(source_ + " line " + std::to_string(r.line), "an opening quote",
                          "the quoted field is not closed before the end of the input");
       end_field();
+      r.ended = false;
       return true;
     }
     const char ch = static_cast<char>(c);

@@ -150,6 +150,12 @@ std::filesystem::path follow_links(const std::filesystem::path& target) {
 OutputTarget resolve_output(const std::filesystem::path& target) {
   const std::string s = target.string();
   if (s.empty()) throw OutputError("output = \"\" (empty): give a file name");
+  // A path ending in '/' (or in '.' or '..') names a directory, never a file: refused before
+  // anything is made (it would otherwise become the directory that the write then refuses).
+  const std::string last = target.filename().string();
+  if (last.empty() || last == "." || last == "..")
+    throw OutputError("output = " + s + ": " + (last.empty() ? "ends in /" : "ends in " + last) +
+                      ", which names a directory: an output is a file written whole; give the path of a file");
   struct stat st {};
   if (names_own_descriptor(s)) {
     if (::stat(s.c_str(), &st) != 0)

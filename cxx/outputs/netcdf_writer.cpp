@@ -164,6 +164,14 @@ Trajectories scan_trajectories(const std::vector<fs::path>& files) {
   return t;
 }
 
+/// A record of a table nanopush wrote (every row ended by a line end) that the input ended
+/// inside: the file was cut short (a copy, a full disk, a kill), refused naming file and row.
+void require_ended(const csv::Record& rec, const fs::path& csv) {
+  if (!rec.ended)
+    throw InputError("table", csv.string() + ":" + std::to_string(rec.line),
+                     "the last row is cut short (no line end): the table is incomplete");
+}
+
 /// One point's trajectory as doubles, row after row (the columns `width`).
 std::vector<double> read_trajectory(const fs::path& f, std::size_t width) {
   std::vector<double> v;
@@ -171,10 +179,12 @@ std::vector<double> read_trajectory(const fs::path& f, std::size_t width) {
   csv::Reader reader(in, f.string());
   csv::Record rec;
   if (!reader.next(rec)) return v;
+  require_ended(rec, f);
   if (rec.fields.size() != width)
     throw InputError("trajectory", f.string(), "has " + std::to_string(rec.fields.size()) + " columns, the first " +
                                                    std::to_string(width) + " (trajectories of one sweep differ)");
   while (reader.next(rec)) {
+    require_ended(rec, f);
     if (rec.fields.size() != width)
       throw InputError(f.string() + ":" + std::to_string(rec.line), csv::join(rec.fields),
                        std::to_string(width) + " cells expected");
@@ -209,6 +219,7 @@ Table read_table(const fs::path& csv) {
   csv::Reader reader(in, csv.string());
   csv::Record rec;
   if (!reader.next(rec)) throw InputError("table", csv.string(), "is empty (no header)");
+  require_ended(rec, csv);
   const std::size_t ncol = t.fields.size();
   if (rec.fields.size() != ncol)
     throw InputError("table", csv.string(), "has " + std::to_string(rec.fields.size()) + " columns, its sidecar " +
@@ -219,6 +230,7 @@ Table read_table(const fs::path& csv) {
                                                   ", its sidecar says " + t.fields[c].name);
   t.cells.resize(ncol);
   while (reader.next(rec)) {
+    require_ended(rec, csv);
     if (rec.fields.size() != ncol)
       throw InputError(csv.string() + ":" + std::to_string(rec.line), csv::join(rec.fields),
                        std::to_string(ncol) + " cells expected");

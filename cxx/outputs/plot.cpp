@@ -158,7 +158,11 @@ std::filesystem::path render_script(const std::string& body, const std::filesyst
     fs << text(tmp_png.path().filename().string());
     if (!fs.flush()) throw std::runtime_error("cannot write " + tmp_script.path().string());
   }
-  const int rc = run_program({"gnuplot", tmp_script.path().string()}, "/dev/null", "/dev/null", tmp_err.path().string());
+  // A relative path goes as ./PATH: one starting with '-' (an output directory named "-") would
+  // otherwise be read by gnuplot as an option.
+  const std::filesystem::path& sp = tmp_script.path();
+  const std::string script_arg = sp.is_absolute() ? sp.string() : (std::filesystem::path(".") / sp).string();
+  const int rc = run_program({"gnuplot", script_arg}, "/dev/null", "/dev/null", tmp_err.path().string());
   std::string err;
   {
     std::ifstream e(tmp_err.path());

@@ -38,16 +38,9 @@ class CheckTask final : public sweep::Task {
  public:
   CheckTask(const Scene& scene, const PlanResult& plan, const PlanOptions& o, const CheckWorlds& w)
       : scene_(scene), plan_(plan), o_(o), w_(w) {
-    for (double s : {w.noise.x, w.noise.y, w.noise.theta})
-      if (!(s >= 0 && std::isfinite(s))) throw InputError("--noise", text(s), "standard deviations must be >= 0");
+    check_worlds(scene, w);
     vary_mu_ = !(w.mu_lo == 0 && w.mu_hi == 0);
-    if (vary_mu_ && !(w.mu_lo > 0 && w.mu_hi >= w.mu_lo && w.mu_hi <= 10))
-      throw InputError("--mu-range", text(w.mu_lo) + ":" + text(w.mu_hi), "must be LO:HI with 0 < LO <= HI <= 10");
     vary_tip_mu_ = w.tip_mu_lo >= 0;
-    if (vary_tip_mu_ && !(w.tip_mu_hi >= w.tip_mu_lo && w.tip_mu_hi <= 10))
-      throw InputError("--tip-mu-range", text(w.tip_mu_lo) + ":" + text(w.tip_mu_hi), "must be LO:HI with 0 <= LO <= HI <= 10");
-    if (vary_tip_mu_ && scene.push_mode != PushMode::tip)
-      throw InputError("--tip-mu-range", scene.name, "varies the tip's friction: the scene must be a tip scene (push.mode = \"tip\")");
   }
   [[nodiscard]] std::string name() const override { return "plan-check"; }
   [[nodiscard]] std::string scene_name() const override { return scene_.name; }
@@ -124,6 +117,19 @@ class CheckTask final : public sweep::Task {
 };
 
 }  // namespace
+
+void check_worlds(const Scene& scene, const CheckWorlds& w) {
+  for (double s : {w.noise.x, w.noise.y, w.noise.theta})
+    if (!(s >= 0 && std::isfinite(s))) throw InputError("--noise", fmt(s), "standard deviations must be >= 0");
+  const bool vary_mu = !(w.mu_lo == 0 && w.mu_hi == 0);
+  if (vary_mu && !(w.mu_lo > 0 && w.mu_hi >= w.mu_lo && w.mu_hi <= 10))
+    throw InputError("--mu-range", fmt(w.mu_lo) + ":" + fmt(w.mu_hi), "must be LO:HI with 0 < LO <= HI <= 10");
+  const bool vary_tip_mu = w.tip_mu_lo >= 0;
+  if (vary_tip_mu && !(w.tip_mu_hi >= w.tip_mu_lo && w.tip_mu_hi <= 10))
+    throw InputError("--tip-mu-range", fmt(w.tip_mu_lo) + ":" + fmt(w.tip_mu_hi), "must be LO:HI with 0 <= LO <= HI <= 10");
+  if (vary_tip_mu && scene.push_mode != PushMode::tip)
+    throw InputError("--tip-mu-range", scene.name, "varies the tip's friction: the scene must be a tip scene (push.mode = \"tip\")");
+}
 
 sweep::Plan check_points(int trials) {
   if (trials < 1 || trials > kMaxTrials)

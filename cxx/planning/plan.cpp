@@ -8,8 +8,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <iomanip>
 #include <limits>
 #include <optional>
+#include <sstream>
 
 #include "nanopush/models/tip_push.hpp"
 #include "nanopush/numerics/error.hpp"
@@ -155,6 +157,19 @@ void check_task(const Scene& scene, const Pose& goal, const PlanOptions& o) {
   for (double v : {goal.x, goal.y, goal.theta})
     if (!std::isfinite(v)) throw InputError("--goal", fmt(goal.x) + "," + fmt(goal.y) + "," + fmt(goal.theta), "must be three finite numbers X,Y,THETA (m, m, rad)");
   const double L = 2 * std::max(scene.geometry.a, scene.geometry.b);
+  // Within reach: a push's travel and duration follow from the distance to the goal, and a goal
+  // beyond a million bar lengths (far past any AFM's scan range) is no task for the bar, whose
+  // pushes would overflow there.
+  {
+    const double x0 = scene.initial[kX], y0 = scene.initial[kY], reach = kGoalReach * L;
+    if (!(std::hypot(goal.x - x0, goal.y - y0) <= reach)) {
+      std::ostringstream r;
+      r << std::setprecision(3) << reach;
+      throw InputError("--goal", fmt(goal.x) + "," + fmt(goal.y) + "," + fmt(goal.theta),
+                       "must be within 1e6 bar lengths of the bar's start: |(X, Y) - (" + fmt(x0) + ", " + fmt(y0) +
+                           ")| <= " + r.str() + " m (the bar is " + fmt(L) + " m long)");
+    }
+  }
   require_finite("--tolerance", o.tolerance_distance, "m");
   require_finite("--tolerance", o.tolerance_angle, "rad");
   // The model resolves poses to ~rtol of the bar's size; a tolerance below 1e-6 of it is noise.
@@ -303,6 +318,8 @@ Scene push_scene(const Scene& scene, const Pose& from, const PlannedPush& p) {
   doc.erase("sweep");
   return scene_from_document(doc, scene.name);
 }
+
+void check_plan_task(const Scene& scene, const Pose& goal, const PlanOptions& o) { detail::check_task(scene, goal, o); }
 
 PlanResult plan_pushes(const Scene& scene, const Pose& goal, const PlanOptions& o) {
   const auto t0 = std::chrono::steady_clock::now();

@@ -171,7 +171,25 @@ void check_representable(const Scene& sc) {
   require_representable("solver.h0", sc.solver.h0, "s");
   require_representable("solver.hmax", sc.solver.hmax, "s");
   require_representable("solver.atol", sc.solver.atol, "SI");
-  for (double x : sc.state_scales()) require_representable("the scene's scales", x, "SI", "a state scale");
+  // The state scales (Scene::state_scales), each named by the inputs it comes from.
+  const char* const len_key = sc.length >= sc.width ? "object.length" : "object.width";
+  const double len = std::max(sc.length, sc.width);
+  if (sc.push_mode == PushMode::tip) {
+    require_representable("tip.speed", sc.tip.speed, "m/s");
+    require_representable(std::string("tip.speed, ") + len_key, sc.tip.speed / len, "rad/s",
+                          "the rotation rate scale tip.speed / length");
+    require_representable(std::string("surface.mu, normal load, ") + len_key, sc.friction_limit() * len, "J",
+                          "the work scale mu N length");
+  } else {
+    const double torque = sc.push.force * std::max(sc.push.lever(), 1e-3 * len);
+    const double w = std::sqrt(torque / sc.inertia);
+    require_representable("push.force, push point, object.inertia", w, "rad/s",
+                          "the rotation rate scale sqrt(F lever / I)");
+    require_representable(std::string("push.force, push point, object.inertia, ") + len_key, len * w, "m/s",
+                          "the speed scale length sqrt(F lever / I)");
+    require_representable(std::string("push.force, ") + len_key, sc.push.force * len, "J", "the work scale F length");
+  }
+  for (double x : sc.state_scales()) require_representable("the scene's scales", x, "SI", "a state scale");  // (named above)
 }
 
 }  // namespace
@@ -415,10 +433,16 @@ void check_tip_scene(Scene& sc) {
                        "the dynamic tip model needs the tip's spring: give tip.stiffness (N/m, > 0) or the "
                        "tip.cantilever keys" + why);
   }
-  if (sc.solver.t_end == 0)
-    sc.solver.t_end = sc.tip_model_run() == TipModel::dynamic
-                          ? tip::dynamic_t_end({sc.mass, sc.inertia, sc.tip_stiffness}, sc.friction_limit(), sc.tip)
-                          : sc.tip.t_stop();
+  if (sc.solver.t_end == 0) {
+    // The run's length from the tip's keys: they are named, not the solver.t_end nobody wrote.
+    require_representable("tip.speed", sc.tip.speed, "m/s");
+    require_representable("tip.travel", sc.tip.travel, "m");
+    const bool dynamic = sc.tip_model_run() == TipModel::dynamic;
+    sc.solver.t_end = dynamic ? tip::dynamic_t_end({sc.mass, sc.inertia, sc.tip_stiffness}, sc.friction_limit(), sc.tip)
+                              : sc.tip.t_stop();
+    require_representable(dynamic ? "tip.travel, tip.speed, tip.stiffness" : "tip.travel, tip.speed", sc.solver.t_end,
+                          "s", "the run's duration (solver.t_end, not given: from tip.travel / tip.speed)");
+  }
 }
 
 /// [initial]: the state at t = 0.

@@ -26,7 +26,7 @@ set_tests_properties(cli.forces.bad_humidity_exit PROPERTIES WILL_FAIL TRUE)
 
 add_test(NAME cli.forces.bad_option_message COMMAND $<TARGET_FILE:nanopush> forces --shape sphere --radius -1e-9)
 set_tests_properties(cli.forces.bad_option_message PROPERTIES
-  PASS_REGULAR_EXPRESSION "body.radius = -1e-09: must be > 0 \\(m\\)")
+  PASS_REGULAR_EXPRESSION "--radius = -1e-09: must be > 0 \\(m\\)")
 add_test(NAME cli.forces.bad_option_exit COMMAND $<TARGET_FILE:nanopush> forces --shape sphere --radius -1e-9)
 set_tests_properties(cli.forces.bad_option_exit PROPERTIES WILL_FAIL TRUE)
 

@@ -202,8 +202,10 @@ struct MuEstimate {
 };
 
 /// e.sigma from e.contributions (first order, inputs uncorrelated). A mu or sigma that is not
-/// finite is no answer: the measured inputs (the first two contributions) overflow a double,
-/// and it throws InputError naming them, whichever front end gave them.
+/// finite is no answer, and it throws InputError naming the input, whichever front end gave it:
+/// for mu, the measured values (the first two contributions); for sigma, the input whose
+/// contribution (d mu / d input x its uncertainty, "L uncertainty = 1e+308") is not finite, or
+/// the value whose derivative is not, or the largest contribution when their squares overflow.
 MuEstimate propagate_uncertainty(MuEstimate e);
 
 /// Fig 4.4 / eq 4.8 inverted: mu = F (sqrt(yn^2 + b^2) + yn) / (W b) from a measured

@@ -28,6 +28,9 @@ struct ReadOptions {
 struct Record {
   std::vector<std::string> fields;
   std::size_t line = 0;  ///< the line the record starts on, 1-based
+  /// False when the input ended inside the record, without a line end: the last row of a file
+  /// cut short (a table nanopush wrote always ends its rows; a reader of such tables refuses it).
+  bool ended = true;
 };
 
 /// Records one at a time from a stream. InputError naming `source` and the line for an

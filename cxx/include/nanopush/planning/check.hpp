@@ -23,6 +23,11 @@ struct CheckWorlds {
   double tip_mu_lo = -1, tip_mu_hi = -1;  ///< the tip's friction uniform in [lo, hi] (lo < 0: the scene's)
 };
 
+/// The worlds `w` checked against `scene` (the noise finite and >= 0, the friction ranges, a
+/// tip range on a tip scene): InputError naming --noise, --mu-range or --tip-mu-range. The
+/// task below checks them too; a command checks them before it plans.
+void check_worlds(const Scene& scene, const CheckWorlds& w);
+
 /// The points of a check: one axis `trial` = 1 .. trials (a grid: nothing stored per trial).
 /// InputError (naming --check) outside [1, 1000000].
 sweep::Plan check_points(int trials);

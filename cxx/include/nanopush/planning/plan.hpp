@@ -98,6 +98,14 @@ double pose_cost(const Pose& p, const Pose& goal, double half_length, bool half_
 /// the model resolves, max_pushes < 1).
 PlanResult plan_pushes(const Scene& scene, const Pose& goal, const PlanOptions& options);
 
+/// How far a goal may lie from the bar's start, in bar lengths (InputError naming --goal beyond).
+inline constexpr double kGoalReach = 1e6;
+
+/// The checks of the task that plan_pushes makes first (the scene, the goal within reach, the
+/// tolerance, the robust worlds): InputError naming the option. For a front end that checks
+/// every option before any work.
+void check_plan_task(const Scene& scene, const Pose& goal, const PlanOptions& options);
+
 /// The baseline a lab uses (target-oriented pushing, docs/planning.md): turn the bar by
 /// off-centre pushes until a long face's normal points at the goal, push through the centre
 /// towards it, then turn to the goal orientation by off-centre pushes; repeat. Each push's
