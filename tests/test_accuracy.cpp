@@ -316,6 +316,16 @@ TEST_CASE("A failure a setting causes names the setting: one atol below the stat
   many.set({{"solver.samples", 2001}, {"solver.max_steps", 1000}});
   CHECK_THROWS_WITH(run_engine(many, s), Catch::Contains("the run steps to each of its 2001 output times") &&
                                              Catch::Contains("lower solver.samples or raise solver.max_steps"));
+  // A t_end far beyond the motion's time scale (fig3_6g: 5e-11 s): too many steps, or at
+  // 1e150 s a step size underflow at once; both name solver.t_end.
+  Scene late = thesis_preset("fig3_6g");
+  late.set("solver.t_end", 1e-3);
+  CHECK_THROWS_WITH(run_engine(late, s), Catch::Contains("solver.t_end = 0.001 s is ") &&
+                                             Catch::Contains("shorten solver.t_end or raise solver.max_steps"));
+  late.set("solver.t_end", 1e150);
+  CHECK_THROWS_WITH(run_engine(late, s), Catch::Contains("step size underflow") &&
+                                             Catch::Contains("solver.t_end = 1e+150 s is ") &&
+                                             Catch::EndsWith("shorten solver.t_end"));
 }
 
 TEST_CASE("Below 1e-12, --accuracy stops where its estimate stops falling", "[accuracy][rough][unit]") {

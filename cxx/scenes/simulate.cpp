@@ -509,9 +509,20 @@ Trajectory finish_run(const Scene& scene, const ResolvedSettings& s, Trajectory 
                            " output times (solver.samples; " + (s.engine == Engine::f77 ? "the F77 engine" : "faithful") +
                            " clips its steps there), more than solver.max_steps = " +
                            std::to_string(scene.solver.max_steps) + ": lower solver.samples or raise solver.max_steps";
+    // A t_end many orders beyond the motion's time scale (the push's rotational rate; a tip's
+    // travel time over the bar) needs more steps than any budget, and its output spacing is
+    // beyond what a step can reach: say so rather than only the integrator's words.
+    const double rate = scene.state_scales()[5], scales = scene.solver.t_end * rate;
+    const bool beyond = (tr.stats.status == BsStatus::step_underflow && scales >= 1e12) ||
+                        (tr.stats.status == BsStatus::too_many_steps &&
+                         scales >= 10 * static_cast<double>(scene.solver.max_steps));
+    if (tr.outcome_message.empty() && rate > 0 && beyond)
+      tr.outcome_message = what + ": solver.t_end = " + fmt_short(scene.solver.t_end) + " s is " + fmt_short(scales) +
+                           " times the motion's time scale (" + fmt_short(1 / rate) + " s): shorten solver.t_end" +
+                           (tr.stats.status == BsStatus::too_many_steps ? " or raise solver.max_steps" : "");
     // One atol for every component: where it is below the rounding of a component's size, no
     // step can meet it.
-    if (tr.stats.status == BsStatus::step_underflow && s.atol > 0) {
+    if (tr.outcome_message.empty() && tr.stats.status == BsStatus::step_underflow && s.atol > 0) {
       static constexpr const char* kNames[8] = {"x", "y", "theta", "vx", "vy", "omega", "work", "work"};
       const auto sc = scene.state_scales();
       for (std::size_t i = 0; i < 6; ++i)
