@@ -265,7 +265,8 @@ class Comparison:
     against itself at rtol 1e-14), diff and diff_tight (the engines apart at rtol and at
     1e-14), scale (largest norm of the column's vector), ok (diff_tight <= error_cxx +
     error_f77 + 1e-13), all relative to scale; tolerance is None. docs/rough.md. The verdict
-    is the library's (the same function as ``nanopush compare``)."""
+    is the library's (the same function as ``nanopush compare``). ``accuracy``: None, or with
+    compare(accuracy=E) a dict (requested, reached, rtol_used, runs)."""
 
     cxx: "Result"
     f77: "Result"
@@ -274,11 +275,13 @@ class Comparison:
     kind: str
     law: str
     agree: bool
+    accuracy: "dict | None"
 
     def __init__(self, verdict):
         self.cxx, self.f77 = verdict["cxx"], verdict["f77"]
         self.columns, self.tolerance = verdict["columns"], verdict["tolerance"]
         self.kind, self.law, self.agree = verdict["kind"], verdict["law"], verdict["agree"]
+        self.accuracy = verdict["accuracy"]
 
     def __bool__(self):
         return self.agree
@@ -353,15 +356,19 @@ def assemble(scene, objects, slots, *, tolerance=(1e-9, 0.01), objective="pushes
     return Assembly(*_nanopush._assemble(_as_scene(scene), objects, slots, tolerance, str(objective), max_pushes, gap))
 
 
-def compare(scene, method="faithful", rtol=None, atol=None, tolerance=None, law=None):
+def compare(scene, method="faithful", rtol=None, atol=None, tolerance=None, law=None, accuracy=None):
     """Run a scene with both engines, the C++ (``method``: faithful, modern or dop853) and
     the F77, under ``law`` (thesis or printed, the laws both implement; default the scene's,
     thesis for a coulomb scene), and judge them as ``nanopush compare`` does: faithful takes
     the F77 steps, so every column must agree within ``tolerance`` (default 100 rtol);
-    modern and dop853 are judged by convergence (see Comparison). Returns a Comparison (true
-    when the engines agree). Raises nanopush.SolverError when a run, or a reference run,
-    does not complete (nothing to compare), InputError for bad settings."""
-    return Comparison(_nanopush._compare(_as_scene(scene), method or "faithful", law or "", rtol, atol, tolerance))
+    modern and dop853 are judged by convergence (see Comparison). ``accuracy`` (in [1e-14,
+    0.1], instead of ``rtol``): both engines run at the rtol where the C++ configuration
+    reaches that error of the final pose (``nanopush compare --accuracy``, docs/accuracy.md);
+    Comparison.accuracy says which. Returns a Comparison (true when the engines agree).
+    Raises nanopush.SolverError when a run, or a reference run, does not complete, or the
+    accuracy is not reached (nothing to compare), InputError for bad settings."""
+    return Comparison(_nanopush._compare(_as_scene(scene), method or "faithful", law or "", rtol, atol, tolerance,
+                                         accuracy))
 
 
 # ---- sweeps ---------------------------------------------------------------------------

@@ -165,12 +165,18 @@ RunResult run(const Scene& scene, const std::string& engine, const std::string& 
 
 /// nanopush.compare's work: compare_engines, its verdicts as a dict (Comparison wraps it).
 py::dict compare(const Scene& scene, const std::string& method, const std::string& law, const py::object& rtol,
-                 const py::object& atol, const py::object& tolerance) {
+                 const py::object& atol, const py::object& tolerance, const py::object& accuracy) {
   CompareSettings cs;
   cs.method = method.empty() ? Method::faithful : parse_choice<Method>("method", method);
   cs.law = parse_optional_choice<Law>("law", law);
   read_tolerances(rtol, atol, cs.rtol, cs.atol);
   if (!tolerance.is_none()) cs.tolerance = arg_double(tolerance, "tolerance");
+  if (!accuracy.is_none()) {
+    cs.accuracy = arg_double(accuracy, "accuracy");
+    if (!(cs.accuracy >= kAccuracyMin && cs.accuracy <= kAccuracyMax))
+      throw InputError("accuracy", fmt(cs.accuracy), "must be in [" + fmt(kAccuracyMin) + ", " + fmt(kAccuracyMax) + "]");
+    if (!rtol.is_none()) throw InputError("rtol", fmt(cs.rtol), "accuracy chooses the rtol: give one of them");
+  }
   EngineComparison r;
   const Scene own = scene;
   {
@@ -195,6 +201,16 @@ py::dict compare(const Scene& scene, const std::string& method, const std::strin
   d["tolerance"] = same ? py::object(py::float_(r.tolerance)) : py::object(py::none());
   d["agree"] = r.agree;
   d["law"] = to_string(r.law);
+  if (r.accuracy.requested > 0) {
+    py::dict a;
+    a["requested"] = r.accuracy.requested;
+    a["reached"] = r.accuracy.reached;
+    a["rtol_used"] = r.accuracy.rtol_used;
+    a["runs"] = r.accuracy.runs;
+    d["accuracy"] = a;
+  } else {
+    d["accuracy"] = py::none();
+  }
   d["cxx"] = result(r.cxx);
   d["f77"] = result(r.f77);
   py::dict cols;
@@ -412,7 +428,7 @@ dict of arrays (pandas.DataFrame(result.to_dict())); to_csv(path) writes the CSV
         "Integrate a scene (nanopush.run is the documented entry point).");
   m.def("_compare", &compare, py::arg("scene"), py::arg("method") = "faithful", py::arg("law") = "",
         py::arg("rtol") = py::none(), py::arg("atol") = py::none(), py::arg("tolerance") = py::none(),
-        "Both engines judged column by column (nanopush.compare is the documented entry point).");
+        py::arg("accuracy") = py::none(), "Both engines judged column by column (nanopush.compare is the documented entry point).");
 }
 
 }  // namespace nanopush::python

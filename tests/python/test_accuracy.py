@@ -111,3 +111,18 @@ def test_extended_precision_runs_rough_scenes_as_documented():
     doc = nanopush.run.__doc__
     assert "smooth scenes)" not in doc and "rough scene under\n               the thesis or coulomb law" in doc
     assert '``"printed"``' in doc
+
+
+def test_compare_runs_both_engines_at_the_rtol_an_accuracy_needs():
+    # as `nanopush compare fig3_17 --accuracy 1e-7` (cli.accuracy.compare): the C++
+    # configuration's rtol for that error, both engines run there and agree
+    c = nanopush.compare("fig3_17", accuracy=1e-7)
+    assert c.agree
+    assert c.accuracy["requested"] == 1e-7 and c.accuracy["reached"]
+    assert c.accuracy["rtol_used"] <= 1e-7 and c.accuracy["runs"] >= 2
+    assert c.cxx.rtol == c.f77.rtol == c.accuracy["rtol_used"]
+    assert nanopush.compare("fig3_17").accuracy is None
+    with pytest.raises(nanopush.InputError, match=r"^accuracy = 1: must be in \[1e-14, 0.1\]"):
+        nanopush.compare("fig3_17", accuracy=1.0)
+    with pytest.raises(nanopush.InputError, match="accuracy chooses the rtol"):
+        nanopush.compare("fig3_17", accuracy=1e-7, rtol=1e-9)
