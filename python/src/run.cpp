@@ -358,6 +358,47 @@ void add_solve_ivp(ResultClass& cls) {
 }
 
 /// What the answer is worth: its outcome, error estimate, accuracy, cost, works and events.
+/// push.mode = tip: the tip at each row and its events, as the CLI's table and summary give
+/// them (tip_x, tip_y, tip_fx, tip_fy, contact; "tip: contact at t = ...").
+void add_tip(ResultClass& cls) {
+  cls.def_property_readonly(
+         "tip",
+         [](const RunResult& r) -> py::object {
+           if (r.tr.tip.empty()) return py::none();
+           const std::size_t n = r.tr.tip.size();
+           std::vector<double> x(n), y(n), fx(n), fy(n);
+           py::array_t<int> contact(static_cast<py::ssize_t>(n));
+           auto c = contact.mutable_unchecked<1>();
+           for (std::size_t i = 0; i < n; ++i) {
+             const TipSample& s = r.tr.tip[i];
+             x[i] = s.x;
+             y[i] = s.y;
+             fx[i] = s.fx;
+             fy[i] = s.fy;
+             c(static_cast<py::ssize_t>(i)) = s.contact;
+           }
+           py::dict d;
+           d["x"] = copy_vector(x);
+           d["y"] = copy_vector(y);
+           d["fx"] = copy_vector(fx);
+           d["fy"] = copy_vector(fy);
+           d["contact"] = contact;
+           for (auto item : d) item.second.attr("setflags")(py::arg("write") = false);
+           return d;
+         },
+         "push.mode = tip: a dict of arrays at the output times, as the CLI table's tip columns: x, y "
+         "(the tip's centre, m), fx, fy (its force on the object, N), contact (0 none, 1 stick, 2 slide); "
+         "None for other scenes.")
+      .def_property_readonly(
+          "tip_events",
+          [](const RunResult& r) {
+            py::list l;
+            for (const auto& e : r.tr.tip_events) l.append(py::make_tuple(e.t, e.what));
+            return l;
+          },
+          "push.mode = tip: (t [s], what) for each contact made, release and the tip's stop.");
+}
+
 void add_outcome(ResultClass& cls) {
   cls
       .def_property_readonly("outcome", [](const RunResult& r) { return to_string(r.tr.outcome); },
@@ -414,6 +455,7 @@ void register_run(py::module_& m) {
 
 Columns (read-only NumPy arrays): t [s], x, y [m], theta [rad], vx, vy [m/s], omega [rad/s],
 fx, fy [N] (friction force), mf [N m] (friction moment); `array` is the n x 10 table.
+A tip push adds `tip` (the tip at each row: x, y, fx, fy, contact) and `tip_events`.
 Counts: nfcn (right-hand-side evaluations), steps (accepted), rejected. to_dict() gives a
 dict of arrays (pandas.DataFrame(result.to_dict())); to_csv(path) writes the CSV of
 `nanopush run --out` (and its Table Schema sidecar).)doc");
@@ -421,6 +463,7 @@ dict of arrays (pandas.DataFrame(result.to_dict())); to_csv(path) writes the CSV
   add_counts(cls);
   add_solve_ivp(cls);
   add_outcome(cls);
+  add_tip(cls);
 
   m.def("_run", &run, py::arg("scene"), py::arg("engine") = "", py::arg("method") = "", py::arg("law") = "",
         py::arg("rtol") = py::none(), py::arg("atol") = py::none(), py::arg("precision") = "",

@@ -228,3 +228,19 @@ def test_interrupt_during_a_run_that_fails_is_a_keyboard_interrupt(mode):
         # an uncaught KeyboardInterrupt: Python ends by SIGINT (exit 130 in a shell)
         assert p.returncode == -2, (p.returncode, p.stderr)
         assert p.stderr.rstrip().endswith("KeyboardInterrupt") and "SolverError" not in p.stderr, p.stderr
+
+
+def test_a_tip_push_gives_the_tip_as_the_cli_table_does(cli, tmp_path):
+    # the tip columns and events of `nanopush run tip_push_nanorod --out` (the same run, bit for bit)
+    r = nanopush.run("tip_push_nanorod")
+    out = tmp_path / "tip.csv"
+    cli("run", "tip_push_nanorod", "--out", str(out))
+    header, rows = read_csv(out)
+    for key, col in (("x", "tip_x"), ("y", "tip_y"), ("fx", "tip_fx"), ("fy", "tip_fy"), ("contact", "contact")):
+        assert np.array_equal(r.tip[key], np.array(column(header, rows, col))), key
+        assert not r.tip[key].flags.writeable
+    assert r.tip["contact"].dtype.kind == "i" and set(np.unique(r.tip["contact"])) <= {0, 1, 2}
+    assert [what for _, what in r.tip_events] == ["contact", "release"]
+    assert 0 < r.tip_events[0][0] < r.tip_events[1][0] <= r.t[-1]
+    plain = nanopush.run("fig3_18")
+    assert plain.tip is None and plain.tip_events == []
