@@ -61,6 +61,14 @@ void install_interrupt_handler() {
   }
 }
 
+void restore_interrupt_handler(int sig) {
+  struct sigaction sa {};
+  sa.sa_handler = on_interrupt;
+  sigemptyset(&sa.sa_mask);
+  for (int s : kSignals) sigaddset(&sa.sa_mask, s);
+  ::sigaction(sig, &sa, nullptr);
+}
+
 void set_interrupt_note(const std::string& note) {
   // Written before the long work starts; the handler reads it only after a signal.
   const std::size_t n = std::min(note.size(), sizeof g_note - 1);

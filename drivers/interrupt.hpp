@@ -11,6 +11,9 @@ namespace nanopush::cli {
 
 /// Install the handler (main() does, before any command runs).
 void install_interrupt_handler();
+/// The handler again for `sig` (async-signal-safe: a sweep's own handler calls it on the first
+/// SIGINT or SIGTERM, so a second one removes the temporaries and says so as every command does).
+void restore_interrupt_handler(int sig);
 /// A line the handler prints after its own (at most 1,000 characters; "" for none).
 void set_interrupt_note(const std::string& note);
 

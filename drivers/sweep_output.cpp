@@ -1,4 +1,5 @@
 #include "sweep_output.hpp"
+#include "interrupt.hpp"
 
 #include <unistd.h>
 
@@ -24,7 +25,7 @@ volatile std::sig_atomic_t g_signal = 0;
 extern "C" void on_sweep_signal(int sig) {
   g_signal = sig;
   g_stop.store(true);
-  std::signal(sig, SIG_DFL);  // a second signal ends the process at once
+  restore_interrupt_handler(sig);  // a second signal ends the process at once, its temporaries removed
 }
 }  // namespace
 

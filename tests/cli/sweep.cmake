@@ -4,7 +4,7 @@ set(_np $<TARGET_FILE:nanopush>)
 set(_env "NANOPUSH_SCENES=${NANOPUSH_SCENES}")
 set(_sweep_sh ${CMAKE_CURRENT_SOURCE_DIR}/cli/scripts/sweep_checks.sh)
 set(_sweep_dir ${CMAKE_CURRENT_BINARY_DIR}/sweep)
-foreach(_mode jobs shards resume failing tasks inputs)
+foreach(_mode jobs shards resume twice failing tasks inputs)
   add_test(NAME cli.sweep.${_mode} COMMAND bash ${_sweep_sh} ${_mode} ${_np} ${_sweep_dir}/${_mode})
   set_tests_properties(cli.sweep.${_mode} PROPERTIES ENVIRONMENT "${_env}"
                        PASS_REGULAR_EXPRESSION "sweep check ${_mode}: ok")

@@ -76,6 +76,20 @@ resume)  # killed with SIGKILL mid-way, then resumed: the same table as an unint
   printf 'nanopush-sweep-journal 1 0000000000000000\n' > other.csv.journal
   [ "$(status "$np" sweep "${grid[@]}" --out other.csv 2> err.txt)" = 2 ] || fail "foreign journal accepted"
   grep -q "belongs to a different sweep" err.txt || fail "message: $(cat err.txt)" ;;
+twice)  # a second SIGINT while the points in flight finish: exit 130 at once, the line said,
+  # no temporary left, the journal kept for a resume
+  "$np" sweep fig3_18 --vary surface.mu=0:0.1:1000000 --jobs 1 --out twice.csv --quiet 2> err.txt &
+  pid=$!
+  for _ in $(seq 1 400); do
+    [ -f twice.csv.journal ] && [ "$(wc -l < twice.csv.journal)" -ge 10 ] && break
+    sleep 0.02
+  done
+  kill -INT $pid; kill -INT $pid
+  set +e; wait $pid; rc=$?; set -e
+  [ "$rc" = 130 ] || fail "exit status $rc, expected 130"
+  grep -q "interrupted (SIGINT): outputs not yet complete were removed" err.txt || fail "stderr: $(cat err.txt)"
+  [ -z "$(ls | grep '^twice.csv.tmp')" ] || fail "a temporary was left: $(ls)"
+  [ -f twice.csv.journal ] || fail "the journal is gone" ;;
 failing)  # a failing point is a row; the exit status counts the failures (64 + n)
   rc=$(status "$np" sweep fig3_6a --vary solver.max_steps=1,100000 --out f.csv --quiet)
   [ "$rc" = 65 ] || fail "exit status $rc, expected 65 (one failed point)"
