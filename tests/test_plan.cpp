@@ -134,6 +134,8 @@ TEST_CASE("Planning: an unreachable goal ends in not_found with the best plan; b
   CHECK(r.message.find("1 pushes") != std::string::npos);
   o.tolerance_distance = 1e-18;
   CHECK_THROWS_WITH(plan::plan_pushes(sc, {1e-8, 0, 0}, o), Catch::Contains("--tolerance"));
+  CHECK_THROWS_WITH(plan::plan_pushes(sc, {1e-8, 0, 1e308}, plan::PlanOptions{}),
+                    Catch::Contains("THETA must be within [-1e6, 1e6] rad"));
   o.tolerance_distance = std::nan("");  // not "below what the model resolves": not a number
   CHECK_THROWS_WITH(plan::plan_pushes(sc, {1e-8, 0, 0}, o), Catch::StartsWith("--tolerance = nan: must be a finite number"));
   o = {};

@@ -169,6 +169,11 @@ void check_task(const Scene& scene, const Pose& goal, const PlanOptions& o) {
                        "must be within 1e6 bar lengths of the bar's start: |(X, Y) - (" + fmt(x0) + ", " + fmt(y0) +
                            ")| <= " + r.str() + " m (the bar is " + fmt(L) + " m long)");
     }
+    // An angle is compared modulo 2 pi (pi for a symmetric bar): beyond 1e6 rad its remainder
+    // keeps fewer digits than the angle tolerance can judge (eps 1e6 = 2e-10 rad).
+    if (!(std::fabs(goal.theta) <= 1e6))
+      throw InputError("--goal", fmt(goal.x) + "," + fmt(goal.y) + "," + fmt(goal.theta),
+                       "THETA must be within [-1e6, 1e6] rad (it is taken modulo 2 pi: give it reduced)");
   }
   require_finite("--tolerance", o.tolerance_distance, "m");
   require_finite("--tolerance", o.tolerance_angle, "rad");
