@@ -17,7 +17,7 @@
 
 #include <boost/math/distributions/normal.hpp>
 #include <boost/math/tools/minima.hpp>
-#include <toml++/toml.h>
+#include "nanopush_toml.hpp"
 
 #include "nanopush/fitting/fit.hpp"
 #include "nanopush/numerics/error.hpp"

@@ -7,7 +7,7 @@
 #include <limits>
 #include <sstream>
 
-#include <toml++/toml.h>
+#include "nanopush_toml.hpp"
 
 #include "f77_rolling.h"
 #include "nanopush/scenes/environment_toml.hpp"

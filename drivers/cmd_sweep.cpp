@@ -9,7 +9,7 @@
 #include <iostream>
 #include <sstream>
 
-#include <toml++/toml.h>
+#include "nanopush_toml.hpp"
 
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/sweeps/sweep.hpp"

@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 #include <string_view>
-#include <toml++/toml.h>
+#include "nanopush_toml.hpp"
 
 namespace nanopush::cli {
 

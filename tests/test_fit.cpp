@@ -9,7 +9,7 @@
 #include <vector>
 
 #include <nlohmann/json.hpp>
-#include <toml++/toml.h>
+#include "nanopush_toml.hpp"
 
 #include "nanopush/fitting/fit.hpp"
 #include "nanopush/numerics/error.hpp"

@@ -6,7 +6,7 @@
 #include <limits>
 #include <string>
 
-#include <toml++/toml.h>
+#include "nanopush_toml.hpp"
 
 #include "nanopush/scenes/environment_toml.hpp"
 #include "nanopush/numerics/error.hpp"

@@ -66,6 +66,11 @@ TEST_CASE("Fuzz finding: a non-ASCII character where toml++ tests for whitespace
   CHECK_THROWS_WITH(parse_scene("a = \"\"\"x\\  \n  \xC2\xA7\"\"\"\n", "f.toml"),
                     Contains("f.toml:2:3:") && Contains("line-ending backslash") && Contains("\\uXXXX"));
   CHECK_THROWS_WITH(parse_scene("a = \"x\\\xC2\xA7\"\n", "f.toml"), Contains("follows a backslash"));
+  // The pre-scan sees a string where toml++ sees a value cut short: after `=0` toml++ reads
+  // `"""` as bad input and its error path tests the 'Ж' for whitespace. The classifier itself
+  // is mended (cxx/scenes/toml/nanopush_toml.hpp), so that path is a syntax error, not UB.
+  CHECK_THROWS_WITH(parse_scene("[scene]\ndescription =0\"\"\"x0\xD0\x96\"\"\"\n", "f.toml"),
+                    Contains("f.toml:2:") && Contains("TOML syntax"));
 }
 
 TEST_CASE("Non-ASCII characters inside strings and comments reach toml++ and are kept", "[scene][unit]") {

@@ -211,11 +211,11 @@ Trajectory run_to_accuracy(const Scene& scene, const RunSettings& settings) {
   // reach nothing. (Larger estimates can stall for several pairs and then fall: chaotic
   // scenes of bench-accuracy at E = 1e-4 do; they are left to tighten.)
   double lowest = std::numeric_limits<double>::infinity();
-  const auto stalled = [&](const ErrorEstimate& e, const std::string& at) {
+  const auto stalled = [&](const ErrorEstimate& e, const std::string& rtol_text) {
     const bool stall = e.norm > 0.5 * lowest && e.norm <= 1e-12;
     if (stall)
       best_error.note = "the estimate stopped falling with rtol (" + short_number(lowest) + ", then " +
-                        short_number(e.norm) + " at rtol " + at +
+                        short_number(e.norm) + " at rtol " + rtol_text +
                         "): near double's rounding the error is bounded by what stays in double (event instants, "
                         "output times)";
     lowest = std::min(lowest, e.norm);

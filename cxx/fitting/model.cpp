@@ -17,7 +17,7 @@
 #include <optional>
 #include <span>
 
-#include <toml++/toml.h>
+#include "nanopush_toml.hpp"
 
 #include "internal.hpp"
 #include "nanopush/fitting/fit.hpp"

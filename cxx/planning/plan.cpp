@@ -3,7 +3,7 @@
 // the push's travel; then every push re-run as a scene, and the whole chain end to end.
 #include "nanopush/planning/plan.hpp"
 
-#include <toml++/toml.h>
+#include "nanopush_toml.hpp"
 
 #include <algorithm>
 #include <chrono>

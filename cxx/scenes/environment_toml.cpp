@@ -10,7 +10,7 @@
 #include <set>
 #include <sstream>
 
-#include <toml++/toml.h>
+#include "nanopush_toml.hpp"
 
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/scenes/scene_keys.hpp"

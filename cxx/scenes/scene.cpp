@@ -1,6 +1,6 @@
 #include "nanopush/scenes/scene.hpp"
 
-#include <toml++/toml.h>
+#include "nanopush_toml.hpp"
 
 #include <algorithm>
 #include <charconv>

@@ -1,7 +1,7 @@
 // Setting scene keys after loading (--set, Python and C overrides): a value read from text,
 // put at its dotted key in the scene's document, and the scene parsed again from it, so a set
 // scene is checked exactly as a loaded one; SceneBuilder builds a scene key by key the same way.
-#include <toml++/toml.h>
+#include "nanopush_toml.hpp"
 
 #include <charconv>
 #include <cmath>

@@ -4,4 +4,4 @@
 // so no program of the project loads toml++'s shared library, and the installed package needs
 // no toml++ (docs/performance.md, "Process start"; scenes/toml_fwd.hpp).
 #define TOML_IMPLEMENTATION
-#include <toml++/toml.h>
+#include "nanopush_toml.hpp"

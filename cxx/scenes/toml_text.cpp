@@ -19,7 +19,7 @@
 #include <string>
 #include <string_view>
 
-#include <toml++/toml.h>
+#include "nanopush_toml.hpp"
 
 #include "nanopush/numerics/error.hpp"
 #include "nanopush/scenes/scene.hpp"
