@@ -116,6 +116,13 @@ TEST_CASE("Planning: a robust plan reaches the goal across the tip friction rang
   bad.robust_tip_mu_hi = 0.1;
   CHECK_THROWS_WITH(plan::plan_pushes(sc, goal, bad),
                     Catch::Matchers::StartsWith("--tip-mu-range = -0.1:0.1: must be LO:HI with 0 <= LO <= HI <= 10"));
+  // The same rule for the worlds of a plan's check (Python's and C's tip_mu_range): one
+  // function, check_tip_mu_range, for both.
+  plan::CheckWorlds w;
+  w.tip_mu_lo = -0.1;
+  w.tip_mu_hi = 0.1;
+  CHECK_THROWS_WITH(plan::check_worlds(sc, w),
+                    Catch::Matchers::StartsWith("--tip-mu-range = -0.1:0.1: must be LO:HI with 0 <= LO <= HI <= 10"));
   bad = o;
   bad.robust_start_x = -1e-9;
   CHECK_THROWS_WITH(plan::plan_pushes(sc, goal, bad), Catch::Matchers::StartsWith("--noise = -1e-09: a robust plan's start shifts"));

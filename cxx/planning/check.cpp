@@ -124,9 +124,8 @@ void check_worlds(const Scene& scene, const CheckWorlds& w) {
   const bool vary_mu = !(w.mu_lo == 0 && w.mu_hi == 0);
   if (vary_mu && !(w.mu_lo > 0 && w.mu_hi >= w.mu_lo && w.mu_hi <= 10))
     throw InputError("--mu-range", fmt(w.mu_lo) + ":" + fmt(w.mu_hi), "must be LO:HI with 0 < LO <= HI <= 10");
+  check_tip_mu_range(w.tip_mu_lo, w.tip_mu_hi);  // a negative end is refused, not "not varied"
   const bool vary_tip_mu = w.tip_mu_lo >= 0;
-  if (vary_tip_mu && !(w.tip_mu_hi >= w.tip_mu_lo && w.tip_mu_hi <= 10))
-    throw InputError("--tip-mu-range", fmt(w.tip_mu_lo) + ":" + fmt(w.tip_mu_hi), "must be LO:HI with 0 <= LO <= HI <= 10");
   if (vary_tip_mu && scene.push_mode != PushMode::tip)
     throw InputError("--tip-mu-range", scene.name, "varies the tip's friction: the scene must be a tip scene (push.mode = \"tip\")");
 }

@@ -187,9 +187,7 @@ void check_task(const Scene& scene, const Pose& goal, const PlanOptions& o) {
   // Robust worlds (-1, -1: the model's tip friction only). A range that is not one, or a
   // negative or NaN shift, would otherwise read as "not robust" and give a plan for the
   // model alone.
-  const double lo = o.robust_tip_mu_lo, hi = o.robust_tip_mu_hi;
-  if (!(lo == -1 && hi == -1) && !(lo >= 0 && lo <= hi && hi <= 10))
-    throw InputError("--tip-mu-range", fmt(lo) + ":" + fmt(hi), "must be LO:HI with 0 <= LO <= HI <= 10");
+  check_tip_mu_range(o.robust_tip_mu_lo, o.robust_tip_mu_hi);
   for (double v : {o.robust_start_x, o.robust_start_y, o.robust_start_theta})
     if (!(v >= 0 && std::isfinite(v)))
       throw InputError("--noise", fmt(v), "a robust plan's start shifts must be finite and >= 0");
@@ -322,6 +320,11 @@ Scene push_scene(const Scene& scene, const Pose& from, const PlannedPush& p) {
   }
   doc.erase("sweep");
   return scene_from_document(doc, scene.name);
+}
+
+void check_tip_mu_range(double lo, double hi) {
+  if (!(lo == -1 && hi == -1) && !(lo >= 0 && lo <= hi && hi <= 10))
+    throw InputError("--tip-mu-range", fmt(lo) + ":" + fmt(hi), "must be LO:HI with 0 <= LO <= HI <= 10");
 }
 
 void check_plan_task(const Scene& scene, const Pose& goal, const PlanOptions& o) { detail::check_task(scene, goal, o); }

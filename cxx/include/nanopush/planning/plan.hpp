@@ -101,6 +101,11 @@ PlanResult plan_pushes(const Scene& scene, const Pose& goal, const PlanOptions& 
 /// How far a goal may lie from the bar's start, in bar lengths (InputError naming --goal beyond).
 inline constexpr double kGoalReach = 1e6;
 
+/// A range of tip friction coefficients, [lo, hi] with 0 <= lo <= hi <= 10, or -1:-1 for none
+/// (the sentinel of PlanOptions and CheckWorlds): anything else, a negative end included, is
+/// InputError naming --tip-mu-range, never read as "none".
+void check_tip_mu_range(double lo, double hi);
+
 /// The checks of the task that plan_pushes makes first (the scene, the goal within reach, the
 /// tolerance, the robust worlds): InputError naming the option. For a front end that checks
 /// every option before any work.
